@@ -1,0 +1,28 @@
+# camlray: the README's two commands are `make render` and `make test`;
+# both install the toolchain first when it is missing (scripts/setup.sh).
+SHELL := /bin/bash
+CAMLRAY := _build/install/default/bin/camlray
+SCENE ?= scenes/default.scn
+
+.PHONY: all setup build render test bench fuzz clean
+
+all: build
+
+setup:
+	@bash scripts/setup.sh
+
+build: setup
+	@dune build @install 2>&1 | head -100; test $${PIPESTATUS[0]} -eq 0
+
+render: build
+	@mkdir -p out
+	$(CAMLRAY) render $(SCENE) -o out/default.png
+
+test: build
+	@bash scripts/run-tests.sh
+
+bench: build
+	dune exec --release bench/main.exe
+
+clean:
+	dune clean

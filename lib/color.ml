@@ -1,0 +1,23 @@
+type t = { r : float; g : float; b : float }
+
+let make r g b = { r; g; b }
+let gray v = { r = v; g = v; b = v }
+let black = gray 0.
+let white = gray 1.
+let[@inline] add a b = { r = a.r +. b.r; g = a.g +. b.g; b = a.b +. b.b }
+let[@inline] mul a b = { r = a.r *. b.r; g = a.g *. b.g; b = a.b *. b.b }
+let[@inline] scale k a = { r = k *. a.r; g = k *. a.g; b = k *. a.b }
+
+let[@inline] madd a k b =
+  { r = a.r +. (k *. b.r); g = a.g +. (k *. b.g); b = a.b +. (k *. b.b) }
+
+let max_channel a = Float.max a.r (Float.max a.g a.b)
+let luminance a = (0.297 *. a.r) +. (0.589 *. a.g) +. (0.114 *. a.b)
+let is_black a = a.r = 0. && a.g = 0. && a.b = 0.
+let pow a e = { r = Float.pow a.r e; g = Float.pow a.g e; b = Float.pow a.b e }
+let to_string a = Printf.sprintf "rgb <%g, %g, %g>" a.r a.g a.b
+
+type rgbft = { c : t; filter : float; transmit : float }
+
+let opaque c = { c; filter = 0.; transmit = 0. }
+let rgbft r g b f t = { c = { r; g; b }; filter = f; transmit = t }

@@ -1,0 +1,48 @@
+type t = { x : float; y : float; z : float }
+
+let make x y z = { x; y; z }
+let zero = { x = 0.; y = 0.; z = 0. }
+let one = { x = 1.; y = 1.; z = 1. }
+let unit_x = { x = 1.; y = 0.; z = 0. }
+let unit_y = { x = 0.; y = 1.; z = 0. }
+let unit_z = { x = 0.; y = 0.; z = 1. }
+let[@inline] add a b = { x = a.x +. b.x; y = a.y +. b.y; z = a.z +. b.z }
+let[@inline] sub a b = { x = a.x -. b.x; y = a.y -. b.y; z = a.z -. b.z }
+let[@inline] neg a = { x = -.a.x; y = -.a.y; z = -.a.z }
+let[@inline] mul a b = { x = a.x *. b.x; y = a.y *. b.y; z = a.z *. b.z }
+let[@inline] div a b = { x = a.x /. b.x; y = a.y /. b.y; z = a.z /. b.z }
+let[@inline] scale k a = { x = k *. a.x; y = k *. a.y; z = k *. a.z }
+
+let[@inline] madd a k b =
+  { x = a.x +. (k *. b.x); y = a.y +. (k *. b.y); z = a.z +. (k *. b.z) }
+
+let[@inline] dot a b = (a.x *. b.x) +. (a.y *. b.y) +. (a.z *. b.z)
+
+let[@inline] cross a b =
+  {
+    x = (a.y *. b.z) -. (a.z *. b.y);
+    y = (a.z *. b.x) -. (a.x *. b.z);
+    z = (a.x *. b.y) -. (a.y *. b.x);
+  }
+
+let[@inline] length2 a = dot a a
+let[@inline] length a = Float.sqrt (dot a a)
+
+let normalize a =
+  let l = length a in
+  if l > 0. then scale (1. /. l) a else a
+
+let dist a b = length (sub a b)
+let min a b = { x = Float.min a.x b.x; y = Float.min a.y b.y; z = Float.min a.z b.z }
+let max a b = { x = Float.max a.x b.x; y = Float.max a.y b.y; z = Float.max a.z b.z }
+
+let get v = function
+  | 0 -> v.x
+  | 1 -> v.y
+  | 2 -> v.z
+  | i -> invalid_arg (Printf.sprintf "Vec3.get %d" i)
+
+let lerp a b s = madd a s (sub b a)
+let is_finite v = Float.is_finite v.x && Float.is_finite v.y && Float.is_finite v.z
+let max_component v = Float.max v.x (Float.max v.y v.z)
+let to_string v = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z

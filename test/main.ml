@@ -1,0 +1,6 @@
+(* One test executable, one alcotest run: every suite is listed here. *)
+let () =
+  Alcotest.run "camlray"
+    [
+      Test_vec3.tests;
+    ]
