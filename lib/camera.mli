@@ -1,0 +1,32 @@
+(** Cameras, as POV-Ray places them: the final location, direction, right
+    and up vectors (look_at and angle already applied by the scene
+    compiler). Screen coordinates [sx], [sy] run from -0.5 to 0.5, [sy] up. *)
+
+type projection = Perspective | Orthographic
+
+type t = {
+  projection : projection;
+  location : Vec3.t;
+  direction : Vec3.t;
+  right : Vec3.t;
+  up : Vec3.t;
+  aperture : float;  (** 0: pinhole *)
+  focal_distance : float;  (** along the view direction, for depth of field *)
+  blur_samples : int;
+}
+
+val default : t
+(** POV-Ray's default camera (location 0, direction z, right 1.33 x, up y). *)
+
+val ray : t -> float -> float -> Ray.t
+(** [ray cam sx sy]: the pinhole ray through the screen point. Directions
+    are normalised. *)
+
+val ray_lens : t -> float -> float -> float -> float -> Ray.t
+(** [ray_lens cam sx sy u v]: as [ray], with the origin moved to the point
+    [(u, v)] in [[0,1)^2] of a disc of diameter [aperture] and aimed at the
+    focal plane. Same as [ray] when [aperture = 0]. *)
+
+val pixel_coords : width:int -> height:int -> float -> float -> float * float
+(** [pixel_coords ~width ~height px py] maps image coordinates (pixel
+    centres at [i + 0.5], row 0 at the top) to [(sx, sy)]. *)

@@ -1,0 +1,18 @@
+type t = {
+  ior : float;
+  fade_distance : float;
+  fade_power : float;
+  fade_color : Color.t;
+}
+
+let default =
+  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black }
+
+let fade i d =
+  if i.fade_distance = 0. || i.fade_power = 0. then Color.white
+  else
+    let f c =
+      if i.fade_power >= 1000. then Float.exp (-.(1. -. c) *. d /. i.fade_distance)
+      else c +. ((1. -. c) /. (1. +. Float.pow (d /. i.fade_distance) i.fade_power))
+    in
+    Color.make (f i.fade_color.r) (f i.fade_color.g) (f i.fade_color.b)

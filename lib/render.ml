@@ -1,0 +1,57 @@
+module T = Domainslib.Task
+
+type tile = { x0 : int; y0 : int; x1 : int; y1 : int }
+
+exception Cancelled
+
+let tiles ~width ~height ~size =
+  let nx = (width + size - 1) / size and ny = (height + size - 1) / size in
+  Array.init (nx * ny) (fun i ->
+      let tx = i mod nx and ty = i / nx in
+      {
+        x0 = tx * size;
+        y0 = ty * size;
+        x1 = min width ((tx + 1) * size);
+        y1 = min height ((ty + 1) * size);
+      })
+
+let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
+    ?(cancelled = fun () -> false) ~width ~height ~size f =
+  let ts = tiles ~width ~height ~size in
+  let total = Array.length ts in
+  let finished = Atomic.make 0 in
+  let report = Mutex.create () in
+  let stop = Atomic.make false in
+  let body i =
+    if Atomic.get stop || cancelled () then Atomic.set stop true
+    else begin
+      f ts.(i);
+      let d = 1 + Atomic.fetch_and_add finished 1 in
+      if Mutex.try_lock report then
+        Fun.protect ~finally:(fun () -> Mutex.unlock report) (fun () ->
+            progress ~done_:d ~total)
+    end
+  in
+  (if domains <= 1 then
+     for i = 0 to total - 1 do
+       body i
+     done
+   else
+     let pool = T.setup_pool ~num_domains:(domains - 1) () in
+     Fun.protect
+       ~finally:(fun () -> T.teardown_pool pool)
+       (fun () ->
+         T.run pool (fun () ->
+             T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(total - 1) ~body)));
+  if Atomic.get stop then raise Cancelled
+
+let image ~domains ?progress ?cancelled ~width ~height f =
+  let img = Image.create width height in
+  run_tiles ~domains ?progress ?cancelled ~width ~height ~size:16 (fun t ->
+      for y = t.y0 to t.y1 - 1 do
+        for x = t.x0 to t.x1 - 1 do
+          let c : Color.t = f x y in
+          Image.set img x y c.r c.g c.b
+        done
+      done);
+  img

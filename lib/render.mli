@@ -1,0 +1,28 @@
+(** The parallel pixel loop: the only module that knows about domains.
+    The image is cut into fixed square tiles in absolute image coordinates;
+    a domainslib pool of [domains] workers takes tiles with
+    [Task.parallel_for]; each tile writes only its own pixels. Output does
+    not depend on the domain count or on which worker took which tile. *)
+
+type tile = { x0 : int; y0 : int; x1 : int; y1 : int }
+(** Half-open pixel rectangle [[x0, x1) x [y0, y1)]. *)
+
+val tiles : width:int -> height:int -> size:int -> tile array
+(** The tiles of an image, in row-major order. *)
+
+val run_tiles :
+  domains:int -> ?progress:(done_:int -> total:int -> unit) ->
+  ?cancelled:(unit -> bool) -> width:int -> height:int -> size:int ->
+  (tile -> unit) -> unit
+(** Run [f] on every tile. [progress] is called after tiles complete (from
+    one domain at a time, possibly not for every tile). When [cancelled ()]
+    becomes true, remaining tiles are skipped and [Cancelled] is raised.
+    The pool is torn down whatever happens. *)
+
+exception Cancelled
+
+val image :
+  domains:int -> ?progress:(done_:int -> total:int -> unit) ->
+  ?cancelled:(unit -> bool) -> width:int -> height:int ->
+  (int -> int -> Color.t) -> Image.t
+(** Evaluate a pixel function [f x y] over the whole image in 16x16 tiles. *)

@@ -1,0 +1,33 @@
+(** A compiled scene: what the renderers see. Built by the scene-language
+    compiler; no syntax here. *)
+
+type settings = {
+  max_trace_level : int;  (** 1..256, default 5 *)
+  adc_bailout : float;  (** default 1/255 *)
+  ambient_light : Color.t;
+  encoding : Image.encoding;  (** output transfer curve (POV-Ray's gamma rules) *)
+  legacy_alpha : bool;
+      (** pre-3.7 transparency rule: alpha = 1 - (f max(rgb) + t) *)
+}
+
+type t = {
+  objects : Object.t array;
+  lights : Light.t array;
+  camera : Camera.t;
+  background : Color.t;
+  settings : settings;
+}
+
+val default_settings : settings
+
+type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
+(** [normal] is the object's outward unit normal (not yet flipped toward
+    the ray). *)
+
+val intersect : t -> Ray.t -> float -> float -> hit option
+(** Nearest hit in [(tmin, tmax)]. *)
+
+val occluders : t -> Ray.t -> float -> float -> (Object.t -> float -> bool) -> bool
+(** [occluders s ray tmin tmax f] calls [f obj t] on every shadow-casting
+    object hit in [(tmin, tmax)] (in no particular order) until [f] returns
+    [false]; returns [false] if some call did. *)

@@ -1,0 +1,151 @@
+(* A 3x4 matrix acting on column vectors, p' = M p + t, kept with its
+   inverse. Entries are row-major: m.(0..2) is the first row, m.(9..11) the
+   translation. *)
+type t = { m : Float.Array.t; inv : Float.Array.t; id : bool }
+
+let mk a = Float.Array.of_list (Array.to_list a)
+
+let identity_m = mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0. |]
+let identity = { m = identity_m; inv = identity_m; id = true }
+let is_identity t = t.id
+let g = Float.Array.get
+
+(* product of two 3x4 affine matrices: (a then b) = B * A *)
+let mul b a =
+  let r = Float.Array.make 12 0. in
+  for i = 0 to 2 do
+    for j = 0 to 2 do
+      let s = ref 0. in
+      for k = 0 to 2 do
+        s := !s +. (g b ((3 * i) + k) *. g a ((3 * k) + j))
+      done;
+      Float.Array.set r ((3 * i) + j) !s
+    done;
+    let s = ref (g b (9 + i)) in
+    for k = 0 to 2 do
+      s := !s +. (g b ((3 * i) + k) *. g a (9 + k))
+    done;
+    Float.Array.set r (9 + i) !s
+  done;
+  r
+
+let det3 m =
+  (g m 0 *. ((g m 4 *. g m 8) -. (g m 5 *. g m 7)))
+  -. (g m 1 *. ((g m 3 *. g m 8) -. (g m 5 *. g m 6)))
+  +. (g m 2 *. ((g m 3 *. g m 7) -. (g m 4 *. g m 6)))
+
+let invert m =
+  let d = det3 m in
+  if d = 0. || not (Float.is_finite d) then None
+  else
+    let id = 1. /. d in
+    let c i j = g m ((3 * i) + j) in
+    let r = Float.Array.make 12 0. in
+    let set i j v = Float.Array.set r ((3 * i) + j) (v *. id) in
+    set 0 0 ((c 1 1 *. c 2 2) -. (c 1 2 *. c 2 1));
+    set 0 1 ((c 0 2 *. c 2 1) -. (c 0 1 *. c 2 2));
+    set 0 2 ((c 0 1 *. c 1 2) -. (c 0 2 *. c 1 1));
+    set 1 0 ((c 1 2 *. c 2 0) -. (c 1 0 *. c 2 2));
+    set 1 1 ((c 0 0 *. c 2 2) -. (c 0 2 *. c 2 0));
+    set 1 2 ((c 0 2 *. c 1 0) -. (c 0 0 *. c 1 2));
+    set 2 0 ((c 1 0 *. c 2 1) -. (c 1 1 *. c 2 0));
+    set 2 1 ((c 0 1 *. c 2 0) -. (c 0 0 *. c 2 1));
+    set 2 2 ((c 0 0 *. c 1 1) -. (c 0 1 *. c 1 0));
+    for i = 0 to 2 do
+      let s = ref 0. in
+      for k = 0 to 2 do
+        s := !s +. (g r ((3 * i) + k) *. g m (9 + k))
+      done;
+      Float.Array.set r (9 + i) (-. !s)
+    done;
+    Some r
+
+let of_pair m inv = { m; inv; id = false }
+
+let translate (v : Vec3.t) =
+  of_pair
+    (mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; v.x; v.y; v.z |])
+    (mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; -.v.x; -.v.y; -.v.z |])
+
+let scale (v : Vec3.t) =
+  of_pair
+    (mk [| v.x; 0.; 0.; 0.; v.y; 0.; 0.; 0.; v.z; 0.; 0.; 0. |])
+    (mk [| 1. /. v.x; 0.; 0.; 0.; 1. /. v.y; 0.; 0.; 0.; 1. /. v.z; 0.; 0.; 0. |])
+
+let transpose3 m =
+  let c i j = g m ((3 * j) + i) in
+  mk [| c 0 0; c 0 1; c 0 2; c 1 0; c 1 1; c 1 2; c 2 0; c 2 1; c 2 2; 0.; 0.; 0. |]
+
+(* A pure rotation: the inverse is the transpose. *)
+let of_rotation m = of_pair m (transpose3 m)
+
+let deg a = a *. Float.pi /. 180.
+
+let rot_x a =
+  let c = Float.cos (deg a) and s = Float.sin (deg a) in
+  of_rotation (mk [| 1.; 0.; 0.; 0.; c; -.s; 0.; s; c; 0.; 0.; 0. |])
+
+let rot_y a =
+  let c = Float.cos (deg a) and s = Float.sin (deg a) in
+  of_rotation (mk [| c; 0.; s; 0.; 1.; 0.; -.s; 0.; c; 0.; 0.; 0. |])
+
+let rot_z a =
+  let c = Float.cos (deg a) and s = Float.sin (deg a) in
+  of_rotation (mk [| c; -.s; 0.; s; c; 0.; 0.; 0.; 1.; 0.; 0.; 0. |])
+
+let then_ a b =
+  if a.id then b
+  else if b.id then a
+  else { m = mul b.m a.m; inv = mul a.inv b.inv; id = false }
+
+let rotate (v : Vec3.t) = then_ (then_ (rot_x v.x) (rot_y v.y)) (rot_z v.z)
+
+let axis_rotate axis angle =
+  let a = Vec3.normalize axis in
+  let c = Float.cos (deg angle) and s = Float.sin (deg angle) in
+  let t = 1. -. c in
+  let x = a.x and y = a.y and z = a.z in
+  of_rotation
+    (mk
+       [|
+         (t *. x *. x) +. c; (t *. x *. y) -. (s *. z); (t *. x *. z) +. (s *. y);
+         (t *. x *. y) +. (s *. z); (t *. y *. y) +. c; (t *. y *. z) -. (s *. x);
+         (t *. x *. z) -. (s *. y); (t *. y *. z) +. (s *. x); (t *. z *. z) +. c;
+         0.; 0.; 0.;
+       |])
+
+let of_pov_matrix a =
+  if Array.length a <> 12 then invalid_arg "Transform.of_pov_matrix";
+  (* POV-Ray's rows are the images of x, y, z: transpose into columns. *)
+  let m =
+    mk [| a.(0); a.(3); a.(6); a.(1); a.(4); a.(7); a.(2); a.(5); a.(8); a.(9); a.(10); a.(11) |]
+  in
+  Option.map (fun inv -> of_pair m inv) (invert m)
+
+let inverse t = { t with m = t.inv; inv = t.m }
+
+let[@inline] app m (p : Vec3.t) o =
+  Vec3.make
+    ((g m 0 *. p.x) +. (g m 1 *. p.y) +. (g m 2 *. p.z) +. (o *. g m 9))
+    ((g m 3 *. p.x) +. (g m 4 *. p.y) +. (g m 5 *. p.z) +. (o *. g m 10))
+    ((g m 6 *. p.x) +. (g m 7 *. p.y) +. (g m 8 *. p.z) +. (o *. g m 11))
+
+let point t p = if t.id then p else app t.m p 1.
+let vector t v = if t.id then v else app t.m v 0.
+let inv_point t p = if t.id then p else app t.inv p 1.
+let inv_vector t v = if t.id then v else app t.inv v 0.
+
+let normal t (n : Vec3.t) =
+  if t.id then n
+  else
+    let m = t.inv in
+    Vec3.make
+      ((g m 0 *. n.x) +. (g m 3 *. n.y) +. (g m 6 *. n.z))
+      ((g m 1 *. n.x) +. (g m 4 *. n.y) +. (g m 7 *. n.z))
+      ((g m 2 *. n.x) +. (g m 5 *. n.y) +. (g m 8 *. n.z))
+
+let determinant t = det3 t.m
+
+let to_string t =
+  String.concat " "
+    (List.init 12 (fun i -> Printf.sprintf "%g" (g t.m i)))

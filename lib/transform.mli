@@ -1,0 +1,44 @@
+(** Affine transforms, stored with their inverse so that neither is ever
+    recomputed per ray. Composition follows POV-Ray: each modifier applies
+    after everything already attached to the object. *)
+
+type t
+
+val identity : t
+val is_identity : t -> bool
+
+val translate : Vec3.t -> t
+val scale : Vec3.t -> t
+(** Zero components must have been replaced by the caller (POV-Ray
+    replaces them by 1 with a warning). *)
+
+val rotate : Vec3.t -> t
+(** [rotate <a,b,c>]: [a] degrees about x, then [b] about y, then [c] about
+    z, with POV-Ray's (textbook) matrices: [rotate x*90] sends +y to +z. *)
+
+val axis_rotate : Vec3.t -> float -> t
+(** Rotation by the angle (degrees) about an axis through the origin, as
+    POV-Ray's [vaxis_rotate]. *)
+
+val of_pov_matrix : float array -> t option
+(** POV-Ray's [matrix <a,b,c, d,e,f, g,h,i, j,k,l>] (row-vector form:
+    x' = a x + d y + g z + j, ...). [None] when the matrix is singular. *)
+
+val then_ : t -> t -> t
+(** [then_ a b] applies [a] first, then [b]. *)
+
+val inverse : t -> t
+
+val point : t -> Vec3.t -> Vec3.t
+val vector : t -> Vec3.t -> Vec3.t
+(** Apply to a direction (no translation). *)
+
+val inv_point : t -> Vec3.t -> Vec3.t
+val inv_vector : t -> Vec3.t -> Vec3.t
+
+val normal : t -> Vec3.t -> Vec3.t
+(** Transform an object-space normal by the inverse transpose; the result
+    is not normalised. *)
+
+val determinant : t -> float
+val to_string : t -> string

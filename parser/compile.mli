@@ -1,0 +1,11 @@
+(** The compile step: the evaluated scene description becomes the
+    renderer's {!Camlray.Scene.t}. POV-Ray's camera placement rules, its
+    gamma rules and default textures are applied here; semantic errors
+    come from here, located. *)
+
+val camera : Sdl.camera_item list -> Camlray.Camera.t
+(** POV-Ray's camera model: keywords applied in its fixed order (type,
+    up/right, angle, look_at, orthographic sizing, then transforms in
+    written order). *)
+
+val scene : Sdl.scene -> (Camlray.Scene.t, Diag.t) result

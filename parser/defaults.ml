@@ -1,0 +1,28 @@
+open Camlray
+
+let version_ = ref 3.62
+let given = ref false
+let first = ref None
+let items_seen = ref false
+let tex = ref { Texture.pigment = Pigment.black; finish = Finish.default }
+
+let reset () =
+  version_ := 3.62;
+  given := false;
+  first := None;
+  items_seen := false;
+  tex := { Texture.pigment = Pigment.black; finish = Finish.default }
+
+let version () = !version_
+
+let set_version v =
+  version_ := v;
+  given := true;
+  if (not !items_seen) && !first = None then first := Some v
+
+let version_given () = !given
+let first_version () = !first
+let mark_item () = items_seen := true
+let texture () = !tex
+let set_finish f = tex := { !tex with finish = f }
+let set_pigment p = tex := { !tex with pigment = p }

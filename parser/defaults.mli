@@ -1,0 +1,20 @@
+(** Parse-time settings that change meaning as a file is read: the
+    language version ([#version]) and the [#default] texture. One parse
+    runs at a time in a process (the scene language is read on one
+    domain); {!reset} starts a fresh parse. *)
+
+val reset : unit -> unit
+val version : unit -> float
+val set_version : float -> unit
+val version_given : unit -> bool
+val first_version : unit -> float option
+(** The first [#version] of the main file, if it came before any scene
+    item. *)
+
+val mark_item : unit -> unit
+(** Note that a scene item has been read (later [#version]s do not change
+    the gamma rules). *)
+
+val texture : unit -> Camlray.Texture.layer
+val set_finish : Camlray.Finish.t -> unit
+val set_pigment : Camlray.Pigment.t -> unit

@@ -1,0 +1,206 @@
+open Parser
+
+type raw = Tok of Parser.token | Ident of string | Directive of string | Eof
+type token = { raw : raw; loc : Loc.t }
+
+let keywords : (string, Parser.token) Hashtbl.t =
+  let t = Hashtbl.create 128 in
+  List.iter (fun (k, v) -> Hashtbl.replace t k v)
+    [
+      ("camera", CAMERA); ("perspective", PERSPECTIVE); ("orthographic", ORTHOGRAPHIC);
+      ("location", LOCATION); ("look_at", LOOK_AT); ("angle", ANGLE); ("right", RIGHT);
+      ("up", UP); ("direction", DIRECTION); ("sky", SKY); ("aperture", APERTURE);
+      ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
+      ("light_source", LIGHT_SOURCE); ("spotlight", SPOTLIGHT); ("parallel", PARALLEL);
+      ("point_at", POINT_AT); ("radius", RADIUS); ("falloff", FALLOFF);
+      ("tightness", TIGHTNESS); ("fade_distance", FADE_DISTANCE); ("fade_power", FADE_POWER);
+      ("fade_color", FADE_COLOR); ("fade_colour", FADE_COLOR); ("shadowless", SHADOWLESS);
+      ("color", COLOR); ("colour", COLOR); ("sphere", SPHERE); ("plane", PLANE);
+      ("object", OBJECT); ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
+      ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
+      ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
+      ("texture", TEXTURE); ("pigment", PIGMENT); ("finish", FINISH); ("interior", INTERIOR);
+      ("ambient", AMBIENT); ("emission", EMISSION); ("diffuse", DIFFUSE);
+      ("brilliance", BRILLIANCE); ("phong", PHONG); ("phong_size", PHONG_SIZE);
+      ("specular", SPECULAR); ("roughness", ROUGHNESS); ("metallic", METALLIC);
+      ("reflection", REFLECTION); ("fresnel", FRESNEL); ("exponent", EXPONENT);
+      ("reflection_exponent", REFLECTION_EXPONENT); ("conserve_energy", CONSERVE_ENERGY);
+      ("ior", IOR); ("scale", SCALE); ("rotate", ROTATE); ("translate", TRANSLATE);
+      ("matrix", MATRIX); ("transform", TRANSFORM); ("inverse", INVERSE);
+      ("no_shadow", NO_SHADOW); ("hollow", HOLLOW);
+      ("x", VECTOR [| 1.; 0.; 0. |]); ("y", VECTOR [| 0.; 1.; 0. |]);
+      ("z", VECTOR [| 0.; 0.; 1. |]); ("t", VECTOR [| 0.; 0.; 0.; 1. |]);
+      ("u", VECTOR [| 1.; 0. |]); ("v", VECTOR [| 0.; 1. |]);
+      ("pi", FLOAT Float.pi); ("true", FLOAT 1.); ("yes", FLOAT 1.); ("on", FLOAT 1.);
+      ("false", FLOAT 0.); ("no", FLOAT 0.); ("off", FLOAT 0.);
+    ];
+  List.iter (fun k -> Hashtbl.replace t k (RGB k))
+    [ "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft" ];
+  List.iter (fun k -> Hashtbl.replace t k (CHANNEL k))
+    [ "red"; "green"; "blue"; "filter"; "transmit" ];
+  List.iter (fun k -> if Value.is_function k then Hashtbl.replace t k (FUNC k)) Value.functions;
+  t
+
+(* POV-Ray 3.7's reserved words that camlray does not (yet) give meaning to. *)
+let pov_words =
+  "aa_level aa_threshold absorption accuracy agate agate_turb all all_intersections alpha \
+   altitude always_sample area_illumination area_light array arc_angle ascii assumed_gamma \
+   autostop average b_spline bezier_spline bicubic_patch black_hole blob box boxed bozo brick \
+   brick_size brightness brilliance bump_map bump_size bumps camera caustics cells \
+   charset checker chr circular clipped_by clock clock_delta clock_on collect color_map \
+   colour_map component composite concat cone confidence conic_sweep contained_by \
+   control0 control1 coords count crackle crand cube cubic cubic_spline cubic_wave \
+   cutaway_textures cylinder cylindrical defined degrees density density_file density_map \
+   dents df3 difference dimension_size dimensions disc dispersion dispersion_samples \
+   dist_exp distance dither double_illuminate eccentricity emission error_bound \
+   evaluate expand extinction face_indices facets falloff_angle file_exists filter finish \
+   fisheye flatness flip floor focal_point fog fog_alt fog_offset fog_type form frame_number \
+   frequency fresnel function gather gif global_lights gradient granite gray_threshold \
+   height_field hexagon hf_gray_16 hierarchy hypercomplex iff image_height image_map \
+   image_pattern image_width importance inside inside_vector interior_texture interpolate \
+   intersection intervals irid irid_wavelength isosurface jitter jpeg julia julia_fractal \
+   lambda lathe leopard light_group linear_spline linear_sweep load_file look_at \
+   looks_like low_error_factor magnet major_radius mandel map_type marble material \
+   material_map matrix max_extent max_gradient max_intersections max_iteration \
+   max_sample media media_attenuation media_interaction merge mesh mesh2 metric \
+   min_extent minimum_reuse mortar natural_spline nearest_count no_bump_scale no_image \
+   no_radiosity no_reflection noise_generator normal normal_indices normal_map \
+   normal_vectors number_of_waves octaves offset omega omnimax once onion open \
+   orient orientation panoramic parametric pattern pavement pgm phase photons \
+   pigment_map pigment_pattern planar png point_at poly poly_wave polygon pot pov \
+   pow ppm precision precompute pretrace_end pretrace_start prism prod projected_through \
+   pwr quadratic_spline quadric quartic quaternion quick_color quilted radial \
+   radiosity ramp_wave rand range ratio read reciprocal recursion_limit \
+   refraction render repeat rgbf rgbft rgbt right ripples rotate roughness \
+   samples save_file scallop_wave scattering seed select sgi shadowless sine_wave \
+   sint16be sint16le sint32be sint32le sint8 size sky_sphere slice slope slope_map \
+   smooth smooth_triangle solid sor spacing specular sphere_sweep spherical spiral1 \
+   spiral2 spline split_union spotted square srgb sturm subsurface sum superellipsoid \
+   sys t tga thickness threshold tile2 tiles tolerance toroidal torus trace \
+   transmit triangle triangle_wave triangular turb_depth turbulence type u_steps \
+   uint16be uint16le uint8 ultra_wide_angle union up use_alpha use_color use_colour \
+   use_index utf8 uv_indices uv_mapping uv_vectors v_steps val variance vaxis_rotate \
+   vcross vdot version vertex_vectors vlength vnormalize vrotate vstr vturbulence \
+   warning warp water_level waves width wood wrinkles write x y yes z"
+
+let reserved =
+  let t = Hashtbl.create 512 in
+  List.iter
+    (fun w -> if w <> "" then Hashtbl.replace t w ())
+    (String.split_on_char ' ' pov_words);
+  t
+
+let pov_reserved w = Hashtbl.mem reserved w || Hashtbl.mem keywords w
+
+let describe = function
+  | Eof -> "end of file"
+  | Ident s -> "identifier " ^ s
+  | Directive d -> "#" ^ d
+  | Tok t -> (
+      match t with
+      | LBRACE -> "'{'" | RBRACE -> "'}'" | LPAREN -> "'('" | RPAREN -> "')'"
+      | LBRACKET -> "'['" | RBRACKET -> "']'" | LT -> "'<'" | GT -> "'>'"
+      | LE -> "'<='" | GE -> "'>='" | EQ -> "'='" | NE -> "'!='" | PLUS -> "'+'"
+      | MINUS -> "'-'" | STAR -> "'*'" | SLASH -> "'/'" | COMMA -> "','"
+      | SEMI -> "';'" | QUESTION -> "'?'" | COLON -> "':'" | AND -> "'&'" | OR -> "'|'"
+      | BANG -> "'!'" | EOF -> "end of file"
+      | FLOAT f -> Printf.sprintf "number %g" f
+      | STRING s -> Printf.sprintf "string %S" s
+      | MEMBER m -> "." ^ m
+      | FUNC f -> "function " ^ f
+      | RGB k -> "keyword " ^ k
+      | CHANNEL k -> "keyword " ^ k
+      | _ -> (
+          let found = ref None in
+          Hashtbl.iter (fun k v -> if v = t then found := Some k) keywords;
+          match !found with Some k -> "keyword " ^ k | None -> "a declared identifier"))
+
+exception Lex_error of string
+
+let rec comment depth buf =
+  match%sedlex buf with
+  | "*/" -> if depth > 1 then comment (depth - 1) buf
+  | "/*" -> comment (depth + 1) buf
+  | eof -> raise (Lex_error "unterminated comment /* ... */")
+  | any -> comment depth buf
+  | _ -> assert false
+
+let string_body buf =
+  let b = Buffer.create 16 in
+  let rec go () =
+    match%sedlex buf with
+    | '"' -> Buffer.contents b
+    | "\\\"" -> Buffer.add_char b '"'; go ()
+    | "\\\\" -> Buffer.add_char b '\\'; go ()
+    | "\\n" -> Buffer.add_char b '\n'; go ()
+    | "\\t" -> Buffer.add_char b '\t'; go ()
+    | "\\r" -> Buffer.add_char b '\r'; go ()
+    | "\\a" -> Buffer.add_char b '\007'; go ()
+    | "\\b" -> Buffer.add_char b '\b'; go ()
+    | "\\f" -> Buffer.add_char b '\012'; go ()
+    | "\\v" -> Buffer.add_char b '\011'; go ()
+    | "\\'" -> Buffer.add_char b '\''; go ()
+    | '\\', any -> Buffer.add_string b (Sedlexing.Utf8.lexeme buf); go ()
+    | '\n' | eof -> raise (Lex_error "unterminated string")
+    | any -> Buffer.add_string b (Sedlexing.Utf8.lexeme buf); go ()
+    | _ -> assert false
+  in
+  go ()
+
+let digit = [%sedlex.regexp? '0' .. '9']
+let exponent = [%sedlex.regexp? ('e' | 'E'), Opt ('+' | '-'), Plus digit]
+let number =
+  [%sedlex.regexp? (Plus digit, Opt ('.', Star digit), Opt exponent)
+                  | ('.', Plus digit, Opt exponent)]
+let ident = [%sedlex.regexp? ('a' .. 'z' | 'A' .. 'Z' | '_'), Star ('a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_')]
+
+let rec next buf : raw =
+  match%sedlex buf with
+  | Plus (' ' | '\t' | '\r' | '\n' | 0xfeff) -> next buf
+  | "//", Star (Compl '\n') -> next buf
+  | "/*" -> comment 1 buf; next buf
+  | number -> Tok (FLOAT (float_of_string (Sedlexing.Utf8.lexeme buf)))
+  | '"' -> Tok (STRING (string_body buf))
+  | '.', ident ->
+      let s = Sedlexing.Utf8.lexeme buf in
+      Tok (MEMBER (String.sub s 1 (String.length s - 1)))
+  | '#', Star (' ' | '\t'), ident ->
+      let s = Sedlexing.Utf8.lexeme buf in
+      let i = ref 1 in
+      while s.[!i] = ' ' || s.[!i] = '\t' do incr i done;
+      Directive (String.sub s !i (String.length s - !i))
+  | ident -> (
+      let s = Sedlexing.Utf8.lexeme buf in
+      match Hashtbl.find_opt keywords s with Some t -> Tok t | None -> Ident s)
+  | '{' -> Tok LBRACE | '}' -> Tok RBRACE | '(' -> Tok LPAREN | ')' -> Tok RPAREN
+  | '[' -> Tok LBRACKET | ']' -> Tok RBRACKET
+  | "<=" -> Tok LE | ">=" -> Tok GE | "!=" -> Tok NE
+  | '<' -> Tok LT | '>' -> Tok GT | '=' -> Tok EQ
+  | '+' -> Tok PLUS | '-' -> Tok MINUS | '*' -> Tok STAR | '/' -> Tok SLASH
+  | ',' -> Tok COMMA | ';' -> Tok SEMI | '?' -> Tok QUESTION | ':' -> Tok COLON
+  | '&' -> Tok AND | '|' -> Tok OR | '!' -> Tok BANG
+  | eof -> Eof
+  | any -> raise (Lex_error (Printf.sprintf "unexpected character %S" (Sedlexing.Utf8.lexeme buf)))
+  | _ -> raise (Lex_error "invalid UTF-8 input")
+
+let tokenize ~file text =
+  Diag.register_source file text;
+  let buf = Sedlexing.Utf8.from_string text in
+  Sedlexing.set_filename buf file;
+  let acc = ref [] in
+  let rec loop () =
+    let raw =
+      try next buf
+      with Lex_error msg ->
+        let s, e = Sedlexing.lexing_positions buf in
+        Diag.error (Loc.make s e) "%s" msg
+    in
+    let s, e = Sedlexing.lexing_positions buf in
+    acc := { raw; loc = Loc.make s e } :: !acc;
+    if raw <> Eof then loop ()
+  in
+  (try loop ()
+   with Sedlexing.MalFormed ->
+     let s, e = Sedlexing.lexing_positions buf in
+     Diag.error (Loc.make s e) "invalid UTF-8 input");
+  Array.of_list (List.rev !acc)

@@ -1,0 +1,23 @@
+(** The sedlex lexer: turns a whole file (UTF-8) into an array of located
+    raw tokens, once. Keywords become parser tokens; identifiers stay
+    names until the supplier types them; [#word] becomes a directive. *)
+
+type raw =
+  | Tok of Parser.token
+  | Ident of string
+  | Directive of string  (** [#declare] is [Directive "declare"] *)
+  | Eof
+
+type token = { raw : raw; loc : Loc.t }
+
+val tokenize : file:string -> string -> token array
+(** Raises {!Diag.Error} on a lexical error (unterminated string or
+    comment, stray character). The last token is [Eof]. *)
+
+val describe : raw -> string
+(** How a token is named in messages: ["'{'"], ["keyword sphere"],
+    ["identifier Foo"], ["end of file"]. *)
+
+val pov_reserved : string -> bool
+(** Whether a name is a POV-Ray 3.7 reserved word (so that an unsupported
+    keyword can be reported by name). *)

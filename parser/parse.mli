@@ -1,0 +1,26 @@
+(** The scene language's only entry point: read a file (or a string) into
+    an evaluated scene description. Never raises: every failure is a
+    located {!Diag.t}. *)
+
+type options = {
+  include_dirs : string list;
+      (** searched for [#include] after the current folder and the scene's
+          folder; POV-Ray's include folder is appended when it exists *)
+  limits : Supplier.limits;
+  clock : float;
+  image_width : int;
+  image_height : int;
+  frame_number : int;
+}
+
+val default_options : options
+
+val pov_include_dir : string
+(** /usr/share/povray-3.7/include *)
+
+val file : ?options:options -> string -> (Sdl.scene * string list, Diag.t) result
+(** The scene and every file it read (the scene and its includes). *)
+
+val string : ?options:options -> ?name:string -> string -> (Sdl.scene, Diag.t) result
+(** Parse scene text; [name] (default ["<string>"]) is used in messages and
+    as the scene's folder for includes (the current folder). *)

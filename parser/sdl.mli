@@ -1,0 +1,67 @@
+(** The evaluated scene description: what the parser and the directive
+    evaluator produce, still located, in POV-Ray's own terms. The compile
+    step ({!Compile}) turns it into the renderer's {!Camlray.Scene.t}. *)
+
+open Camlray
+
+type shape =
+  | Sphere of Vec3.t * float
+  | Plane of Vec3.t * float
+  | Light of light
+
+and light = {
+  position : Vec3.t;
+  color : Color.t;
+  kind : Light.kind;
+  fade_distance : float;
+  fade_power : float;
+  shadowless : bool;
+}
+
+and obj = {
+  loc : Loc.t;
+  shape : shape;
+  xform : Transform.t;
+  texture : Texture.t option;  (** [None]: inherit from a CSG parent *)
+  interior : Interior.t option;
+  no_shadow : bool;
+  hollow : bool;
+}
+
+type camera_item =
+  | Perspective
+  | Orthographic
+  | Location of Vec3.t
+  | Look_at of Vec3.t
+  | Angle of float
+  | Right of Vec3.t
+  | Up of Vec3.t
+  | Direction of Vec3.t
+  | Sky of Vec3.t
+  | Aperture of float
+  | Focal_point of Vec3.t
+  | Blur_samples of int
+  | Cam_transform of Transform.t
+
+type global =
+  | Assumed_gamma of float
+  | Max_trace_level of int
+  | Adc_bailout of float
+  | Ambient_light of Color.t
+
+type item =
+  | Object of obj
+  | Camera of Loc.t * camera_item list
+  | Background of Color.rgbft
+  | Global_settings of Loc.t * global list
+
+type scene = {
+  items : item list;  (** in source order *)
+  version : float option;  (** the [#version] in force at the start *)
+  file : string;
+}
+
+val transform_obj : Transform.t -> obj -> obj
+(** Apply a transform to an object and to the texture already attached to
+    it (POV-Ray's rule: a texture written before a transform moves with
+    the object). *)

@@ -1,0 +1,39 @@
+(** The token supplier and directive evaluator. It walks a stack of token
+    cursors (the main file, included files, macro bodies, loop bodies),
+    evaluates POV-Ray's directives as it meets them ([#version],
+    [#declare], [#local], [#undef], [#include], [#if]/[#ifdef]/[#ifndef]/
+    [#elseif]/[#else], [#switch]/[#case]/[#range]/[#break], [#while],
+    [#for], [#macro], [#debug]/[#warning]/[#error], [#default]) and hands
+    the parser identifiers typed by what they are bound to. Sub-parses
+    (a [#declare]'s right-hand side, a condition) pull tokens from the same
+    supplier, so directives nest anywhere. *)
+
+type limits = {
+  max_loop_iterations : int;  (** per [#while]/[#for] loop *)
+  max_macro_depth : int;
+  max_include_depth : int;
+  max_array_size : int;
+}
+
+val default_limits : limits
+
+type config = {
+  include_dirs : string list;
+      (** folders searched, in order, for [#include] (after the current
+          folder and the scene's folder) *)
+  limits : limits;
+  builtins : (string * float) list;
+      (** [clock], [image_width], [image_height], [frame_number], ... *)
+}
+
+type t
+
+val create : config -> Env.t -> file:string -> Lexer.token array -> t
+
+val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a
+(** Run a (sub-)parse from an entry point of the grammar, pulling tokens
+    from the supplier. Raises {!Diag.Error} with a located message naming
+    what was expected and what was found. *)
+
+val files_read : t -> string list
+(** Every file read so far (the scene and its includes), absolute paths. *)
