@@ -40,11 +40,14 @@ val write_atomic : string -> (out_channel -> unit) -> unit
 (** [write_atomic path f] writes through a temporary file in the same folder
     and renames it onto [path] only when [f] and the flush succeeded, so
     [path] never holds a truncated file. Raises [Sys_error] or [Failure]
-    with a readable message otherwise (the temporary file is removed). *)
+    with a readable message naming [path] otherwise (the temporary file,
+    [.NAME.XXXXXX.tmp] beside [path], is removed); other exceptions raised
+    by [f] pass through unchanged. *)
 
 val write_png : ?text:(string * string) list -> string -> rgb8 -> unit
 (** Non-interlaced 8-bit RGB PNG, written atomically; [text] becomes tEXt
-    chunks (key, value). *)
+    chunks (key, value). Raises [Invalid_argument] for a keyword that is
+    empty, longer than 79 bytes or contains NUL, or a value with NUL. *)
 
 val write_ppm : string -> rgb8 -> unit
 (** Binary PPM (P6), written atomically. *)
@@ -55,13 +58,19 @@ val write_pfm : string -> t -> unit
 
 val read : string -> rgb8
 (** Read a PNG (any colour type camlimages reads; alpha dropped) or a PPM
-    (P6 or P3, maxval up to 65535, scaled to 8 bits). Raises [Failure] with
-    a message naming the file on error. *)
+    (P6 or P3, maxval up to 65535, scaled to 8 bits), told apart by their
+    first bytes. A PNG's chunks, CRCs and compressed data are checked before
+    camlimages decodes it. Raises [Failure] with a message naming the file
+    on error. *)
 
 val png_text : string -> (string * string) list
-(** The tEXt chunks of a PNG file, in file order. *)
+(** The tEXt chunks of a PNG file, in file order, as raw (Latin-1) bytes.
+    Raises [Failure] naming the file if it is not a well-formed PNG. *)
 
-(** {1 Metrics} *)
+(** {1 Metrics}
+
+    The functions taking two images raise [Invalid_argument] when their
+    sizes differ. *)
 
 val psnr : rgb8 -> rgb8 -> float
 (** PSNR in dB over the R, G, B bytes; [infinity] for identical images.

@@ -3,4 +3,5 @@ let () =
   Alcotest.run "camlray"
     [
       Test_vec3.tests;
+      Test_image.tests;
     ]
