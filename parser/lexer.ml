@@ -3,42 +3,67 @@ open Parser
 type raw = Tok of Parser.token | Ident of string | Directive of string | Eof
 type token = { raw : raw; loc : Loc.t }
 
+(* Keywords by grammar file; each list is owned by the grammar file of
+   the same name, so that they grow independently. *)
+
+(* grammar_lang.mly *)
+let lang_keywords =
+  [
+    ("color", COLOR); ("colour", COLOR); ("scale", SCALE); ("rotate", ROTATE);
+    ("translate", TRANSLATE); ("matrix", MATRIX); ("transform", TRANSFORM);
+    ("inverse", INVERSE);
+    ("x", VECTOR [| 1.; 0.; 0. |]); ("y", VECTOR [| 0.; 1.; 0. |]);
+    ("z", VECTOR [| 0.; 0.; 1. |]); ("t", VECTOR [| 0.; 0.; 0.; 1. |]);
+    ("u", VECTOR [| 1.; 0. |]); ("v", VECTOR [| 0.; 1. |]);
+    ("pi", FLOAT Float.pi); ("true", FLOAT 1.); ("yes", FLOAT 1.); ("on", FLOAT 1.);
+    ("false", FLOAT 0.); ("no", FLOAT 0.); ("off", FLOAT 0.);
+  ]
+  @ List.map (fun k -> (k, RGB k)) [ "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft" ]
+  @ List.map (fun k -> (k, CHANNEL k)) [ "red"; "green"; "blue"; "filter"; "transmit" ]
+  @ List.map (fun k -> (k, FUNC k)) Value.functions
+
+(* grammar_scene.mly *)
+let scene_keywords =
+  [
+    ("camera", CAMERA); ("perspective", PERSPECTIVE); ("orthographic", ORTHOGRAPHIC);
+    ("location", LOCATION); ("look_at", LOOK_AT); ("angle", ANGLE); ("right", RIGHT);
+    ("up", UP); ("direction", DIRECTION); ("sky", SKY); ("aperture", APERTURE);
+    ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
+    ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
+    ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
+    ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
+  ]
+
+(* grammar_objects.mly *)
+let object_keywords =
+  [
+    ("sphere", SPHERE); ("plane", PLANE); ("object", OBJECT); ("no_shadow", NO_SHADOW);
+    ("hollow", HOLLOW);
+  ]
+
+(* grammar_texture.mly *)
+let texture_keywords =
+  [
+    ("light_source", LIGHT_SOURCE); ("spotlight", SPOTLIGHT); ("parallel", PARALLEL);
+    ("point_at", POINT_AT); ("radius", RADIUS); ("falloff", FALLOFF);
+    ("tightness", TIGHTNESS); ("fade_distance", FADE_DISTANCE); ("fade_power", FADE_POWER);
+    ("fade_color", FADE_COLOR); ("fade_colour", FADE_COLOR); ("shadowless", SHADOWLESS);
+    ("texture", TEXTURE); ("pigment", PIGMENT); ("finish", FINISH); ("interior", INTERIOR);
+    ("ambient", AMBIENT); ("emission", EMISSION); ("diffuse", DIFFUSE);
+    ("brilliance", BRILLIANCE); ("phong", PHONG); ("phong_size", PHONG_SIZE);
+    ("specular", SPECULAR); ("roughness", ROUGHNESS); ("metallic", METALLIC);
+    ("reflection", REFLECTION); ("fresnel", FRESNEL); ("exponent", EXPONENT);
+    ("reflection_exponent", REFLECTION_EXPONENT); ("conserve_energy", CONSERVE_ENERGY);
+    ("ior", IOR);
+  ]
+
 let keywords : (string, Parser.token) Hashtbl.t =
-  let t = Hashtbl.create 128 in
-  List.iter (fun (k, v) -> Hashtbl.replace t k v)
-    [
-      ("camera", CAMERA); ("perspective", PERSPECTIVE); ("orthographic", ORTHOGRAPHIC);
-      ("location", LOCATION); ("look_at", LOOK_AT); ("angle", ANGLE); ("right", RIGHT);
-      ("up", UP); ("direction", DIRECTION); ("sky", SKY); ("aperture", APERTURE);
-      ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
-      ("light_source", LIGHT_SOURCE); ("spotlight", SPOTLIGHT); ("parallel", PARALLEL);
-      ("point_at", POINT_AT); ("radius", RADIUS); ("falloff", FALLOFF);
-      ("tightness", TIGHTNESS); ("fade_distance", FADE_DISTANCE); ("fade_power", FADE_POWER);
-      ("fade_color", FADE_COLOR); ("fade_colour", FADE_COLOR); ("shadowless", SHADOWLESS);
-      ("color", COLOR); ("colour", COLOR); ("sphere", SPHERE); ("plane", PLANE);
-      ("object", OBJECT); ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
-      ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
-      ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
-      ("texture", TEXTURE); ("pigment", PIGMENT); ("finish", FINISH); ("interior", INTERIOR);
-      ("ambient", AMBIENT); ("emission", EMISSION); ("diffuse", DIFFUSE);
-      ("brilliance", BRILLIANCE); ("phong", PHONG); ("phong_size", PHONG_SIZE);
-      ("specular", SPECULAR); ("roughness", ROUGHNESS); ("metallic", METALLIC);
-      ("reflection", REFLECTION); ("fresnel", FRESNEL); ("exponent", EXPONENT);
-      ("reflection_exponent", REFLECTION_EXPONENT); ("conserve_energy", CONSERVE_ENERGY);
-      ("ior", IOR); ("scale", SCALE); ("rotate", ROTATE); ("translate", TRANSLATE);
-      ("matrix", MATRIX); ("transform", TRANSFORM); ("inverse", INVERSE);
-      ("no_shadow", NO_SHADOW); ("hollow", HOLLOW);
-      ("x", VECTOR [| 1.; 0.; 0. |]); ("y", VECTOR [| 0.; 1.; 0. |]);
-      ("z", VECTOR [| 0.; 0.; 1. |]); ("t", VECTOR [| 0.; 0.; 0.; 1. |]);
-      ("u", VECTOR [| 1.; 0. |]); ("v", VECTOR [| 0.; 1. |]);
-      ("pi", FLOAT Float.pi); ("true", FLOAT 1.); ("yes", FLOAT 1.); ("on", FLOAT 1.);
-      ("false", FLOAT 0.); ("no", FLOAT 0.); ("off", FLOAT 0.);
-    ];
-  List.iter (fun k -> Hashtbl.replace t k (RGB k))
-    [ "rgb"; "rgbf"; "rgbt"; "rgbft"; "srgb"; "srgbf"; "srgbt"; "srgbft" ];
-  List.iter (fun k -> Hashtbl.replace t k (CHANNEL k))
-    [ "red"; "green"; "blue"; "filter"; "transmit" ];
-  List.iter (fun k -> if Value.is_function k then Hashtbl.replace t k (FUNC k)) Value.functions;
+  let t = Hashtbl.create 256 in
+  List.iter
+    (fun (k, v) ->
+      if Hashtbl.mem t k then invalid_arg ("Lexer: keyword listed twice: " ^ k);
+      Hashtbl.replace t k v)
+    (lang_keywords @ scene_keywords @ object_keywords @ texture_keywords);
   t
 
 (* POV-Ray 3.7's reserved words that camlray does not (yet) give meaning to. *)

@@ -1,0 +1,19 @@
+(* Helpers shared by the semantic actions of the grammar files. *)
+open Camlray
+
+let loc (s, e) = Loc.make s e
+let v3 l v = Value.to_vec3 (loc l) v
+let fl l v = Value.to_float (loc l) v
+let with_texture f (o : Sdl.obj) =
+  let layers = match o.texture with Some t -> t | None -> [ Defaults.texture () ] in
+  match layers with
+  | top :: rest -> { o with texture = Some (f top :: rest) }
+  | [] -> o
+let light_kind f (o : Sdl.obj) = match o.shape with
+  | Sdl.Light l -> { o with shape = Sdl.Light { l with kind = f l.kind } } | _ -> o
+let light_field f (o : Sdl.obj) = match o.shape with
+  | Sdl.Light l -> { o with shape = Sdl.Light (f l) } | _ -> o
+let nonzero_scale l (v : Vec3.t) =
+  let fix c = if c = 0. then (Diag.warning (loc l) "zero scale component replaced by 1"; 1.) else c in
+  Vec3.make (fix v.x) (fix v.y) (fix v.z)
+

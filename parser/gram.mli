@@ -1,0 +1,15 @@
+(** Helpers for the semantic actions of the grammar files ([grammar_*.mly]). *)
+
+val loc : Lexing.position * Lexing.position -> Loc.t
+val v3 : Lexing.position * Lexing.position -> Value.t -> Camlray.Vec3.t
+val fl : Lexing.position * Lexing.position -> Value.t -> float
+
+val with_texture : (Camlray.Texture.layer -> Camlray.Texture.layer) -> Sdl.obj -> Sdl.obj
+(** Change the top texture layer of an object (starting from the
+    [#default] texture when it has none). *)
+
+val light_kind : (Camlray.Light.kind -> Camlray.Light.kind) -> Sdl.obj -> Sdl.obj
+val light_field : (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
+
+val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlray.Vec3.t
+(** POV-Ray replaces zero scale components by 1, with a warning. *)

@@ -1,0 +1,212 @@
+(* The expression language, directive entry points and transformations.
+   Directives never reach this grammar: the token supplier (Supplier)
+   evaluates them and hands over identifiers already typed by what they
+   are bound to (FLOAT_ID, OBJECT_ID, ...). Semantic actions evaluate as
+   they go, as POV-Ray does; errors in them raise Diag.Error. The grammar
+   is split over the grammar_*.mly files, merged by menhir into Parser;
+   nonterminals marked %public are extended in several files. *)
+%{
+open Camlray
+open Gram
+%}
+
+%token <float> FLOAT
+%token <string> STRING
+%token <float array> VECTOR
+%token <float> FLOAT_ID
+%token <float array> VECTOR_ID
+%token <string> STRING_ID
+%token <Sdl.obj> OBJECT_ID
+%token <Camlray.Pigment.t> PIGMENT_ID
+%token <Camlray.Finish.t> FINISH_ID
+%token <Camlray.Texture.t> TEXTURE_ID
+%token <Camlray.Interior.t> INTERIOR_ID
+%token <Camlray.Transform.t> TRANSFORM_ID
+%token <Sdl.camera_item list> CAMERA_ID
+%token <string> UNDEFINED_ID
+%token <string> FUNC
+%token <string> MEMBER
+%token <string> RGB
+%token <string> CHANNEL
+%token LBRACE RBRACE LPAREN RPAREN LBRACKET RBRACKET
+%token LT GT LE GE EQ NE PLUS MINUS STAR SLASH COMMA SEMI QUESTION COLON AND OR BANG
+%token EOF
+%token COLOR SCALE ROTATE TRANSLATE MATRIX TRANSFORM INVERSE
+
+(* Greedy parsing where POV-Ray is greedy: a parameter extends over a
+   following '+'/'-', a member access binds to the nearest value. *)
+%nonassoc below_shift
+%nonassoc PLUS MINUS MEMBER RGB
+
+%start <Decl.t> declare_rhs
+%start <Value.t> paren_expr
+%start <Value.t> expr_then_semi
+%start <Value.t> expr_then_comma
+%start <Value.t> expr_then_rparen
+%start <Value.t> expr_then_rbracket
+%start <Decl.t * bool> macro_arg
+%start <Decl.t * bool> array_elem
+%start <string> string_arg
+%start <unit> default_body
+
+%%
+
+%public declare_rhs:
+  | v = color_value SEMI { Decl.Value v }
+  | o = OBJECT_ID { Decl.Object o }
+  | p = PIGMENT_ID { Decl.Pigment p }
+  | f = FINISH_ID { Decl.Finish f }
+  | t = TEXTURE_ID { Decl.Texture t }
+  | i = INTERIOR_ID { Decl.Interior i }
+  | t = TRANSFORM_ID { Decl.Transform t }
+  | c = CAMERA_ID { Decl.Camera c }
+  | o = object_ { Decl.Object o }
+  | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
+  | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
+  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture [ t ] }
+  | INTERIOR LBRACE i = interior_body RBRACE { Decl.Interior i }
+  | TRANSFORM LBRACE t = transform_body RBRACE { Decl.Transform t }
+  | CAMERA LBRACE c = camera_body RBRACE { Decl.Camera c }
+
+%public paren_expr: LPAREN e = expr RPAREN { e }
+
+%public expr_then_semi: e = expr SEMI { e }
+
+%public expr_then_comma: e = expr COMMA { e }
+
+%public expr_then_rparen: e = expr RPAREN { e }
+
+%public expr_then_rbracket: e = expr RBRACKET { e }
+
+%public macro_arg:
+  | d = any_value COMMA { (d, false) }
+  | d = any_value RPAREN { (d, true) }
+
+%public array_elem:
+  | d = any_value COMMA { (d, false) }
+  | d = any_value RBRACE { (d, true) }
+
+%public string_arg:
+  | s = STRING { s }
+  | s = STRING_ID { s }
+  | f = FUNC LPAREN args = separated_list(COMMA, expr) RPAREN
+      { Value.to_string_value (loc $loc) (Value.call (loc $loc) f args) }
+
+%public default_body:
+  | LBRACE ds = list(default_item) RBRACE { List.iter (fun f -> f ()) ds }
+
+%public default_item:
+  | FINISH LBRACE f = finish_body RBRACE { fun () -> Defaults.set_finish f }
+  | PIGMENT LBRACE p = pigment_body RBRACE { fun () -> Defaults.set_pigment p }
+  | TEXTURE LBRACE t = texture_body RBRACE
+      { fun () -> Defaults.set_pigment t.Texture.pigment; Defaults.set_finish t.Texture.finish }
+
+%public any_value:
+  | o = OBJECT_ID { Decl.Object o }
+  | p = PIGMENT_ID { Decl.Pigment p }
+  | f = FINISH_ID { Decl.Finish f }
+  | t = TEXTURE_ID { Decl.Texture t }
+  | i = INTERIOR_ID { Decl.Interior i }
+  | t = TRANSFORM_ID { Decl.Transform t }
+  | c = CAMERA_ID { Decl.Camera c }
+  | v = color_value { Decl.Value v }
+  | o = object_ { Decl.Object o }
+  | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
+  | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
+  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture [ t ] }
+  | INTERIOR LBRACE i = interior_body RBRACE { Decl.Interior i }
+  | TRANSFORM LBRACE t = transform_body RBRACE { Decl.Transform t }
+
+%public expr:
+  | c = logic QUESTION a = expr COLON b = expr
+      { if Value.to_bool (loc $loc(c)) c then a else b }
+  | e = logic { e }
+
+%public logic:
+  | a = logic AND b = rel { Value.binop (loc $loc) "&" a b }
+  | a = logic OR b = rel { Value.binop (loc $loc) "|" a b }
+  | e = rel { e }
+
+%public rel:
+  | a = rel LT b = add { Value.binop (loc $loc) "<" a b }
+  | a = rel LE b = add { Value.binop (loc $loc) "<=" a b }
+  | a = rel GT b = add { Value.binop (loc $loc) ">" a b }
+  | a = rel GE b = add { Value.binop (loc $loc) ">=" a b }
+  | a = rel EQ b = add { Value.binop (loc $loc) "=" a b }
+  | a = rel NE b = add { Value.binop (loc $loc) "!=" a b }
+  | e = add { e }
+
+(* Object and keyword parameters: no comparisons at the top level, so that
+   the next '<' starts a vector (POV-Ray's commas are often optional). *)
+
+%public add:
+  | a = add PLUS b = mul { Value.binop (loc $loc) "+" a b }
+  | a = add MINUS b = mul { Value.binop (loc $loc) "-" a b }
+  | e = mul { e }
+
+%public mul:
+  | a = mul STAR b = unary { Value.binop (loc $loc) "*" a b }
+  | a = mul SLASH b = unary { Value.binop (loc $loc) "/" a b }
+  | e = unary { e }
+
+%public unary:
+  | MINUS e = unary { Value.neg (loc $loc) e }
+  | PLUS e = unary { e }
+  | BANG e = unary { Value.not_ (loc $loc) e }
+  | e = postfix %prec below_shift { e }
+
+%public postfix:
+  | e = primary { e }
+  | e = postfix m = MEMBER { Value.dot_member (loc $loc) e m }
+
+%public primary:
+  | f = FLOAT { Value.Float f }
+  | f = FLOAT_ID { Value.Float f }
+  | v = VECTOR { Value.Vector v }
+  | v = VECTOR_ID { Value.Vector v }
+  | s = STRING { Value.String s }
+  | s = STRING_ID { Value.String s }
+  | LPAREN e = expr RPAREN { e }
+  | LT cs = separated_nonempty_list(COMMA, add) GT
+      { let n = List.length cs in
+        if n < 2 || n > 5 then
+          Diag.error (loc $loc) "a vector has 2 to 5 components, this one has %d" n;
+        Value.Vector (Array.of_list (List.map (fun c -> match c with
+          | Value.Float f -> f
+          | v -> Diag.error (loc $loc) "vector components must be floats, found %s" (Value.type_name v)) cs)) }
+  | f = FUNC LPAREN args = separated_list(COMMA, expr) RPAREN { Value.call (loc $loc) f args }
+  | k = RGB e = unary { Value.rgb_kind (loc $loc) k e }
+
+%public param: e = add %prec below_shift { e }
+
+(* a colour: optional 'color', a value, then channel settings *)
+
+%public color_value:
+  | e = expr ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR e = expr ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR ms = nonempty_list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
+
+%public channel: c = CHANNEL e = param { (loc $loc, c, fl $loc(e) e) }
+
+%public transformation:
+  | SCALE e = param { Transform.scale (nonzero_scale $loc(e) (v3 $loc(e) e)) }
+  | ROTATE e = param { Transform.rotate (v3 $loc(e) e) }
+  | TRANSLATE e = param { Transform.translate (v3 $loc(e) e) }
+  | MATRIX e = param
+      { match e with
+        | Value.Vector a when Array.length a = 12 -> (
+            match Transform.of_pov_matrix a with
+            | Some t -> t
+            | None -> Diag.error (loc $loc) "this matrix is singular")
+        | _ -> Diag.error (loc $loc) "matrix needs 12 numbers <a,b,c, d,e,f, g,h,i, j,k,l>" }
+  | TRANSFORM t = TRANSFORM_ID { t }
+  | TRANSFORM LBRACE t = transform_body RBRACE { t }
+
+%public transform_body:
+  | ts = list(transform_item) { List.fold_left (fun acc f -> f acc) Transform.identity ts }
+
+%public transform_item:
+  | t = transformation { fun acc -> Transform.then_ acc t }
+  | t = TRANSFORM_ID { fun acc -> Transform.then_ acc t }
+  | INVERSE { fun acc -> Transform.inverse acc }
