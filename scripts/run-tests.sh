@@ -5,13 +5,14 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-dune build @install test/main.exe 2>&1 | head -200
+dune build @install test/main.exe 2>&1 | grep -v "^Read " | head -200
 if [ "${PIPESTATUS[0]}" -ne 0 ]; then
   echo "build failed"
   echo "0 passed, 1 failed"
   exit 1
 fi
 export CAMLRAY_EXE="$PWD/_build/install/default/bin/camlray"
+export CAMLRAY_SCENES="$PWD/scenes"
 ( cd _build/default/test && ./main.exe --color=never "$@" ) 2>&1 | tee "$log"
 status=${PIPESTATUS[0]}
 total=$(grep -Eo '[0-9]+ tests? run' "$log" | tail -1 | grep -Eo '^[0-9]+')

@@ -1,0 +1,56 @@
+(* Shared test helpers: scenes from strings, the real executable. *)
+open Camlray
+open Camlray_lang
+
+let compile_string ?(name = "test.scn") text =
+  match Parse.string ~name text with
+  | Error d -> Alcotest.failf "parse error: %s" (Diag.to_string d)
+  | Ok sdl -> (
+      match Compile.scene sdl with
+      | Error d -> Alcotest.failf "compile error: %s" (Diag.to_string d)
+      | Ok s -> s)
+
+(* Render a scene string in whitted mode, returning the linear image. *)
+let render_whitted ?(domains = 1) ~width ~height text =
+  let s = compile_string text in
+  Render.image ~domains ~width ~height (Whitted.pixel s ~width ~height)
+
+let pixel img x y = (Image.get_r img x y, Image.get_g img x y, Image.get_b img x y)
+
+let exe () =
+  match Sys.getenv_opt "CAMLRAY_EXE" with
+  | Some e -> e
+  | None -> Filename.concat (Sys.getcwd ()) "../install/default/bin/camlray"
+
+(* Run the executable; returns (exit code, stdout, stderr). *)
+let run args =
+  let out = Filename.temp_file "camlray" ".out" and err = Filename.temp_file "camlray" ".err" in
+  let cmd =
+    Printf.sprintf "%s %s >%s 2>%s </dev/null" (Filename.quote (exe ()))
+      (String.concat " " (List.map Filename.quote args)) out err
+  in
+  let code = Sys.command cmd in
+  let read f = In_channel.with_open_bin f In_channel.input_all in
+  let o = read out and e = read err in
+  Sys.remove out;
+  Sys.remove err;
+  (code, o, e)
+
+let temp_dir () =
+  let d = Filename.temp_file "camlray" ".d" in
+  Sys.remove d;
+  Sys.mkdir d 0o755;
+  d
+
+let write_file path text = Out_channel.with_open_bin path (fun oc -> output_string oc text)
+
+let contains s sub =
+  let n = String.length s and m = String.length sub in
+  let rec go i = i + m <= n && (String.sub s i m = sub || go (i + 1)) in
+  go 0
+
+let close ?(eps = 1e-9) a b = Float.abs (a -. b) <= eps
+
+(* The source scenes/ folder. *)
+let scenes_dir () =
+  match Sys.getenv_opt "CAMLRAY_SCENES" with Some d -> d | None -> "../scenes"

@@ -1,0 +1,50 @@
+(* POV-Ray's camera placement, checked through the scene language. The
+   expected values are POV-Ray's own (pov-facts.md section 1). *)
+open Camlray
+
+let cam text = (Helpers.compile_string ("#version 3.7;\n" ^ text)).camera
+
+let hit_x c sx sy z =
+  let r = Camera.ray c sx sy in
+  let t = (z -. r.origin.z) /. r.dir.z in
+  Ray.at r t
+
+let units =
+  [
+    Alcotest.test_case "default camera: right 1.33, plane z=1 mapping" `Quick (fun () ->
+        let c = cam "" in
+        (* 4x3 image, pixel 0: sx = (0.5)/4 - 0.5 *)
+        let sx, sy = Camera.pixel_coords ~width:4 ~height:3 0.5 0.5 in
+        let p = hit_x c sx sy 1. in
+        Alcotest.(check (float 1e-9)) "x" (1.33 *. sx) p.x;
+        Alcotest.(check (float 1e-9)) "y" (0.5 -. (0.5 /. 3.)) p.y);
+    Alcotest.test_case "angle 60: leftmost pixel centre hits x = -2.16506" `Quick (fun () ->
+        let c = cam "camera { location <0,0,-5> look_at 0 angle 60 }" in
+        let sx, sy = Camera.pixel_coords ~width:4 ~height:3 0.5 1.5 in
+        let p = hit_x c sx sy 0. in
+        Alcotest.(check (float 1e-4)) "x" (-2.16506) p.x);
+    Alcotest.test_case "direction and look_at order does not matter" `Quick (fun () ->
+        let a = cam "camera { direction 2*z look_at <1,1,3> }" in
+        let b = cam "camera { look_at <1,1,3> direction 2*z }" in
+        Alcotest.(check bool) "same" true (a = b));
+    Alcotest.test_case "sky <1,1,0> rolls the view 45 degrees" `Quick (fun () ->
+        let c = cam "camera { location <0,0,-5> look_at 0 sky <1,1,0> }" in
+        let u = Vec3.normalize c.up in
+        Alcotest.(check (float 1e-9)) "ux" (sqrt 0.5) u.x;
+        Alcotest.(check (float 1e-9)) "uy" (sqrt 0.5) u.y);
+    Alcotest.test_case "orthographic sizing from look_at distance: width 6.65" `Quick (fun () ->
+        let c = cam "camera { orthographic location <0,0,-5> look_at 0 }" in
+        Alcotest.(check (float 1e-9)) "width" 6.65 (Vec3.length c.right));
+    Alcotest.test_case "orthographic with angle 60: width 2*5*tan 30" `Quick (fun () ->
+        let c = cam "camera { orthographic location <0,0,-5> look_at 0 angle 60 }" in
+        Alcotest.(check (float 1e-9)) "width" (10. *. tan (Float.pi /. 6.)) (Vec3.length c.right));
+    Alcotest.test_case "orthographic with explicit right and up keeps them" `Quick (fun () ->
+        let c = cam "camera { orthographic location <0,0,-5> look_at 0 right 8*x up 6*y }" in
+        Alcotest.(check (float 1e-9)) "w" 8. (Vec3.length c.right);
+        Alcotest.(check (float 1e-9)) "h" 6. (Vec3.length c.up));
+    Alcotest.test_case "a mirrored right stays mirrored after look_at" `Quick (fun () ->
+        let c = cam "camera { right -1.33*x location <0,0,-5> look_at <0,0,0> }" in
+        Alcotest.(check bool) "negative x" true (c.right.x < 0.));
+  ]
+
+let tests = ("camera", units)

@@ -1,0 +1,86 @@
+(* Whole renders: pixel values against computed colours, and images that
+   do not depend on the domain count. *)
+open Camlray
+
+(* A plane z = 1 facing the default camera, lit by a light at the eye:
+   colour = P (ambient 0.1 + diffuse 0.6 cos), cos = 1 / |p|. *)
+let lit_plane =
+  "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n\
+   light_source { <0,0,0> color rgb 1 }\n\
+   plane { -z, -1 pigment { rgb <1, 0.5, 0.25> } }\n"
+
+let computed_8x8 () =
+  let w = 8 and h = 8 in
+  let img = Helpers.render_whitted ~width:w ~height:h lit_plane in
+  for j = 0 to h - 1 do
+    for i = 0 to w - 1 do
+      let sx = ((float i +. 0.5) /. float w) -. 0.5 and sy = 0.5 -. ((float j +. 0.5) /. float h) in
+      let p = Vec3.make (1.33 *. sx) sy 1. in
+      let k = 0.1 +. (0.6 /. Vec3.length p) in
+      let r, g, b = Helpers.pixel img i j in
+      let check what e a =
+        if Float.abs (e -. a) > 1e-9 then Alcotest.failf "pixel (%d,%d) %s: expected %g, got %g" i j what e a
+      in
+      check "r" k r;
+      check "g" (0.5 *. k) g;
+      check "b" (0.25 *. k) b
+    done
+  done
+
+let same_images a b =
+  let w = Image.width a and h = Image.height a in
+  for y = 0 to h - 1 do
+    for x = 0 to w - 1 do
+      if Helpers.pixel a x y <> Helpers.pixel b x y then Alcotest.failf "pixel (%d,%d) differs" x y
+    done
+  done
+
+let default_scene () =
+  In_channel.with_open_bin (Filename.concat (Helpers.scenes_dir ()) "default.scn") In_channel.input_all
+
+let units =
+  [
+    Alcotest.test_case "8x8 whitted image equals the computed colours" `Quick computed_8x8;
+    Alcotest.test_case "whitted: 1 and 2 domains give identical images" `Quick (fun () ->
+        let text = default_scene () in
+        let a = Helpers.render_whitted ~domains:1 ~width:48 ~height:36 text in
+        let b = Helpers.render_whitted ~domains:2 ~width:48 ~height:36 text in
+        same_images a b);
+    Alcotest.test_case "mc: 1 and 2 domains give identical images" `Quick (fun () ->
+        let s = Helpers.compile_string (default_scene ()) in
+        let r d =
+          Render.image ~domains:d ~width:24 ~height:18
+            (Path.pixel s ~width:24 ~height:18 ~seed:7 ~spp:4 ~max_depth:6)
+        in
+        same_images (r 1) (r 2));
+    Alcotest.test_case "mc: the seed changes the noise" `Quick (fun () ->
+        let s = Helpers.compile_string (default_scene ()) in
+        let r seed = Path.pixel s ~width:24 ~height:18 ~seed ~spp:2 ~max_depth:6 12 12 in
+        Alcotest.(check bool) "differs" true (r 1 <> r 2));
+    Alcotest.test_case "a mirror at trace level 1 is black (max_trace_level 1)" `Quick (fun () ->
+        let img =
+          Helpers.render_whitted ~width:1 ~height:1
+            "#version 3.7; global_settings { max_trace_level 1 } background { rgb 1 }\n\
+             plane { -z, -1 pigment { rgb 0 } finish { ambient 0 diffuse 0 reflection 1 } }"
+        in
+        let r, _, _ = Helpers.pixel img 0 0 in
+        Alcotest.(check (float 0.)) "black" 0. r);
+    Alcotest.test_case "two facing mirrors: levels 1,2,3,5 give 0.1, 0.15, 0.175, 0.19375" `Quick (fun () ->
+        (* pov-facts 5.7: reflection 0.5, ambient 0.1, white *)
+        List.iter
+          (fun (level, expected) ->
+            let img =
+              Helpers.render_whitted ~width:1 ~height:1
+                (Printf.sprintf
+                   "#version 3.7; global_settings { max_trace_level %d }\n\
+                    camera { location <0,0,0> direction z }\n\
+                    plane { -z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
+                    plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }"
+                   level)
+            in
+            let r, _, _ = Helpers.pixel img 0 0 in
+            Alcotest.(check (float 1e-9)) (Printf.sprintf "level %d" level) expected r)
+          [ (1, 0.1); (2, 0.15); (3, 0.175); (5, 0.19375) ]);
+  ]
+
+let tests = ("render", units)
