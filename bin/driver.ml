@@ -9,7 +9,7 @@ type render_opts = {
   width : int;
   height : int;
   mode : mode;
-  spp : int;
+  spp : int option;
   depth : int option;
   domains : int option;
   seed : int;
@@ -33,7 +33,7 @@ let validate o =
   if o.width * o.height > max_pixels then
     fail "image of %d x %d = %d pixels is larger than the limit of %d pixels" o.width o.height
       (o.width * o.height) max_pixels;
-  check_range "--spp" o.spp 1 1_000_000;
+  Option.iter (fun s -> check_range "--spp" s 1 1_000_000) o.spp;
   Option.iter (fun d -> check_range "--depth" d 1 256) o.depth;
   Option.iter (fun d -> check_range "--domains" d 1 256) o.domains
 
@@ -111,7 +111,7 @@ let render o =
         if not (Sys.file_exists dir && Sys.is_directory dir) then
           fail "cannot write %s: folder %s does not exist" out dir;
         let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
-        if o.mode = Whitted && o.spp <> 64 && not o.quiet then
+        if o.mode = Whitted && o.spp <> None && not o.quiet then
           prerr_endline "camlray: warning: --spp is ignored in whitted mode";
         let scene =
           match (o.mode, o.depth) with
@@ -119,11 +119,12 @@ let render o =
           | _ -> scene
         in
         let max_depth = match o.depth with Some d -> d | None -> 16 in
+        let spp = Option.value o.spp ~default:64 in
         let width = o.width and height = o.height in
         let pixel =
           match o.mode with
           | Whitted -> Whitted.pixel scene ~width ~height
-          | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp:o.spp ~max_depth
+          | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp ~max_depth
         in
         let tty = Unix.isatty Unix.stderr && not o.quiet in
         let t1 = Unix.gettimeofday () in
@@ -145,11 +146,11 @@ let render o =
          with Sys_error e | Failure e -> fail "cannot write %s: %s" out e);
         let t3 = Unix.gettimeofday () in
         if not o.quiet then begin
-          let samples = float_of_int (width * height * match o.mode with Whitted -> 1 | Monte_carlo -> o.spp) in
+          let samples = float_of_int (width * height * match o.mode with Whitted -> 1 | Monte_carlo -> spp) in
           Printf.eprintf
             "camlray: wrote %s (%dx%d, %s, %d domain%s) in %.2f s (parse %.2f s, render %.2f s, %.2f M samples/s, write %.2f s)\n%!"
             out width height
-            (match o.mode with Whitted -> "whitted" | Monte_carlo -> Printf.sprintf "mc %d spp" o.spp)
+            (match o.mode with Whitted -> "whitted" | Monte_carlo -> Printf.sprintf "mc %d spp" spp)
             domains (if domains = 1 then "" else "s") (t3 -. t0) (t1 -. t0) (t2 -. t1)
             (samples /. (t2 -. t1) /. 1e6) (t3 -. t2)
         end;

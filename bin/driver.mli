@@ -10,7 +10,7 @@ type render_opts = {
   width : int;
   height : int;
   mode : mode;
-  spp : int;
+  spp : int option;  (** [None]: 64 in mc mode *)
   depth : int option;
   domains : int option;
   seed : int;

@@ -33,8 +33,9 @@ let render_cmd =
                  Carlo path tracer on the same scene.")
   in
   let spp =
-    Arg.(value & opt int 64 & info [ "spp" ] ~docv:"N"
-           ~doc:"Samples per pixel in $(b,mc) mode (ignored, with a warning, in whitted mode).")
+    Arg.(value & opt (some int) None & info [ "spp" ] ~docv:"N"
+           ~doc:"Samples per pixel in $(b,mc) mode (default 64; ignored, with a warning, in \
+                 whitted mode).")
   in
   let depth =
     Arg.(value & opt (some int) None & info [ "depth" ] ~docv:"N"
