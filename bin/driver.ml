@@ -15,6 +15,11 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  region : string option;
+  pov_region : string option;
+  frames : (int * int) option;
+  clock : float option;
+  clock_range : (float * float) option;
 }
 
 exception Fail of string
@@ -91,70 +96,144 @@ let write_image path (scene : Scene.t) img =
   | ".ppm" -> Image.write_ppm path (Image.to_rgb8 scene.settings.encoding img)
   | _ -> Image.write_png path (Image.to_rgb8 scene.settings.encoding img)
 
+let frame_name out ~first ~last f =
+  ignore first;
+  let digits = String.length (string_of_int (abs last)) in
+  let ext = Filename.extension out in
+  Printf.sprintf "%s%0*d%s" (Filename.remove_extension out) digits f ext
+
+(* The identity of a render: the scene's files and every option that
+   changes pixels. Parts of one render share it. *)
+let render_id o files ~clock =
+  let texts =
+    List.map (fun f -> try In_channel.with_open_bin f In_channel.input_all with Sys_error _ -> f) files
+  in
+  let texts = match o.scene with None -> Default_scene.text :: texts | Some _ -> texts in
+  Digest.to_hex
+    (Digest.string
+       (String.concat "\000"
+          (texts
+          @ [ Printf.sprintf "%dx%d mode=%s spp=%s depth=%s seed=%d clock=%h" o.width o.height
+                (match o.mode with Whitted -> "whitted" | Monte_carlo -> "mc")
+                (match o.spp with Some s -> string_of_int s | None -> "-")
+                (match o.depth with Some d -> string_of_int d | None -> "-")
+                o.seed clock ])))
+
+let region_of o =
+  match (o.region, o.pov_region) with
+  | Some _, Some _ -> fail "give either --region or POV-Ray's +SR/+ER/+SC/+EC, not both"
+  | Some r, None -> (
+      match Part.parse_region r with Ok r -> Some r | Error e -> fail "%s" e)
+  | None, Some p -> (
+      match Part.of_pov ~width:o.width ~height:o.height p with Ok r -> Some r | Error e -> fail "%s" e)
+  | None, None -> None
+
+let render_frame o ~clock ~frame ~out ~t0 =
+  let options =
+    { Parse.default_options with include_dirs = o.include_dirs; image_width = o.width;
+      image_height = o.height; clock; frame_number = frame }
+  in
+  match compile ~options o.scene with
+  | Error d ->
+      prerr_string (Diag.to_string d);
+      1
+  | Ok (scene, files) ->
+      if List.exists (fun f -> same_file f out) files then
+        fail "the output %s is the scene or one of its include files: refusing to overwrite it" out;
+      let dir = Filename.dirname out in
+      if not (Sys.file_exists dir && Sys.is_directory dir) then
+        fail "cannot write %s: folder %s does not exist" out dir;
+      let region = region_of o in
+      Option.iter
+        (fun r ->
+          (match Part.check_region ~width:o.width ~height:o.height r with
+          | Ok () -> ()
+          | Error e -> fail "%s" e);
+          if String.lowercase_ascii (Filename.extension out) <> ".png" then
+            fail "a partial render (--region) is written as PNG, which records its placement: %s" out)
+        region;
+      let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
+      let scene =
+        match (o.mode, o.depth) with
+        | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
+        | _ -> scene
+      in
+      let max_depth = match o.depth with Some d -> d | None -> 16 in
+      let spp = Option.value o.spp ~default:64 in
+      let width = o.width and height = o.height in
+      let pixel =
+        match o.mode with
+        | Whitted -> Whitted.pixel scene ~width ~height
+        | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp ~max_depth
+      in
+      let tty = Unix.isatty Unix.stderr && not o.quiet in
+      let t1 = Unix.gettimeofday () in
+      let last = ref 0. in
+      let progress ~done_ ~total =
+        let now = Unix.gettimeofday () in
+        if tty && (now -. !last > 0.1 || done_ = total) then (
+          last := now;
+          progress_bar ~start:t1 ~done_ ~total)
+      in
+      let img =
+        with_signals (fun () ->
+            Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled) ?region
+              ~width ~height pixel)
+      in
+      if tty then prerr_newline ();
+      let t2 = Unix.gettimeofday () in
+      (try
+         match region with
+         | None -> write_image out scene img
+         | Some r ->
+             let id = render_id o files ~clock in
+             Image.write_png
+               ~text:(Part.text { Part.region = r; width; height; id })
+               out
+               (Image.to_rgb8 scene.settings.encoding img)
+       with Sys_error e | Failure e -> fail "cannot write %s: %s" out e);
+      let t3 = Unix.gettimeofday () in
+      if not o.quiet then begin
+        let pixels = Image.width img * Image.height img in
+        let samples = float_of_int (pixels * match o.mode with Whitted -> 1 | Monte_carlo -> spp) in
+        Printf.eprintf
+          "camlray: wrote %s (%dx%d%s, %s, %d domain%s) in %.2f s (parse %.2f s, render %.2f s, %.2f M samples/s, write %.2f s)\n%!"
+          out width height
+          (match region with
+          | Some r -> Printf.sprintf " region %d,%d,%d,%d" r.x0 r.y0 r.x1 r.y1
+          | None -> "")
+          (match o.mode with Whitted -> "whitted" | Monte_carlo -> Printf.sprintf "mc %d spp" spp)
+          domains (if domains = 1 then "" else "s") (t3 -. t0) (t1 -. t0) (t2 -. t1)
+          (samples /. (t2 -. t1) /. 1e6) (t3 -. t2)
+      end;
+      0
+
 let render o =
   try
     validate o;
-    let options =
-      { Parse.default_options with include_dirs = o.include_dirs; image_width = o.width;
-        image_height = o.height }
-    in
-    let t0 = Unix.gettimeofday () in
-    match compile ~options o.scene with
-    | Error d ->
-        prerr_string (Diag.to_string d);
-        1
-    | Ok (scene, files) ->
-        let out = output_path o in
-        if List.exists (fun f -> same_file f out) files then
-          fail "the output %s is the scene or one of its include files: refusing to overwrite it" out;
-        let dir = Filename.dirname out in
-        if not (Sys.file_exists dir && Sys.is_directory dir) then
-          fail "cannot write %s: folder %s does not exist" out dir;
-        let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
-        if o.mode = Whitted && o.spp <> None && not o.quiet then
-          prerr_endline "camlray: warning: --spp is ignored in whitted mode";
-        let scene =
-          match (o.mode, o.depth) with
-          | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
-          | _ -> scene
+    if o.mode = Whitted && o.spp <> None && not o.quiet then
+      prerr_endline "camlray: warning: --spp is ignored in whitted mode";
+    let out = output_path o in
+    match o.frames with
+    | None ->
+        let clock = Option.value o.clock ~default:0. in
+        render_frame o ~clock ~frame:0 ~out ~t0:(Unix.gettimeofday ())
+    | Some (first, last) ->
+        if last < first then fail "--frames %d..%d: the last frame comes before the first" first last;
+        let c0, c1 = Option.value o.clock_range ~default:(0., 1.) in
+        let rec go f =
+          if f > last then 0
+          else
+            let clock =
+              if last = first then c0
+              else c0 +. ((c1 -. c0) *. float_of_int (f - first) /. float_of_int (last - first))
+            in
+            let out = if last = first then out else frame_name out ~first ~last f in
+            match render_frame o ~clock ~frame:f ~out ~t0:(Unix.gettimeofday ()) with
+            | 0 -> go (f + 1)
+            | code -> code
         in
-        let max_depth = match o.depth with Some d -> d | None -> 16 in
-        let spp = Option.value o.spp ~default:64 in
-        let width = o.width and height = o.height in
-        let pixel =
-          match o.mode with
-          | Whitted -> Whitted.pixel scene ~width ~height
-          | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp ~max_depth
-        in
-        let tty = Unix.isatty Unix.stderr && not o.quiet in
-        let t1 = Unix.gettimeofday () in
-        let last = ref 0. in
-        let progress ~done_ ~total =
-          let now = Unix.gettimeofday () in
-          if tty && (now -. !last > 0.1 || done_ = total) then (
-            last := now;
-            progress_bar ~start:t1 ~done_ ~total)
-        in
-        let img =
-          with_signals (fun () ->
-              Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled) ~width
-                ~height pixel)
-        in
-        if tty then prerr_newline ();
-        let t2 = Unix.gettimeofday () in
-        (try write_image out scene img
-         with Sys_error e | Failure e -> fail "cannot write %s: %s" out e);
-        let t3 = Unix.gettimeofday () in
-        if not o.quiet then begin
-          let samples = float_of_int (width * height * match o.mode with Whitted -> 1 | Monte_carlo -> spp) in
-          Printf.eprintf
-            "camlray: wrote %s (%dx%d, %s, %d domain%s) in %.2f s (parse %.2f s, render %.2f s, %.2f M samples/s, write %.2f s)\n%!"
-            out width height
-            (match o.mode with Whitted -> "whitted" | Monte_carlo -> Printf.sprintf "mc %d spp" spp)
-            domains (if domains = 1 then "" else "s") (t3 -. t0) (t1 -. t0) (t2 -. t1)
-            (samples /. (t2 -. t1) /. 1e6) (t3 -. t2)
-        end;
-        0
+        go first
   with
   | Fail msg ->
       prerr_endline ("camlray: " ^ msg);
@@ -162,6 +241,13 @@ let render o =
   | Render.Cancelled ->
       prerr_endline "camlray: interrupted; nothing was written";
       130
+
+let merge parts out =
+  match Part.merge parts out with
+  | Ok () -> 0
+  | Error e ->
+      prerr_endline ("camlray: " ^ e);
+      1
 
 let check path include_dirs =
   let options = { Parse.default_options with include_dirs } in

@@ -16,7 +16,20 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  region : string option;  (** ["X0,Y0,X1,Y1"] *)
+  pov_region : string option;  (** POV-Ray's +SR,+ER,+SC,+EC *)
+  frames : (int * int) option;  (** an animation's first and last frame *)
+  clock : float option;  (** the clock of a single frame *)
+  clock_range : (float * float) option;  (** clock at the first and last frame *)
 }
 
 val render : render_opts -> int
 val check : string -> string list -> int
+
+val merge : string list -> string -> int
+(** [merge parts out]: assemble partial renders. *)
+
+val frame_name : string -> first:int -> last:int -> int -> string
+(** POV-Ray's animation file names: [frame_name "s.png" ~first:1 ~last:12 3]
+    is ["s03.png"] (the frame number padded to the digits of the last
+    frame). *)

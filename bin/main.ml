@@ -48,13 +48,52 @@ let render_cmd =
   in
   let seed = Arg.(value & opt int 0 & info [ "seed" ] ~docv:"N" ~doc:"Random seed (mc mode).") in
   let quiet = Arg.(value & flag & info [ "quiet"; "q" ] ~doc:"Print nothing but errors.") in
-  let run scene output width height mode spp depth domains seed quiet include_dirs =
+  let region =
+    Arg.(value & opt (some string) None & info [ "region" ] ~docv:"X0,Y0,X1,Y1"
+           ~doc:"Render only this rectangle (0-based pixel coordinates, $(b,X1) and $(b,Y1) \
+                 excluded) into a PNG that records its placement, the full size and the \
+                 render's identity; $(b,camlray merge) assembles such parts. POV-Ray's \
+                 $(b,+SR +ER +SC +EC) are translated into it.")
+  in
+  let pov_region =
+    Arg.(value & opt (some string) None & info [ "pov-region" ] ~docs:Manpage.s_none)
+  in
+  (* "A..B" *)
+  let range conv =
+    let parse s =
+      let bad () = Error (`Msg (Printf.sprintf "expected A..B, found %S" s)) in
+      match String.index_opt s '.' with
+      | Some i when i + 1 < String.length s && s.[i + 1] = '.' -> (
+          let a = String.sub s 0 i and b = String.sub s (i + 2) (String.length s - i - 2) in
+          match (conv a, conv b) with Some a, Some b -> Ok (a, b) | _ -> bad ())
+      | _ -> bad ()
+    in
+    Arg.conv (parse, fun ppf _ -> Format.pp_print_string ppf "A..B")
+  in
+  let frames =
+    Arg.(value & opt (some (range int_of_string_opt)) None & info [ "frames" ] ~docv:"A..B"
+           ~doc:"Render frames $(b,A) to $(b,B) of an animation (POV-Ray's $(b,+KFI +KFF)), \
+                 each to its own file named as POV-Ray names them: the frame number padded \
+                 to the digits of the last frame ($(b,s01.png) ... $(b,s12.png)).")
+  in
+  let clock =
+    Arg.(value & opt (some float) None & info [ "clock" ] ~docv:"T"
+           ~doc:"The value of $(b,clock) for a single frame (POV-Ray's $(b,+K)); default 0.")
+  in
+  let clock_range =
+    Arg.(value & opt (some (range float_of_string_opt)) None & info [ "clock-range" ]
+           ~docv:"C0..C1"
+           ~doc:"The clock at the first and last frame (POV-Ray's $(b,+KI +KF)); default 0..1.")
+  in
+  let run scene output width height mode spp depth domains seed quiet include_dirs region
+      pov_region frames clock clock_range =
     Driver.render
-      { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs }
+      { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
+        region; pov_region; frames; clock; clock_range }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
-          $ quiet $ include_path)
+          $ quiet $ include_path $ region $ pov_region $ frames $ clock $ clock_range)
   in
   let man =
     [ `S Manpage.s_description;
@@ -63,6 +102,12 @@ let render_cmd =
       `S Manpage.s_examples;
       `Pre "  camlray render scenes/default.scn -W 320 -H 240 -o small.png\n\
            \  camlray render scene.scn --mode mc --spp 256 -o scene-mc.png";
+      `S "POV-RAY SWITCHES";
+      `P "POV-Ray's switches and INI files work as they do in POV-Ray, translated into the \
+          options above: $(b,camlray render scene.pov +W800 +H600 +A0.3 +Oout.png), \
+          $(b,camlray render scene.ini) or $(b,camlray render scene.pov settings.ini). \
+          Unknown INI keys are warned about by name.";
+      `Blocks (List.map (fun (sw, what) -> `I (sw, what)) Povargs.switches);
       `S Manpage.s_exit_status;
       `P "0 on success; 1 for an error in the scene, a file or a value; 2 for misuse of the \
           command line; 130 when interrupted." ]
@@ -75,6 +120,17 @@ let check_cmd =
     (Cmd.info "check" ~doc:"Parse and compile a scene, report errors, render nothing.")
     Term.(const Driver.check $ scene $ include_path)
 
+let merge_cmd =
+  let parts = Arg.(non_empty & pos_all file [] & info [] ~docv:"PART" ~doc:"Partial renders (PNG).") in
+  let out =
+    Arg.(required & opt (some string) None & info [ "o"; "output" ] ~docv:"OUT" ~doc:"The full image.")
+  in
+  Cmd.v
+    (Cmd.info "merge"
+       ~doc:"Assemble partial renders ($(b,render --region)) into the full image; refuses parts \
+             of different renders, gaps and overlaps.")
+    Term.(const Driver.merge $ parts $ out)
+
 let main =
   let man =
     [ `S Manpage.s_description;
@@ -84,12 +140,25 @@ let main =
       `Pre "  camlray render scenes/default.scn -o out.png\n  camlray check scene.scn" ]
   in
   Cmd.group (Cmd.info "camlray" ~version:"0.1.0" ~doc:"multicore ray tracer for POV-Ray scenes" ~man)
-    [ render_cmd; check_cmd ]
+    [ render_cmd; check_cmd; merge_cmd ]
 
 let () =
   let err_buf = Buffer.create 256 in
   let err = Format.formatter_of_buffer err_buf in
-  match Cmd.eval_value ~err main with
+  let argv =
+    match Array.to_list Sys.argv with
+    | prog :: "render" :: rest -> (
+        match Povargs.rewrite ~warn:(fun w -> prerr_endline ("camlray: warning: " ^ w)) rest with
+        | Ok args -> Array.of_list (prog :: "render" :: args)
+        | Error (Povargs.Misuse m) ->
+            prerr_endline ("camlray: " ^ m ^ " (see 'camlray render --help')");
+            exit exit_misuse
+        | Error (Povargs.Bad_file m) ->
+            prerr_endline ("camlray: " ^ m);
+            exit 1)
+    | l -> Array.of_list l
+  in
+  match Cmd.eval_value ~argv ~err main with
   | Ok (`Ok code) -> exit code
   | Ok (`Version | `Help) -> exit 0
   | Error _ ->

@@ -45,13 +45,16 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
              T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(total - 1) ~body)));
   if Atomic.get stop then raise Cancelled
 
-let image ~domains ?progress ?cancelled ~width ~height f =
-  let img = Image.create width height in
+let image ~domains ?progress ?cancelled ?region ~width ~height f =
+  let r = match region with Some r -> r | None -> { x0 = 0; y0 = 0; x1 = width; y1 = height } in
+  if r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.x0 >= r.x1 || r.y0 >= r.y1 then
+    invalid_arg "Render.image: region outside the image";
+  let img = Image.create (r.x1 - r.x0) (r.y1 - r.y0) in
   run_tiles ~domains ?progress ?cancelled ~width ~height ~size:16 (fun t ->
-      for y = t.y0 to t.y1 - 1 do
-        for x = t.x0 to t.x1 - 1 do
+      for y = max t.y0 r.y0 to min t.y1 r.y1 - 1 do
+        for x = max t.x0 r.x0 to min t.x1 r.x1 - 1 do
           let c : Color.t = f x y in
-          Image.set img x y c.r c.g c.b
+          Image.set img (x - r.x0) (y - r.y0) c.r c.g c.b
         done
       done);
   img

@@ -23,6 +23,10 @@ exception Cancelled
 
 val image :
   domains:int -> ?progress:(done_:int -> total:int -> unit) ->
-  ?cancelled:(unit -> bool) -> width:int -> height:int ->
+  ?cancelled:(unit -> bool) -> ?region:tile -> width:int -> height:int ->
   (int -> int -> Color.t) -> Image.t
-(** Evaluate a pixel function [f x y] over the whole image in 16x16 tiles. *)
+(** Evaluate a pixel function [f x y] over the whole image in 16x16 tiles
+    ([x], [y] in full-image coordinates). With [region], only that
+    rectangle is rendered, into an image of the region's size; the tiles
+    stay aligned to the full image, so every pixel is computed exactly as
+    in a full render. *)

@@ -9,5 +9,6 @@ let () =
       Test_render.tests;
       Test_cli.tests;
       Test_pov_scenes.tests;
+      Test_workflow.tests;
       Test_image.tests;
     ]
