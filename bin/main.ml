@@ -131,6 +131,16 @@ let merge_cmd =
              of different renders, gaps and overlaps.")
     Term.(const Driver.merge $ parts $ out)
 
+let scenes_cmd =
+  let run () =
+    let w = List.fold_left (fun m (p, _) -> max m (String.length p)) 0 Scene_list.all in
+    List.iter (fun (p, d) -> Printf.printf "%-*s  %s\n" w p d) Scene_list.all;
+    0
+  in
+  Cmd.v
+    (Cmd.info "scenes" ~doc:"List the scenes that come with camlray, a line each.")
+    Term.(const run $ const ())
+
 let main =
   let man =
     [ `S Manpage.s_description;
@@ -140,7 +150,7 @@ let main =
       `Pre "  camlray render scenes/default.scn -o out.png\n  camlray check scene.scn" ]
   in
   Cmd.group (Cmd.info "camlray" ~version:"0.1.0" ~doc:"multicore ray tracer for POV-Ray scenes" ~man)
-    [ render_cmd; check_cmd; merge_cmd ]
+    [ render_cmd; check_cmd; merge_cmd; scenes_cmd ]
 
 let () =
   let err_buf = Buffer.create 256 in

@@ -93,4 +93,25 @@ let units =
           Alcotest.(check bool) "identical" true (read_bytes (f "merged.png") = read_bytes (f "full.png")));
   ]
 
-let tests = ("workflow", units)
+let listing =
+  [
+    Alcotest.test_case "camlray scenes lists every bundled scene with a line" `Quick (fun () ->
+        let code, out, _ = run [ "scenes" ] in
+        Alcotest.(check int) "exit" 0 code;
+        let lines = List.filter (( <> ) "") (String.split_on_char '\n' out) in
+        let rec count dir =
+          Array.fold_left
+            (fun n f ->
+              let p = Filename.concat dir f in
+              if Sys.is_directory p then n + count p else if Filename.check_suffix f ".scn" then n + 1 else n)
+            0 (Sys.readdir dir)
+        in
+        Alcotest.(check int) "one line per scene" (count (Helpers.scenes_dir ())) (List.length lines);
+        Alcotest.(check bool) "default" true (contains out "scenes/default.scn"));
+    Alcotest.test_case "camlray --version" `Quick (fun () ->
+        let code, out, _ = run [ "--version" ] in
+        Alcotest.(check int) "exit" 0 code;
+        Alcotest.(check bool) out true (String.length (String.trim out) > 0));
+  ]
+
+let tests = ("workflow", units @ listing)
