@@ -20,6 +20,7 @@ type render_opts = {
   frames : (int * int) option;
   clock : float option;
   clock_range : (float * float) option;
+  tile_order_seed : int option;
 }
 
 exception Fail of string
@@ -177,7 +178,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
       in
       let img =
         with_signals (fun () ->
-            Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled) ?region
+            Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled)
+              ?order_seed:o.tile_order_seed ?region
               ~width ~height pixel)
       in
       if tty then prerr_newline ();

@@ -85,15 +85,19 @@ let render_cmd =
            ~docv:"C0..C1"
            ~doc:"The clock at the first and last frame (POV-Ray's $(b,+KI +KF)); default 0..1.")
   in
+  let tile_order_seed =
+    Arg.(value & opt (some int) None & info [ "tile-order-seed" ] ~docs:Manpage.s_none)
+  in
   let run scene output width height mode spp depth domains seed quiet include_dirs region
-      pov_region frames clock clock_range =
+      pov_region frames clock clock_range tile_order_seed =
     Driver.render
       { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
-        region; pov_region; frames; clock; clock_range }
+        region; pov_region; frames; clock; clock_range; tile_order_seed }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
-          $ quiet $ include_path $ region $ pov_region $ frames $ clock $ clock_range)
+          $ quiet $ include_path $ region $ pov_region $ frames $ clock $ clock_range
+          $ tile_order_seed)
   in
   let man =
     [ `S Manpage.s_description;

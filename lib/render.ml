@@ -15,9 +15,19 @@ let tiles ~width ~height ~size =
         y1 = min height ((ty + 1) * size);
       })
 
+let shuffle seed a =
+  let st = Random.State.make [| seed |] in
+  for i = Array.length a - 1 downto 1 do
+    let j = Random.State.int st (i + 1) in
+    let x = a.(i) in
+    a.(i) <- a.(j);
+    a.(j) <- x
+  done
+
 let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
-    ?(cancelled = fun () -> false) ~width ~height ~size f =
+    ?(cancelled = fun () -> false) ?order_seed ~width ~height ~size f =
   let ts = tiles ~width ~height ~size in
+  Option.iter (fun seed -> shuffle seed ts) order_seed;
   let total = Array.length ts in
   let finished = Atomic.make 0 in
   let report = Mutex.create () in
@@ -45,14 +55,17 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
              T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(total - 1) ~body)));
   if Atomic.get stop then raise Cancelled
 
-let image ~domains ?progress ?cancelled ?region ~width ~height f =
+let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
   let r = match region with Some r -> r | None -> { x0 = 0; y0 = 0; x1 = width; y1 = height } in
   if r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.x0 >= r.x1 || r.y0 >= r.y1 then
     invalid_arg "Render.image: region outside the image";
   let img = Image.create (r.x1 - r.x0) (r.y1 - r.y0) in
-  run_tiles ~domains ?progress ?cancelled ~width ~height ~size:16 (fun t ->
+  let cancelled = Option.value cancelled ~default:(fun () -> false) in
+  run_tiles ~domains ?progress ~cancelled ?order_seed ~width ~height ~size:16 (fun t ->
       for y = max t.y0 r.y0 to min t.y1 r.y1 - 1 do
         for x = max t.x0 r.x0 to min t.x1 r.x1 - 1 do
+          (* a pixel can take long (mc, many samples): stop between pixels *)
+          if cancelled () then raise Cancelled;
           let c : Color.t = f x y in
           Image.set img (x - r.x0) (y - r.y0) c.r c.g c.b
         done

@@ -12,21 +12,23 @@ val tiles : width:int -> height:int -> size:int -> tile array
 
 val run_tiles :
   domains:int -> ?progress:(done_:int -> total:int -> unit) ->
-  ?cancelled:(unit -> bool) -> width:int -> height:int -> size:int ->
+  ?cancelled:(unit -> bool) -> ?order_seed:int -> width:int -> height:int -> size:int ->
   (tile -> unit) -> unit
 (** Run [f] on every tile. [progress] is called after tiles complete (from
     one domain at a time, possibly not for every tile). When [cancelled ()]
     becomes true, remaining tiles are skipped and [Cancelled] is raised.
-    The pool is torn down whatever happens. *)
+    The pool is torn down whatever happens. [order_seed] shuffles the order
+    in which tiles are handed out (a test hook: images must not depend on
+    it). *)
 
 exception Cancelled
 
 val image :
   domains:int -> ?progress:(done_:int -> total:int -> unit) ->
-  ?cancelled:(unit -> bool) -> ?region:tile -> width:int -> height:int ->
+  ?cancelled:(unit -> bool) -> ?order_seed:int -> ?region:tile -> width:int -> height:int ->
   (int -> int -> Color.t) -> Image.t
 (** Evaluate a pixel function [f x y] over the whole image in 16x16 tiles
     ([x], [y] in full-image coordinates). With [region], only that
     rectangle is rendered, into an image of the region's size; the tiles
     stay aligned to the full image, so every pixel is computed exactly as
-    in a full render. *)
+    in a full render. [cancelled] is also checked between pixels. *)

@@ -10,5 +10,6 @@ let () =
       Test_cli.tests;
       Test_pov_scenes.tests;
       Test_workflow.tests;
+      Test_robust.tests;
       Test_image.tests;
     ]
