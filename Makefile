@@ -4,7 +4,7 @@ SHELL := /bin/bash
 CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
-.PHONY: all setup build render test bench fuzz clean
+.PHONY: all setup build render test bench fuzz stress clean
 
 all: build
 
@@ -23,6 +23,9 @@ test: build
 
 bench: build
 	dune exec --release bench/main.exe
+
+stress: build
+	@bash scripts/stress.sh 50
 
 clean:
 	dune clean

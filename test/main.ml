@@ -11,5 +11,6 @@ let () =
       Test_pov_scenes.tests;
       Test_workflow.tests;
       Test_robust.tests;
+      Test_numerics.tests;
       Test_image.tests;
     ]

@@ -1,0 +1,74 @@
+(* No NaN or infinite value ever reaches an image: random valid scenes
+   (random shapes, transforms including near-degenerate scales, lights,
+   materials), rendered in both modes. *)
+open Camlray
+
+let gen_scene =
+  let open QCheck.Gen in
+  let f lo hi = map (Printf.sprintf "%.6g") (float_range lo hi) in
+  let vec lo hi = map3 (Printf.sprintf "<%s,%s,%s>") (f lo hi) (f lo hi) (f lo hi) in
+  let scale =
+    oneof
+      [ f 0.1 3.; return "1e-7"; return "<1e-9, 1, 1>"; return "<-1, 1, 1>"; vec (-3.) 3. ]
+  in
+  let transform =
+    oneof
+      [ map (Printf.sprintf "scale %s") scale; map (Printf.sprintf "rotate %s") (vec (-180.) 180.);
+        map (Printf.sprintf "translate %s") (vec (-3.) 3.) ]
+  in
+  let finish =
+    map3
+      (fun (a, d) (r, p) (s, rough) ->
+        Printf.sprintf "finish { ambient %s diffuse %s reflection %s phong %s specular %s roughness %s }"
+          a d r p s rough)
+      (pair (f 0. 1.) (f 0. 1.)) (pair (f 0. 1.) (f 0. 1.)) (pair (f 0. 1.) (f 0.0001 1.))
+  in
+  let pigment = map2 (Printf.sprintf "pigment { rgbft <%s, %s, 0.5, 0.3, 0.3> }") (f 0. 1.) (f 0. 1.) in
+  let interior = map (Printf.sprintf "interior { ior %s }") (f 0.5 2.5) in
+  let obj =
+    map3
+      (fun shape mods (fin, pig, int) -> Printf.sprintf "%s %s %s %s %s }" shape pig fin int mods)
+      (oneof
+         [ map2 (Printf.sprintf "sphere { %s, %s") (vec (-3.) 3.) (f 1e-4 2.);
+           map2 (Printf.sprintf "plane { %s, %s") (vec (-1.) 1.) (f (-2.) 2.) ])
+      (map (String.concat " ") (list_size (int_range 0 3) transform))
+      (triple finish pigment interior)
+  in
+  let light =
+    map2 (Printf.sprintf "light_source { %s color rgb %s }") (vec (-5.) 5.) (f 0. 3.)
+  in
+  map2
+    (fun objs lights ->
+      String.concat "\n"
+        ([ "#version 3.7;"; "camera { location <0,0,-6> look_at 0 }"; "background { rgb <0.2,0.3,0.4> }" ]
+        @ objs @ lights))
+    (list_size (int_range 1 6) obj) (list_size (int_range 0 3) light)
+
+let finite_image img =
+  let ok = ref true in
+  for y = 0 to Image.height img - 1 do
+    for x = 0 to Image.width img - 1 do
+      List.iter
+        (fun v -> if not (Float.is_finite v && v >= 0.) then ok := false)
+        [ Image.get_r img x y; Image.get_g img x y; Image.get_b img x y ]
+    done
+  done;
+  !ok
+
+let prop =
+  QCheck.Test.make ~name:"random scenes render finite, non-negative pixels in both modes" ~count:200
+    (QCheck.make ~print:(fun s -> s) gen_scene)
+    (fun text ->
+      match Camlray_lang.Parse.string text with
+      | Error d -> QCheck.Test.fail_reportf "generated scene rejected: %s" (Camlray_lang.Diag.to_string d)
+      | Ok sdl -> (
+          match Camlray_lang.Compile.scene sdl with
+          | Error d -> QCheck.Test.fail_reportf "generated scene rejected: %s" (Camlray_lang.Diag.to_string d)
+          | Ok s ->
+              let w = 12 and h = 9 in
+              finite_image (Render.image ~domains:1 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h))
+              && finite_image
+                   (Render.image ~domains:1 ~width:w ~height:h
+                      (Path.pixel s ~width:w ~height:h ~seed:1 ~spp:2 ~max_depth:6))))
+
+let tests = ("numerics", [ QCheck_alcotest.to_alcotest prop ])
