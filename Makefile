@@ -22,7 +22,8 @@ test: build
 	@bash scripts/run-tests.sh
 
 bench: build
-	dune exec --release bench/main.exe
+	dune build bench/whole/whole.exe
+	./_build/default/bench/whole/whole.exe
 
 stress: build
 	@bash scripts/stress.sh 50

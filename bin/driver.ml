@@ -199,7 +199,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
         let pixels = Image.width img * Image.height img in
         let samples = float_of_int (pixels * match o.mode with Whitted -> 1 | Monte_carlo -> spp) in
         Printf.eprintf
-          "camlray: wrote %s (%dx%d%s, %s, %d domain%s) in %.2f s (parse %.2f s, render %.2f s, %.2f M samples/s, write %.2f s)\n%!"
+          "camlray: wrote %s (%dx%d%s, %s, %d domain%s) in %.3f s (parse %.3f s, render %.3f s, %.2f M samples/s, write %.3f s)\n%!"
           out width height
           (match region with
           | Some r -> Printf.sprintf " region %d,%d,%d,%d" r.x0 r.y0 r.x1 r.y1

@@ -5,7 +5,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
-dune build @install test/main.exe 2>&1 | grep -v "^Read " | head -200
+dune build @install test/main.exe bench/whole/whole.exe 2>&1 | grep -v "^Read " | head -200
 if [ "${PIPESTATUS[0]}" -ne 0 ]; then
   echo "build failed"
   echo "0 passed, 1 failed"

@@ -12,5 +12,6 @@ let () =
       Test_workflow.tests;
       Test_robust.tests;
       Test_numerics.tests;
+      Test_bench.tests;
       Test_image.tests;
     ]

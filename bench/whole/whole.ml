@@ -1,0 +1,234 @@
+(* Whole-render benchmarks, measured side by side in one run:
+
+   1. domain scaling: each scene rendered with 1, 2, 4 (and more) domains,
+      several runs, median; speed-up and parallel efficiency on the trace
+      time that camlray reports, and on the whole wall time;
+   2. camlray against POV-Ray 3.7 on the same whitted scenes, same size,
+      anti-aliasing and thread count (+WT), POV-Ray's own trace time and
+      the whole wall time;
+   3. the Ray Tracing in One Weekend final scene in mc mode at 400x225,
+      32 spp, depth 50, one domain, as samples per second.
+
+   Writes bench/results/*.md and docs/scaling.svg. Usage:
+     whole.exe [--quick] [--runs N] [--exe PATH] [--out DIR] *)
+
+let runs = ref 3
+let quick = ref false
+let exe = ref "_build/install/default/bin/camlray"
+let out_dir = ref "bench/results"
+let svg_path = ref "docs/scaling.svg"
+
+let median l =
+  let a = Array.of_list l in
+  Array.sort compare a;
+  let n = Array.length a in
+  if n = 0 then nan else if n mod 2 = 1 then a.(n / 2) else (a.((n / 2) - 1) +. a.(n / 2)) /. 2.
+
+let read_file f = In_channel.with_open_bin f In_channel.input_all
+
+(* Run a command, return (wall seconds, stderr text). *)
+let timed cmd =
+  let err = Filename.temp_file "bench" ".err" in
+  let t0 = Unix.gettimeofday () in
+  let code = Sys.command (cmd ^ " 2>" ^ Filename.quote err ^ " >/dev/null") in
+  let dt = Unix.gettimeofday () -. t0 in
+  let text = read_file err in
+  Sys.remove err;
+  if code <> 0 then failwith (Printf.sprintf "command failed (%d): %s\n%s" code cmd text);
+  (dt, text)
+
+(* "render 1.23 s" in camlray's summary line *)
+let find_float_after key text =
+  let n = String.length key in
+  let rec go i =
+    if i + n > String.length text then None
+    else if String.sub text i n = key then
+      let j = ref (i + n) in
+      while !j < String.length text && (text.[!j] = ' ' || text.[!j] = ':') do incr j done;
+      let k = ref !j in
+      while !k < String.length text && (match text.[!k] with '0' .. '9' | '.' -> true | _ -> false) do incr k done;
+      float_of_string_opt (String.sub text !j (!k - !j))
+    else go (i + 1)
+  in
+  go 0
+
+type scene = { name : string; file : string; args : string list }
+
+let camlray s ~domains ~w ~h extra =
+  let out = Filename.temp_file "bench" ".png" in
+  let cmd =
+    String.concat " "
+      (List.map Filename.quote
+         ([ !exe; "render"; s.file; "-W"; string_of_int w; "-H"; string_of_int h; "--domains";
+            string_of_int domains; "-o"; out ] @ s.args @ extra))
+  in
+  let wall, text = timed cmd in
+  Sys.remove out;
+  match find_float_after "render" text with
+  | Some trace -> (wall, trace)
+  | None -> failwith ("no render time in: " ^ text)
+
+let povray_available () = Sys.command "command -v povray >/dev/null 2>&1" = 0
+
+let povray s ~threads ~w ~h ~aa =
+  let out = Filename.temp_file "bench" ".png" in
+  let cmd =
+    Printf.sprintf "povray +I%s +O%s +W%d +H%d -D +FN +WT%d %s" (Filename.quote s.file)
+      (Filename.quote out) w h threads
+      (if aa then "+A0.3 +R3 -J" else "-A")
+  in
+  let wall, text = timed cmd in
+  Sys.remove out;
+  (* POV-Ray prints "Trace Time:       0 hours  0 minutes  0 seconds (0.369 seconds)" *)
+  let trace =
+    match String.split_on_char '\n' text |> List.find_opt (fun l -> String.length l > 10 && String.sub (String.trim l) 0 (min 10 (String.length (String.trim l))) = "Trace Time") with
+    | Some l -> (
+        match String.index_opt l '(' with
+        | Some i -> find_float_after "(" (String.sub l i (String.length l - i))
+        | None -> None)
+    | None -> None
+  in
+  (wall, Option.value trace ~default:nan)
+
+let rep n f = List.init n (fun _ -> f ())
+
+let scaling_table scenes domain_counts =
+  let buf = Buffer.create 1024 in
+  Buffer.add_string buf
+    "| scene | domains | trace s (median) | speed-up | efficiency | wall s | wall speed-up |\n|---|---|---|---|---|---|---|\n";
+  let curves =
+    List.map
+      (fun (s, w, h) ->
+        let results =
+          List.map
+            (fun d ->
+              let samples = rep !runs (fun () -> camlray s ~domains:d ~w ~h []) in
+              (d, median (List.map snd samples), median (List.map fst samples)))
+            domain_counts
+        in
+        let _, t1, w1 = List.hd results in
+        List.iter
+          (fun (d, t, wall) ->
+            Buffer.add_string buf
+              (Printf.sprintf "| %s | %d | %.3f | %.2fx | %.0f%% | %.3f | %.2fx |\n" s.name d t (t1 /. t)
+                 (100. *. t1 /. t /. float d) wall (w1 /. wall)))
+          results;
+        (s.name, List.map (fun (d, t, _) -> (d, t1 /. t)) results))
+      scenes
+  in
+  (Buffer.contents buf, curves)
+
+let svg curves max_d =
+  let w = 480. and h = 320. and m = 50. in
+  let sx d = m +. ((float d -. 1.) /. (float max_d -. 1.) *. (w -. (2. *. m))) in
+  let sy v = h -. m -. ((v -. 0.) /. float max_d *. (h -. (2. *. m))) in
+  let colors = [| "#d62728"; "#1f77b4"; "#2ca02c"; "#9467bd" |] in
+  let b = Buffer.create 2048 in
+  Buffer.add_string b
+    (Printf.sprintf "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%%\" height=\"100%%\" fill=\"white\"/>\n" w h);
+  Buffer.add_string b
+    (Printf.sprintf "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#999\" stroke-dasharray=\"4 3\"/>\n<text x=\"%.1f\" y=\"%.1f\" fill=\"#999\">ideal</text>\n"
+       (sx 1) (sy 1.) (sx max_d) (sy (float max_d)) (sx max_d -. 30.) (sy (float max_d) -. 6.));
+  Buffer.add_string b
+    (Printf.sprintf "<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n<line x1=\"%.0f\" y1=\"%.0f\" x2=\"%.0f\" y2=\"%.0f\" stroke=\"black\"/>\n"
+       m (h -. m) (w -. m) (h -. m) m (h -. m) m m);
+  for d = 1 to max_d do
+    Buffer.add_string b (Printf.sprintf "<text x=\"%.1f\" y=\"%.0f\" text-anchor=\"middle\">%d</text>\n" (sx d) (h -. m +. 16.) d)
+  done;
+  for v = 0 to max_d do
+    Buffer.add_string b (Printf.sprintf "<text x=\"%.0f\" y=\"%.1f\" text-anchor=\"end\">%d</text>\n" (m -. 6.) (sy (float v) +. 4.) v)
+  done;
+  Buffer.add_string b (Printf.sprintf "<text x=\"%.0f\" y=\"%.0f\" text-anchor=\"middle\">domains</text>\n" (w /. 2.) (h -. 12.));
+  Buffer.add_string b (Printf.sprintf "<text x=\"14\" y=\"%.0f\" transform=\"rotate(-90 14 %.0f)\" text-anchor=\"middle\">speed-up (trace time)</text>\n" (h /. 2.) (h /. 2.));
+  List.iteri
+    (fun i (name, pts) ->
+      let c = colors.(i mod Array.length colors) in
+      let path = String.concat " " (List.map (fun (d, v) -> Printf.sprintf "%.1f,%.1f" (sx d) (sy v)) pts) in
+      Buffer.add_string b (Printf.sprintf "<polyline fill=\"none\" stroke=\"%s\" stroke-width=\"2\" points=\"%s\"/>\n" c path);
+      List.iter (fun (d, v) -> Buffer.add_string b (Printf.sprintf "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3\" fill=\"%s\"/>\n" (sx d) (sy v) c)) pts;
+      Buffer.add_string b (Printf.sprintf "<text x=\"%.0f\" y=\"%.0f\" fill=\"%s\">%s</text>\n" (m +. 10.) (m +. 14. +. (16. *. float i)) c name))
+    curves;
+  Buffer.add_string b "</svg>\n";
+  Buffer.contents b
+
+let pov_table scenes =
+  let b = Buffer.create 1024 in
+  Buffer.add_string b
+    "| scene | size | AA | threads | camlray trace s | POV-Ray trace s | trace ratio | camlray wall s | POV-Ray wall s | wall ratio |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  List.iter
+    (fun (s, w, h, aa) ->
+      List.iter
+        (fun threads ->
+          let c = rep !runs (fun () -> camlray s ~domains:threads ~w ~h (if aa then [ "--aa"; "0.3" ] else [])) in
+          let p = rep !runs (fun () -> povray s ~threads ~w ~h ~aa) in
+          let ct = median (List.map snd c) and cw = median (List.map fst c) in
+          let pt = median (List.map snd p) and pw = median (List.map fst p) in
+          Buffer.add_string b
+            (Printf.sprintf "| %s | %dx%d | %s | %d | %.3f | %.3f | %.2f | %.3f | %.3f | %.2f |\n" s.name w h
+               (if aa then "+A0.3" else "off") threads ct pt (ct /. pt) cw pw (cw /. pw)))
+        [ 1; 2 ])
+    scenes;
+  Buffer.contents b
+
+let write path text =
+  (try Sys.mkdir (Filename.dirname path) 0o755 with Sys_error _ -> ());
+  Out_channel.with_open_bin path (fun oc -> output_string oc text);
+  Printf.printf "wrote %s\n" path
+
+let () =
+  Arg.parse
+    [ ("--quick", Arg.Set quick, " tiny sizes, one run (a smoke test)");
+      ("--runs", Arg.Set_int runs, "N runs per measurement (median)");
+      ("--exe", Arg.Set_string exe, "PATH the camlray executable");
+      ("--out", Arg.Set_string out_dir, "DIR where the tables go");
+      ("--svg", Arg.Set_string svg_path, "PATH the scaling plot") ]
+    (fun _ -> ()) "whole.exe [options]";
+  if !quick then runs := 1;
+  let sz w h = if !quick then (max 8 (w / 20), max 6 (h / 20)) else (w, h) in
+  let s name file args = { name; file; args } in
+  let rtiow = s "RTIOW final (mc, 16 spp)" "scenes/seeds/howard-final.scn" [ "--mode"; "mc"; "--spp"; "16" ] in
+  let snowman = s "snowman (whitted)" "scenes/seeds/diagrams-snowman.scn" [] in
+  let default = s "default (whitted)" "scenes/default.scn" [] in
+  let available sc = Sys.file_exists sc.file in
+  let ncores = Domain.recommended_domain_count () in
+  let domain_counts = List.sort_uniq compare [ 1; 2; ncores; 2 * ncores ] in
+  let scaling_scenes =
+    List.filter (fun (sc, _, _) -> available sc)
+      [ (let w, h = sz 400 225 in (rtiow, w, h)); (let w, h = sz 800 600 in (snowman, w, h));
+        (let w, h = sz 800 600 in (default, w, h)) ]
+  in
+  let working =
+    List.filter
+      (fun (sc, _, _) ->
+        try ignore (camlray sc ~domains:1 ~w:8 ~h:6 []); true
+        with Failure e -> Printf.eprintf "skipping %s: %s\n" sc.name e; false)
+      scaling_scenes
+  in
+  let table, curves = scaling_table working domain_counts in
+  print_string table;
+  write (Filename.concat !out_dir "scaling.md") table;
+  if not !quick then write !svg_path (svg curves (List.fold_left max 1 domain_counts));
+  if povray_available () then begin
+    let pov_scenes =
+      List.filter (fun (sc, _, _, _) -> List.exists (fun (x, _, _) -> x == sc) working)
+        [ (let w, h = sz 800 600 in (snowman, w, h, false)); (let w, h = sz 800 600 in (default, w, h, false)) ]
+    in
+    let t = pov_table pov_scenes in
+    print_string t;
+    write (Filename.concat !out_dir "povray.md") t
+  end;
+  if List.exists (fun (sc, _, _) -> sc == rtiow) working then begin
+    let w, h = sz 400 225 in
+    let spp = if !quick then 2 else 32 in
+    let one = { rtiow with args = [ "--mode"; "mc"; "--spp"; string_of_int spp; "--depth"; "50" ] } in
+    let r = rep !runs (fun () -> camlray one ~domains:1 ~w ~h []) in
+    let t = median (List.map snd r) in
+    let sps = float (w * h * spp) /. t in
+    let text =
+      Printf.sprintf
+        "| render | camlray samples/s (1 domain) | C++ reference (perf-anchors.md) | ratio |\n|---|---|---|---|\n| RTIOW final %dx%d, %d spp, depth 50 | %.0f | 204000 | %.2fx |\n"
+        w h spp sps (sps /. 204000.)
+    in
+    print_string text;
+    write (Filename.concat !out_dir "rtiow.md") text
+  end
