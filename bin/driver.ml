@@ -20,6 +20,7 @@ type render_opts = {
   frames : (int * int) option;
   clock : float option;
   clock_range : (float * float) option;
+  subset : (int * int) option;
   tile_order_seed : int option;
 }
 
@@ -223,8 +224,10 @@ let render o =
     | Some (first, last) ->
         if last < first then fail "--frames %d..%d: the last frame comes before the first" first last;
         let c0, c1 = Option.value o.clock_range ~default:(0., 1.) in
+        let lo, hi = match o.subset with Some (a, b) -> (max first a, min last b) | None -> (first, last) in
+        if hi < lo then fail "--subset leaves no frame of %d..%d to render" first last;
         let rec go f =
-          if f > last then 0
+          if f > hi then 0
           else
             let clock =
               if last = first then c0
@@ -235,7 +238,7 @@ let render o =
             | 0 -> go (f + 1)
             | code -> code
         in
-        go first
+        go lo
   with
   | Fail msg ->
       prerr_endline ("camlray: " ^ msg);

@@ -21,6 +21,7 @@ type render_opts = {
   frames : (int * int) option;  (** an animation's first and last frame *)
   clock : float option;  (** the clock of a single frame *)
   clock_range : (float * float) option;  (** clock at the first and last frame *)
+  subset : (int * int) option;  (** render only these frames of [frames] *)
   tile_order_seed : int option;  (** test hook: shuffle the tile order *)
 }
 

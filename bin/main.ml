@@ -85,19 +85,25 @@ let render_cmd =
            ~docv:"C0..C1"
            ~doc:"The clock at the first and last frame (POV-Ray's $(b,+KI +KF)); default 0..1.")
   in
+  let subset =
+    Arg.(value & opt (some (range int_of_string_opt)) None & info [ "subset" ] ~docv:"A..B"
+           ~doc:"Render only frames $(b,A) to $(b,B) of the animation given by $(b,--frames) \
+                 (POV-Ray's $(b,+SF +EF)): the clock and file names are those of the whole \
+                 animation, so frames can be shared out between machines.")
+  in
   let tile_order_seed =
     Arg.(value & opt (some int) None & info [ "tile-order-seed" ] ~docs:Manpage.s_none)
   in
   let run scene output width height mode spp depth domains seed quiet include_dirs region
-      pov_region frames clock clock_range tile_order_seed =
+      pov_region frames clock clock_range subset tile_order_seed =
     Driver.render
       { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
-        region; pov_region; frames; clock; clock_range; tile_order_seed }
+        region; pov_region; frames; clock; clock_range; subset; tile_order_seed }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
           $ quiet $ include_path $ region $ pov_region $ frames $ clock $ clock_range
-          $ tile_order_seed)
+          $ subset $ tile_order_seed)
   in
   let man =
     [ `S Manpage.s_description;

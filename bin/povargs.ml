@@ -20,6 +20,7 @@ let switches =
     ("+SRn +ERn +SCn +ECn", "start/end row/column, 1-based and inclusive, or fractions below 1 (--region)");
     ("+KFIn +KFFn", "initial/final frame of an animation (--frames)");
     ("+KIf +KFf, +Kf", "initial/final clock, or the clock of a single frame (--clock-range, --clock)");
+    ("+SFn +EFn", "render only this subset of the animation's frames (--subset)");
     ("+D -D +P -P +V -V +GA -GA +FN +F", "display, pause, verbosity, messages, file type PNG: no effect");
   ]
 
@@ -27,7 +28,7 @@ let switches =
 let split_switch a =
   let body = String.sub a 1 (String.length a - 1) in
   let names =
-    [ "KFI"; "KFF"; "KI"; "KF"; "AM"; "WT"; "SR"; "ER"; "SC"; "EC"; "GA"; "FN"; "W"; "H"; "A"; "R";
+    [ "KFI"; "KFF"; "KI"; "KF"; "SF"; "EF"; "AM"; "WT"; "SR"; "ER"; "SC"; "EC"; "GA"; "FN"; "W"; "H"; "A"; "R";
       "J"; "O"; "I"; "L"; "K"; "D"; "P"; "V"; "F"; "Q" ]
   in
   let upper = String.uppercase_ascii body in
@@ -41,7 +42,14 @@ let split_switch a =
 
 type region = { mutable sr : string option; mutable er : string option; mutable sc : string option; mutable ec : string option }
 type aa = { mutable on : bool; mutable threshold : float option; mutable touched : bool }
-type frames = { mutable kfi : string option; mutable kff : string option; mutable ki : string option; mutable kf : string option }
+type frames = {
+  mutable kfi : string option;
+  mutable kff : string option;
+  mutable ki : string option;
+  mutable kf : string option;
+  mutable sf : string option;
+  mutable ef : string option;
+}
 
 let num what v =
   match float_of_string_opt v with
@@ -82,6 +90,8 @@ let of_switch ~warn ~region ~frames ~aa sign name value =
   | "KFF" -> need (); frames.kff <- Some value; []
   | "KI" -> need (); frames.ki <- Some value; []
   | "KF" -> need (); frames.kf <- Some value; []
+  | "SF" -> need (); frames.sf <- Some value; []
+  | "EF" -> need (); frames.ef <- Some value; []
   | "K" -> need (); [ "--clock"; Printf.sprintf "%g" (num "+K" value) ]
   | "D" | "P" | "V" | "GA" | "Q" -> []
   | "FN" | "F" ->
@@ -117,7 +127,15 @@ let frame_opts fr =
         let b = Option.fold ~none:1. ~some:(num "+KF") fr.kf in
         [ "--clock-range"; Printf.sprintf "%g..%g" a b ]
   in
-  frames @ clocks
+  let subset =
+    match (fr.sf, fr.ef) with
+    | None, None -> []
+    | _ ->
+        let a = Option.fold ~none:min_int ~some:(int_arg "+SF") fr.sf in
+        let b = Option.fold ~none:max_int ~some:(int_arg "+EF") fr.ef in
+        [ "--subset"; Printf.sprintf "%d..%d" a b ]
+  in
+  frames @ clocks @ subset
 
 (* ---------- INI files ---------- *)
 
@@ -168,6 +186,8 @@ let ini_file ~warn ~region ~frames ~aa path =
                | "final_frame" -> frames.kff <- Some v; []
                | "initial_clock" -> frames.ki <- Some v; []
                | "final_clock" -> frames.kf <- Some v; []
+               | "subset_start_frame" -> frames.sf <- Some v; []
+               | "subset_end_frame" -> frames.ef <- Some v; []
                | "clock" -> [ "--clock"; Printf.sprintf "%g" (num (at "Clock") v) ]
                | "start_row" -> region.sr <- Some v; []
                | "end_row" -> region.er <- Some v; []
@@ -184,7 +204,7 @@ let ini_file ~warn ~region ~frames ~aa path =
 
 let rewrite ~warn args =
   let region = { sr = None; er = None; sc = None; ec = None } in
-  let frames = { kfi = None; kff = None; ki = None; kf = None } in
+  let frames = { kfi = None; kff = None; ki = None; kf = None; sf = None; ef = None } in
   let aa = { on = false; threshold = None; touched = false } in
   try
     let rest =

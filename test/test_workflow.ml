@@ -45,6 +45,16 @@ let units =
         (* the clock moves the sphere: first and last frames differ *)
         Alcotest.(check bool) "moves" true
           (read_bytes (Filename.concat d "s01.png") <> read_bytes (Filename.concat d "s12.png")));
+    Alcotest.test_case "a subset of frames (+SF/+EF) equals those frames of the whole animation" `Quick
+      (fun () ->
+        let d = Helpers.temp_dir () and e = Helpers.temp_dir () in
+        let s = Filename.concat d "a.scn" in
+        Helpers.write_file s "sphere { <clock*2-1, 0, 3>, 0.5 pigment { rgb 1 } }\nlight_source { <0,5,-5> color rgb 1 }\n";
+        ok "all" (run [ "render"; s; "+W8"; "+H6"; "--frames"; "1..4"; "-o"; Filename.concat d "a.png"; "-q" ]);
+        ok "subset" (run [ "render"; s; "+W8"; "+H6"; "+KFI1"; "+KFF4"; "+SF3"; "+EF3"; "-o"; Filename.concat e "a.png"; "-q" ]);
+        Alcotest.(check (list string)) "only frame 3" [ "a3.png" ] (Array.to_list (Sys.readdir e));
+        Alcotest.(check bool) "same pixels" true
+          (read_bytes (Filename.concat d "a3.png") = read_bytes (Filename.concat e "a3.png")));
     Alcotest.test_case "regions merge into the whole image, byte for byte" `Quick (fun () ->
         let d = Helpers.temp_dir () in
         let f n = Filename.concat d n in
