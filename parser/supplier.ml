@@ -30,6 +30,7 @@ type frame = {
   file : string;
   mutable ctrl : ctrl list;
   scoped : bool;
+  version_at_entry : float;  (** restored when an included file ends *)
 }
 
 type t = {
@@ -39,14 +40,18 @@ type t = {
   mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
   mutable last : Loc.t;
   mutable files : string list;
+  deprecated : (string, string * bool * bool ref) Hashtbl.t;
+      (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
 }
 
 let files_read t = List.rev t.files
 
 let create config env ~file toks =
   let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
-  { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false } ];
-    pending = []; last = Loc.none; files = [ abs ] }
+  { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
+                 version_at_entry = Defaults.version () } ];
+    pending = []; last = Loc.none; files = [ abs ];
+    deprecated = Hashtbl.create 8 }
 
 let chain t =
   List.filter_map
@@ -70,6 +75,9 @@ let rec raw_next t =
       if f.ctrl <> [] then fail t tok.loc "missing #end: a directive opened in this %s is not closed"
           (match f.kind with Macro_call _ -> "macro" | _ -> "file");
       if f.scoped then Env.pop_scope t.env;
+      (match f.kind with
+      | Include _ -> Defaults.restore_version f.version_at_entry
+      | Main | Macro_call _ -> ());
       t.frames <- List.tl t.frames;
       raw_next t
   | Eof -> tok
@@ -183,6 +191,11 @@ and ident t name loc =
   | Some v -> (Parser.FLOAT v, loc)
   | None when name = "version" -> (Parser.FLOAT (Defaults.version ()), loc)
   | None -> (
+      (match Hashtbl.find_opt t.deprecated name with
+      | Some (msg, once, warned) when not (once && !warned) ->
+          warned := true;
+          Diag.warning loc (Printf.sprintf "%s is deprecated: %s" name msg)
+      | _ -> ());
       match Env.find t.env name with
       | Some (Env.Decl d) -> (token_of_decl d, loc)
       | Some (Env.Macro m) ->
@@ -421,6 +434,23 @@ and break t loc =
 
 and declare t ~local loc =
   let name, nloc = expect_ident t "an identifier after #declare" in
+  let name, nloc =
+    if name <> "deprecated" then (name, nloc)
+    else begin
+      (* #declare deprecated [once] "message" NAME = ... *)
+      let once =
+        match (raw_peek t).raw with Ident "once" -> ignore (raw_next t); true | _ -> false
+      in
+      let msg =
+        match (raw_next t).raw with
+        | Tok (Parser.STRING m) -> m
+        | r -> fail t nloc "expected the deprecation message (a string), found %s" (describe r)
+      in
+      let name, nloc = expect_ident t "the identifier being declared" in
+      Hashtbl.replace t.deprecated name (msg, once, ref false);
+      (name, nloc)
+    end
+  in
   if Lexer.pov_reserved name then fail t nloc "%s is a reserved word and cannot be declared" name;
   let bind b = if local then Env.local t.env name b else Env.declare t.env name b in
   match (raw_peek t).raw with
@@ -569,7 +599,8 @@ and call_macro t (m : Env.macro) loc =
   Env.push_scope t.env;
   List.iter (fun (p, d) -> Env.local t.env p (Env.Decl d)) args;
   t.frames <-
-    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = []; scoped = true }
+    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
+      scoped = true; version_at_entry = Defaults.version () }
     :: t.frames
 
 and include_file t loc =
@@ -609,6 +640,7 @@ and include_file t loc =
       let toks = Lexer.tokenize ~file:path text in
       if not (List.mem abs t.files) then t.files <- abs :: t.files;
       Env.push_scope t.env;
-      let saved_version = Defaults.version () in
-      ignore saved_version;
-      t.frames <- { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true } :: t.frames
+      t.frames <-
+        { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true;
+          version_at_entry = Defaults.version () }
+        :: t.frames

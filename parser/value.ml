@@ -129,24 +129,28 @@ let format_float w d f =
     else String.make pad '0' ^ s
   else String.make pad ' ' ^ s
 
-(* seed() makes a random stream and returns its number; rand(stream)
-   advances that stream. The generator is camlray's own (see the language
-   guide): a 32-bit linear congruential generator per stream. *)
+(* seed(n) makes a random stream and returns its number (0, 1, ... in
+   order of creation); rand(stream) advances that stream. This is
+   POV-Ray 3.7's generator (Parser::stream_seed, POV_rand): a 32-bit
+   linear congruential generator, x <- x * 1812433253 + 12345 mod 2^32,
+   returning x / (2^32 - 1), so scenes draw the same numbers as in
+   POV-Ray. *)
 let streams : (int, int ref) Hashtbl.t = Hashtbl.create 8
 let stream_count = ref 0
 let reset_streams () = Hashtbl.reset streams; stream_count := 0
 
 let new_stream s =
+  let id = !stream_count in
   incr stream_count;
-  Hashtbl.replace streams !stream_count (ref (s land 0xFFFFFFFF));
-  float_of_int !stream_count
+  Hashtbl.replace streams id (ref (s land 0xFFFFFFFF));
+  float_of_int id
 
 let rand loc id =
   match Hashtbl.find_opt streams (int_of_float id) with
-  | None -> Diag.error loc "rand() needs a stream made by seed()"
+  | None -> Diag.error loc "rand(%g): no such random stream (make one with seed())" id
   | Some st ->
       st := ((!st * 1812433253) + 12345) land 0xFFFFFFFF;
-      float_of_int (!st lsr 8) /. float_of_int (1 lsl 24)
+      float_of_int !st /. 4294967295.
 
 let call loc name args =
   let f i = to_float loc (List.nth args i) in
