@@ -138,6 +138,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Interior i -> Parser.INTERIOR_ID i
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
+  | Decl.Function f -> Parser.FUNCTION_ID f
 
 let suggest t name =
   let d a b =
@@ -203,10 +204,69 @@ and ident t name loc =
           next t
       | Some (Env.Array a) -> array_access t name a loc
       | None ->
-          if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
+          if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
             fail t loc "%s is not supported by camlray" name
           else (Parser.UNDEFINED_ID name, loc))
+
+(* function [(params)] { body }: the body is read here, token by token,
+   and compiled by Fnparse; directives may not stand inside it. *)
+and function_lit t loc =
+  let params =
+    match (raw_peek t).raw with
+    | Tok Parser.LPAREN ->
+        ignore (raw_next t);
+        let rec go acc =
+          let tok = raw_next t in
+          match Fnparse.word tok.raw with
+          | Some p -> (
+              if List.mem p acc then fail t tok.loc "parameter %s is listed twice" p;
+              let sep = raw_next t in
+              match sep.raw with
+              | Tok Parser.COMMA -> go (p :: acc)
+              | Tok Parser.RPAREN -> List.rev (p :: acc)
+              | r -> fail t sep.loc "expected ',' or ')' in the parameter list, found %s" (describe r))
+          | None -> (
+              match tok.raw with
+              | Tok Parser.RPAREN when acc = [] -> []
+              | r -> fail t tok.loc "expected a parameter name, found %s" (describe r))
+        in
+        go []
+    | _ -> [ "x"; "y"; "z" ]
+  in
+  expect_tok t Parser.LBRACE "'{' to open the function's body";
+  match (raw_peek t).raw with
+  | Tok Parser.TRANSFORM ->
+      if params <> [ "x"; "y"; "z" ] then fail t loc "a transform function takes no parameter list";
+      let tr = parse t Parser.Incremental.transform_arg in
+      expect_tok t Parser.RBRACE "'}' to close the function";
+      Fn.of_transform tr
+  | _ ->
+  let rec body depth acc =
+    let tok = raw_next t in
+    match tok.raw with
+    | Eof -> fail t loc "this function's body has no closing '}'"
+    | Directive d -> fail t tok.loc "#%s cannot stand inside a function's body" d
+    | Tok Parser.LBRACE -> body (depth + 1) (tok :: acc)
+    | Tok Parser.RBRACE ->
+        if depth = 0 then List.rev ({ raw = Eof; loc = tok.loc } :: acc)
+        else body (depth - 1) (tok :: acc)
+    | _ -> body depth (tok :: acc)
+  in
+  let toks = Array.of_list (body 0 []) in
+  if Array.length toks = 1 then fail t loc "a function's body cannot be empty";
+  let resolve name =
+    match List.assoc_opt name t.config.builtins with
+    | Some v -> Fnparse.Const v
+    | None -> (
+        match Env.find t.env name with
+        | Some (Env.Decl (Decl.Value (Value.Float f))) -> Fnparse.Const f
+        | Some (Env.Decl (Decl.Value (Value.Vector a))) -> Fnparse.Vec a
+        | Some (Env.Decl (Decl.Function f)) -> Fnparse.Func f
+        | _ -> Fnparse.Unknown)
+  in
+  Fnparse.compile ~resolve ~params toks
 
 and array_access t name a loc =
   let tok = raw_peek t in
@@ -315,7 +375,7 @@ and directive t d loc =
   | "macro" -> define_macro t loc
   | "debug" | "warning" | "error" ->
       let s = parse t Parser.Incremental.string_arg in
-      if d = "debug" then prerr_string s
+      if d = "debug" then (prerr_string s; flush stderr)
       else if d = "warning" then Diag.warning loc s
       else fail t loc "#error: %s" s
   | "default" -> parse t Parser.Incremental.default_body

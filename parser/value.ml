@@ -205,8 +205,10 @@ let call loc name args =
   | "str" -> arity 3; String (format_float (int_of_float (f 1)) (int_of_float (f 2)) (f 0))
   | "vstr" ->
       arity 5;
-      let n = int_of_float (f 1) in
-      let a = to_vec5 (List.nth args 0) in
+      (* vstr(N, V, separator, width, digits) *)
+      let n = int_of_float (f 0) in
+      if n < 2 || n > 5 then Diag.error loc "vstr: the component count must be 2 to 5, found %d" n;
+      let a = to_vec5 (List.nth args 1) in
       let w = int_of_float (f 3) and d = int_of_float (f 4) in
       String (String.concat (s 2) (List.init (max 0 (min 5 n)) (fun i -> format_float w d a.(i))))
   | "chr" -> arity 1;
