@@ -29,7 +29,7 @@ let unary_builtins =
     ("asinh", fun x -> Float.log (x +. Float.sqrt ((x *. x) +. 1.)));
     ("acosh", fun x -> Float.log (x +. Float.sqrt ((x *. x) -. 1.)));
     ("atanh", fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)));
-    ("sqrt", Float.sqrt); ("sqr", fun x -> x *. x); ("exp", Float.exp); ("ln", Float.log);
+    ("sqrt", Float.sqrt); ("exp", Float.exp); ("ln", Float.log);
     ("log", Float.log10); ("abs", Float.abs); ("floor", Float.floor); ("ceil", Float.ceil);
     ("int", Float.trunc); ("radians", fun a -> a /. deg); ("degrees", fun a -> a *. deg) ]
 

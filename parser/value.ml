@@ -114,7 +114,7 @@ let functions =
     "abs"; "min"; "max"; "mod"; "int"; "floor"; "ceil"; "div"; "radians"; "degrees"; "select";
     "vlength"; "vnormalize"; "vcross"; "vdot"; "vrotate"; "vaxis_rotate"; "concat"; "str"; "chr";
     "asc"; "strlen"; "substr"; "strupr"; "strlwr"; "val"; "strcmp"; "sinh"; "cosh"; "tanh";
-    "asinh"; "acosh"; "atanh"; "sqr"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
+    "asinh"; "acosh"; "atanh"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
 
 let is_function name = List.mem name functions
 
@@ -171,7 +171,7 @@ let call loc name args =
   | "asinh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) +. 1.)))
   | "acosh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) -. 1.)))
   | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
-  | "sqrt" -> f1 Float.sqrt | "sqr" -> f1 (fun x -> x *. x)
+  | "sqrt" -> f1 Float.sqrt
   | "pow" -> f2 Float.pow | "exp" -> f1 Float.exp
   | "log" -> f1 Float.log10 | "ln" -> f1 Float.log
   | "abs" -> f1 Float.abs
