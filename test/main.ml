@@ -4,4 +4,5 @@ let () =
     [
       Test_vec3.tests;
       Test_image.tests;
+      Test_value.tests;
     ]
