@@ -5,4 +5,6 @@ let () =
       Test_vec3.tests;
       Test_image.tests;
       Test_value.tests;
+      Test_supplier.tests;
+      Test_fn.tests;
     ]
