@@ -7,6 +7,7 @@ type t =
   | Interior of Camlray.Interior.t
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
+  | Function of Fn.t
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -17,3 +18,4 @@ let kind_name = function
   | Interior _ -> "an interior"
   | Transform _ -> "a transform"
   | Camera _ -> "a camera"
+  | Function _ -> "a function"

@@ -10,6 +10,7 @@ type t =
   | Interior of Camlray.Interior.t
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
+  | Function of Fn.t  (** [function { ... }] *)
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

@@ -20,6 +20,7 @@ let set_version v =
   given := true;
   if (not !items_seen) && !first = None then first := Some v
 
+let restore_version v = version_ := v
 let version_given () = !given
 let first_version () = !first
 let mark_item () = items_seen := true

@@ -6,6 +6,10 @@
 val reset : unit -> unit
 val version : unit -> float
 val set_version : float -> unit
+val restore_version : float -> unit
+(** Put back the version an included file started with, at its end
+    (POV-Ray's rule); not a new [#version]. *)
+
 val version_given : unit -> bool
 val first_version : unit -> float option
 (** The first [#version] of the main file, if it came before any scene

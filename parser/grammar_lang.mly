@@ -24,6 +24,8 @@ open Gram
 %token <Camlray.Transform.t> TRANSFORM_ID
 %token <Sdl.camera_item list> CAMERA_ID
 %token <string> UNDEFINED_ID
+%token <Fn.t> FUNCTION_ID
+%token <Fn.t> FUNCTION_LIT  (* a function { ... } the supplier compiled *)
 %token <string> FUNC
 %token <string> MEMBER
 %token <string> RGB
@@ -47,6 +49,7 @@ open Gram
 %start <Decl.t * bool> macro_arg
 %start <Decl.t * bool> array_elem
 %start <string> string_arg
+%start <Transform.t> transform_arg
 %start <unit> default_body
 
 %%
@@ -60,6 +63,7 @@ open Gram
   | i = INTERIOR_ID { Decl.Interior i }
   | t = TRANSFORM_ID { Decl.Transform t }
   | c = CAMERA_ID { Decl.Camera c }
+  | f = FUNCTION_LIT { Decl.Function f }
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
   | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
@@ -92,6 +96,12 @@ open Gram
   | f = FUNC LPAREN args = separated_list(COMMA, expr) RPAREN
       { Value.to_string_value (loc $loc) (Value.call (loc $loc) f args) }
 
+(* function { transform { ... } }: the supplier hands over the tokens
+   from 'transform' on *)
+%public transform_arg:
+  | TRANSFORM LBRACE t = transform_body RBRACE { t }
+  | TRANSFORM t = TRANSFORM_ID { t }
+
 %public default_body:
   | LBRACE ds = list(default_item) RBRACE { List.iter (fun f -> f ()) ds }
 
@@ -109,6 +119,8 @@ open Gram
   | i = INTERIOR_ID { Decl.Interior i }
   | t = TRANSFORM_ID { Decl.Transform t }
   | c = CAMERA_ID { Decl.Camera c }
+  | f = FUNCTION_ID { Decl.Function f }
+  | f = FUNCTION_LIT { Decl.Function f }
   | v = color_value { Decl.Value v }
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
@@ -169,12 +181,17 @@ open Gram
   | LPAREN e = expr RPAREN { e }
   | LT cs = separated_nonempty_list(COMMA, add) GT
       { let n = List.length cs in
-        if n < 2 || n > 5 then
+        (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
+        if (n < 2 || n > 5) && n <> 12 then
           Diag.error (loc $loc) "a vector has 2 to 5 components, this one has %d" n;
         Value.Vector (Array.of_list (List.map (fun c -> match c with
           | Value.Float f -> f
           | v -> Diag.error (loc $loc) "vector components must be floats, found %s" (Value.type_name v)) cs)) }
   | f = FUNC LPAREN args = separated_list(COMMA, expr) RPAREN { Value.call (loc $loc) f args }
+  | f = FUNCTION_ID LPAREN args = separated_list(COMMA, expr) RPAREN
+      { let args = List.map (Value.to_float (loc $loc)) args in
+        if Fn.is_vector f then Value.Vector (Fn.call_vector (loc $loc) f args)
+        else Value.Float (Fn.call (loc $loc) f args) }
   | k = RGB e = unary { Value.rgb_kind (loc $loc) k e }
 
 %public param: e = add %prec below_shift { e }

@@ -129,6 +129,7 @@ let describe = function
       | MINUS -> "'-'" | STAR -> "'*'" | SLASH -> "'/'" | COMMA -> "','"
       | SEMI -> "';'" | QUESTION -> "'?'" | COLON -> "':'" | AND -> "'&'" | OR -> "'|'"
       | BANG -> "'!'" | EOF -> "end of file"
+      | FUNCTION_ID _ | FUNCTION_LIT _ -> "a function"
       | FLOAT f -> Printf.sprintf "number %g" f
       | STRING s -> Printf.sprintf "string %S" s
       | MEMBER m -> "." ^ m

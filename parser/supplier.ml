@@ -30,6 +30,11 @@ type frame = {
   file : string;
   mutable ctrl : ctrl list;
   scoped : bool;
+  version_at_entry : float;  (** restored when an included file ends *)
+  byref : (string * string) list;
+      (** macro parameters given a bare identifier, with that identifier:
+          their final values are copied back when the macro ends
+          (POV-Ray passes identifiers by reference) *)
 }
 
 type t = {
@@ -39,14 +44,18 @@ type t = {
   mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
   mutable last : Loc.t;
   mutable files : string list;
+  deprecated : (string, string * bool * bool ref) Hashtbl.t;
+      (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
 }
 
 let files_read t = List.rev t.files
 
 let create config env ~file toks =
   let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
-  { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false } ];
-    pending = []; last = Loc.none; files = [ abs ] }
+  { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
+                 version_at_entry = Defaults.version (); byref = [] } ];
+    pending = []; last = Loc.none; files = [ abs ];
+    deprecated = Hashtbl.create 8 }
 
 let chain t =
   List.filter_map
@@ -69,7 +78,12 @@ let rec raw_next t =
   | Eof when f.kind <> Main ->
       if f.ctrl <> [] then fail t tok.loc "missing #end: a directive opened in this %s is not closed"
           (match f.kind with Macro_call _ -> "macro" | _ -> "file");
+      let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
       if f.scoped then Env.pop_scope t.env;
+      List.iter (fun (n, b) -> Env.declare t.env n b) back;
+      (match f.kind with
+      | Include _ -> Defaults.restore_version f.version_at_entry
+      | Main | Macro_call _ -> ());
       t.frames <- List.tl t.frames;
       raw_next t
   | Eof -> tok
@@ -130,6 +144,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Interior i -> Parser.INTERIOR_ID i
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
+  | Decl.Function f -> Parser.FUNCTION_ID f
 
 let suggest t name =
   let d a b =
@@ -183,6 +198,11 @@ and ident t name loc =
   | Some v -> (Parser.FLOAT v, loc)
   | None when name = "version" -> (Parser.FLOAT (Defaults.version ()), loc)
   | None -> (
+      (match Hashtbl.find_opt t.deprecated name with
+      | Some (msg, once, warned) when not (once && !warned) ->
+          warned := true;
+          Diag.warning loc (Printf.sprintf "%s is deprecated: %s" name msg)
+      | _ -> ());
       match Env.find t.env name with
       | Some (Env.Decl d) -> (token_of_decl d, loc)
       | Some (Env.Macro m) ->
@@ -190,10 +210,121 @@ and ident t name loc =
           next t
       | Some (Env.Array a) -> array_access t name a loc
       | None ->
-          if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
+          if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          else if name = "file_exists" then begin
+            expect_tok t Parser.LPAREN "'(' after file_exists";
+            let file = parse t Parser.Incremental.string_arg in
+            expect_tok t Parser.RPAREN "')'";
+            (Parser.FLOAT (if find_file t file <> None then 1. else 0.), loc)
+          end
+          else if name = "defined" || name = "dimensions" || name = "dimension_size" then
+            (Parser.FLOAT (array_query t name loc), loc)
+          else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
             fail t loc "%s is not supported by camlray" name
           else (Parser.UNDEFINED_ID name, loc))
+
+(* function [(params)] { body }: the body is read here, token by token,
+   and compiled by Fnparse; directives may not stand inside it. *)
+and function_lit t loc =
+  let params =
+    match (raw_peek t).raw with
+    | Tok Parser.LPAREN ->
+        ignore (raw_next t);
+        let rec go acc =
+          let tok = raw_next t in
+          match Fnparse.word tok.raw with
+          | Some p -> (
+              if List.mem p acc then fail t tok.loc "parameter %s is listed twice" p;
+              let sep = raw_next t in
+              match sep.raw with
+              | Tok Parser.COMMA -> go (p :: acc)
+              | Tok Parser.RPAREN -> List.rev (p :: acc)
+              | r -> fail t sep.loc "expected ',' or ')' in the parameter list, found %s" (describe r))
+          | None -> (
+              match tok.raw with
+              | Tok Parser.RPAREN when acc = [] -> []
+              | r -> fail t tok.loc "expected a parameter name, found %s" (describe r))
+        in
+        go []
+    | _ -> [ "x"; "y"; "z" ]
+  in
+  expect_tok t Parser.LBRACE "'{' to open the function's body";
+  match (raw_peek t).raw with
+  | Tok Parser.TRANSFORM ->
+      if params <> [ "x"; "y"; "z" ] then fail t loc "a transform function takes no parameter list";
+      let tr = parse t Parser.Incremental.transform_arg in
+      expect_tok t Parser.RBRACE "'}' to close the function";
+      Fn.of_transform tr
+  | _ ->
+  let rec body depth acc =
+    let tok = raw_next t in
+    match tok.raw with
+    | Eof -> fail t loc "this function's body has no closing '}'"
+    | Directive d -> fail t tok.loc "#%s cannot stand inside a function's body" d
+    | Tok Parser.LBRACE -> body (depth + 1) (tok :: acc)
+    | Tok Parser.RBRACE ->
+        if depth = 0 then List.rev ({ raw = Eof; loc = tok.loc } :: acc)
+        else body (depth - 1) (tok :: acc)
+    | _ -> body depth (tok :: acc)
+  in
+  let toks = Array.of_list (body 0 []) in
+  if Array.length toks = 1 then fail t loc "a function's body cannot be empty";
+  let resolve name =
+    match List.assoc_opt name t.config.builtins with
+    | Some v -> Fnparse.Const v
+    | None -> (
+        match Env.find t.env name with
+        | Some (Env.Decl (Decl.Value (Value.Float f))) -> Fnparse.Const f
+        | Some (Env.Decl (Decl.Value (Value.Vector a))) -> Fnparse.Vec a
+        | Some (Env.Decl (Decl.Function f)) -> Fnparse.Func f
+        | _ -> Fnparse.Unknown)
+  in
+  Fnparse.compile ~resolve ~params toks
+
+(* defined(NAME), defined(NAME[i]...), dimensions(ARRAY),
+   dimension_size(ARRAY, DIM) *)
+and array_query t what loc =
+  expect_tok t Parser.LPAREN (Printf.sprintf "'(' after %s" what);
+  let name, nloc = expect_ident t "an identifier" in
+  let rec element b =
+    match (b, (raw_peek t).raw) with
+    | Some (Env.Array a), Tok Parser.LBRACKET ->
+        ignore (raw_next t);
+        let i = Value.to_int nloc (parse t Parser.Incremental.expr_then_rbracket) in
+        if i < 0 || i >= Array.length a then
+          fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
+        element a.(i)
+    | _, Tok Parser.LBRACKET -> fail t nloc "%s is not an array" name
+    | _ -> b
+  in
+  let b = match Env.find t.env name with
+    | Some b -> Some b
+    | None -> if List.mem_assoc name t.config.builtins then Some (Env.Decl (Decl.Value (Value.Float 0.))) else None
+  in
+  let result =
+    match what with
+    | "defined" -> if element b = None then 0. else 1.
+    | _ -> (
+        let a = match b with
+          | Some (Env.Array a) -> a
+          | _ -> fail t nloc "%s: %s is not an array" what name
+        in
+        let rec dims a =
+          Array.length a :: (match if Array.length a > 0 then a.(0) else None with
+            | Some (Env.Array a') -> dims a' | _ -> [])
+        in
+        let ds = dims a in
+        if what = "dimensions" then float_of_int (List.length ds)
+        else begin
+          expect_tok t Parser.COMMA "','";
+          let d = Value.to_int loc (parse t Parser.Incremental.expr_then_rparen) in
+          (* POV-Ray: 0 outside 1 .. dimensions *)
+          float_of_int (if d < 1 || d > List.length ds then 0 else List.nth ds (d - 1))
+        end)
+  in
+  if what <> "dimension_size" then expect_tok t Parser.RPAREN "')'";
+  result
 
 and array_access t name a loc =
   let tok = raw_peek t in
@@ -272,10 +403,7 @@ and directive t d loc =
       let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
       enter_if t c
   | "ifdef" | "ifndef" ->
-      expect_tok t Parser.LPAREN "'(' after #ifdef";
-      let name, _ = expect_ident t "an identifier" in
-      expect_tok t Parser.RPAREN "')'";
-      let defined = Env.find t.env name <> None || List.mem_assoc name t.config.builtins in
+      let defined = array_query t "defined" loc = 1. in
       enter_if t (if d = "ifdef" then defined else not defined)
   | "elseif" | "else" -> (
       match f.ctrl with
@@ -302,7 +430,7 @@ and directive t d loc =
   | "macro" -> define_macro t loc
   | "debug" | "warning" | "error" ->
       let s = parse t Parser.Incremental.string_arg in
-      if d = "debug" then prerr_string s
+      if d = "debug" then (prerr_string s; flush stderr)
       else if d = "warning" then Diag.warning loc s
       else fail t loc "#error: %s" s
   | "default" -> parse t Parser.Incremental.default_body
@@ -421,6 +549,23 @@ and break t loc =
 
 and declare t ~local loc =
   let name, nloc = expect_ident t "an identifier after #declare" in
+  let name, nloc =
+    if name <> "deprecated" then (name, nloc)
+    else begin
+      (* #declare deprecated [once] "message" NAME = ... *)
+      let once =
+        match (raw_peek t).raw with Ident "once" -> ignore (raw_next t); true | _ -> false
+      in
+      let msg =
+        match (raw_next t).raw with
+        | Tok (Parser.STRING m) -> m
+        | r -> fail t nloc "expected the deprecation message (a string), found %s" (describe r)
+      in
+      let name, nloc = expect_ident t "the identifier being declared" in
+      Hashtbl.replace t.deprecated name (msg, once, ref false);
+      (name, nloc)
+    end
+  in
   if Lexer.pov_reserved name then fail t nloc "%s is a reserved word and cannot be declared" name;
   let bind b = if local then Env.local t.env name b else Env.declare t.env name b in
   match (raw_peek t).raw with
@@ -449,7 +594,8 @@ and declare t ~local loc =
       match (raw_peek t).raw with
       | Ident "array" ->
           ignore (raw_next t);
-          bind (Env.Array (new_array t loc))
+          bind (Env.Array (new_array t loc));
+          (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | _ -> bind (Env.Decl (rhs t)))
 
 and rhs t =
@@ -556,21 +702,57 @@ and call_macro t (m : Env.macro) loc =
         let rec go acc = function
           | [] -> List.rev acc
           | p :: rest ->
-              let d, closed = parse t Parser.Incremental.macro_arg in
+              let arg, closed = macro_arg t in
               if closed && rest <> [] then
                 fail t loc "macro %s expects %d arguments, got %d" m.name (List.length ps)
                   (List.length acc + 1);
               if (not closed) && rest = [] then
                 fail t loc "macro %s expects %d arguments, got more" m.name (List.length ps);
-              go ((p, d) :: acc) rest
+              go ((p, arg) :: acc) rest
         in
         go [] ps
   in
   Env.push_scope t.env;
-  List.iter (fun (p, d) -> Env.local t.env p (Env.Decl d)) args;
+  List.iter (fun (p, (b, _)) -> Env.local t.env p b) args;
+  let byref = List.filter_map (fun (p, (_, n)) -> Option.map (fun n -> (p, n)) n) args in
   t.frames <-
-    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = []; scoped = true }
+    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
+      scoped = true; version_at_entry = Defaults.version (); byref }
     :: t.frames
+
+(* One macro argument and whether it closed the list. A bare declared
+   identifier (NAME followed by ',' or ')') is passed by reference, as in
+   POV-Ray: arrays as themselves, other values copied back at the end. *)
+and macro_arg t =
+  let f = top t in
+  let bare =
+    match f.toks.(f.pos).raw with
+    | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
+        match (f.toks.(f.pos + 1).raw, Env.find t.env n) with
+        | Tok ((Parser.COMMA | Parser.RPAREN) as sep), Some ((Env.Array _ | Env.Decl _) as b) ->
+            f.pos <- f.pos + 2;
+            Some ((b, Some n), sep = Parser.RPAREN)
+        | _ -> None)
+    | _ -> None
+  in
+  match bare with
+  | Some x -> x
+  | None ->
+      let d, closed = parse t Parser.Incremental.macro_arg in
+      ((Env.Decl d, None), closed)
+
+(* Where #include and file_exists look: the current folder, the scene's
+   folder, then the include folders. *)
+and candidates t name =
+  let scene_dir =
+    let main = List.find (fun f -> f.kind = Main) t.frames in
+    Filename.dirname main.file
+  in
+  if not (Filename.is_relative name) then [ name ]
+  else List.map (fun d -> Filename.concat d name) ("." :: scene_dir :: t.config.include_dirs)
+
+and find_file t name =
+  List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) (candidates t name)
 
 and include_file t loc =
   let tok = raw_next t in
@@ -586,18 +768,10 @@ and include_file t loc =
   if depth >= t.config.limits.max_include_depth then
     fail t loc "#include nested deeper than %d files" t.config.limits.max_include_depth;
   let name = if Filename.extension name = "" then name ^ ".inc" else name in
-  let scene_dir =
-    let main = List.find (fun f -> f.kind = Main) t.frames in
-    Filename.dirname main.file
-  in
-  let candidates =
-    if not (Filename.is_relative name) then [ name ]
-    else List.map (fun d -> Filename.concat d name) ("." :: scene_dir :: t.config.include_dirs)
-  in
-  match List.find_opt Sys.file_exists candidates with
+  match find_file t name with
   | None ->
       fail t tok.loc "cannot find include file %S (looked in %s)" name
-        (String.concat ", " (List.sort_uniq compare (List.map Filename.dirname candidates)))
+        (String.concat ", " (List.sort_uniq compare (List.map Filename.dirname (candidates t name))))
   | Some path ->
       let abs = if Filename.is_relative path then Filename.concat (Sys.getcwd ()) path else path in
       if List.exists (fun f -> f.file = path && f.kind <> Main) t.frames then
@@ -609,6 +783,7 @@ and include_file t loc =
       let toks = Lexer.tokenize ~file:path text in
       if not (List.mem abs t.files) then t.files <- abs :: t.files;
       Env.push_scope t.env;
-      let saved_version = Defaults.version () in
-      ignore saved_version;
-      t.frames <- { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true } :: t.frames
+      t.frames <-
+        { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true;
+          version_at_entry = Defaults.version (); byref = [] }
+        :: t.frames

@@ -114,7 +114,7 @@ let functions =
     "abs"; "min"; "max"; "mod"; "int"; "floor"; "ceil"; "div"; "radians"; "degrees"; "select";
     "vlength"; "vnormalize"; "vcross"; "vdot"; "vrotate"; "vaxis_rotate"; "concat"; "str"; "chr";
     "asc"; "strlen"; "substr"; "strupr"; "strlwr"; "val"; "strcmp"; "sinh"; "cosh"; "tanh";
-    "asinh"; "acosh"; "atanh"; "sqr"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
+    "asinh"; "acosh"; "atanh"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
 
 let is_function name = List.mem name functions
 
@@ -129,24 +129,28 @@ let format_float w d f =
     else String.make pad '0' ^ s
   else String.make pad ' ' ^ s
 
-(* seed() makes a random stream and returns its number; rand(stream)
-   advances that stream. The generator is camlray's own (see the language
-   guide): a 32-bit linear congruential generator per stream. *)
+(* seed(n) makes a random stream and returns its number (0, 1, ... in
+   order of creation); rand(stream) advances that stream. This is
+   POV-Ray 3.7's generator (Parser::stream_seed, POV_rand): a 32-bit
+   linear congruential generator, x <- x * 1812433253 + 12345 mod 2^32,
+   returning x / (2^32 - 1), so scenes draw the same numbers as in
+   POV-Ray. *)
 let streams : (int, int ref) Hashtbl.t = Hashtbl.create 8
 let stream_count = ref 0
 let reset_streams () = Hashtbl.reset streams; stream_count := 0
 
 let new_stream s =
+  let id = !stream_count in
   incr stream_count;
-  Hashtbl.replace streams !stream_count (ref (s land 0xFFFFFFFF));
-  float_of_int !stream_count
+  Hashtbl.replace streams id (ref (s land 0xFFFFFFFF));
+  float_of_int id
 
 let rand loc id =
   match Hashtbl.find_opt streams (int_of_float id) with
-  | None -> Diag.error loc "rand() needs a stream made by seed()"
+  | None -> Diag.error loc "rand(%g): no such random stream (make one with seed())" id
   | Some st ->
       st := ((!st * 1812433253) + 12345) land 0xFFFFFFFF;
-      float_of_int (!st lsr 8) /. float_of_int (1 lsl 24)
+      float_of_int !st /. 4294967295.
 
 let call loc name args =
   let f i = to_float loc (List.nth args i) in
@@ -167,7 +171,7 @@ let call loc name args =
   | "asinh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) +. 1.)))
   | "acosh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) -. 1.)))
   | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
-  | "sqrt" -> f1 Float.sqrt | "sqr" -> f1 (fun x -> x *. x)
+  | "sqrt" -> f1 Float.sqrt
   | "pow" -> f2 Float.pow | "exp" -> f1 Float.exp
   | "log" -> f1 Float.log10 | "ln" -> f1 Float.log
   | "abs" -> f1 Float.abs
@@ -201,8 +205,10 @@ let call loc name args =
   | "str" -> arity 3; String (format_float (int_of_float (f 1)) (int_of_float (f 2)) (f 0))
   | "vstr" ->
       arity 5;
-      let n = int_of_float (f 1) in
-      let a = to_vec5 (List.nth args 0) in
+      (* vstr(N, V, separator, width, digits) *)
+      let n = int_of_float (f 0) in
+      if n < 2 || n > 5 then Diag.error loc "vstr: the component count must be 2 to 5, found %d" n;
+      let a = to_vec5 (List.nth args 1) in
       let w = int_of_float (f 3) and d = int_of_float (f 4) in
       String (String.concat (s 2) (List.init (max 0 (min 5 n)) (fun i -> format_float w d a.(i))))
   | "chr" -> arity 1;

@@ -14,4 +14,7 @@ let () =
       Test_numerics.tests;
       Test_bench.tests;
       Test_image.tests;
+      Test_value.tests;
+      Test_supplier.tests;
+      Test_fn.tests;
     ]

@@ -1,0 +1,19 @@
+(** Reads the body of a [function { ... }] into an {!Fn.t}. Parameters
+    default to [x], [y], [z] ([u], [v] are synonyms of [x], [y]).
+    Declared floats are read when the function is
+    defined (POV-Ray's rule); declared functions may be called. Bodies
+    may use [+ - * /], comparisons, [&], [|] (with POV-Ray's function
+    precedence: [&] binds tighter than [|]; no [!], [?:] or [^]), the float
+    built-ins, [sum(i, a, b, e)] and [prod(i, a, b, e)]. [internal(n)],
+    [pattern {...}] and [pigment {...}] bodies are accepted but marked
+    {!Fn.unsupported}. *)
+
+type resolved = Const of float | Vec of float array | Func of Fn.t | Unknown
+(** What a name other than a parameter means, at definition time. *)
+
+val word : Lexer.raw -> string option
+(** The name a token stands for as a parameter ([x] is a keyword token). *)
+
+val compile : resolve:(string -> resolved) -> params:string list -> Lexer.token array -> Fn.t
+(** Compile a body given as its tokens (without the braces), ending with
+    [Eof]. Raises {!Diag.Error} at the offending token. *)

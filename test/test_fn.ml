@@ -1,0 +1,66 @@
+(* User-defined functions. Expected values printed by POV-Ray 3.7 for
+   the same declarations. *)
+open Camlray_lang
+
+let f = Scn.float
+let check = Scn.check_float ~eps:1e-9
+
+let tests =
+  ( "fn",
+    [
+      Alcotest.test_case "default parameters x, y, z and declared constants" `Quick (fun () ->
+          check "F(1,2,3)" 3.
+            (f ~prelude:"#declare K = 2;\n#declare F = function { x*K + y*y - 3 }" "F(1, 2, 3)"));
+      Alcotest.test_case "named parameters, calls, sum and prod" `Quick (fun () ->
+          check "G(1,2)" 37.
+            (f
+               ~prelude:
+                 "#declare F = function { x*2 + y*y - 3 }\n\
+                  #declare G = function (a, b) { F(a, b, 0) + sum(i, 1, 4, i) + prod(i, 1, 4, i) }"
+               "G(1, 2)");
+          check "P(4)" 48. (f ~prelude:"#declare P = function(a) { prod(i, 1, a, i) + sum(j, 1, 3, j*a) }" "P(4)"));
+      Alcotest.test_case "precedence: & binds tighter than |; unary minus; clock and pi" `Quick (fun () ->
+          let prelude = "#declare H = function { select(x, -1, 0, 1) * 10 + (x < 2) + (1 | 1 & 0) + -x*2 + clock + pi }" in
+          Scn.check_float ~eps:1e-3 "H(-1)" (-2.858) (f ~prelude "H(-1, 0, 0)");
+          Scn.check_float ~eps:1e-3 "H(3)" 8.142 (f ~prelude "H(3, 0, 0)"));
+      Alcotest.test_case "u and v name x and y" `Quick (fun () ->
+          check "U" 3. (f ~prelude:"#declare U = function { u + v }" "U(1, 2, 3)"));
+      Alcotest.test_case "a constant is read when the function is defined" `Quick (fun () ->
+          check "K frozen" 2.
+            (f ~prelude:"#declare K = 2; #declare F = function { K } #declare K = 5;" "F(0, 0, 0)"));
+      Alcotest.test_case "math.inc functions" `Quick (fun () ->
+          let prelude = "#include \"math.inc\"" in
+          if Sys.file_exists Parse.pov_include_dir then begin
+            check "sind(30)" 0.5 (f ~prelude "sind(30)");
+            check "clip" 1. (f ~prelude "clip(5, 0, 1)");
+            check "even(4)" 1. (f ~prelude "even(4)");
+            check "odd(4)" 0. (f ~prelude "odd(4)");
+            check "sgn" (-1.) (f ~prelude "sgn(-3)");
+            check "adj_range" 3. (f ~prelude "adj_range(0.5, 2, 4)");
+            check "max3" 5. (f ~prelude "max3(1, 5, 2)");
+            check "atan2d" 45. (f ~prelude "atan2d(1, 1)")
+          end);
+      Alcotest.test_case "transform functions: vtransform of transforms.inc" `Quick (fun () ->
+          if Sys.file_exists Parse.pov_include_dir then begin
+            let prelude = "#include \"transforms.inc\"" in
+            Scn.check_floats ~eps:1e-9 "Reorient_Trans" [ -2.; 1.; 3. ]
+              (Scn.vec ~prelude "vtransform(<1,2,3>, Reorient_Trans(x, y))");
+            Scn.check_floats ~eps:1e-9 "Axis_Rotate_Trans" [ 0.; 0.; -1. ]
+              (Scn.vec ~prelude "vtransform(<1,0,0>, Axis_Rotate_Trans(<0,1,0>, 90))")
+          end);
+      Alcotest.test_case "Fn.eval3 evaluates from OCaml" `Quick (fun () ->
+          let toks = Lexer.tokenize ~file:"<fn>" "x*x + y*y + z*z - 1" in
+          let fn = Fnparse.compile ~resolve:(fun _ -> Fnparse.Unknown) ~params:[ "x"; "y"; "z" ] toks in
+          let g = Fn.eval3 fn in
+          check "eval3" 2. (g 1. 1. 1.);
+          check "eval" (-1.) (Fn.eval fn [| 0.; 0.; 0. |]));
+      Alcotest.test_case "errors: POV-Ray's limits of the function syntax" `Quick (fun () ->
+          Scn.check_message "#declare V = <1,2,3>; #declare F = function { V }" "is a vector";
+          Scn.check_message "#declare F = function { x ? 1 : 2 }" "expected an operator";
+          Scn.check_message "#declare F = function { Nope(x) }" "undefined identifier Nope";
+          Scn.check_message "#declare F = function(a) { a } sphere {0, F(1, 2)}" "takes 1 argument";
+          Scn.check_message "#declare F = function { }" "cannot be empty";
+          Scn.check_message "#declare F = function(a, a) { a }" "listed twice");
+      Alcotest.test_case "internal functions declare but cannot be called" `Quick (fun () ->
+          Scn.check_message "#declare F = function { internal(3) } sphere {0, F(1,2,3)}" "internal function 3");
+    ] )

@@ -1,0 +1,134 @@
+(* The directive evaluator: declarations and scopes, conditionals, loops,
+   switch, macros, arrays, includes. Answers checked against POV-Ray 3.7
+   (the same directives printing through #debug). *)
+open Camlray_lang
+
+let floats = Scn.floats
+let check = Scn.check_floats
+
+let with_dir files f =
+  let dir = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "camlray-sup-%d" (Unix.getpid ())) in
+  (try Unix.mkdir dir 0o755 with Unix.Unix_error (Unix.EEXIST, _, _) -> ());
+  List.iter (fun (n, text) -> Out_channel.with_open_bin (Filename.concat dir n) (fun oc -> output_string oc text)) files;
+  Fun.protect ~finally:(fun () ->
+      List.iter (fun (n, _) -> try Sys.remove (Filename.concat dir n) with Sys_error _ -> ()) files;
+      try Unix.rmdir dir with Unix.Unix_error _ -> ())
+    (fun () -> f dir)
+
+let parse_file path =
+  match Parse.file path with
+  | Ok (s, files) -> (s, files)
+  | Error d -> Alcotest.failf "unexpected error:\n%s" (Diag.to_string d)
+
+let radii (s : Sdl.scene) = List.map snd (Scn.spheres s)
+
+let tests =
+  ( "supplier",
+    [
+      Alcotest.test_case "#while sums 0..9" `Quick (fun () ->
+          check "sum" [ 45. ]
+            (floats "#declare I = 0; #declare S = 0;\n#while (I < 10) #declare S = S + I; #declare I = I + 1; #end\nsphere {0, S}"));
+      Alcotest.test_case "#for with a negative step; the variable keeps the first value past the end" `Quick (fun () ->
+          (* POV-Ray: 10741 and J = -2 *)
+          check "for" [ 10741.; -2. ]
+            (floats "#declare S = 0;\n#for (J, 10, 1, -3) #declare S = S * 10 + J; #end\nsphere {0, S} sphere {0, J}"));
+      Alcotest.test_case "#for with a fractional step includes the end" `Quick (fun () ->
+          check "steps" [ 0.; 0.25; 0.5; 0.75; 1. ] (floats "#for (K, 0, 1, 0.25) sphere {0, K} #end"));
+      Alcotest.test_case "#for whose range is empty runs nothing" `Quick (fun () ->
+          check "none" [ 7. ] (floats "#for (K, 3, 1) sphere {0, K} #end sphere {0, 7}"));
+      Alcotest.test_case "#switch: #range, fall-through to the next #case, #else" `Quick (fun () ->
+          check "switch 3" [ 24.; 5. ]
+            (floats
+               "#switch (3) #case (1) sphere {0,1} #break #range (2, 4) sphere {0,24}\n\
+                #case (5) sphere {0,5} #break #else sphere {0,99} #end");
+          check "switch 9" [ 99. ] (floats "#switch (9) #case (1) sphere {0,1} #else sphere {0,99} #end"));
+      Alcotest.test_case "#if/#elseif/#else with nesting in skipped branches" `Quick (fun () ->
+          check "elseif" [ 2. ]
+            (floats "#if (0) #if (1) sphere{0,9} #end sphere{0,9} #elseif (1) sphere{0,2} #else sphere{0,9} #end"));
+      Alcotest.test_case "#break leaves a #while loop" `Quick (fun () ->
+          check "break" [ 3. ]
+            (floats "#declare C = 0; #while (1) #declare C = C + 1; #if (C >= 3) #break #end #end sphere {0, C}"));
+      Alcotest.test_case "recursive macro" `Quick (fun () ->
+          check "6!" [ 720. ]
+            (floats
+               "#macro Fact(N) #if (N <= 1) #local R = 1; #else #local R = N * Fact(N - 1); #end R #end\n\
+                #declare R = Fact(6); sphere {0, R}"));
+      Alcotest.test_case "identifiers are passed to macros by reference" `Quick (fun () ->
+          (* POV-Ray swaps X1 and X2 *)
+          check "swap" [ 2.; 1. ]
+            (floats
+               "#macro Swap(a, b) #local T = a; #declare a = b; #declare b = T; #end\n\
+                #declare X1 = 1; #declare X2 = 2; Swap(X1, X2) sphere {0, X1} sphere {0, X2}"));
+      Alcotest.test_case "an array passed to a macro is shared" `Quick (fun () ->
+          check "fill" [ 3. ]
+            (floats
+               "#macro Fill(A, V) #for (I, 0, dimension_size(A, 1) - 1) #declare A[I] = V; #end #end\n\
+                #declare Arr = array[4]; Fill(Arr, 3) sphere {0, Arr[3]}"));
+      Alcotest.test_case "#local in a macro leaves the global alone" `Quick (fun () ->
+          check "local" [ 1.; 5. ]
+            (floats "#declare V = 1; #macro M() #local V = 5; sphere {0, V} #end M() sphere {0, V}" |> List.rev));
+      Alcotest.test_case "#declare of a name local to the macro updates the local" `Quick (fun () ->
+          check "declare local" [ 3.; 1. ]
+            (floats "#declare V = 1; #macro M() #local V = 2; #declare V = 3; sphere {0, V} #end M() sphere {0, V}"));
+      Alcotest.test_case "arrays: initialisers, dimensions, dimension_size, defined" `Quick (fun () ->
+          check "arrays" [ 1.; 2.; 3.; 6.; 7.; 1.; 0.; 1.; 0. ]
+            (floats
+               "#declare A = array[3] { 1, 2, 3 };\n#declare B = array[2][3] { {1, 2, 3}, {4, 5, 6} };\n\
+                #declare E = array[4]; #declare E[2] = 7;\n\
+                sphere {0, dimensions(A)} sphere {0, dimensions(B)} sphere {0, dimension_size(B, 2)}\n\
+                sphere {0, B[1][2]} sphere {0, E[2]}\n\
+                sphere {0, defined(E[2])} sphere {0, defined(E[1])} sphere {0, defined(A)} sphere {0, defined(Nope)}"));
+      Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
+          check "ifdef" [ 2.; 4. ]
+            (floats
+               "#declare E = array[2]; #declare E[0] = 1;\n\
+                #ifdef (E[1]) sphere {0,1} #else sphere {0,2} #end\n\
+                #declare M = 1; #undef M #ifndef (M) sphere {0,4} #end"));
+      Alcotest.test_case "array errors are located" `Quick (fun () ->
+          Scn.check_message "#declare A = array[2]; sphere {0, A[2]}" "outside the array";
+          Scn.check_message "#declare A = array[2]; sphere {0, A[1]}" "has not been set";
+          Scn.check_message "#declare A = array[2] {1, 2, 3};" "too many initialisers");
+      Alcotest.test_case "an include's #local disappears, its #declare stays" `Quick (fun () ->
+          with_dir
+            [ ("inc.inc", "#local L = 5;\n#declare G = 6;\n");
+              ("main.pov", "#include \"inc.inc\"\n#ifdef (L) sphere {0, 1} #end sphere {0, G}\n") ]
+            (fun dir ->
+              let s, files = parse_file (Filename.concat dir "main.pov") in
+              check "radii" [ 6. ] (radii s);
+              Alcotest.(check int) "files read" 2 (List.length files)));
+      Alcotest.test_case "an include file restores #version at its end" `Quick (fun () ->
+          with_dir
+            [ ("v.inc", "#version 3.5;\n#declare Inside = version;\n");
+              ("main.pov", "#version 3.7;\n#include \"v.inc\"\nsphere {0, Inside} sphere {0, version}\n") ]
+            (fun dir ->
+              let s, _ = parse_file (Filename.concat dir "main.pov") in
+              check "versions" [ 3.5; 3.7 ] (radii s)));
+      Alcotest.test_case "an include cycle is an error" `Quick (fun () ->
+          with_dir [ ("a.inc", "#include \"a.inc\"\n"); ("main.pov", "#include \"a.inc\"\n") ] (fun dir ->
+              match Parse.file (Filename.concat dir "main.pov") with
+              | Ok _ -> Alcotest.fail "expected an error"
+              | Error d ->
+                  if not (Scn.contains d.msg "include cycle") then Alcotest.failf "message %S" d.msg;
+                  Alcotest.(check bool) "chain" true (d.chain <> [])));
+      Alcotest.test_case "file_exists looks where #include looks" `Quick (fun () ->
+          check "exists" [ 1.; 0. ]
+            (floats "sphere {0, file_exists(\"colors.inc\")} sphere {0, file_exists(\"no-such.inc\")}"));
+      Alcotest.test_case "#declare deprecated: the value is bound" `Quick (fun () ->
+          check "deprecated" [ 2. ] (floats "#declare deprecated once \"old\" D = 2;\nsphere {0, D}"));
+      Alcotest.test_case "a runaway #while stops at the iteration limit" `Quick (fun () ->
+          let options =
+            { Parse.default_options with
+              limits = { Supplier.default_limits with max_loop_iterations = 100 } }
+          in
+          match Parse.string ~options "#while (1) #end" with
+          | Ok _ -> Alcotest.fail "expected an error"
+          | Error d -> if not (Scn.contains d.msg "iterations") then Alcotest.failf "message %S" d.msg);
+      Alcotest.test_case "unbounded macro recursion stops at the depth limit" `Quick (fun () ->
+          Scn.check_message "#macro R() R() #end R()" "nested deeper");
+      Alcotest.test_case "standard include files load" `Quick (fun () ->
+          if Sys.file_exists Parse.pov_include_dir then
+            List.iter
+              (fun inc -> ignore (Scn.parse (Printf.sprintf "#version 3.7;\n#include \"%s\"\n" inc)))
+              [ "colors.inc"; "consts.inc"; "finish.inc"; "metals.inc"; "golds.inc"; "math.inc";
+                "transforms.inc"; "functions.inc"; "strings.inc"; "rand.inc"; "arrays.inc" ]);
+    ] )
