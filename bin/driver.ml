@@ -15,6 +15,7 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  allow_read : string list;
   region : string option;
   pov_region : string option;
   frames : (int * int) option;
@@ -132,7 +133,8 @@ let region_of o =
 
 let render_frame o ~clock ~frame ~out ~t0 =
   let options =
-    { Parse.default_options with include_dirs = o.include_dirs; image_width = o.width;
+    { Parse.default_options with include_dirs = o.include_dirs; allow_read = o.allow_read;
+      image_width = o.width;
       image_height = o.height; clock; frame_number = frame }
   in
   match compile ~options o.scene with
@@ -254,8 +256,8 @@ let merge parts out =
       prerr_endline ("camlray: " ^ e);
       1
 
-let check path include_dirs =
-  let options = { Parse.default_options with include_dirs } in
+let check path include_dirs allow_read =
+  let options = { Parse.default_options with include_dirs; allow_read } in
   try
     match compile ~options (Some path) with
     | Error d ->

@@ -16,6 +16,7 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  allow_read : string list;
   region : string option;  (** ["X0,Y0,X1,Y1"] *)
   pov_region : string option;  (** POV-Ray's +SR,+ER,+SC,+EC *)
   frames : (int * int) option;  (** an animation's first and last frame *)
@@ -26,7 +27,8 @@ type render_opts = {
 }
 
 val render : render_opts -> int
-val check : string -> string list -> int
+val check : string -> string list -> string list -> int
+(** [check scene include_dirs allow_read] *)
 
 val merge : string list -> string -> int
 (** [merge parts out]: assemble partial renders. *)

@@ -12,6 +12,12 @@ let include_path =
          ~doc:"Also search $(docv) for $(b,#include) files (after the current folder and \
                the scene's folder, before POV-Ray's include folder). Repeatable.")
 
+let allow_read =
+  Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR"
+         ~doc:"Let the scene read files inside $(docv) too. Without it a scene reads only \
+               inside the folders #include searches: the current folder, the scene's \
+               folder, $(b,--include-path) folders and POV-Ray's include folder. Repeatable.")
+
 let scene_arg =
   Arg.(value & pos 0 (some string) None & info [] ~docv:"SCENE"
          ~doc:"The scene file ($(b,.scn) or $(b,.pov)). Without it, camlray renders its \
@@ -94,15 +100,15 @@ let render_cmd =
   let tile_order_seed =
     Arg.(value & opt (some int) None & info [ "tile-order-seed" ] ~docs:Manpage.s_none)
   in
-  let run scene output width height mode spp depth domains seed quiet include_dirs region
-      pov_region frames clock clock_range subset tile_order_seed =
+  let run scene output width height mode spp depth domains seed quiet include_dirs allow_read
+      region pov_region frames clock clock_range subset tile_order_seed =
     Driver.render
       { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
-        region; pov_region; frames; clock; clock_range; subset; tile_order_seed }
+        allow_read; region; pov_region; frames; clock; clock_range; subset; tile_order_seed }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
-          $ quiet $ include_path $ region $ pov_region $ frames $ clock $ clock_range
+          $ quiet $ include_path $ allow_read $ region $ pov_region $ frames $ clock $ clock_range
           $ subset $ tile_order_seed)
   in
   let man =
@@ -128,7 +134,7 @@ let check_cmd =
   let scene = Arg.(required & pos 0 (some string) None & info [] ~docv:"SCENE" ~doc:"The scene file.") in
   Cmd.v
     (Cmd.info "check" ~doc:"Parse and compile a scene, report errors, render nothing.")
-    Term.(const Driver.check $ scene $ include_path)
+    Term.(const Driver.check $ scene $ include_path $ allow_read)
 
 let merge_cmd =
   let parts = Arg.(non_empty & pos_all file [] & info [] ~docv:"PART" ~doc:"Partial renders (PNG).") in

@@ -5,11 +5,13 @@ type options = {
   image_width : int;
   image_height : int;
   frame_number : int;
+  allow_read : string list;
+  confine_reads : bool;
 }
 
 let default_options =
   { include_dirs = []; limits = Supplier.default_limits; clock = 0.; image_width = 800;
-    image_height = 600; frame_number = 0 }
+    image_height = 600; frame_number = 0; allow_read = []; confine_reads = true }
 
 let pov_include_dir = "/usr/share/povray-3.7/include"
 
@@ -24,9 +26,16 @@ let run options ~name text =
       options.include_dirs
       @ if Sys.file_exists pov_include_dir then [ pov_include_dir ] else []
     in
+    let access =
+      if options.confine_reads then
+        Access.create
+          (Sys.getcwd () :: Filename.dirname name :: (include_dirs @ options.allow_read))
+      else Access.unrestricted
+    in
     let config =
       {
         Supplier.include_dirs;
+        access;
         limits = options.limits;
         builtins =
           [ ("clock", options.clock); ("image_width", float_of_int options.image_width);

@@ -11,6 +11,10 @@ type options = {
   image_width : int;
   image_height : int;
   frame_number : int;
+  allow_read : string list;
+      (** folders a scene may read besides the include search folders *)
+  confine_reads : bool;
+      (** confine reads to those folders (default [true]; see {!Access}) *)
 }
 
 val default_options : options

@@ -12,7 +12,12 @@ let default_limits =
   { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
     max_array_size = 10_000_000 }
 
-type config = { include_dirs : string list; limits : limits; builtins : (string * float) list }
+type config = {
+  include_dirs : string list;
+  limits : limits;
+  builtins : (string * float) list;
+  access : Access.t;
+}
 
 (* Open control structures of one frame, innermost first. *)
 type ctrl =
@@ -773,6 +778,9 @@ and include_file t loc =
       fail t tok.loc "cannot find include file %S (looked in %s)" name
         (String.concat ", " (List.sort_uniq compare (List.map Filename.dirname (candidates t name))))
   | Some path ->
+      (match Access.check t.config.access path with
+      | Ok () -> ()
+      | Error msg -> fail t tok.loc "%s" msg);
       let abs = if Filename.is_relative path then Filename.concat (Sys.getcwd ()) path else path in
       if List.exists (fun f -> f.file = path && f.kind <> Main) t.frames then
         fail t tok.loc "include cycle: %S includes itself" name;

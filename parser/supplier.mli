@@ -23,6 +23,7 @@ type config = {
           folder and the scene's folder) *)
   limits : limits;
   builtins : (string * float) list;
+  access : Access.t;  (** what #include may read *)
       (** [clock], [image_width], [image_height], [frame_number], ... *)
 }
 

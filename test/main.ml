@@ -13,6 +13,7 @@ let () =
       Test_robust.tests;
       Test_numerics.tests;
       Test_bench.tests;
+      Test_access.tests;
       Test_image.tests;
       Test_value.tests;
       Test_supplier.tests;
