@@ -39,8 +39,9 @@ let ray_lens c sx sy u v =
   let r = ray c sx sy in
   if c.aperture <= 0. then r
   else
-    (* concentric-free polar mapping of the unit square onto the disc *)
-    let rad = 0.5 *. c.aperture *. Float.sqrt u in
+    (* POV-Ray's lens has radius aperture/4 (checked by rendering a point
+       light out of focus); uniform polar mapping of the square onto it *)
+    let rad = 0.25 *. c.aperture *. Float.sqrt u in
     let phi = 2. *. Float.pi *. v in
     let ru = Vec3.normalize c.right and rv = Vec3.normalize c.up in
     let offset = Vec3.add (Vec3.scale (rad *. Float.cos phi) ru) (Vec3.scale (rad *. Float.sin phi) rv) in

@@ -45,6 +45,22 @@ let units =
     Alcotest.test_case "a mirrored right stays mirrored after look_at" `Quick (fun () ->
         let c = cam "camera { right -1.33*x location <0,0,-5> look_at <0,0,0> }" in
         Alcotest.(check bool) "negative x" true (c.right.x < 0.));
+    Alcotest.test_case "depth of field: lens radius aperture/4, rays meet on the focal plane" `Quick
+      (fun () ->
+        let c = cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> }" in
+        Alcotest.(check (float 1e-9)) "focal distance" 5. c.focal_distance;
+        let pin = Camera.ray c 0.1 0.2 in
+        let focus = Ray.at pin (5. /. pin.dir.z) in
+        List.iter
+          (fun (u, v) ->
+            let r = Camera.ray_lens c 0.1 0.2 u v in
+            let off = Vec3.dist r.origin c.location in
+            if off > 0.25 +. 1e-12 then Alcotest.failf "lens offset %g > aperture/4" off;
+            let p = Ray.at r ((focus.z -. r.origin.z) /. r.dir.z) in
+            if Vec3.dist p focus > 1e-9 then Alcotest.fail "not on the focal point")
+          [ (0., 0.); (0.999999, 0.3); (0.5, 0.7); (0.25, 0.1) ];
+        let edge = Camera.ray_lens c 0. 0. 1. 0. in
+        Alcotest.(check (float 1e-9)) "edge" 0.25 (Vec3.dist edge.origin c.location));
   ]
 
 let tests = ("camera", units)
