@@ -22,7 +22,9 @@ test: build
 	@bash scripts/run-tests.sh
 
 bench: build
-	dune build bench/whole/whole.exe
+	dune build bench/whole/whole.exe bench/alloc/alloc.exe
+	./_build/default/bench/alloc/alloc.exe scenes/default.scn scenes/seeds/diagrams-snowman.scn
+	./_build/default/bench/alloc/alloc.exe --mc 4 scenes/default.scn
 	./_build/default/bench/whole/whole.exe
 
 stress: build
