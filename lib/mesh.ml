@@ -43,6 +43,12 @@ let smooth_normal n1 n2 n3 u v =
 let vert m i = Vec3.make (fget m.verts (3 * i)) (fget m.verts ((3 * i) + 1)) (fget m.verts ((3 * i) + 2))
 
 let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
+  let normals = Float.Array.copy normals in
+  for i = 0 to (Float.Array.length normals / 3) - 1 do
+    let g k = Float.Array.get normals ((3 * i) + k) in
+    let l = Float.sqrt ((g 0 *. g 0) +. (g 1 *. g 1) +. (g 2 *. g 2)) in
+    if l > 0. then for k = 0 to 2 do Float.Array.set normals ((3 * i) + k) (g k /. l) done
+  done;
   let n = Array.length faces / 3 in
   let smooth = Array.length normal_faces > 0 in
   let v = { verts; normals; faces; nfaces = [||]; bvh = Bvh.build (Float.Array.create 0); inside_vector } in

@@ -13,7 +13,7 @@ val make :
     vertex indices per triangle; [normal_faces] is either empty (flat
     triangles) or 3 normal indices per triangle (smooth triangles; an index
     [< 0] makes that triangle flat). Indices must be in range (the caller
-    checks them). Degenerate triangles (zero area) are dropped; see
+    checks them); normals are normalised here. Degenerate triangles (zero area) are dropped; see
     {!triangles}. [inside_vector] enables the inside test (POV-Ray's rule:
     odd crossings along it). *)
 

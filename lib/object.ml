@@ -40,7 +40,17 @@ let world_box xf = function
         done;
         Some (!l, !h)
 
-let clip_box clip b = Array.fold_left (fun b c -> box_inter b c.bounds) b clip
+(* Bounds of where [inside] can be true (a disc's inside is a half-space,
+   wider than its surface): what intersections and clips may trust. *)
+let rec solid_box o =
+  match o.geom with
+  | Prim (Shape.Disc _) -> None
+  | Prim _ | Intersection _ -> o.bounds
+  | Union cs | Merge cs ->
+      if Array.length cs = 0 then o.bounds
+      else Array.fold_left (fun b c -> box_union b (solid_box c)) (solid_box cs.(0)) cs
+
+let clip_box clip b = Array.fold_left (fun b c -> box_inter b (solid_box c)) b clip
 
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
@@ -67,7 +77,7 @@ let union ?(clip = [||]) cs = node (Union cs) clip (union_box cs)
 let merge ?(clip = [||]) cs = node (Merge cs) clip (union_box cs)
 
 let intersection ?(clip = [||]) cs =
-  node (Intersection cs) clip (Array.fold_left (fun b c -> box_inter b c.bounds) None cs)
+  node (Intersection cs) clip (Array.fold_left (fun b c -> box_inter b (solid_box c)) None cs)
 
 let with_clip o clip =
   let clip = Array.append o.clip clip in

@@ -4,4 +4,6 @@ let () =
     [
       Test_vec3.tests;
       Test_image.tests;
+      Test_shape.tests;
+      Test_bvh.tests;
     ]
