@@ -6,4 +6,5 @@ let () =
       Test_image.tests;
       Test_shape.tests;
       Test_bvh.tests;
+      Test_object.tests;
     ]
