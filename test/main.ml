@@ -7,4 +7,5 @@ let () =
       Test_shape.tests;
       Test_bvh.tests;
       Test_object.tests;
+      Test_geom_render.tests;
     ]
