@@ -94,7 +94,9 @@ torus { 0.5, 0.7 rotate z*90 translate <0, 1.6, 0> pigment { rgb <0.2,0.9,0.4> }
 let exe () =
   match Sys.getenv_opt "CAMLRAY_EXE" with
   | Some e -> e
-  | None -> Filename.concat (Sys.getcwd ()) "../install/default/bin/camlray"
+  | None ->
+      let c = List.map (Filename.concat (Sys.getcwd ())) [ "../install/default/bin/camlray"; "../../install/default/bin/camlray" ] in
+      Option.value ~default:(List.hd c) (List.find_opt Sys.file_exists c)
 
 let have_povray () = Sys.command "command -v povray > /dev/null 2>&1" = 0
 
