@@ -1,26 +1,75 @@
-(** Scene objects: a shape placed by a transform, with its texture and
-    interior. The transform's inverse is stored once (in [Transform.t]). *)
+(** Scene objects: a tree whose leaves are shapes placed by a full affine
+    transform (its inverse stored once, in {!Transform.t}) with their
+    texture and interior, and whose inner nodes are CSG operators.
 
-type t = {
-  shape : Shape.t;
-  xform : Transform.t;  (** object space to world space *)
+    The scene compiler pushes transforms, textures and [no_shadow] down to
+    the leaves (a CSG node's own fields are unused), turns [difference]
+    into an intersection with inverted children and [inverse] of a CSG into
+    its De Morgan dual, so inversion is only ever a leaf flag. A hit
+    reports the leaf whose surface was crossed. *)
+
+type t = private {
+  geom : geom;
+  xform : Transform.t;  (** object space to world space (leaves) *)
   texture : Texture.t;
   interior : Interior.t;
   no_shadow : bool;
+  inverted : bool;  (** leaf: inside and outside swapped, normal flipped *)
+  clip : t array;  (** [clipped_by]: surfaces outside any of these are removed *)
+  bounds : (Vec3.t * Vec3.t) option;  (** world box; [None] when infinite *)
 }
 
+and geom =
+  | Prim of Shape.t
+  | Union of t array  (** every child surface; inside any child *)
+  | Intersection of t array  (** surfaces inside all other children *)
+  | Merge of t array  (** surfaces outside all other children; inside any *)
+
 val make :
-  ?xform:Transform.t -> ?texture:Texture.t -> ?interior:Interior.t ->
-  ?no_shadow:bool -> Shape.t -> t
+  ?xform:Transform.t -> ?texture:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
+  ?inverted:bool -> ?clip:t array -> Shape.t -> t
+(** A leaf. *)
+
+val union : ?clip:t array -> t array -> t
+val intersection : ?clip:t array -> t array -> t
+val merge : ?clip:t array -> t array -> t
+
+val with_clip : t -> t array -> t
+(** Add [clipped_by] objects (world space). *)
+
+val invert : t -> t
+(** POV-Ray's [inverse]: flips a leaf; De Morgan on CSG nodes (a union or
+    merge becomes an intersection of inverted children, an intersection a
+    merge of inverted children). *)
+
+type found = { mutable leaf : t }
+(** Where a query writes the leaf it hit. *)
+
+val found : t -> found
+
+val hit : t -> Ray.t -> float -> Hit.t -> found -> bool
+(** [hit o ray tmin h f]: nearest crossing of [o]'s surface in
+    [(tmin, h.t)] (world space; distances in units of [ray.dir]). On
+    success sets [h] and [f.leaf]. *)
 
 val intersect : t -> Ray.t -> float -> float -> float
-(** Nearest hit distance in [(tmin, tmax)] along a world ray, or
-    [infinity]. *)
+(** Nearest distance in [(tmin, tmax)], or [infinity]. *)
 
-val normal : t -> Vec3.t -> Vec3.t
-(** Outward unit world-space normal at a world point on the surface. *)
+val crossings : t -> Ray.t -> float -> float -> (t -> float -> bool) -> bool
+(** [crossings o ray tmin tmax f] calls [f leaf t] on the crossings of
+    [o]'s surface in [(tmin, tmax)], nearest first, until [f] returns
+    [false] (then returns [false]). *)
+
+val normal : t -> Vec3.t -> Hit.t -> Vec3.t
+(** [normal leaf p h]: outward unit world normal of a leaf at the world
+    point [p], from the hit record that found it. *)
 
 val inside : t -> Vec3.t -> bool
+(** POV-Ray's inside test at a world point. *)
 
 val bounds : t -> (Vec3.t * Vec3.t) option
 (** World-space axis-aligned bounds; [None] when infinite. *)
+
+val next_tmin : Ray.t -> float -> float
+(** [next_tmin ray t]: a distance just beyond [t], to look for the next
+    crossing without finding the same one again. *)

@@ -10,13 +10,26 @@ type settings = {
       (** pre-3.7 transparency rule: alpha = 1 - (f max(rgb) + t) *)
 }
 
+type accel
+(** The acceleration structure over [objects]: a BVH over the finite ones,
+    the infinite ones (planes, inverted shapes, CSG without bounds) kept
+    aside and tested on every ray. *)
+
 type t = {
   objects : Object.t array;
   lights : Light.t array;
   camera : Camera.t;
   background : Color.t;
   settings : settings;
+  accel : accel;  (** built from [objects] by {!accelerate}; rebuild it when
+                      replacing [objects] *)
 }
+
+val accelerate : Object.t array -> accel
+(** Build the BVH (binned SAH) over the objects' world bounds. *)
+
+val bvh_nodes : t -> int
+(** Number of BVH nodes over the finite objects (for reports). *)
 
 val default_settings : settings
 
@@ -26,6 +39,9 @@ type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
 val intersect : t -> Ray.t -> float -> float -> hit option
 (** Nearest hit in [(tmin, tmax)]. *)
+
+val occluded : t -> Ray.t -> float -> float -> bool
+(** Any-hit query: some shadow-casting surface in [(tmin, tmax)]. *)
 
 val occluders : t -> Ray.t -> float -> float -> (Object.t -> float -> bool) -> bool
 (** [occluders s ray tmin tmax f] calls [f obj t] on every shadow-casting

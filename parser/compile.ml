@@ -84,13 +84,130 @@ let light (o : Sdl.obj) (l : Sdl.light) =
     shadowless = l.shadowless;
   }
 
+let positive (o : Sdl.obj) what r =
+  if not (r > 0.) then Diag.error o.loc "%s must be positive, found %g" what r
+
+let mesh (o : Sdl.obj) (m : Sdl.mesh) =
+  let mm =
+    Mesh.make ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
+      ~inside_vector:m.inside_vector
+  in
+  let n = Array.length m.faces / 3 in
+  let dropped = n - Mesh.triangles mm in
+  if dropped > 0 then
+    Diag.warning o.loc (Printf.sprintf "%d degenerate triangle%s of this mesh ignored" dropped
+                          (if dropped = 1 then "" else "s"));
+  Shape.Mesh mm
+
+(* The lib shape of a primitive, after checking its parameters. *)
 let shape (o : Sdl.obj) =
   match o.shape with
   | Sdl.Sphere (c, r) ->
-      if r <= 0. then Diag.error o.loc "a sphere's radius must be positive, found %g" r;
+      positive o "a sphere's radius" r;
       Shape.sphere c r
   | Sdl.Plane (n, d) -> Shape.plane n d
-  | Sdl.Light _ -> assert false
+  | Sdl.Box (a, b) -> Shape.box a b
+  | Sdl.Cone c ->
+      let what = if c.cylinder then "cylinder" else "cone" in
+      if Vec3.dist c.base c.top = 0. then Diag.error o.loc "a %s's two end points must differ" what;
+      if c.cylinder then positive o "a cylinder's radius" c.base_r
+      else if c.base_r < 0. || c.top_r < 0. || (c.base_r = 0. && c.top_r = 0.) then
+        Diag.error o.loc "a cone's radii must be >= 0 and not both 0, found %g and %g" c.base_r c.top_r;
+      Shape.cone ~open_:c.open_ c.base c.base_r c.top c.top_r
+  | Sdl.Torus (r1, r2) ->
+      positive o "a torus's major radius" r1;
+      positive o "a torus's minor radius" r2;
+      Shape.torus r1 r2
+  | Sdl.Disc d ->
+      if Vec3.length d.normal = 0. then Diag.error o.loc "a disc's normal cannot be zero";
+      positive o "a disc's radius" d.radius;
+      if d.hole < 0. then Diag.error o.loc "a disc's hole radius cannot be negative, found %g" d.hole;
+      if d.hole >= d.radius then Diag.warning o.loc "this disc's hole is as large as the disc: nothing is left";
+      Shape.disc ~hole:d.hole d.center d.normal d.radius
+  | Sdl.Triangle (a, b, c) ->
+      if Vec3.length2 (Vec3.cross (Vec3.sub b a) (Vec3.sub c a)) = 0. then
+        Diag.warning o.loc "degenerate triangle (its corners are on one line) ignored";
+      Shape.triangle a b c
+  | Sdl.Smooth_triangle (a, b, c, na, nb, nc) ->
+      if Vec3.length2 (Vec3.cross (Vec3.sub b a) (Vec3.sub c a)) = 0. then
+        Diag.warning o.loc "degenerate triangle (its corners are on one line) ignored";
+      if Vec3.length na = 0. || Vec3.length nb = 0. || Vec3.length nc = 0. then (
+        Diag.warning o.loc "a smooth_triangle normal is zero: the triangle is flat";
+        Shape.triangle a b c)
+      else Shape.smooth_triangle a na b nb c nc
+  | Sdl.Mesh m -> mesh o m
+  | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Light _ -> assert false
+
+(* What a CSG node hands down to its children: its world transform, the
+   texture and interior for children without one, no_shadow. *)
+type ctx = {
+  xf : Transform.t;
+  tex : Texture.t option;
+  inter : Interior.t option;
+  no_shadow : bool;
+  lights : Light.t list ref;
+}
+
+let rec obj ctx (o : Sdl.obj) : Object.t option =
+  let o = Sdl.transform_obj ctx.xf o in
+  let tex = match o.texture with Some _ -> o.texture | None -> ctx.tex in
+  let inter = match o.interior with Some _ -> o.interior | None -> ctx.inter in
+  let ctx' = { ctx with xf = o.xform; tex; inter; no_shadow = ctx.no_shadow || o.no_shadow } in
+  let children l = Array.of_list (List.filter_map (obj ctx') l) in
+  match o.shape with
+  | Sdl.Light l ->
+      ctx.lights := light o l :: !(ctx.lights);
+      None
+  | Sdl.Csg (op, l) -> (
+      let cs = children l in
+      match op with
+      | Sdl.Union -> Some (Object.union cs)
+      | Sdl.Merge -> Some (Object.merge cs)
+      | Sdl.Intersection ->
+          if Array.length cs = 0 then Diag.error o.loc "an intersection needs at least one object";
+          Some (Object.intersection cs)
+      | Sdl.Difference ->
+          if Array.length cs = 0 then Diag.error o.loc "a difference needs at least one object";
+          Some
+            (if Array.length cs = 1 then cs.(0)
+             else
+               Object.intersection
+                 (Array.mapi (fun i c -> if i = 0 then c else Object.invert c) cs)))
+  | Sdl.Inverse inner -> Option.map Object.invert (obj ctx' inner)
+  | Sdl.Clipped (inner, clips) ->
+      let clips = children clips in
+      Option.map (fun i -> Object.with_clip i clips) (obj ctx' inner)
+  | Sdl.Mesh m when Array.length m.textures > 0 && Array.length m.face_textures > 0 ->
+      (* mesh2 with a texture_list: one mesh per texture, in a union *)
+      let groups = Hashtbl.create 8 in
+      Array.iteri (fun i t -> Hashtbl.replace groups t (i :: Option.value ~default:[] (Hashtbl.find_opt groups t)))
+        m.face_textures;
+      let part t faces_idx =
+        let pick a = if Array.length a = 0 then a else
+            Array.concat (List.rev_map (fun i -> Array.sub a (3 * i) 3) faces_idx) in
+        let m' = { m with faces = pick m.faces; normal_faces = pick m.normal_faces; face_textures = [||] } in
+        let texture = if t >= 0 && t < Array.length m.textures then Some m.textures.(t) else tex in
+        leaf ctx' { o with shape = Sdl.Mesh m' } texture inter
+      in
+      Some (Object.union (Array.of_list (Hashtbl.fold (fun t f acc -> part t f :: acc) groups [])))
+  | _ -> Some (leaf ctx' o tex inter)
+
+and leaf ctx o tex inter =
+  let texture = match tex with Some t -> t | None -> Texture.default in
+  let interior = Option.value ~default:Interior.default inter in
+  Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow (shape o)
+
+(* Top-level unions (not clipped, not inverted) are flattened into the
+   scene's BVH: same surfaces, same textures. *)
+let rec top ctx (o : Sdl.obj) acc =
+  match o.shape with
+  | Sdl.Csg (Sdl.Union, l) ->
+      let o' = Sdl.transform_obj ctx.xf o in
+      let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
+      let inter = match o'.interior with Some _ -> o'.interior | None -> ctx.inter in
+      let ctx' = { ctx with xf = o'.xform; tex; inter; no_shadow = ctx.no_shadow || o'.no_shadow } in
+      List.fold_left (fun acc c -> top ctx' c acc) acc l
+  | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
 
 let scene (s : Sdl.scene) =
   try
@@ -100,13 +217,9 @@ let scene (s : Sdl.scene) =
     let gamma = ref None in
     List.iter
       (function
-        | Sdl.Object ({ shape = Sdl.Light l; _ } as o) -> lights := light o l :: !lights
         | Sdl.Object o ->
-            let texture = match o.texture with Some t -> t | None -> Texture.default in
-            let interior = Option.value ~default:Interior.default o.interior in
-            objects :=
-              Object.make ~xform:o.xform ~texture ~interior ~no_shadow:o.no_shadow (shape o)
-              :: !objects
+            let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; lights } in
+            objects := top ctx o !objects
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
         | Sdl.Global_settings (_, gs) ->
@@ -127,9 +240,11 @@ let scene (s : Sdl.scene) =
       | false, _ -> Image.Identity
     in
     let camera = match !cams with (_, c) :: _ -> camera c | [] -> Camera.default in
+    let objects = Array.of_list (List.rev !objects) in
     Ok
       {
-        Scene.objects = Array.of_list (List.rev !objects);
+        Scene.objects;
+        accel = Scene.accelerate objects;
         lights = Array.of_list (List.rev !lights);
         camera;
         background = !background;

@@ -2,24 +2,92 @@
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
 %token SPHERE PLANE OBJECT NO_SHADOW HOLLOW
+%token BOX CYLINDER CONE TORUS DISC TRIANGLE SMOOTH_TRIANGLE MESH MESH2 OPEN STURM
+%token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
+%token TEXTURE_LIST INSIDE_VECTOR
+%token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
 
 %%
 
 %public object_:
   | SPHERE LBRACE c = param COMMA? r = param ms = list(object_mod) RBRACE
-      { let o = { Sdl.loc = loc $loc; shape = Sdl.Sphere (v3 $loc(c) c, fl $loc(r) r);
-                  xform = Transform.identity; texture = None; interior = None;
-                  no_shadow = false; hollow = false } in
-        List.fold_left (fun o f -> f o) o ms }
+      { Shapes.obj (loc $loc) (Sdl.Sphere (v3 $loc(c) c, fl $loc(r) r)) ms }
   | PLANE LBRACE n = param COMMA? d = param ms = list(object_mod) RBRACE
       { let nv = v3 $loc(n) n in
         if Vec3.length nv = 0. then Diag.error (loc $loc(n)) "a plane's normal cannot be zero";
-        let o = { Sdl.loc = loc $loc; shape = Sdl.Plane (nv, fl $loc(d) d);
-                  xform = Transform.identity; texture = None; interior = None;
-                  no_shadow = false; hollow = false } in
-        List.fold_left (fun o f -> f o) o ms }
+        Shapes.obj (loc $loc) (Sdl.Plane (nv, fl $loc(d) d)) ms }
+  | BOX LBRACE a = param COMMA? b = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Sdl.Box (v3 $loc(a) a, v3 $loc(b) b)) ms }
+  | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param ms = list(object_mod) RBRACE
+      { let r = fl $loc(r) r in
+        Shapes.obj (loc $loc) (Sdl.Cone { base = v3 $loc(a) a; base_r = r; top = v3 $loc(b) b;
+                                          top_r = r; open_ = false; cylinder = true }) ms }
+  | CONE LBRACE a = param COMMA? ra = param COMMA? b = param COMMA? rb = param
+    ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Sdl.Cone { base = v3 $loc(a) a; base_r = fl $loc(ra) ra;
+                                          top = v3 $loc(b) b; top_r = fl $loc(rb) rb;
+                                          open_ = false; cylinder = false }) ms }
+  | TORUS LBRACE r1 = param COMMA? r2 = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Sdl.Torus (fl $loc(r1) r1, fl $loc(r2) r2)) ms }
+  | DISC LBRACE c = param COMMA? n = param COMMA? r = param h = ioption(preceded(COMMA, param))
+    ms = list(object_mod) RBRACE
+      { let hole = match h with Some h -> fl $loc(h) h | None -> 0. in
+        Shapes.obj (loc $loc) (Sdl.Disc { center = v3 $loc(c) c; normal = v3 $loc(n) n;
+                                          radius = fl $loc(r) r; hole }) ms }
+  | TRIANGLE LBRACE a = param COMMA? b = param COMMA? c = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Sdl.Triangle (v3 $loc(a) a, v3 $loc(b) b, v3 $loc(c) c)) ms }
+  | SMOOTH_TRIANGLE LBRACE a = param COMMA? na = param COMMA? b = param COMMA? nb = param
+    COMMA? c = param COMMA? nc = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc)
+          (Sdl.Smooth_triangle (v3 $loc(a) a, v3 $loc(b) b, v3 $loc(c) c,
+                                v3 $loc(na) na, v3 $loc(nb) nb, v3 $loc(nc) nc)) ms }
+  | MESH LBRACE ts = nonempty_list(mesh_triangle) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.mesh (loc $loc) ts) ms }
+  | MESH2 LBRACE bs = nonempty_list(mesh2_block) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.mesh2 (loc $loc) bs) ms }
+  | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
+  | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
+  | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
+  | MERGE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Merge cs }
   | OBJECT LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
+  | OBJECT LBRACE o = object_ ms = list(object_mod) RBRACE { List.fold_left (fun o f -> f o) o ms }
+
+(* children and modifiers, in any order (POV-Ray wants the children
+   first; modifiers apply in order to the whole CSG) *)
+csg_body: items = list(csg_item) { items }
+
+csg_item:
+  | o = object_ { `Child o }
+  | m = object_mod { `Mod m }
+
+mesh_triangle:
+  | TRIANGLE LBRACE a = param COMMA? b = param COMMA? c = param t = ioption(mesh_texture) RBRACE
+      { Shapes.mesh_triangle (loc $loc) [| v3 $loc(a) a; v3 $loc(b) b; v3 $loc(c) c |] t }
+  | SMOOTH_TRIANGLE LBRACE a = param COMMA? na = param COMMA? b = param COMMA? nb = param
+    COMMA? c = param COMMA? nc = param t = ioption(mesh_texture) RBRACE
+      { Shapes.mesh_triangle (loc $loc)
+          [| v3 $loc(a) a; v3 $loc(na) na; v3 $loc(b) b; v3 $loc(nb) nb; v3 $loc(c) c; v3 $loc(nc) nc |] t }
+
+mesh_texture: TEXTURE LBRACE t = texture_body RBRACE { [ t ] }
+
+mesh2_block:
+  | VERTEX_VECTORS LBRACE n = param vs = items RBRACE { Shapes.vertex_vectors (loc $loc) n vs }
+  | NORMAL_VECTORS LBRACE n = param vs = items RBRACE { Shapes.normal_vectors (loc $loc) n vs }
+  | UV_VECTORS LBRACE param items RBRACE { Shapes.ignored_block }
+  | FACE_INDICES LBRACE n = param vs = items RBRACE { Shapes.face_indices (loc $loc) n vs }
+  | NORMAL_INDICES LBRACE n = param vs = items RBRACE { Shapes.normal_indices (loc $loc) n vs }
+  | UV_INDICES LBRACE param items RBRACE { Shapes.ignored_block }
+  | TEXTURE_LIST LBRACE n = param ts = list(texture_list_item) RBRACE
+      { Shapes.texture_list (loc $loc) n ts }
+
+texture_list_item: COMMA? t = mesh_texture { t }
+
+(* ", item, item ..." with an optional trailing comma *)
+items:
+  | { [] }
+  | COMMA { [] }
+  | COMMA p = param rest = items { (loc $loc(p), p) :: rest }
 
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }
@@ -34,3 +102,9 @@
   | NO_SHADOW { fun (o : Sdl.obj) -> { o with no_shadow = true } }
   | HOLLOW %prec below_shift { fun (o : Sdl.obj) -> { o with hollow = true } }
   | HOLLOW b = param { let h = Value.to_bool (loc $loc) b in fun (o : Sdl.obj) -> { o with hollow = h } }
+  | OPEN { Shapes.set_open (loc $loc) }
+  | STURM { fun o -> o }
+  | INVERSE { Shapes.inverse }
+  | INSIDE_VECTOR v = param { Shapes.inside_vector (loc $loc) (v3 $loc(v) v) }
+  | CLIPPED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.clipped cs }
+  | BOUNDED_BY LBRACE nonempty_list(object_) RBRACE { fun o -> o }

@@ -38,7 +38,14 @@ let scene_keywords =
 let object_keywords =
   [
     ("sphere", SPHERE); ("plane", PLANE); ("object", OBJECT); ("no_shadow", NO_SHADOW);
-    ("hollow", HOLLOW);
+    ("hollow", HOLLOW); ("box", BOX); ("cylinder", CYLINDER); ("cone", CONE); ("torus", TORUS);
+    ("disc", DISC); ("triangle", TRIANGLE); ("smooth_triangle", SMOOTH_TRIANGLE); ("mesh", MESH);
+    ("mesh2", MESH2); ("open", OPEN); ("sturm", STURM); ("vertex_vectors", VERTEX_VECTORS);
+    ("normal_vectors", NORMAL_VECTORS); ("uv_vectors", UV_VECTORS); ("face_indices", FACE_INDICES);
+    ("normal_indices", NORMAL_INDICES); ("uv_indices", UV_INDICES); ("texture_list", TEXTURE_LIST);
+    ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
+    ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
+    ("bounded_by", BOUNDED_BY);
   ]
 
 (* grammar_texture.mly *)

@@ -7,7 +7,39 @@ open Camlray
 type shape =
   | Sphere of Vec3.t * float
   | Plane of Vec3.t * float
+  | Box of Vec3.t * Vec3.t
+  | Cone of cone  (** cylinders too *)
+  | Torus of float * float
+  | Disc of disc
+  | Triangle of Vec3.t * Vec3.t * Vec3.t
+  | Smooth_triangle of Vec3.t * Vec3.t * Vec3.t * Vec3.t * Vec3.t * Vec3.t
+      (** points and normals: p1, p2, p3, n1, n2, n3 *)
+  | Mesh of mesh
+  | Csg of csg * obj list
+      (** children in source order, transforms and texture of their own *)
+  | Inverse of obj
+      (** [inverse] wraps the object it modifies: modifiers after it apply to
+          the wrapper (a one-child CSG node) *)
+  | Clipped of obj * obj list
+      (** [clipped_by]: the object and the clipping objects; later
+          transforms move both *)
   | Light of light
+
+and csg = Union | Intersection | Difference | Merge
+
+and cone = { base : Vec3.t; base_r : float; top : Vec3.t; top_r : float; open_ : bool; cylinder : bool }
+
+and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }
+
+and mesh = {
+  verts : Float.Array.t;  (** 3 floats per vertex *)
+  normals : Float.Array.t;  (** 3 floats per normal *)
+  faces : int array;  (** 3 vertex indices per triangle *)
+  normal_faces : int array;  (** empty, or 3 normal indices per triangle (-1: flat) *)
+  face_textures : int array;  (** empty, or an index into [textures] per triangle (-1: none) *)
+  textures : Texture.t array;
+  inside_vector : Vec3.t option;
+}
 
 and light = {
   position : Vec3.t;

@@ -18,4 +18,8 @@ let () =
       Test_value.tests;
       Test_supplier.tests;
       Test_fn.tests;
+      Test_shape.tests;
+      Test_bvh.tests;
+      Test_object.tests;
+      Test_geom_render.tests;
     ]

@@ -24,7 +24,7 @@ let units =
         checkf "miss" infinity (Shape.intersect s (ray (v 2. 0. 0.) Vec3.unit_z) 0. infinity);
         checkf "tmax" infinity (Shape.intersect s (ray Vec3.zero Vec3.unit_z) 0. 3.9));
     Alcotest.test_case "sphere normal is outward unit" `Quick (fun () ->
-        let n = Shape.normal (Shape.sphere (v 1. 0. 0.) 2.) (v 1. 2. 0.) in
+        let n = Shape.normal (Shape.sphere (v 1. 0. 0.) 2.) (v 1. 2. 0.) (Hit.create infinity) in
         checkf "y" 1. n.y;
         checkf "len" 1. (Vec3.length n));
     Alcotest.test_case "plane {<0,2,0>, 1} is y = 1 (normal normalised first)" `Quick (fun () ->
@@ -39,7 +39,7 @@ let units =
         let xform = Transform.then_ (Transform.scale (v 2. 2. 2.)) (Transform.translate (v 3. 0. 0.)) in
         let o = Object.make ~xform (Shape.sphere Vec3.zero 1.) in
         checkf "t" 1. (Object.intersect o (ray (v 0. 0. 0.) Vec3.unit_x) 0. infinity);
-        let n = Object.normal o (v 1. 0. 0.) in
+        let n = Object.normal o (v 1. 0. 0.) (Hit.create infinity) in
         checkf "nx" (-1.) n.x);
   ]
 

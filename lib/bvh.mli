@@ -1,0 +1,36 @@
+(** Bounding volume hierarchies over primitives given only by their
+    axis-aligned boxes: a binned SAH build, flattened into one float array
+    of node boxes and one int array of links, depth first (a node's first
+    child follows it). The primitives themselves stay with the caller: a
+    query calls back with primitive indices.
+
+    Memory: 48 bytes of box and 16 bytes of links per node (at most
+    [2n - 1] nodes, about [n/2] with leaves of ~4), plus 8 bytes per
+    primitive for the index permutation. *)
+
+type t
+
+val build : ?leaf_size:int -> Float.Array.t -> t
+(** [build boxes]: [boxes] holds 6 floats per primitive (min x, y, z, max
+    x, y, z). Primitives with empty or non-finite boxes must not be given.
+    [leaf_size] (default 4) is the size under which a node is always a
+    leaf. *)
+
+val size : t -> int
+(** Number of primitives. *)
+
+val nodes : t -> int
+
+val bounds : t -> (Vec3.t * Vec3.t) option
+(** The root box; [None] when there are no primitives. *)
+
+val nearest : t -> Ray.t -> float -> Hit.t -> (int -> unit) -> unit
+(** [nearest b ray tmin h f] calls [f i] for each primitive [i] whose leaf
+    box meets the ray within [(tmin, h.t)], nearer boxes first; [f] is
+    expected to lower [h.t] when it finds a closer hit, which prunes the
+    rest of the walk. Allocates one small stack per call. *)
+
+val iter : t -> Ray.t -> float -> float -> (int -> bool) -> bool
+(** [iter b ray tmin tmax f] calls [f i] for primitives whose leaf box meets
+    the ray within [(tmin, tmax)], in no particular order, until [f]
+    returns [false]; then returns [false]. *)

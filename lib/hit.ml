@@ -1,0 +1,9 @@
+type t = { mutable t : float; mutable u : float; mutable v : float; mutable id : float }
+
+let create tmax = { t = tmax; u = 0.; v = 0.; id = 0. }
+
+let copy_into s d =
+  d.t <- s.t;
+  d.u <- s.u;
+  d.v <- s.v;
+  d.id <- s.id

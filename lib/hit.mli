@@ -1,0 +1,19 @@
+(** A mutable scratch record for intersection queries. All fields are
+    floats, so OCaml stores them flat and updating them never allocates.
+    A query searches the open interval [(tmin, t)], reading [t] as its upper
+    bound, and on success overwrites every field. *)
+
+type t = {
+  mutable t : float;  (** the hit distance (on entry: the upper bound) *)
+  mutable u : float;  (** surface parameters (barycentric u for triangles) *)
+  mutable v : float;  (** barycentric v for triangles *)
+  mutable id : float;
+      (** which part was hit: box face, cylinder cap, triangle index
+          (an integer stored as a float) *)
+}
+
+val create : float -> t
+(** [create tmax]: a fresh record with upper bound [tmax]. *)
+
+val copy_into : t -> t -> unit
+(** [copy_into src dst]. *)

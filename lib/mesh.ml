@@ -1,0 +1,129 @@
+type t = {
+  verts : Float.Array.t;
+  normals : Float.Array.t;
+  faces : int array;
+  nfaces : int array;
+  bvh : Bvh.t;
+  inside_vector : Vec3.t option;
+}
+
+let fget = Float.Array.unsafe_get
+
+let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.t) tmin (h : Hit.t) =
+  let e1x = bx -. ax and e1y = by -. ay and e1z = bz -. az in
+  let e2x = cx -. ax and e2y = cy -. ay and e2z = cz -. az in
+  let dx = r.dir.x and dy = r.dir.y and dz = r.dir.z in
+  let px = (dy *. e2z) -. (dz *. e2y) and py = (dz *. e2x) -. (dx *. e2z)
+  and pz = (dx *. e2y) -. (dy *. e2x) in
+  let det = (e1x *. px) +. (e1y *. py) +. (e1z *. pz) in
+  if det = 0. then false
+  else
+    let inv = 1. /. det in
+    let sx = r.origin.x -. ax and sy = r.origin.y -. ay and sz = r.origin.z -. az in
+    let u = ((sx *. px) +. (sy *. py) +. (sz *. pz)) *. inv in
+    if u < 0. || u > 1. then false
+    else
+      let qx = (sy *. e1z) -. (sz *. e1y) and qy = (sz *. e1x) -. (sx *. e1z)
+      and qz = (sx *. e1y) -. (sy *. e1x) in
+      let v = ((dx *. qx) +. (dy *. qy) +. (dz *. qz)) *. inv in
+      if v < 0. || u +. v > 1. then false
+      else
+        let t = ((e2x *. qx) +. (e2y *. qy) +. (e2z *. qz)) *. inv in
+        if t > tmin && t < h.t then (
+          h.t <- t;
+          h.u <- u;
+          h.v <- v;
+          true)
+        else false
+
+let smooth_normal n1 n2 n3 u v =
+  let w = 1. -. u -. v in
+  Vec3.normalize (Vec3.madd (Vec3.madd (Vec3.scale w n1) u n2) v n3)
+
+let vert m i = Vec3.make (fget m.verts (3 * i)) (fget m.verts ((3 * i) + 1)) (fget m.verts ((3 * i) + 2))
+
+let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
+  let normals = Float.Array.copy normals in
+  for i = 0 to (Float.Array.length normals / 3) - 1 do
+    let g k = Float.Array.get normals ((3 * i) + k) in
+    let l = Float.sqrt ((g 0 *. g 0) +. (g 1 *. g 1) +. (g 2 *. g 2)) in
+    if l > 0. then for k = 0 to 2 do Float.Array.set normals ((3 * i) + k) (g k /. l) done
+  done;
+  let n = Array.length faces / 3 in
+  let smooth = Array.length normal_faces > 0 in
+  let v = { verts; normals; faces; nfaces = [||]; bvh = Bvh.build (Float.Array.create 0); inside_vector } in
+  let keep =
+    List.filter
+      (fun i ->
+        let a = vert v faces.(3 * i) and b = vert v faces.((3 * i) + 1) and c = vert v faces.((3 * i) + 2) in
+        let cr = Vec3.cross (Vec3.sub b a) (Vec3.sub c a) in
+        Vec3.length2 cr > 0. && Vec3.is_finite cr)
+      (List.init n Fun.id)
+    |> Array.of_list
+  in
+  let k = Array.length keep in
+  let faces' = Array.make (3 * k) 0 in
+  let nfaces' = if smooth then Array.make (3 * k) (-1) else [||] in
+  let boxes = Float.Array.create (6 * k) in
+  Array.iteri
+    (fun j i ->
+      for c = 0 to 2 do
+        faces'.((3 * j) + c) <- faces.((3 * i) + c);
+        if smooth then nfaces'.((3 * j) + c) <- normal_faces.((3 * i) + c)
+      done;
+      let a = vert v faces'.(3 * j) and b = vert v faces'.((3 * j) + 1) and c = vert v faces'.((3 * j) + 2) in
+      let lo = Vec3.min a (Vec3.min b c) and hi = Vec3.max a (Vec3.max b c) in
+      Float.Array.set boxes (6 * j) lo.x;
+      Float.Array.set boxes ((6 * j) + 1) lo.y;
+      Float.Array.set boxes ((6 * j) + 2) lo.z;
+      Float.Array.set boxes ((6 * j) + 3) hi.x;
+      Float.Array.set boxes ((6 * j) + 4) hi.y;
+      Float.Array.set boxes ((6 * j) + 5) hi.z)
+    keep;
+  { v with faces = faces'; nfaces = nfaces'; bvh = Bvh.build boxes }
+
+let triangles m = Array.length m.faces / 3
+
+let bounds m =
+  match Bvh.bounds m.bvh with Some b -> b | None -> (Vec3.zero, Vec3.zero)
+
+let[@inline] tri m i r tmin h =
+  let f = m.faces and p = m.verts in
+  let a = 3 * Array.unsafe_get f (3 * i)
+  and b = 3 * Array.unsafe_get f ((3 * i) + 1)
+  and c = 3 * Array.unsafe_get f ((3 * i) + 2) in
+  tri_hit (fget p a) (fget p (a + 1)) (fget p (a + 2)) (fget p b) (fget p (b + 1)) (fget p (b + 2))
+    (fget p c) (fget p (c + 1)) (fget p (c + 2)) r tmin h
+
+let hit m r tmin (h : Hit.t) =
+  let found = ref false in
+  Bvh.nearest m.bvh r tmin h (fun i ->
+      if tri m i r tmin h then (
+        h.id <- float i;
+        found := true));
+  !found
+
+let nrm m i = Vec3.make (fget m.normals (3 * i)) (fget m.normals ((3 * i) + 1)) (fget m.normals ((3 * i) + 2))
+
+let normal m (h : Hit.t) =
+  let i = int_of_float h.id in
+  let na = if Array.length m.nfaces > 0 then m.nfaces.(3 * i) else -1 in
+  if na >= 0 then
+    smooth_normal (nrm m na) (nrm m m.nfaces.((3 * i) + 1)) (nrm m m.nfaces.((3 * i) + 2)) h.u h.v
+  else
+    let a = vert m m.faces.(3 * i) and b = vert m m.faces.((3 * i) + 1) and c = vert m m.faces.((3 * i) + 2) in
+    Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a))
+
+let inside m p =
+  match m.inside_vector with
+  | None -> false
+  | Some d ->
+      let r = Ray.make p d in
+      let count = ref 0 in
+      let h = Hit.create infinity in
+      ignore
+        (Bvh.iter m.bvh r 0. infinity (fun i ->
+             h.t <- infinity;
+             if tri m i r 0. h then incr count;
+             true));
+      !count land 1 = 1

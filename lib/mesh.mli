@@ -1,0 +1,44 @@
+(** Triangle meshes in flat arrays with their own BVH over triangles (the
+    storage behind POV-Ray's [mesh] and [mesh2]). Memory per triangle: 24
+    bytes of vertex indices (48 with per-vertex normals), 8 of BVH
+    permutation and about 16 of BVH nodes, plus 24 per shared vertex (and
+    normal). *)
+
+type t
+
+val make :
+  verts:Float.Array.t -> normals:Float.Array.t -> faces:int array -> normal_faces:int array ->
+  inside_vector:Vec3.t option -> t
+(** [verts] and [normals] hold 3 floats per vertex / normal; [faces] 3
+    vertex indices per triangle; [normal_faces] is either empty (flat
+    triangles) or 3 normal indices per triangle (smooth triangles; an index
+    [< 0] makes that triangle flat). Indices must be in range (the caller
+    checks them); normals are normalised here. Degenerate triangles (zero area) are dropped; see
+    {!triangles}. [inside_vector] enables the inside test (POV-Ray's rule:
+    odd crossings along it). *)
+
+val triangles : t -> int
+(** Number of triangles kept. *)
+
+val bounds : t -> Vec3.t * Vec3.t
+(** A point box at the origin for an empty mesh. *)
+
+val hit : t -> Ray.t -> float -> Hit.t -> bool
+(** Nearest triangle in [(tmin, h.t)]: sets [h.t], the barycentric [h.u],
+    [h.v] and the triangle index [h.id]. *)
+
+val normal : t -> Hit.t -> Vec3.t
+(** Unit normal of the triangle recorded in the hit (interpolated for
+    smooth triangles). *)
+
+val inside : t -> Vec3.t -> bool
+
+val tri_hit :
+  float -> float -> float -> float -> float -> float -> float -> float -> float ->
+  Ray.t -> float -> Hit.t -> bool
+(** [tri_hit ax ay az bx by bz cx cy cz ray tmin h]: Moller-Trumbore for one
+    triangle; on a hit in [(tmin, h.t)] sets [h.t], [h.u] (weight of b),
+    [h.v] (weight of c). *)
+
+val smooth_normal : Vec3.t -> Vec3.t -> Vec3.t -> float -> float -> Vec3.t
+(** Barycentric interpolation of three vertex normals, normalised. *)

@@ -1,0 +1,47 @@
+(** Helpers for the semantic actions of grammar_objects.mly: building
+    located {!Sdl.obj} values for shapes, CSG, meshes, and the object
+    modifiers that change the shape ([open], [inverse], [clipped_by]). *)
+
+val obj : Loc.t -> Sdl.shape -> (Sdl.obj -> Sdl.obj) list -> Sdl.obj
+(** A fresh object (identity transform, no texture) with the modifiers
+    applied in order. *)
+
+val set_open : Loc.t -> Sdl.obj -> Sdl.obj
+(** [open] on a cylinder or cone (a warning on anything else). *)
+
+val inverse : Sdl.obj -> Sdl.obj
+(** Wrap in an {!Sdl.Inverse} node that takes over the texture and
+    interior, so that later modifiers apply to it. *)
+
+val clipped : Sdl.obj list -> Sdl.obj -> Sdl.obj
+(** Wrap in an {!Sdl.Clipped} node (the same way as {!inverse}). *)
+
+type mesh_tri
+(** A triangle of a [mesh] block. *)
+
+val mesh_triangle : Loc.t -> Camlray.Vec3.t array -> Camlray.Texture.t option -> mesh_tri
+(** 3 points (flat) or 6 vectors p1 n1 p2 n2 p3 n3 (smooth). *)
+
+val mesh : Loc.t -> mesh_tri list -> Sdl.shape
+(** A [mesh] of individual triangles (vertices stored flat). *)
+
+type mesh2_block
+(** One block of a [mesh2]. *)
+
+val vertex_vectors : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
+val normal_vectors : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
+val face_indices : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
+val normal_indices : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
+val texture_list : Loc.t -> Value.t -> Camlray.Texture.t list -> mesh2_block
+val ignored_block : mesh2_block
+(** [uv_vectors], [uv_indices]: read and ignored. *)
+
+val mesh2 : Loc.t -> mesh2_block list -> Sdl.shape
+(** Check counts and indices (located errors) and build the mesh. *)
+
+val inside_vector : Loc.t -> Camlray.Vec3.t -> Sdl.obj -> Sdl.obj
+(** [inside_vector] on a mesh (a warning on anything else). *)
+
+val csg : Loc.t -> Sdl.csg -> [ `Child of Sdl.obj | `Mod of Sdl.obj -> Sdl.obj ] list -> Sdl.obj
+(** A CSG object from its children and modifiers (modifiers apply to the
+    whole, in order). *)

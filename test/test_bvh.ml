@@ -1,0 +1,86 @@
+(* BVH: the scene's nearest hit and its list of shadow crossings equal a
+   brute-force walk over every object, on random scenes. *)
+open Camlray
+open Geom_gen
+
+let scene objects =
+  { Scene.objects; lights = [||]; camera = Camera.default; background = Color.black;
+    settings = Scene.default_settings; accel = Scene.accelerate objects }
+
+(* random objects spread over a 20-unit cube, some CSG, some infinite *)
+let gobj =
+  let open QCheck.Gen in
+  let place = map2 (fun xf t -> Transform.then_ xf (Transform.translate t)) gxform (gvec 10.) in
+  let leaf = map2 (fun s xf -> Object.make ~xform:xf s) gshape place in
+  oneof_weighted
+    [
+      (20, leaf);
+      (2, map2 (fun a b -> Object.intersection [| a; b |]) leaf leaf);
+      (2, map2 (fun xf s -> let a = Object.make ~xform:xf (Shape.sphere Vec3.zero 1.5) in
+                 Object.intersection [| a; Object.invert (Object.make ~xform:xf s) |]) place gshape);
+      (1, map2 (fun n d -> Object.make (Shape.plane n d)) gdir (fr (-15.) 15.));
+    ]
+
+let gscene = QCheck.Gen.(pair (list_size (int_range 0 60) gobj) (list_size (return 30) (map2 (fun o d -> Ray.make o d) (gvec 15.) gdir)))
+
+let brute objects r =
+  let best = ref infinity and leaf = ref None in
+  Array.iter (fun o ->
+      let h = Hit.create !best and f = Object.found o in
+      if Object.hit o r 1e-9 h f then (best := h.t; leaf := Some f.leaf)) objects;
+  (!best, !leaf)
+
+let arb = QCheck.make ~print:(fun (l, _) -> Printf.sprintf "%d objects" (List.length l)) gscene
+
+let props =
+  [
+    QCheck.Test.make ~name:"BVH nearest hit = brute force" ~count:200 arb (fun (objs, rays) ->
+        let objects = Array.of_list objs in
+        let s = scene objects in
+        List.for_all (fun r ->
+            let t, leaf = brute objects r in
+            match Scene.intersect s r 1e-9 infinity, leaf with
+            | None, None -> true
+            | Some h, Some l -> h.t = t && (h.obj == l || h.t = t)
+            | Some h, None -> QCheck.Test.fail_reportf "BVH found t=%g, brute force nothing" h.t
+            | None, Some _ -> QCheck.Test.fail_reportf "BVH missed the hit at t=%g" t) rays);
+    QCheck.Test.make ~name:"occluders: same crossings as brute force" ~count:200 arb (fun (objs, rays) ->
+        let objects = Array.of_list objs in
+        let s = scene objects in
+        List.for_all (fun r ->
+            let a = ref [] and b = ref [] in
+            ignore (Scene.occluders s r 1e-9 30. (fun _ t -> a := t :: !a; true));
+            Array.iter (fun o -> ignore (Object.crossings o r 1e-9 30. (fun _ t -> b := t :: !b; true))) objects;
+            List.sort compare !a = List.sort compare !b) rays);
+    QCheck.Test.make ~name:"occluders stops when told to" ~count:100 arb (fun (objs, rays) ->
+        let s = scene (Array.of_list objs) in
+        List.for_all (fun r ->
+            let n = ref 0 in
+            let all = Scene.occluders s r 1e-9 30. (fun _ _ -> incr n; false) in
+            (all && !n = 0) || ((not all) && !n = 1)) rays);
+  ]
+
+let boxes l = Float.Array.of_list (List.concat_map (fun (a, b) -> [ a; a; a; b; b; b ]) l)
+
+let units =
+  [
+    Alcotest.test_case "empty BVH" `Quick (fun () ->
+        let b = Bvh.build (Float.Array.create 0) in
+        Alcotest.(check int) "no nodes" 0 (Bvh.nodes b);
+        let h = Hit.create infinity in
+        Bvh.nearest b (Ray.make Vec3.zero Vec3.unit_z) 0. h (fun _ -> Alcotest.fail "called");
+        Alcotest.(check bool) "iter" true (Bvh.iter b (Ray.make Vec3.zero Vec3.unit_z) 0. 1. (fun _ -> false)));
+    Alcotest.test_case "identical boxes split anyway" `Quick (fun () ->
+        let b = Bvh.build (boxes (List.init 1000 (fun _ -> (0., 1.)))) in
+        Alcotest.(check int) "size" 1000 (Bvh.size b);
+        let seen = ref 0 in
+        ignore (Bvh.iter b (Ray.make (Vec3.make 0.5 0.5 (-1.)) Vec3.unit_z) 0. 10. (fun _ -> incr seen; true));
+        Alcotest.(check int) "all visited" 1000 !seen);
+    Alcotest.test_case "boxes the ray misses are not visited" `Quick (fun () ->
+        let b = Bvh.build (boxes (List.init 100 (fun i -> (float i, float i +. 0.5)))) in
+        let seen = ref [] in
+        ignore (Bvh.iter b (Ray.make (Vec3.make 10.2 10.2 (-1.)) Vec3.unit_z) 0. 100. (fun i -> seen := i :: !seen; true));
+        Alcotest.(check (list int)) "only box 10" [ 10 ] !seen);
+  ]
+
+let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest props)

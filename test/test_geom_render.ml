@@ -1,0 +1,136 @@
+(* Cross-render: each shape and CSG operator rendered by camlray and by
+   POV-Ray 3.7 at 160x120 without anti-aliasing must agree apart from
+   edges: at least 99% of pixels with every channel within 2/255, and PSNR
+   at least 35 dB. Skipped when povray is not installed. *)
+open Camlray
+
+let scenes = [
+    ("shapes", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -9> look_at <0, 0.5, 0> right x*4/3 }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+plane { y, -0.5 pigment { rgb <0.7, 0.7, 0.6> } }
+box { <-4, -0.5, 1>, <-2.5, 1, 2.5> pigment { rgb <0.9, 0.2, 0.2> } }
+cylinder { <-1.5, -0.5, 1.5>, <-1.5, 1.5, 1.5>, 0.6 pigment { rgb <0.2, 0.9, 0.2> } }
+cone { <0.5, -0.5, 1.5>, 0.8, <0.5, 1.5, 1.5>, 0.2 pigment { rgb <0.2, 0.2, 0.9> } }
+torus { 1, 0.3 rotate x*60 translate <2.8, 0.8, 1.5> pigment { rgb <0.9, 0.9, 0.2> } }
+disc { <-3, 0.2, -2>, <0, 1, -1>, 0.8, 0.3 pigment { rgb <0.9, 0.2, 0.9> } }
+triangle { <-1.5, -0.5, -2>, <-0.5, 1.2, -1.5>, <0.3, -0.5, -2.5> pigment { rgb <0.2, 0.9, 0.9> } }
+smooth_triangle { <0.8, -0.5, -2>, <-1,0,-1>, <1.8, 1.2, -1.5>, <0,1,-1>, <2.6, -0.5, -2.5>, <1,0,-1> pigment { rgb <1, 0.6, 0.2> } }
+cylinder { <3.5, -0.3, -2>, <4.5, 0.8, -1.5>, 0.4 open pigment { rgb <0.6, 0.6, 1> } }
+|pov});
+    ("csg", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -9> look_at <0, 0.5, 0> right x*4/3 }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+plane { y, -0.5 pigment { rgb <0.7, 0.7, 0.6> } }
+difference {
+  box { -1, 1 pigment { rgb <0.9, 0.2, 0.2> } }
+  sphere { 0, 1.3 pigment { rgb <0.2, 0.9, 0.2> } }
+  cylinder { -2*x, 2*x, 0.5 }
+  pigment { rgb <0.9, 0.9, 0.2> }
+  rotate y*30 translate <-3, 0.5, 1>
+}
+intersection {
+  sphere { 0, 1 }
+  box { <-2, -0.3, -2>, <2, 2, 2> pigment { rgb <0.2, 0.3, 0.9> } }
+  pigment { rgb <0.9, 0.5, 0.1> }
+  translate <0, 0.5, 1>
+}
+merge {
+  sphere { <-0.4, 0, 0>, 0.7 }
+  sphere { <0.4, 0, 0>, 0.7 }
+  pigment { rgb <0.2, 0.8, 0.8> }
+  translate <3, 0.4, 1>
+}
+union {
+  torus { 0.6, 0.15 }
+  cylinder { -0.5*y, 0.5*y, 0.2 pigment { rgb 1 } }
+  pigment { rgb <0.8, 0.2, 0.8> }
+  rotate x*-30 translate <-2, 0.3, -2.5>
+}
+sphere { 0, 0.8 clipped_by { plane { y, 0.2 } } pigment { rgb <1, 0.6, 0.2> } translate <0.5, 0.3, -2.5> }
+object { sphere { 0, 100 inverse } pigment { rgb 0.5 } }
+intersection { sphere { 0, 0.7 } plane { x, 0.2 inverse } pigment { rgb <0.5, 1, 0.5> } translate <2.5, 0.2, -2.5> }
+|pov});
+    ("mesh", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 3, -6> look_at <0, 0.5, 0> right x*4/3 }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+plane { y, -0.5 pigment { rgb <0.7, 0.7, 0.6> } }
+#declare Red = texture { pigment { rgb <1,0,0> } }
+mesh {
+  triangle { <-1,0,0>, <0,1.5,0>, <1,0,0> }
+  triangle { <-1,0,0>, <0,0,-1>, <0,1.5,0> texture { Red } }
+  smooth_triangle { <1,0,0>, <1,0,0>, <0,1.5,0>, <0,1,0>, <0,0,-1>, <0,0,-1> }
+  pigment { rgb <0.2, 0.8, 0.3> }
+  translate <-1.5, 0, 0>
+}
+mesh2 {
+  vertex_vectors { 5, <-1,0,-1>, <1,0,-1>, <1,0,1>, <-1,0,1>, <0,1.5,0> }
+  normal_vectors { 5, <-1,0.5,-1>, <1,0.5,-1>, <1,0.5,1>, <-1,0.5,1>, <0,1,0> }
+  texture_list { 2, texture { pigment { rgb <0.9,0.9,0.2> } } texture { pigment { rgb <0.2,0.4,1> } } }
+  face_indices { 4, <0,1,4>, 0, <1,2,4>, 1, <2,3,4>, 0, <3,0,4>, 1 }
+  normal_indices { 4, <0,1,4>, <1,2,4>, <2,3,4>, <3,0,4> }
+  pigment { rgb 1 }
+  rotate y*20 translate <1.5, 0, 0>
+}
+torus { 1, 0.25 rotate x*85 translate <0, 0.6, 2> pigment { rgb <0.9,0.5,0.2> } finish { phong 1 } }
+|pov});
+    ("torus", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 0.3, -8> look_at <0, 0, 0> right x*4/3 angle 40 }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+torus { 2, 0.5 rotate x*3 pigment { rgb <0.9,0.5,0.2> } }
+torus { 1000, 1 translate <0, -1.2, 1000> pigment { rgb <0.2,0.5,0.9> } }
+torus { 0.5, 0.7 rotate z*90 translate <0, 1.6, 0> pigment { rgb <0.2,0.9,0.4> } }
+|pov});
+]
+
+let exe () =
+  match Sys.getenv_opt "CAMLRAY_EXE" with
+  | Some e -> e
+  | None ->
+      let c = List.map (Filename.concat (Sys.getcwd ())) [ "../install/default/bin/camlray"; "../../install/default/bin/camlray" ] in
+      Option.value ~default:(List.hd c) (List.find_opt Sys.file_exists c)
+
+let have_povray () = Sys.command "command -v povray > /dev/null 2>&1" = 0
+
+let run cmd = if Sys.command cmd <> 0 then Alcotest.failf "command failed: %s" cmd
+
+let within2 (a : Image.rgb8) (b : Image.rgb8) =
+  let n = a.w * a.h in
+  let ok = ref 0 in
+  for i = 0 to n - 1 do
+    let good = ref true in
+    for c = 0 to 2 do
+      let x = Char.code (Bytes.get a.data ((3 * i) + c)) and y = Char.code (Bytes.get b.data ((3 * i) + c)) in
+      if abs (x - y) > 2 then good := false
+    done;
+    if !good then incr ok
+  done;
+  float !ok /. float n
+
+let case (name, src) =
+  Alcotest.test_case ("camlray = POV-Ray: " ^ name) `Slow (fun () ->
+      if not (have_povray ()) then Alcotest.skip ()
+      else begin
+        let dir = Filename.temp_dir "camlray-geom" "" in
+        let pov = Filename.concat dir (name ^ ".pov") in
+        Out_channel.with_open_bin pov (fun oc -> output_string oc src);
+        let ours = Filename.concat dir "ours.png" and theirs = Filename.concat dir "pov.png" in
+        run (Printf.sprintf "%s render %s -W 160 -H 120 -q -o %s" (Filename.quote (exe ())) (Filename.quote pov)
+               (Filename.quote ours));
+        run (Printf.sprintf "povray +I%s +O%s +W160 +H120 -D -A +FN > /dev/null 2>&1" (Filename.quote pov)
+               (Filename.quote theirs));
+        let a = Image.read ours and b = Image.read theirs in
+        let frac = within2 a b and psnr = Image.psnr a b in
+        if frac < 0.99 || psnr < 35. then
+          Alcotest.failf "%s: %.2f%% of pixels within 2/255, PSNR %.1f dB (files in %s)" name (100. *. frac) psnr dir
+      end)
+
+let tests = ("geometry vs POV-Ray", List.map case scenes)

@@ -1,0 +1,134 @@
+(* Objects and CSG through the scene language: inside tests follow the CSG
+   rules, CSG hits are on the boundary with outward normals, the texturing
+   rule, and bad input gives located errors. *)
+open Camlray
+open Geom_gen
+
+let header = "camera { location <0,0,-10> look_at 0 }\n"
+let objects src = (scene_of_string (header ^ src)).Scene.objects
+let one src = match objects src with [| o |] -> o | a -> Alcotest.failf "expected one object, got %d" (Array.length a)
+
+let a = "sphere { <0.3, 0, 0>, 1 }"
+let b = "box { <-1.2, -0.4, -0.5>, <0.5, 0.8, 1.1> rotate <10, 20, 30> }"
+let c = "cylinder { <-2, -0.2, 0>, <2, 0.3, 0.1>, 0.45 }"
+let d = "torus { 0.9, 0.35 rotate x*70 }"
+
+(* (source, rule over the children's inside tests) *)
+let rules =
+  [
+    ("union", Printf.sprintf "union { %s %s %s inverse }" a b c, fun i -> not (i 0 || i 1 || i 2));
+    ("intersection", Printf.sprintf "intersection { %s %s %s }" a b d, fun i -> i 0 && i 1 && i 3);
+    ("difference", Printf.sprintf "difference { %s %s %s }" a b c, fun i -> i 0 && (not (i 1)) && not (i 2));
+    ("merge", Printf.sprintf "merge { %s %s %s }" b c d, fun i -> i 1 || i 2 || i 3);
+    ("nested", Printf.sprintf "difference { intersection { %s %s } union { %s %s } }" a b c d,
+     fun i -> i 0 && i 1 && not (i 2 || i 3));
+    ("inverse difference", Printf.sprintf "difference { %s %s inverse }" a b, fun i -> not (i 0 && not (i 1)));
+    ("clipped_by", Printf.sprintf "object { %s clipped_by { %s } }" b a, fun i -> i 1 && i 0);
+  ]
+
+let children = Array.map (fun s -> one s) [| a; b; c; d |]
+let gpoint = QCheck.make ~print:Vec3.to_string (gvec 2.)
+
+let inside_props =
+  List.map
+    (fun (name, src, rule) ->
+      let o = one src in
+      QCheck.Test.make ~name:("inside follows the CSG rule: " ^ name) ~count:2000 gpoint (fun p ->
+          Object.inside o p = rule (fun k -> Object.inside children.(k) p)))
+    rules
+
+let boundary_props =
+  List.map
+    (fun (name, src, _) ->
+      let o = one src in
+      QCheck.Test.make ~name:("CSG hits: outside along the normal, inside against it: " ^ name) ~count:1000
+        (QCheck.make gray) (fun r ->
+          let h = Hit.create infinity and f = Object.found o in
+          if not (Object.hit o r 1e-9 h f) then true
+          else
+            let p = Ray.at r h.t in
+            let n = Object.normal f.leaf p h in
+            let e = 1e-6 in
+            (* a crossing exactly on an edge of two children may fail either way *)
+            let edge = Array.exists (fun c -> Float.abs (Object.intersect c (Ray.make p n) (-1e-5) 1e-5) < 1e-5
+                                              && not (c == f.leaf)) children in
+            edge || ((not (Object.inside o (Vec3.madd p e n))) && Object.inside o (Vec3.madd p (-.e) n))))
+    (List.filter (fun (n, _, _) -> n <> "clipped_by" && n <> "union") rules)
+
+let colour_at (s : Scene.t) r =
+  match Scene.intersect s r 1e-9 infinity with
+  | None -> Alcotest.fail "no hit"
+  | Some h -> (Pigment.eval (List.hd h.obj.texture).pigment h.point).c
+
+let col = Alcotest.testable (fun f (c : Color.t) -> Format.fprintf f "<%g,%g,%g>" c.r c.g c.b) ( = )
+
+let texturing =
+  Alcotest.test_case "CSG texturing: own texture wins, others inherit" `Quick (fun () ->
+      let s =
+        scene_of_string
+          (header
+          ^ "union { sphere { <-2,0,0>, 1 pigment { rgb <1,0,0> } } sphere { <2,0,0>, 1 } \
+             pigment { rgb <0,1,0> } translate y*3 }\n\
+             difference { box { -1, 1 } sphere { <0,0,-1>, 0.5 pigment { rgb <0,0,1> } } pigment { rgb 1 } translate -y*3 }")
+      in
+      let ray x y = Ray.make (Vec3.make x y (-10.)) Vec3.unit_z in
+      Alcotest.check col "child's own" (Color.make 1. 0. 0.) (colour_at s (ray (-2.) 3.));
+      Alcotest.check col "inherited" (Color.make 0. 1. 0.) (colour_at s (ray 2. 3.));
+      Alcotest.check col "the hole is textured by the cutter" (Color.make 0. 0. 1.) (colour_at s (ray 0. (-3.)));
+      Alcotest.check col "box face" (Color.make 1. 1. 1.) (colour_at s (ray 0.8 (-3.))))
+
+let no_shadow =
+  Alcotest.test_case "no_shadow on a CSG reaches its children" `Quick (fun () ->
+      let s = scene_of_string (header ^ "union { sphere { 0, 1 } box { 2, 3 } no_shadow }") in
+      Alcotest.(check bool) "not occluded" false (Scene.occluded s (Ray.make (Vec3.make 0. 0. (-5.)) Vec3.unit_z) 0. 10.))
+
+let mesh_inside =
+  Alcotest.test_case "mesh2 inside_vector" `Quick (fun () ->
+      let o =
+        one
+          "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0>, <0,0,1> }\n\
+           face_indices { 4, <0,1,2>, <0,1,3>, <0,2,3>, <1,2,3> } inside_vector <0.3, 0.2, 1> }"
+      in
+      Alcotest.(check bool) "inside" true (Object.inside o (Vec3.make 0.1 0.1 0.1));
+      Alcotest.(check bool) "outside" false (Object.inside o (Vec3.make 0.5 0.5 0.5));
+      Alcotest.(check bool) "hit" true (Object.intersect o (Ray.make (Vec3.make 0.1 0.1 (-1.)) Vec3.unit_z) 0. 10. = 1.))
+
+(* bad input: a located error, never an exception *)
+let error_case src line needle =
+  Alcotest.test_case ("error: " ^ needle) `Quick (fun () ->
+      let src = header ^ src in
+      let res = match Camlray_lang.Parse.string src with
+        | Error d -> Error d
+        | Ok sdl -> Camlray_lang.Compile.scene sdl in
+      match res with
+      | Ok _ -> Alcotest.failf "expected an error mentioning %S" needle
+      | Error d ->
+          let msg = Camlray_lang.Diag.to_string d in
+          let contains s sub = let n = String.length sub in
+            let rec go i = i + n <= String.length s && (String.sub s i n = sub || go (i + 1)) in go 0 in
+          if not (contains msg needle) then Alcotest.failf "message %S lacks %S" msg needle;
+          if not (contains msg (Printf.sprintf ":%d:" line)) then Alcotest.failf "message %S lacks line %d" msg line)
+
+let errors =
+  [
+    error_case "sphere { 0, 0 }" 2 "radius must be positive";
+    error_case "\ncylinder { <0,1,0>, <0,1,0>, 1 }" 3 "end points must differ";
+    error_case "cone { 0, 0, y, 0 }" 2 "not both 0";
+    error_case "torus { 1, -0.5 }" 2 "minor radius";
+    error_case "disc { 0, <0,0,0>, 1 }" 2 "normal cannot be zero";
+    error_case "mesh2 { vertex_vectors { 2, <0,0,0>, <1,0,0> } face_indices { 1, <0,1,2> } }" 2 "out of range";
+    error_case "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0> } face_indices { 1, <0,1,2> } }" 2 "announces 3";
+    error_case "intersection { }" 2 "at least one";
+  ]
+
+let degenerate =
+  Alcotest.test_case "degenerate triangles render nothing, no exception" `Quick (fun () ->
+      let s = scene_of_string (header ^ "triangle { 0, x, 2*x }\nmesh { triangle { 0, y, 2*y } triangle { 0, x, y } }") in
+      Alcotest.(check int) "objects" 2 (Array.length s.objects);
+      Alcotest.(check bool) "flat triangle never hit" true
+        (Scene.intersect s (Ray.make (Vec3.make 1.5 0. (-1.)) Vec3.unit_z) 0. 10. = None))
+
+let tests =
+  ( "object",
+    [ texturing; no_shadow; mesh_inside; degenerate ] @ errors
+    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props) )
