@@ -16,10 +16,17 @@ type config = { include_dirs : string list; limits : limits; builtins : (string 
 
 (* Open control structures of one frame, innermost first. *)
 type ctrl =
-  | In_if  (** executing a taken branch of #if/#ifdef/#ifndef *)
-  | In_while of { cond_pos : int; mutable count : int }
-  | In_for of { var : string; stop : float; step : float; body_pos : int; mutable count : int }
-  | In_switch  (** executing a matched clause *)
+  | In_if of Loc.t  (** executing a taken branch of #if/#ifdef/#ifndef *)
+  | In_while of { cond_pos : int; mutable count : int; wloc : Loc.t }
+  | In_for of {
+      var : string; stop : float; step : float; body_pos : int; mutable count : int; floc : Loc.t }
+  | In_switch of Loc.t  (** executing a matched clause *)
+
+let opener = function
+  | In_if l -> ("#if", l)
+  | In_while w -> ("#while", w.wloc)
+  | In_for r -> ("#for", r.floc)
+  | In_switch l -> ("#switch", l)
 
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
@@ -44,6 +51,8 @@ type t = {
   mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
   mutable last : Loc.t;
   mutable files : string list;
+  mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
+  mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
 }
@@ -55,7 +64,7 @@ let create config env ~file toks =
   { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
                  version_at_entry = Defaults.version (); byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
-    deprecated = Hashtbl.create 8 }
+    deprecated = Hashtbl.create 8; braces = []; context = None }
 
 let chain t =
   List.filter_map
@@ -75,9 +84,11 @@ let rec raw_next t =
   let f = top t in
   let tok = f.toks.(f.pos) in
   match tok.raw with
+  | Eof when f.ctrl <> [] ->
+      let d, l = opener (List.hd f.ctrl) in
+      fail t l "this %s has no matching #end (the %s ends first)" d
+        (match f.kind with Macro_call _ -> "macro" | _ -> "file")
   | Eof when f.kind <> Main ->
-      if f.ctrl <> [] then fail t tok.loc "missing #end: a directive opened in this %s is not closed"
-          (match f.kind with Macro_call _ -> "macro" | _ -> "file");
       let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
       if f.scoped then Env.pop_scope t.env;
       List.iter (fun (n, b) -> Env.declare t.env n b) back;
@@ -187,7 +198,12 @@ let rec next t : Parser.token * Loc.t =
       let tok = raw_next t in
       match tok.raw with
       | Eof -> (Parser.EOF, tok.loc)
-      | Tok x -> (x, tok.loc)
+      | Tok x ->
+          (match x with
+          | Parser.LBRACE -> t.braces <- tok.loc :: t.braces
+          | Parser.RBRACE -> (match t.braces with _ :: r -> t.braces <- r | [] -> ())
+          | _ -> ());
+          (x, tok.loc)
       | Directive d ->
           directive t d tok.loc;
           next t
@@ -373,18 +389,34 @@ and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
         List.filter_map
           (fun probe ->
             let cp = I.input_needed env in
-            if I.acceptable cp probe loc.start then Some (describe (Tok probe)) else None)
+            if I.acceptable cp probe loc.start then
+              Some
+                (match probe with
+                | Parser.FLOAT _ -> "a number"
+                | Parser.STRING _ -> "a string"
+                | Parser.UNDEFINED_ID _ -> "an identifier"
+                | _ -> describe (Tok probe))
+            else None)
           acceptable_probe
       in
+      let semi = List.mem "';'" expected in
       let msg =
         match Messages.message (I.current_state_number env) with
         | m -> String.trim m
         | exception Not_found -> (
             match expected with
             | [] -> "unexpected " ^ found
+            | _ when semi -> Printf.sprintf "expected an operator or ';', found %s" found
             | l -> Printf.sprintf "expected %s, found %s" (String.concat " or " l) found)
       in
-      fail t loc "%s" msg
+      let hint =
+        match (t.context, tok, t.braces) with
+        | Some c, _, _ when semi -> Printf.sprintf " (%s ends with ';')" c
+        | _, Parser.EOF, b :: _ ->
+            Printf.sprintf " (the '{' at line %d, column %d is not closed)" (Loc.line b) (Loc.col b)
+        | _ -> ""
+      in
+      fail t loc "%s%s" msg hint
 
 (* ---------- directives ---------- *)
 
@@ -401,28 +433,28 @@ and directive t d loc =
   | "include" -> include_file t loc
   | "if" ->
       let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
-      enter_if t c
+      enter_if t loc c
   | "ifdef" | "ifndef" ->
       let defined = array_query t "defined" loc = 1. in
-      enter_if t (if d = "ifdef" then defined else not defined)
+      enter_if t loc (if d = "ifdef" then defined else not defined)
   | "elseif" | "else" -> (
       match f.ctrl with
-      | In_if :: rest ->
+      | In_if _ :: rest ->
           (* the taken branch ends here: skip to #end *)
           f.ctrl <- rest;
           skip_to_end t
-      | In_switch :: _ when d = "else" -> () (* falling through into #else *)
+      | In_switch _ :: _ when d = "else" -> () (* falling through into #else *)
       | _ -> fail t loc "#%s without a matching #if" d)
   | "end" -> end_block t loc
   | "while" ->
       let cond_pos = f.pos in
       let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
-      if c then f.ctrl <- In_while { cond_pos; count = 1 } :: f.ctrl else skip_to_end t
+      if c then f.ctrl <- In_while { cond_pos; count = 1; wloc = loc } :: f.ctrl else skip_to_end t
   | "for" -> for_loop t loc
   | "switch" -> switch t loc
   | "case" | "range" -> (
       match f.ctrl with
-      | In_switch :: _ ->
+      | In_switch _ :: _ ->
           (* fall through: skip this clause's condition *)
           skip_condition t
       | _ -> fail t loc "#%s outside #switch" d)
@@ -438,16 +470,16 @@ and directive t d loc =
       fail t loc "#%s (file input/output) is not supported by camlray" d
   | _ -> fail t loc "unknown directive #%s" d
 
-and enter_if t c =
+and enter_if t loc c =
   let f = top t in
-  if c then f.ctrl <- In_if :: f.ctrl
+  if c then f.ctrl <- In_if loc :: f.ctrl
   else
     let rec seek () =
       match skip_block t ~stop:[ "else"; "elseif" ] with
-      | "else", _ -> f.ctrl <- In_if :: f.ctrl
+      | "else", _ -> f.ctrl <- In_if loc :: f.ctrl
       | "elseif", tok ->
           if Value.to_bool tok.loc (parse t Parser.Incremental.paren_expr) then
-            f.ctrl <- In_if :: f.ctrl
+            f.ctrl <- In_if loc :: f.ctrl
           else seek ()
       | _ -> ()
     in
@@ -471,7 +503,7 @@ and end_block t loc =
   let f = top t in
   match f.ctrl with
   | [] -> fail t loc "#end without an open #if, #while, #for, #switch or #macro"
-  | (In_if | In_switch) :: rest -> f.ctrl <- rest
+  | (In_if _ | In_switch _) :: rest -> f.ctrl <- rest
   | (In_while w as c) :: rest ->
       f.ctrl <- rest;
       let end_pos = f.pos in
@@ -515,7 +547,7 @@ and for_loop t loc =
   Env.declare t.env var (Env.Decl (Decl.Value (Value.Float start)));
   let f = top t in
   if (step > 0. && start <= stop) || (step < 0. && start >= stop) then
-    f.ctrl <- In_for { var; stop; step; body_pos = f.pos; count = 1 } :: f.ctrl
+    f.ctrl <- In_for { var; stop; step; body_pos = f.pos; count = 1; floc = loc } :: f.ctrl
   else skip_to_end t
 
 and switch t loc =
@@ -525,13 +557,13 @@ and switch t loc =
     match skip_block t ~stop:[ "case"; "range"; "else" ] with
     | "case", tok ->
         let c = Value.to_float tok.loc (parse t Parser.Incremental.paren_expr) in
-        if Float.abs (c -. v) <= 1e-10 then f.ctrl <- In_switch :: f.ctrl else seek ()
+        if Float.abs (c -. v) <= 1e-10 then f.ctrl <- In_switch loc :: f.ctrl else seek ()
     | "range", tok ->
         expect_tok t Parser.LPAREN "'(' after #range";
         let lo = Value.to_float tok.loc (parse t Parser.Incremental.expr_then_comma) in
         let hi = Value.to_float tok.loc (parse t Parser.Incremental.expr_then_rparen) in
-        if v >= lo && v <= hi then f.ctrl <- In_switch :: f.ctrl else seek ()
-    | "else", _ -> f.ctrl <- In_switch :: f.ctrl
+        if v >= lo && v <= hi then f.ctrl <- In_switch loc :: f.ctrl else seek ()
+    | "else", _ -> f.ctrl <- In_switch loc :: f.ctrl
     | _ -> ()
   in
   (* the first clause starts right away: no tokens may stand before it *)
@@ -540,8 +572,8 @@ and switch t loc =
 and break t loc =
   let f = top t in
   let rec unwind = function
-    | In_switch :: rest -> f.ctrl <- rest; skip_to_end t
-    | In_if :: rest -> f.ctrl <- rest; skip_to_end t; unwind rest
+    | In_switch _ :: rest -> f.ctrl <- rest; skip_to_end t
+    | In_if _ :: rest -> f.ctrl <- rest; skip_to_end t; unwind rest
     | (In_while _ | In_for _) :: rest -> f.ctrl <- rest; skip_to_end t
     | [] -> fail t loc "#break outside #switch or a loop"
   in
@@ -599,7 +631,11 @@ and declare t ~local loc =
       | _ -> bind (Env.Decl (rhs t)))
 
 and rhs t =
-  let d = parse t Parser.Incremental.declare_rhs in
+  let saved = t.context in
+  t.context <- Some "#declare of a float, vector, colour or string";
+  let d =
+    Fun.protect ~finally:(fun () -> t.context <- saved) (fun () -> parse t Parser.Incremental.declare_rhs)
+  in
   (match d with
   | Decl.Value _ -> ()
   | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
@@ -749,7 +785,9 @@ and candidates t name =
     Filename.dirname main.file
   in
   if not (Filename.is_relative name) then [ name ]
-  else List.map (fun d -> Filename.concat d name) ("." :: scene_dir :: t.config.include_dirs)
+  else
+    List.map (fun d -> if d = "." then name else Filename.concat d name)
+      ("." :: scene_dir :: t.config.include_dirs)
 
 and find_file t name =
   List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) (candidates t name)

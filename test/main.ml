@@ -7,4 +7,5 @@ let () =
       Test_value.tests;
       Test_supplier.tests;
       Test_fn.tests;
+      Test_errors.tests;
     ]
