@@ -628,7 +628,27 @@ and declare t ~local loc =
           ignore (raw_next t);
           bind (Env.Array (new_array t loc));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
-      | _ -> bind (Env.Decl (rhs t)))
+      | _ -> (
+          (* #declare A = B; for B a whole array or a function (not a call) *)
+          let f = top t in
+          let whole =
+            match f.toks.(f.pos).raw with
+            | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
+                match (Env.find t.env n, f.toks.(f.pos + 1).raw) with
+                | Some (Env.Array a), r when r <> Tok Parser.LBRACKET -> Some (Env.Array (copy_array a))
+                | Some (Env.Decl (Decl.Function _) as b), r when r <> Tok Parser.LPAREN -> Some b
+                | _ -> None)
+            | _ -> None
+          in
+          match whole with
+          | Some b ->
+              f.pos <- f.pos + 1;
+              bind b;
+              (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
+          | None -> bind (Env.Decl (rhs t))))
+
+and copy_array a =
+  Array.map (function Some (Env.Array a') -> Some (Env.Array (copy_array a')) | x -> x) a
 
 and rhs t =
   let saved = t.context in

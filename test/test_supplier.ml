@@ -78,6 +78,12 @@ let tests =
                 sphere {0, dimensions(A)} sphere {0, dimensions(B)} sphere {0, dimension_size(B, 2)}\n\
                 sphere {0, B[1][2]} sphere {0, E[2]}\n\
                 sphere {0, defined(E[2])} sphere {0, defined(E[1])} sphere {0, defined(A)} sphere {0, defined(Nope)}"));
+      Alcotest.test_case "#declare of a whole array copies it; of a function aliases it" `Quick (fun () ->
+          check "copy" [ 1.; 9.; 6. ]
+            (floats
+               "#declare A = array[2] {1, 2}; #declare B = A; #declare B[0] = 9;\n\
+                sphere {0, A[0]} sphere {0, B[0]}\n\
+                #declare F = function { x * 2 } #declare G = F; sphere {0, G(3, 0, 0)}"));
       Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
           check "ifdef" [ 2.; 4. ]
             (floats
