@@ -192,7 +192,7 @@ let ident = [%sedlex.regexp? ('a' .. 'z' | 'A' .. 'Z' | '_'), Star ('a' .. 'z' |
 
 let rec next buf : raw =
   match%sedlex buf with
-  | Plus (' ' | '\t' | '\r' | '\n' | 0xfeff) -> next buf
+  | Plus (' ' | '\t' | '\r' | '\n' | '\012' | 0xfeff) -> next buf
   | "//", Star (Compl '\n') -> next buf
   | "/*" ->
       let s, e = Sedlexing.lexing_positions buf in
@@ -213,6 +213,7 @@ let rec next buf : raw =
   | ident -> (
       let s = Sedlexing.Utf8.lexeme buf in
       match Hashtbl.find_opt keywords s with Some t -> Tok t | None -> Ident s)
+  | '#' -> next buf (* a '#' not followed by a word: POV-Ray ignores it *)
   | '{' -> Tok LBRACE | '}' -> Tok RBRACE | '(' -> Tok LPAREN | ')' -> Tok RPAREN
   | '[' -> Tok LBRACKET | ']' -> Tok RBRACKET
   | "<=" -> Tok LE | ">=" -> Tok GE | "!=" -> Tok NE

@@ -226,7 +226,12 @@ and ident t name loc =
           next t
       | Some (Env.Array a) -> array_access t name a loc
       | None ->
-          if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          if name = "default" && (raw_peek t).raw = Tok Parser.LBRACE then begin
+            (* 'default { ... }' without '#': POV-Ray accepts it too *)
+            parse t Parser.Incremental.default_body;
+            next t
+          end
+          else if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
           else if name = "file_exists" then begin
             expect_tok t Parser.LPAREN "'(' after file_exists";
             let file = parse t Parser.Incremental.string_arg in
@@ -650,11 +655,47 @@ and declare t ~local loc =
 and copy_array a =
   Array.map (function Some (Env.Array a') -> Some (Env.Array (copy_array a')) | x -> x) a
 
+(* A string #declare may end without ';' (POV-Ray's rule). A string
+   expression is one term (a literal, a string identifier or a string
+   function's call), so whether a ';' follows can be seen in the raw
+   tokens; without one, the string is parsed with no lookahead, so that
+   a directive right after it runs only once the name is bound. *)
+and string_without_semi t =
+  let f = top t in
+  let at i = if i < Array.length f.toks then f.toks.(i).raw else Eof in
+  let after_term =
+    if t.pending <> [] then None
+    else
+      match at f.pos with
+      | Tok (Parser.STRING _) -> Some (f.pos + 1)
+      | Ident n -> (
+          match Env.find t.env n with
+          | Some (Env.Decl (Decl.Value (Value.String _))) -> Some (f.pos + 1)
+          | _ -> None)
+      | Tok (Parser.FUNC name) when List.mem name string_functions && at (f.pos + 1) = Tok Parser.LPAREN ->
+          let rec close i depth =
+            match at i with
+            | Tok Parser.LPAREN -> close (i + 1) (depth + 1)
+            | Tok Parser.RPAREN -> if depth = 1 then Some (i + 1) else close (i + 1) (depth - 1)
+            | Eof | Directive _ -> None
+            | _ -> close (i + 1) depth
+          in
+          close (f.pos + 1) 0
+      | _ -> None
+  in
+  match after_term with
+  | Some i -> ( match at i with Tok (Parser.SEMI | Parser.PLUS | Parser.MINUS | Parser.STAR | Parser.SLASH) -> false | _ -> true)
+  | None -> false
+
+and string_functions = [ "concat"; "str"; "chr"; "substr"; "strupr"; "strlwr"; "vstr" ]
+
 and rhs t =
   let saved = t.context in
-  t.context <- Some "#declare of a float, vector, colour or string";
+  t.context <- Some "#declare of a float, vector or colour";
   let d =
-    Fun.protect ~finally:(fun () -> t.context <- saved) (fun () -> parse t Parser.Incremental.declare_rhs)
+    Fun.protect ~finally:(fun () -> t.context <- saved) (fun () ->
+        if string_without_semi t then Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
+        else parse t Parser.Incremental.declare_rhs)
   in
   (match d with
   | Decl.Value _ -> ()
@@ -693,11 +734,16 @@ and fill t loc a ds =
   match ds with
   | [ n ] ->
       let rec go i =
-        if i >= n then fail t loc "too many initialisers (the array has %d elements)" n;
-        let d, closed = parse t Parser.Incremental.array_elem in
-        a.(i) <- Some (Env.Decl d);
-        if not closed then go (i + 1)
-        else if i + 1 <> n then fail t loc "%d initialisers for an array of %d" (i + 1) n
+        if i >= n then
+          (* a trailing comma before '}' is allowed *)
+          match (raw_peek t).raw with
+          | Tok Parser.RBRACE -> ignore (raw_next t)
+          | _ -> fail t loc "too many initialisers (the array has %d elements)" n
+        else
+          let d, closed = parse t Parser.Incremental.array_elem in
+          a.(i) <- Some (Env.Decl d);
+          if not closed then go (i + 1)
+          else if i + 1 <> n then fail t loc "%d initialisers for an array of %d" (i + 1) n
       in
       go 0
   | n :: rest ->

@@ -84,6 +84,17 @@ let tests =
                "#declare A = array[2] {1, 2}; #declare B = A; #declare B[0] = 9;\n\
                 sphere {0, A[0]} sphere {0, B[0]}\n\
                 #declare F = function { x * 2 } #declare G = F; sphere {0, G(3, 0, 0)}"));
+      Alcotest.test_case "a string #declare may omit ';', even before a directive using it" `Quick (fun () ->
+          check "strings" [ 4.; 3. ]
+            (floats
+               "#declare S = \"abc\"\n#declare T = concat(S, \"d\")\nsphere { 0, strlen(T) }\n\
+                #declare U = str(1.5, 0, 1) sphere { 0, strlen(U) }"));
+      Alcotest.test_case "a float #declare may not omit ';'" `Quick (fun () ->
+          Scn.check_message "#declare F = 1\nsphere { 0, F }" "ends with ';'");
+      Alcotest.test_case "array initialisers may end with a comma" `Quick (fun () ->
+          check "trailing" [ 2. ] (floats "#declare A = array[2] { 1, 2, }\nsphere { 0, A[1] }"));
+      Alcotest.test_case "'default' without '#', a lone '#', form feeds" `Quick (fun () ->
+          check "lexing" [ 1. ] (floats "default { finish { phong 1 } }\n# \012 sphere { 0, 1 }"));
       Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
           check "ifdef" [ 2.; 4. ]
             (floats
