@@ -106,7 +106,8 @@ let pov_words =
    uint16be uint16le uint8 ultra_wide_angle union up use_alpha use_color use_colour \
    use_index utf8 uv_indices uv_mapping uv_vectors v_steps val variance vaxis_rotate \
    vcross vdot version vertex_vectors vlength vnormalize vrotate vstr vturbulence \
-   warning warp water_level waves width wood wrinkles write x y yes z"
+   warning warp water_level waves width wood wrinkles write x y yes z \
+   adaptive albedo anisotropy aoi append bmp bokeh bounded_by dtag expand_thresholds exr exterior gamma hdr internal max_trace mesh_camera method maximum_reuse mm_per_unit number_of_sides number_of_tiles ovus pass_through polynomial premultiplied quick_colour rainbow statistics steps strength target texture_list texture_map text tiff tiling translucency ttf xyz"
 
 let reserved =
   let t = Hashtbl.create 512 in
