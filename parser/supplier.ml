@@ -28,6 +28,10 @@ let opener = function
   | In_for r -> ("#for", r.floc)
   | In_switch l -> ("#switch", l)
 
+(* A file opened by #fopen: data tokens to #read, or a channel to #write. *)
+type reader = { data : token array; mutable at : int }
+type handle = Reading of reader | Writing of out_channel
+
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
 type frame = {
@@ -51,6 +55,7 @@ type t = {
   mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
   mutable last : Loc.t;
   mutable files : string list;
+  handles : (string, handle) Hashtbl.t;  (** #fopen'ed files by identifier *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
@@ -64,7 +69,12 @@ let create config env ~file toks =
   { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
                  version_at_entry = Defaults.version (); byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
-    deprecated = Hashtbl.create 8; braces = []; context = None }
+    deprecated = Hashtbl.create 8; braces = []; context = None;
+    handles = Hashtbl.create 4 }
+
+let close_files t =
+  Hashtbl.iter (fun _ h -> match h with Writing oc -> close_out_noerr oc | Reading _ -> ()) t.handles;
+  Hashtbl.reset t.handles
 
 let chain t =
   List.filter_map
@@ -321,7 +331,10 @@ and array_query t what loc =
   in
   let b = match Env.find t.env name with
     | Some b -> Some b
-    | None -> if List.mem_assoc name t.config.builtins then Some (Env.Decl (Decl.Value (Value.Float 0.))) else None
+    | None ->
+        if List.mem_assoc name t.config.builtins || Hashtbl.mem t.handles name then
+          Some (Env.Decl (Decl.Value (Value.Float 0.)))
+        else None
   in
   let result =
     match what with
@@ -471,9 +484,119 @@ and directive t d loc =
       else if d = "warning" then Diag.warning loc s
       else fail t loc "#error: %s" s
   | "default" -> parse t Parser.Incremental.default_body
-  | "fopen" | "fclose" | "read" | "write" ->
-      fail t loc "#%s (file input/output) is not supported by camlray" d
+  | "fopen" -> fopen t loc
+  | "fclose" ->
+      let name, nloc = expect_ident t "a file identifier after #fclose" in
+      (match Hashtbl.find_opt t.handles name with
+      | Some (Writing oc) -> close_out oc
+      | Some (Reading _) -> ()
+      | None -> fail t nloc "%s is not an open file" name);
+      Hashtbl.remove t.handles name
+  | "write" -> write t loc
+  | "read" -> read t loc
   | _ -> fail t loc "unknown directive #%s" d
+
+(* #fopen ID "file" read|write|append *)
+and fopen t loc =
+  let name, nloc = expect_ident t "a file identifier after #fopen" in
+  if Hashtbl.mem t.handles name then fail t nloc "the file %s is already open" name;
+  let file = parse t Parser.Incremental.string_arg in
+  let mode, mloc = expect_ident t "read, write or append" in
+  match mode with
+  | "read" -> (
+      match find_file t file with
+      | None -> fail t loc "cannot find %S to read" file
+      | Some path ->
+          let text =
+            try In_channel.with_open_bin path In_channel.input_all
+            with Sys_error e -> fail t loc "cannot read %s: %s" path e
+          in
+          Hashtbl.replace t.handles name (Reading { data = Lexer.tokenize ~file:path text; at = 0 }))
+  | "write" | "append" ->
+      let flags = if mode = "write" then [ Open_wronly; Open_creat; Open_trunc; Open_binary ]
+        else [ Open_wronly; Open_creat; Open_append; Open_binary ] in
+      let oc = try open_out_gen flags 0o644 file with Sys_error e -> fail t loc "cannot open %s: %s" file e in
+      Hashtbl.replace t.handles name (Writing oc)
+  | m -> fail t mloc "expected read, write or append, found %s" m
+
+(* #write (ID, item, ...): strings as they are, floats as %g, vectors as
+   <%g,%g,...> followed by a space (POV-Ray's format) *)
+and write t loc =
+  expect_tok t Parser.LPAREN "'(' after #write";
+  let name, nloc = expect_ident t "a file identifier" in
+  let oc = match Hashtbl.find_opt t.handles name with
+    | Some (Writing oc) -> oc
+    | Some (Reading _) -> fail t nloc "%s was opened for reading" name
+    | None -> fail t nloc "%s is not an open file" name
+  in
+  expect_tok t Parser.COMMA "','";
+  let rec items () =
+    let d, closed = parse t Parser.Incremental.macro_arg in
+    (match d with
+    | Decl.Value (Value.String s) -> output_string oc s
+    | Decl.Value (Value.Float f) -> Printf.fprintf oc "%g" f
+    | Decl.Value (Value.Vector a) ->
+        Printf.fprintf oc "<%s> " (String.concat "," (Array.to_list (Array.map (Printf.sprintf "%g") a)))
+    | d -> fail t loc "#write cannot write %s" (Decl.kind_name d));
+    if not closed then items ()
+  in
+  items ()
+
+(* #read (ID, VAR, ...): comma-separated numbers, vectors and strings.
+   At the end of the data the file closes and ID becomes undefined; the
+   variables not reached stay as they were. *)
+and read t loc =
+  expect_tok t Parser.LPAREN "'(' after #read";
+  let name, nloc = expect_ident t "a file identifier" in
+  let r = match Hashtbl.find_opt t.handles name with
+    | Some (Reading r) -> r
+    | Some (Writing _) -> fail t nloc "%s was opened for writing" name
+    | None -> fail t nloc "%s is not an open file" name
+  in
+  let peek () = r.data.(r.at).raw and adv () = r.at <- r.at + 1 in
+  let dloc () = r.data.(r.at).loc in
+  let rec skip_commas () = match peek () with Tok Parser.COMMA -> adv (); skip_commas () | _ -> () in
+  let number () =
+    let sign = match peek () with
+      | Tok Parser.MINUS -> adv (); -1. | Tok Parser.PLUS -> adv (); 1. | _ -> 1. in
+    match peek () with
+    | Tok (Parser.FLOAT f) -> adv (); sign *. f
+    | raw -> Diag.error (dloc ()) "expected a number in the data file, found %s" (describe raw)
+  in
+  let value () =
+    skip_commas ();
+    match peek () with
+    | Eof -> None
+    | Tok (Parser.STRING s) -> adv (); Some (Value.String s)
+    | Tok Parser.LT ->
+        adv ();
+        let rec comps acc =
+          let c = number () in
+          match peek () with
+          | Tok Parser.COMMA -> adv (); comps (c :: acc)
+          | Tok Parser.GT -> adv (); List.rev (c :: acc)
+          | raw -> Diag.error (dloc ()) "expected ',' or '>' in the data file, found %s" (describe raw)
+        in
+        Some (Value.Vector (Array.of_list (comps [])))
+    | _ -> Some (Value.Float (number ()))
+  in
+  let rec vars () =
+    expect_tok t Parser.COMMA "','";
+    let var, _ = expect_ident t "a variable to read into" in
+    (match value () with
+    | Some v -> Env.declare t.env var (Env.Decl (Decl.Value v))
+    | None -> Hashtbl.remove t.handles name);
+    let sep = raw_next t in
+    match sep.raw with
+    | Tok Parser.RPAREN -> ()
+    | Tok Parser.COMMA -> (top t).pos <- (top t).pos - 1; vars ()
+    | raw -> fail t sep.loc "expected ',' or ')', found %s" (describe raw)
+  in
+  ignore loc;
+  vars ();
+  (* reaching the end of the data closes the file *)
+  skip_commas ();
+  if peek () = Eof then Hashtbl.remove t.handles name
 
 and enter_if t loc c =
   let f = top t in

@@ -35,5 +35,8 @@ val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 
     from the supplier. Raises {!Diag.Error} with a located message naming
     what was expected and what was found. *)
 
+val close_files : t -> unit
+(** Close the files that [#fopen] left open (call at the end of a parse). *)
+
 val files_read : t -> string list
 (** Every file read so far (the scene and its includes), absolute paths. *)

@@ -95,6 +95,21 @@ let tests =
           check "trailing" [ 2. ] (floats "#declare A = array[2] { 1, 2, }\nsphere { 0, A[1] }"));
       Alcotest.test_case "'default' without '#', a lone '#', form feeds" `Quick (fun () ->
           check "lexing" [ 1. ] (floats "default { finish { phong 1 } }\n# \012 sphere { 0, 1 }"));
+      Alcotest.test_case "#fopen/#write then #read back until the file closes itself" `Quick (fun () ->
+          with_dir [ ("main.pov", "") ] (fun dir ->
+              let data = Filename.concat dir "data.txt" in
+              let text =
+                Printf.sprintf
+                  "#fopen F %S write\n#write (F, 1.5, \",\", <1,2,3>, \",\", \"\\\"s\\\"\", \",\", -0.25)\n#fclose F\n\
+                   #fopen G %S read\n#declare N = 0;\n\
+                   #while (defined(G)) #read (G, V) #declare N = N + 1; #end\n\
+                   sphere { 0, N } sphere { 0, V }\n"
+                  data data
+              in
+              check "read" [ 4.; -0.25 ] (floats text);
+              Alcotest.(check string) "written" "1.5,<1,2,3> ,\"s\",-0.25"
+                (In_channel.with_open_bin data In_channel.input_all);
+              Sys.remove data));
       Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
           check "ifdef" [ 2.; 4. ]
             (floats
