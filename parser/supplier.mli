@@ -3,10 +3,14 @@
     evaluates POV-Ray's directives as it meets them ([#version],
     [#declare], [#local], [#undef], [#include], [#if]/[#ifdef]/[#ifndef]/
     [#elseif]/[#else], [#switch]/[#case]/[#range]/[#break], [#while],
-    [#for], [#macro], [#debug]/[#warning]/[#error], [#default]) and hands
-    the parser identifiers typed by what they are bound to. Sub-parses
-    (a [#declare]'s right-hand side, a condition) pull tokens from the same
-    supplier, so directives nest anywhere. *)
+    [#for], [#macro], [#debug]/[#warning]/[#error], [#default],
+    [#fopen]/[#read]/[#write]/[#fclose]) and hands the parser identifiers
+    typed by what they are bound to; [function { ... }] bodies are read
+    here and compiled by {!Fnparse}. Sub-parses (a [#declare]'s right-hand
+    side, a condition) pull tokens from the same supplier, so directives
+    nest anywhere. The state and the directive groups live in {!Cursor},
+    {!Control}, {!Macros}, {!Arrays} and {!Dataio}; this module types
+    identifiers, drives menhir and dispatches directives. *)
 
 type limits = {
   max_loop_iterations : int;  (** per [#while]/[#for] loop *)
