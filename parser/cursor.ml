@@ -62,6 +62,9 @@ type t = {
   mutable last : Loc.t;
   mutable files : string list;
   handles : (string, handle) Hashtbl.t;  (** #fopen'ed files by identifier *)
+  mutable stop_at : (frame * int) option;
+      (** hand the parser a ';' when this frame reaches this position
+          (ends a value that has no terminator, see {!Splread}) *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
@@ -76,7 +79,7 @@ let create config env ~file toks =
   { config; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
                  version_at_entry = Defaults.version (); byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
-    deprecated = Hashtbl.create 8; braces = []; context = None;
+    deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
     handles = Hashtbl.create 4 }
 
 let chain t =

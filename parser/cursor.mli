@@ -61,6 +61,9 @@ type t = {
   mutable last : Loc.t;
   mutable files : string list;
   handles : (string, handle) Hashtbl.t;  (** #fopen'ed files by identifier *)
+  mutable stop_at : (frame * int) option;
+      (** hand the parser a ';' when this frame reaches this position
+          (ends a value that has no terminator, see {!Splread}) *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;

@@ -36,6 +36,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
   | Decl.Function f -> Parser.FUNCTION_ID f
+  | Decl.Spline _ -> Parser.UNDEFINED_ID "a spline (call it: S(t))"
 
 let suggest t name =
   let d a b =
@@ -74,6 +75,10 @@ let rec next t : Parser.token * Loc.t =
   | x :: rest ->
       t.pending <- rest;
       x
+  | [] when (match t.stop_at with Some (f, p) -> top t == f && f.pos = p | None -> false) ->
+      t.stop_at <- None;
+      let l = (top t).toks.((top t).pos).loc in
+      (Parser.SEMI, { l with stop = l.start })
   | [] -> (
       let tok = raw_next t in
       match tok.raw with
@@ -100,6 +105,7 @@ and ident t name loc =
           Diag.warning loc (Printf.sprintf "%s is deprecated: %s" name msg)
       | _ -> ());
       match Env.find t.env name with
+      | Some (Env.Decl (Decl.Spline s)) -> (Parser.VECTOR (Splread.call t s loc), loc)
       | Some (Env.Decl d) -> (token_of_decl d, loc)
       | Some (Env.Macro m) ->
           Macros.call t m loc;
@@ -157,6 +163,12 @@ and function_lit t loc =
       let tr = parse t Parser.Incremental.transform_arg in
       expect_tok t Parser.RBRACE "'}' to close the function";
       Fn.of_transform tr
+  | Ident "spline" ->
+      if params <> [ "x"; "y"; "z" ] then fail t loc "a spline function takes no parameter list";
+      let sloc = (raw_next t).loc in
+      let s = Splread.read t sloc in
+      expect_tok t Parser.RBRACE "'}' to close the function";
+      Fn.of_spline (Spline.eval s)
   | _ ->
   let rec body depth acc =
     let tok = raw_next t in
@@ -343,6 +355,10 @@ and declare t ~local loc =
   | _ -> (
       expect_tok t Parser.EQ "'=' after the identifier";
       match (raw_peek t).raw with
+      | Ident "spline" ->
+          let sloc = (raw_next t).loc in
+          bind (Env.Decl (Decl.Spline (Splread.read t sloc)));
+          (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | Ident "array" ->
           ignore (raw_next t);
           bind (Env.Array (Arrays.make t loc));

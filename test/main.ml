@@ -7,5 +7,6 @@ let () =
       Test_value.tests;
       Test_supplier.tests;
       Test_fn.tests;
+      Test_spline.tests;
       Test_errors.tests;
     ]
