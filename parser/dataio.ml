@@ -35,7 +35,8 @@ let write t loc =
     | Some (Reading _) -> fail t nloc "%s was opened for reading" name
     | None -> fail t nloc "%s is not an open file" name
   in
-  expect_tok t Parser.COMMA "','";
+  (* the comma after the file identifier is optional in POV-Ray *)
+  (match (raw_peek t).raw with Tok Parser.COMMA -> ignore (raw_next t) | _ -> ());
   let rec items () =
     let d, closed = Cursor.parse t Parser.Incremental.macro_arg in
     (match d with
@@ -87,7 +88,7 @@ let read t loc =
     | _ -> Some (Value.Float (number ()))
   in
   let rec vars () =
-    expect_tok t Parser.COMMA "','";
+    (match (raw_peek t).raw with Tok Parser.COMMA -> ignore (raw_next t) | _ -> ());
     let var, _ = expect_ident t "a variable to read into" in
     (match value () with
     | Some v -> Env.declare t.env var (Env.Decl (Decl.Value v))
@@ -109,8 +110,8 @@ let fclose t =
   let name, nloc = expect_ident t "a file identifier after #fclose" in
   (match Hashtbl.find_opt t.handles name with
   | Some (Writing oc) -> close_out oc
-  | Some (Reading _) -> ()
-  | None -> fail t nloc "%s is not an open file" name);
+  | Some (Reading _) | None -> () (* a file that reached its end is already closed *));
+  ignore nloc;
   Hashtbl.remove t.handles name
 
 let close_files t =
