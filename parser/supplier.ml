@@ -395,10 +395,23 @@ and string_without_semi t =
     else
       match at f.pos with
       | Tok (Parser.STRING _) -> Some (f.pos + 1)
-      | Ident n -> (
+      | Ident n when (match Env.find t.env n with Some (Env.Array _) -> false | _ -> true) -> (
           match Env.find t.env n with
           | Some (Env.Decl (Decl.Value (Value.String _))) -> Some (f.pos + 1)
           | _ -> None)
+      | Ident _ ->
+          (* an array element, NAME[i]...: the term ends after the brackets *)
+          let rec close i depth =
+            match at i with
+            | Tok Parser.LBRACKET -> close (i + 1) (depth + 1)
+            | Tok Parser.RBRACKET ->
+                if depth = 1 then (match at (i + 1) with Tok Parser.LBRACKET -> close (i + 1) 0 | _ -> Some (i + 1))
+                else close (i + 1) (depth - 1)
+            | Eof | Directive _ -> None
+            | _ when depth = 0 -> None
+            | _ -> close (i + 1) depth
+          in
+          close (f.pos + 1) 0
       | Tok (Parser.FUNC name) when List.mem name string_functions && at (f.pos + 1) = Tok Parser.LPAREN ->
           let rec close i depth =
             match at i with
@@ -411,8 +424,11 @@ and string_without_semi t =
       | _ -> None
   in
   match after_term with
-  | Some i -> ( match at i with Tok (Parser.SEMI | Parser.PLUS | Parser.MINUS | Parser.STAR | Parser.SLASH) -> false | _ -> true)
-  | None -> false
+  | Some i -> (
+      match at i with
+      | Tok (Parser.SEMI | Parser.PLUS | Parser.MINUS | Parser.STAR | Parser.SLASH | Parser.MEMBER _) -> `Plain
+      | _ -> ( match at f.pos with Ident n when Env.find t.env n <> None && at (f.pos + 1) = Tok Parser.LBRACKET -> `Bounded (f, i) | _ -> `String))
+  | None -> `Plain
 
 and string_functions = [ "concat"; "str"; "chr"; "substr"; "strupr"; "strlwr"; "vstr" ]
 
@@ -421,8 +437,19 @@ and rhs t =
   t.context <- Some "#declare of a float, vector or colour";
   let d =
     Fun.protect ~finally:(fun () -> t.context <- saved) (fun () ->
-        if string_without_semi t then Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
-        else parse t Parser.Incremental.declare_rhs)
+        match string_without_semi t with
+        | `String -> Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
+        | `Plain -> parse t Parser.Incremental.declare_rhs
+        | `Bounded (f, i) -> (
+            (* hand the parser the missing ';', then insist on a string *)
+            let l = f.toks.(i).loc in
+            t.stop_at <- Some (f, i);
+            let d = Fun.protect ~finally:(fun () -> t.stop_at <- None) (fun () -> parse t Parser.Incremental.declare_rhs) in
+            match d with
+            | Decl.Value (Value.String _) -> d
+            | _ ->
+                fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
+                  (describe f.toks.(i).raw)))
   in
   (match d with
   | Decl.Value _ -> ()

@@ -89,6 +89,10 @@ let tests =
             (floats
                "#declare S = \"abc\"\n#declare T = concat(S, \"d\")\nsphere { 0, strlen(T) }\n\
                 #declare U = str(1.5, 0, 1) sphere { 0, strlen(U) }"));
+      Alcotest.test_case "a string array element may be declared without ';'" `Quick (fun () ->
+          check "element" [ 2. ]
+            (floats "#declare A = array[2] {\"a\", \"b\"}\n#declare S = A[1]\n#declare T = concat(S, \"c\")\nsphere { 0, strlen(T) }");
+          Scn.check_message "#declare A = array[1] {1}\n#declare F = A[0]\nsphere { 0, F }" "ends with ';'");
       Alcotest.test_case "a float #declare may not omit ';'" `Quick (fun () ->
           Scn.check_message "#declare F = 1\nsphere { 0, F }" "ends with ';'");
       Alcotest.test_case "array initialisers may end with a comma" `Quick (fun () ->
