@@ -8,5 +8,6 @@ let () =
       Test_supplier.tests;
       Test_fn.tests;
       Test_spline.tests;
+      Test_parse.tests;
       Test_errors.tests;
     ]
