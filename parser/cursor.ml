@@ -34,6 +34,9 @@ let opener = function
 type reader = { data : token array; mutable at : int }
 type handle = Reading of reader | Writing of out_channel
 
+(* Where a macro parameter passed by reference writes back. *)
+type target = Name of string | Element of Env.binding option array * int
+
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
 type frame = {
@@ -44,7 +47,7 @@ type frame = {
   mutable ctrl : ctrl list;
   scoped : bool;
   version_at_entry : float;  (** restored when an included file ends *)
-  byref : (string * string) list;
+  byref : (string * target) list;
       (** macro parameters given a bare identifier, with that identifier:
           their final values are copied back when the macro ends
           (POV-Ray passes identifiers by reference) *)
@@ -107,7 +110,12 @@ let rec raw_next t =
   | Eof when f.kind <> Main ->
       let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
       if f.scoped then Env.pop_scope t.env;
-      List.iter (fun (n, b) -> Env.declare t.env n b) back;
+      List.iter
+        (fun (target, b) ->
+          match target with
+          | Name n -> Env.declare t.env n b
+          | Element (a, i) -> a.(i) <- Some b)
+        back;
       (match f.kind with
       | Include _ -> Defaults.restore_version f.version_at_entry
       | Main | Macro_call _ -> ());

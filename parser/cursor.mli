@@ -33,6 +33,9 @@ val opener : ctrl -> string * Loc.t
 type reader = { data : token array; mutable at : int }
 type handle = Reading of reader | Writing of out_channel
 
+(* Where a macro parameter passed by reference writes back. *)
+type target = Name of string | Element of Env.binding option array * int
+
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
 type frame = {
@@ -43,7 +46,7 @@ type frame = {
   mutable ctrl : ctrl list;
   scoped : bool;
   version_at_entry : float;  (** restored when an included file ends *)
-  byref : (string * string) list;
+  byref : (string * target) list;
       (** macro parameters given a bare identifier, with that identifier:
           their final values are copied back when the macro ends
           (POV-Ray passes identifiers by reference) *)

@@ -66,6 +66,39 @@ let rec call t (m : Env.macro) loc =
 (* One macro argument and whether it closed the list. A bare declared
    identifier (NAME followed by ',' or ')') is passed by reference, as in
    POV-Ray: arrays as themselves, other values copied back at the end. *)
+(* NAME[i]... followed by ',' or ')': an element passed by reference. *)
+and element_ref t f name a =
+  let at i = if i < Array.length f.toks then f.toks.(i).raw else Eof in
+  let rec close i depth =
+    match at i with
+    | Tok Parser.LBRACKET -> close (i + 1) (depth + 1)
+    | Tok Parser.RBRACKET ->
+        if depth = 1 then (match at (i + 1) with Tok Parser.LBRACKET -> close (i + 1) 0 | _ -> Some (i + 1))
+        else close (i + 1) (depth - 1)
+    | Eof | Directive _ -> None
+    | _ when depth = 0 -> None
+    | _ -> close (i + 1) depth
+  in
+  match close (f.pos + 1) 0 with
+  | Some e when (match at e with Tok (Parser.COMMA | Parser.RPAREN) -> true | _ -> false) ->
+      let nloc = f.toks.(f.pos).loc in
+      f.pos <- f.pos + 1;
+      let rec go a =
+        ignore (raw_next t);
+        let i = Value.to_int nloc (Cursor.parse t Parser.Incremental.expr_then_rbracket) in
+        if i < 0 || i >= Array.length a then
+          fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
+        match ((raw_peek t).raw, a.(i)) with
+        | Tok Parser.LBRACKET, Some (Env.Array a') -> go a'
+        | Tok Parser.LBRACKET, _ -> fail t nloc "%s has fewer dimensions than indices" name
+        | _, None -> fail t nloc "element %s[%d] has not been set" name i
+        | _, Some b -> (b, Element (a, i))
+      in
+      let b, target = go a in
+      let sep = raw_next t in
+      Some ((b, Some target), sep.raw = Tok Parser.RPAREN)
+  | _ -> None
+
 and argument t =
   let f = top t in
   let bare =
@@ -74,7 +107,8 @@ and argument t =
         match (f.toks.(f.pos + 1).raw, Env.find t.env n) with
         | Tok ((Parser.COMMA | Parser.RPAREN) as sep), Some ((Env.Array _ | Env.Decl _) as b) ->
             f.pos <- f.pos + 2;
-            Some ((b, Some n), sep = Parser.RPAREN)
+            Some ((b, Some (Name n)), sep = Parser.RPAREN)
+        | Tok Parser.LBRACKET, Some (Env.Array a) -> element_ref t f n a
         | _ -> None)
     | _ -> None
   in

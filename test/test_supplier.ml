@@ -59,6 +59,15 @@ let tests =
             (floats
                "#macro Swap(a, b) #local T = a; #declare a = b; #declare b = T; #end\n\
                 #declare X1 = 1; #declare X2 = 2; Swap(X1, X2) sphere {0, X1} sphere {0, X2}"));
+      Alcotest.test_case "by reference: #local on a parameter, array elements, #undef stays local" `Quick (fun () ->
+          (* POV-Ray 3.7: M: 5, N: 3, Z defined, E: 7 *)
+          check "refs" [ 5.; 3.; 1.; 7. ]
+            (floats
+               "#macro M(a) #local a = 5; #end\n#macro N(a) #declare a = a + 1; #end\n#macro K(a) #undef a #end\n\
+                #macro E(a) #declare a = 7; #end\n\
+                #declare X = 1; M(X) #declare Y = 1; N(Y) N(Y) #declare Z = 1; K(Z)\n\
+                #declare A = array[2] {1, 2}; E(A[0])\n\
+                sphere {0, X} sphere {0, Y} sphere {0, defined(Z)} sphere {0, A[0]}"));
       Alcotest.test_case "an array passed to a macro is shared" `Quick (fun () ->
           check "fill" [ 3. ]
             (floats
