@@ -1,6 +1,12 @@
 type t = All | Only of string list
 
-let real p = try Unix.realpath p with Unix.Unix_error _ -> p
+(* The real path; for a file that does not exist yet (to be written),
+   that of its folder. *)
+let real p =
+  try Unix.realpath p
+  with Unix.Unix_error _ -> (
+    try Filename.concat (Unix.realpath (Filename.dirname p)) (Filename.basename p)
+    with Unix.Unix_error _ -> p)
 
 let create dirs = Only (List.sort_uniq compare (List.map real dirs))
 let unrestricted = All

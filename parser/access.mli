@@ -2,7 +2,8 @@
     else's: [#include], [image_map] and every other read are confined to
     the folders of the include search order (the current folder, the
     scene's folder, [--include-path] folders, POV-Ray's include folder) and
-    to folders granted with [--allow-read]. Paths are compared after
+    to folders granted with [--allow-read]; so are the files [#fopen]
+    writes. Paths are compared after
     resolving symbolic links and [..], so neither an absolute path nor
     [../] escapes. *)
 

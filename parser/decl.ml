@@ -8,6 +8,7 @@ type t =
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
   | Function of Fn.t
+  | Spline of Spline.t
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -19,3 +20,4 @@ let kind_name = function
   | Transform _ -> "a transform"
   | Camera _ -> "a camera"
   | Function _ -> "a function"
+  | Spline _ -> "a spline"

@@ -11,6 +11,7 @@ type t =
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
   | Function of Fn.t  (** [function { ... }] *)
+  | Spline of Spline.t  (** [spline { ... }] *)
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

@@ -21,6 +21,10 @@ let of_transform tr =
   { params = [| "x"; "y"; "z" |]; nslots = 3; code = (fun _ -> nan); unsupported = None;
     vector = Some apply }
 
+let of_spline eval =
+  { params = [| "t" |]; nslots = 1; code = (fun _ -> nan); unsupported = None;
+    vector = Some (fun a -> eval a.(0)) }
+
 let is_vector f = f.vector <> None
 let code f = f.code
 let nslots f = f.nslots

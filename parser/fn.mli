@@ -16,6 +16,9 @@ val of_transform : Camlray.Transform.t -> t
 (** [function { transform { ... } }]: a vector function of [x, y, z]
     giving the transformed point. *)
 
+val of_spline : (float -> float array) -> t
+(** [function { spline { ... } }]: a vector function of one parameter. *)
+
 val is_vector : t -> bool
 
 val call_vector : Loc.t -> t -> float list -> float array

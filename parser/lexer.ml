@@ -113,7 +113,8 @@ let pov_words =
    uint16be uint16le uint8 ultra_wide_angle union up use_alpha use_color use_colour \
    use_index utf8 uv_indices uv_mapping uv_vectors v_steps val variance vaxis_rotate \
    vcross vdot version vertex_vectors vlength vnormalize vrotate vstr vturbulence \
-   warning warp water_level waves width wood wrinkles write x y yes z"
+   warning warp water_level waves width wood wrinkles write x y yes z \
+   adaptive albedo anisotropy aoi append bmp bokeh bounded_by dtag expand_thresholds exr exterior gamma hdr internal max_trace mesh_camera method maximum_reuse mm_per_unit number_of_sides number_of_tiles ovus pass_through polynomial premultiplied quick_colour rainbow statistics steps strength target texture_list texture_map text tiff tiling translucency ttf xyz"
 
 let reserved =
   let t = Hashtbl.create 512 in
@@ -137,6 +138,12 @@ let describe = function
       | SEMI -> "';'" | QUESTION -> "'?'" | COLON -> "':'" | AND -> "'&'" | OR -> "'|'"
       | BANG -> "'!'" | EOF -> "end of file"
       | FUNCTION_ID _ | FUNCTION_LIT _ -> "a function"
+      | FLOAT_ID _ -> "a float identifier" | VECTOR_ID _ -> "a vector identifier"
+      | STRING_ID _ -> "a string identifier" | OBJECT_ID _ -> "an object identifier"
+      | PIGMENT_ID _ -> "a pigment identifier" | FINISH_ID _ -> "a finish identifier"
+      | TEXTURE_ID _ -> "a texture identifier" | INTERIOR_ID _ -> "an interior identifier"
+      | TRANSFORM_ID _ -> "a transform identifier" | CAMERA_ID _ -> "a camera identifier"
+      | UNDEFINED_ID s -> "undefined identifier " ^ s
       | FLOAT f -> Printf.sprintf "number %g" f
       | STRING s -> Printf.sprintf "string %S" s
       | MEMBER m -> "." ^ m
@@ -149,6 +156,10 @@ let describe = function
           match !found with Some k -> "keyword " ^ k | None -> "a declared identifier"))
 
 exception Lex_error of string
+
+(* An error that belongs to the token's opening (a string's quote, a
+   comment's slash-star), located there. *)
+exception Unclosed of string * Lexing.position * Lexing.position
 
 let rec comment depth buf =
   match%sedlex buf with
@@ -189,11 +200,16 @@ let ident = [%sedlex.regexp? ('a' .. 'z' | 'A' .. 'Z' | '_'), Star ('a' .. 'z' |
 
 let rec next buf : raw =
   match%sedlex buf with
-  | Plus (' ' | '\t' | '\r' | '\n' | 0xfeff) -> next buf
+  | Plus (' ' | '\t' | '\r' | '\n' | '\012' | 0xfeff) -> next buf
   | "//", Star (Compl '\n') -> next buf
-  | "/*" -> comment 1 buf; next buf
+  | "/*" ->
+      let s, e = Sedlexing.lexing_positions buf in
+      (try comment 1 buf with Lex_error m -> raise (Unclosed (m, s, e)));
+      next buf
   | number -> Tok (FLOAT (float_of_string (Sedlexing.Utf8.lexeme buf)))
-  | '"' -> Tok (STRING (string_body buf))
+  | '"' ->
+      let s, e = Sedlexing.lexing_positions buf in
+      Tok (STRING (try string_body buf with Lex_error m -> raise (Unclosed (m, s, e))))
   | '.', ident ->
       let s = Sedlexing.Utf8.lexeme buf in
       Tok (MEMBER (String.sub s 1 (String.length s - 1)))
@@ -205,6 +221,7 @@ let rec next buf : raw =
   | ident -> (
       let s = Sedlexing.Utf8.lexeme buf in
       match Hashtbl.find_opt keywords s with Some t -> Tok t | None -> Ident s)
+  | '#' -> next buf (* a '#' not followed by a word: POV-Ray ignores it *)
   | '{' -> Tok LBRACE | '}' -> Tok RBRACE | '(' -> Tok LPAREN | ')' -> Tok RPAREN
   | '[' -> Tok LBRACKET | ']' -> Tok RBRACKET
   | "<=" -> Tok LE | ">=" -> Tok GE | "!=" -> Tok NE
@@ -224,7 +241,9 @@ let tokenize ~file text =
   let rec loop () =
     let raw =
       try next buf
-      with Lex_error msg ->
+      with
+      | Unclosed (msg, s, e) -> Diag.error (Loc.make s e) "%s" msg
+      | Lex_error msg ->
         let s, e = Sedlexing.lexing_positions buf in
         Diag.error (Loc.make s e) "%s" msg
     in

@@ -46,7 +46,10 @@ let run options ~name text =
       }
     in
     let sup = Supplier.create config (Env.create ()) ~file:name toks in
-    let items = Supplier.parse sup Parser.Incremental.scene in
+    let items =
+      Fun.protect ~finally:(fun () -> Supplier.close_files sup) (fun () ->
+          Supplier.parse sup Parser.Incremental.scene)
+    in
     let scene = { Sdl.items; version = Defaults.first_version (); file = name } in
     Ok (scene, Supplier.files_read sup)
   with

@@ -1,140 +1,27 @@
 module I = Parser.MenhirInterpreter
 open Lexer
+open Cursor
 
-type limits = {
+type limits = Cursor.limits = {
   max_loop_iterations : int;
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
 }
 
-let default_limits =
-  { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
-    max_array_size = 10_000_000 }
+let default_limits = Cursor.default_limits
 
-type config = {
+type config = Cursor.config = {
   include_dirs : string list;
   limits : limits;
   builtins : (string * float) list;
   access : Access.t;
 }
 
-(* Open control structures of one frame, innermost first. *)
-type ctrl =
-  | In_if  (** executing a taken branch of #if/#ifdef/#ifndef *)
-  | In_while of { cond_pos : int; mutable count : int }
-  | In_for of { var : string; stop : float; step : float; body_pos : int; mutable count : int }
-  | In_switch  (** executing a matched clause *)
+type t = Cursor.t
 
-type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
-
-type frame = {
-  toks : token array;
-  mutable pos : int;
-  kind : kind;
-  file : string;
-  mutable ctrl : ctrl list;
-  scoped : bool;
-  version_at_entry : float;  (** restored when an included file ends *)
-  byref : (string * string) list;
-      (** macro parameters given a bare identifier, with that identifier:
-          their final values are copied back when the macro ends
-          (POV-Ray passes identifiers by reference) *)
-}
-
-type t = {
-  config : config;
-  env : Env.t;
-  mutable frames : frame list;
-  mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
-  mutable last : Loc.t;
-  mutable files : string list;
-  deprecated : (string, string * bool * bool ref) Hashtbl.t;
-      (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
-}
-
-let files_read t = List.rev t.files
-
-let create config env ~file toks =
-  let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
-  { config; env; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
-                 version_at_entry = Defaults.version (); byref = [] } ];
-    pending = []; last = Loc.none; files = [ abs ];
-    deprecated = Hashtbl.create 8 }
-
-let chain t =
-  List.filter_map
-    (fun f ->
-      match f.kind with
-      | Main -> None
-      | Include l -> Some ("included from", l)
-      | Macro_call (name, l) -> Some ("in macro " ^ name ^ " called at", l))
-    t.frames
-
-let fail t loc fmt = Diag.error ~chain:(chain t) loc fmt
-let top t = match t.frames with f :: _ -> f | [] -> assert false
-
-(* ---------- raw token access ---------- *)
-
-let rec raw_next t =
-  let f = top t in
-  let tok = f.toks.(f.pos) in
-  match tok.raw with
-  | Eof when f.kind <> Main ->
-      if f.ctrl <> [] then fail t tok.loc "missing #end: a directive opened in this %s is not closed"
-          (match f.kind with Macro_call _ -> "macro" | _ -> "file");
-      let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
-      if f.scoped then Env.pop_scope t.env;
-      List.iter (fun (n, b) -> Env.declare t.env n b) back;
-      (match f.kind with
-      | Include _ -> Defaults.restore_version f.version_at_entry
-      | Main | Macro_call _ -> ());
-      t.frames <- List.tl t.frames;
-      raw_next t
-  | Eof -> tok
-  | _ ->
-      f.pos <- f.pos + 1;
-      tok
-
-let raw_peek t =
-  let f = top t in
-  f.toks.(f.pos)
-
-let expect_raw t what pred =
-  let tok = raw_next t in
-  if not (pred tok.raw) then fail t tok.loc "expected %s, found %s" what (describe tok.raw);
-  tok
-
-let expect_tok t tk what = ignore (expect_raw t what (function Tok x -> x = tk | _ -> false))
-
-let expect_ident t what =
-  let tok = expect_raw t what (function Ident _ -> true | _ -> false) in
-  match tok.raw with Ident s -> (s, tok.loc) | _ -> assert false
-
-(* Skip tokens of the current frame up to the directive that ends the
-   current block at depth 0: returns the directive name ("else", "elseif",
-   "end", "case", "range", "break") and its token. [stop] says which
-   names end the skip. *)
-let opens = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
-
-let skip_block t ~stop =
-  let f = top t in
-  let start = if f.pos > 0 then f.toks.(f.pos - 1).loc else Loc.none in
-  let rec go depth =
-    let tok = f.toks.(f.pos) in
-    match tok.raw with
-    | Eof -> fail t start "this directive has no matching #end"
-    | Directive d ->
-        f.pos <- f.pos + 1;
-        if List.mem d opens then go (depth + 1)
-        else if d = "end" then if depth = 0 then (d, tok) else go (depth - 1)
-        else if depth = 0 && List.mem d stop then (d, tok)
-        else go depth
-    | _ ->
-        f.pos <- f.pos + 1;
-        go depth
-  in
-  go 0
+let files_read = Cursor.files_read
+let close_files = Dataio.close_files
 
 (* ---------- typing identifiers ---------- *)
 
@@ -150,6 +37,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
   | Decl.Function f -> Parser.FUNCTION_ID f
+  | Decl.Spline _ -> Parser.UNDEFINED_ID "a spline (call it: S(t))"
 
 let suggest t name =
   let d a b =
@@ -188,11 +76,20 @@ let rec next t : Parser.token * Loc.t =
   | x :: rest ->
       t.pending <- rest;
       x
+  | [] when (match t.stop_at with Some (f, p) -> top t == f && f.pos = p | None -> false) ->
+      t.stop_at <- None;
+      let l = (top t).toks.((top t).pos).loc in
+      (Parser.SEMI, { l with stop = l.start })
   | [] -> (
       let tok = raw_next t in
       match tok.raw with
       | Eof -> (Parser.EOF, tok.loc)
-      | Tok x -> (x, tok.loc)
+      | Tok x ->
+          (match x with
+          | Parser.LBRACE -> t.braces <- tok.loc :: t.braces
+          | Parser.RBRACE -> (match t.braces with _ :: r -> t.braces <- r | [] -> ())
+          | _ -> ());
+          (x, tok.loc)
       | Directive d ->
           directive t d tok.loc;
           next t
@@ -209,13 +106,19 @@ and ident t name loc =
           Diag.warning loc (Printf.sprintf "%s is deprecated: %s" name msg)
       | _ -> ());
       match Env.find t.env name with
+      | Some (Env.Decl (Decl.Spline s)) -> (Parser.VECTOR (Splread.call t s loc), loc)
       | Some (Env.Decl d) -> (token_of_decl d, loc)
       | Some (Env.Macro m) ->
-          call_macro t m loc;
+          Macros.call t m loc;
           next t
-      | Some (Env.Array a) -> array_access t name a loc
+      | Some (Env.Array a) -> (token_of_decl (Arrays.element t name a loc), loc)
       | None ->
-          if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          if name = "default" && (raw_peek t).raw = Tok Parser.LBRACE then begin
+            (* 'default { ... }' without '#': POV-Ray accepts it too *)
+            parse t Parser.Incremental.default_body;
+            next t
+          end
+          else if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
           else if name = "file_exists" then begin
             expect_tok t Parser.LPAREN "'(' after file_exists";
             let file = parse t Parser.Incremental.string_arg in
@@ -223,7 +126,7 @@ and ident t name loc =
             (Parser.FLOAT (if find_file t file <> None then 1. else 0.), loc)
           end
           else if name = "defined" || name = "dimensions" || name = "dimension_size" then
-            (Parser.FLOAT (array_query t name loc), loc)
+            (Parser.FLOAT (Arrays.query t name loc), loc)
           else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
             fail t loc "%s is not supported by camlray" name
@@ -261,6 +164,12 @@ and function_lit t loc =
       let tr = parse t Parser.Incremental.transform_arg in
       expect_tok t Parser.RBRACE "'}' to close the function";
       Fn.of_transform tr
+  | Ident "spline" ->
+      if params <> [ "x"; "y"; "z" ] then fail t loc "a spline function takes no parameter list";
+      let sloc = (raw_next t).loc in
+      let s = Splread.read t sloc in
+      expect_tok t Parser.RBRACE "'}' to close the function";
+      Fn.of_spline (Spline.eval s)
   | _ ->
   let rec body depth acc =
     let tok = raw_next t in
@@ -286,65 +195,6 @@ and function_lit t loc =
         | _ -> Fnparse.Unknown)
   in
   Fnparse.compile ~resolve ~params toks
-
-(* defined(NAME), defined(NAME[i]...), dimensions(ARRAY),
-   dimension_size(ARRAY, DIM) *)
-and array_query t what loc =
-  expect_tok t Parser.LPAREN (Printf.sprintf "'(' after %s" what);
-  let name, nloc = expect_ident t "an identifier" in
-  let rec element b =
-    match (b, (raw_peek t).raw) with
-    | Some (Env.Array a), Tok Parser.LBRACKET ->
-        ignore (raw_next t);
-        let i = Value.to_int nloc (parse t Parser.Incremental.expr_then_rbracket) in
-        if i < 0 || i >= Array.length a then
-          fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
-        element a.(i)
-    | _, Tok Parser.LBRACKET -> fail t nloc "%s is not an array" name
-    | _ -> b
-  in
-  let b = match Env.find t.env name with
-    | Some b -> Some b
-    | None -> if List.mem_assoc name t.config.builtins then Some (Env.Decl (Decl.Value (Value.Float 0.))) else None
-  in
-  let result =
-    match what with
-    | "defined" -> if element b = None then 0. else 1.
-    | _ -> (
-        let a = match b with
-          | Some (Env.Array a) -> a
-          | _ -> fail t nloc "%s: %s is not an array" what name
-        in
-        let rec dims a =
-          Array.length a :: (match if Array.length a > 0 then a.(0) else None with
-            | Some (Env.Array a') -> dims a' | _ -> [])
-        in
-        let ds = dims a in
-        if what = "dimensions" then float_of_int (List.length ds)
-        else begin
-          expect_tok t Parser.COMMA "','";
-          let d = Value.to_int loc (parse t Parser.Incremental.expr_then_rparen) in
-          (* POV-Ray: 0 outside 1 .. dimensions *)
-          float_of_int (if d < 1 || d > List.length ds then 0 else List.nth ds (d - 1))
-        end)
-  in
-  if what <> "dimension_size" then expect_tok t Parser.RPAREN "')'";
-  result
-
-and array_access t name a loc =
-  let tok = raw_peek t in
-  match tok.raw with
-  | Tok Parser.LBRACKET ->
-      ignore (raw_next t);
-      let i = Value.to_int loc (parse t Parser.Incremental.expr_then_rbracket) in
-      if i < 0 || i >= Array.length a then
-        fail t loc "index %d is outside the array %s (size %d)" i name (Array.length a);
-      (match a.(i) with
-      | None -> fail t loc "element %s[%d] has not been set" name i
-      | Some (Env.Decl d) -> (token_of_decl d, loc)
-      | Some (Env.Array a') -> array_access t (Printf.sprintf "%s[%d]" name i) a' loc
-      | Some (Env.Macro _) -> fail t loc "an array cannot hold a macro")
-  | _ -> fail t loc "the array %s must be indexed: %s[...]" name name
 
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->
@@ -378,18 +228,34 @@ and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
         List.filter_map
           (fun probe ->
             let cp = I.input_needed env in
-            if I.acceptable cp probe loc.start then Some (describe (Tok probe)) else None)
+            if I.acceptable cp probe loc.start then
+              Some
+                (match probe with
+                | Parser.FLOAT _ -> "a number"
+                | Parser.STRING _ -> "a string"
+                | Parser.UNDEFINED_ID _ -> "an identifier"
+                | _ -> describe (Tok probe))
+            else None)
           acceptable_probe
       in
+      let semi = List.mem "';'" expected in
       let msg =
         match Messages.message (I.current_state_number env) with
         | m -> String.trim m
         | exception Not_found -> (
             match expected with
             | [] -> "unexpected " ^ found
+            | _ when semi -> Printf.sprintf "expected an operator or ';', found %s" found
             | l -> Printf.sprintf "expected %s, found %s" (String.concat " or " l) found)
       in
-      fail t loc "%s" msg
+      let hint =
+        match (t.context, tok, t.braces) with
+        | Some c, _, _ when semi -> Printf.sprintf " (%s ends with ';')" c
+        | _, Parser.EOF, b :: _ ->
+            Printf.sprintf " (the '{' at line %d, column %d is not closed)" (Loc.line b) (Loc.col b)
+        | _ -> ""
+      in
+      fail t loc "%s%s" msg hint
 
 (* ---------- directives ---------- *)
 
@@ -403,154 +269,47 @@ and directive t d loc =
   | "undef" ->
       let name, _ = expect_ident t "an identifier after #undef" in
       Env.undef t.env name
-  | "include" -> include_file t loc
+  | "include" -> Macros.include_file t loc
   | "if" ->
       let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
-      enter_if t c
+      Control.enter_if t loc c
   | "ifdef" | "ifndef" ->
-      let defined = array_query t "defined" loc = 1. in
-      enter_if t (if d = "ifdef" then defined else not defined)
+      let defined = Arrays.query t "defined" loc = 1. in
+      Control.enter_if t loc (if d = "ifdef" then defined else not defined)
   | "elseif" | "else" -> (
       match f.ctrl with
-      | In_if :: rest ->
+      | In_if _ :: rest ->
           (* the taken branch ends here: skip to #end *)
           f.ctrl <- rest;
-          skip_to_end t
-      | In_switch :: _ when d = "else" -> () (* falling through into #else *)
+          Control.skip_to_end t
+      | In_switch _ :: _ when d = "else" -> () (* falling through into #else *)
       | _ -> fail t loc "#%s without a matching #if" d)
-  | "end" -> end_block t loc
+  | "end" -> Control.end_block t loc
   | "while" ->
       let cond_pos = f.pos in
       let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
-      if c then f.ctrl <- In_while { cond_pos; count = 1 } :: f.ctrl else skip_to_end t
-  | "for" -> for_loop t loc
-  | "switch" -> switch t loc
+      if c then f.ctrl <- In_while { cond_pos; count = 1; wloc = loc } :: f.ctrl else Control.skip_to_end t
+  | "for" -> Control.for_loop t loc
+  | "switch" -> Control.switch t loc
   | "case" | "range" -> (
       match f.ctrl with
-      | In_switch :: _ ->
+      | In_switch _ :: _ ->
           (* fall through: skip this clause's condition *)
-          skip_condition t
+          Control.skip_condition t
       | _ -> fail t loc "#%s outside #switch" d)
-  | "break" -> break t loc
-  | "macro" -> define_macro t loc
+  | "break" -> Control.break t loc
+  | "macro" -> Macros.define t loc
   | "debug" | "warning" | "error" ->
       let s = parse t Parser.Incremental.string_arg in
       if d = "debug" then (prerr_string s; flush stderr)
       else if d = "warning" then Diag.warning loc s
       else fail t loc "#error: %s" s
   | "default" -> parse t Parser.Incremental.default_body
-  | "fopen" | "fclose" | "read" | "write" ->
-      fail t loc "#%s (file input/output) is not supported by camlray" d
+  | "fopen" -> Dataio.fopen t loc
+  | "fclose" -> Dataio.fclose t
+  | "write" -> Dataio.write t loc
+  | "read" -> Dataio.read t loc
   | _ -> fail t loc "unknown directive #%s" d
-
-and enter_if t c =
-  let f = top t in
-  if c then f.ctrl <- In_if :: f.ctrl
-  else
-    let rec seek () =
-      match skip_block t ~stop:[ "else"; "elseif" ] with
-      | "else", _ -> f.ctrl <- In_if :: f.ctrl
-      | "elseif", tok ->
-          if Value.to_bool tok.loc (parse t Parser.Incremental.paren_expr) then
-            f.ctrl <- In_if :: f.ctrl
-          else seek ()
-      | _ -> ()
-    in
-    seek ()
-
-and skip_to_end t = ignore (skip_block t ~stop:[])
-
-and skip_condition t =
-  let tok = expect_raw t "'('" (function Tok Parser.LPAREN -> true | _ -> false) in
-  let f = top t in
-  let rec go depth =
-    match f.toks.(f.pos).raw with
-    | Eof -> fail t tok.loc "unclosed '('"
-    | Tok Parser.LPAREN -> f.pos <- f.pos + 1; go (depth + 1)
-    | Tok Parser.RPAREN -> f.pos <- f.pos + 1; if depth > 0 then go (depth - 1)
-    | _ -> f.pos <- f.pos + 1; go depth
-  in
-  go 0
-
-and end_block t loc =
-  let f = top t in
-  match f.ctrl with
-  | [] -> fail t loc "#end without an open #if, #while, #for, #switch or #macro"
-  | (In_if | In_switch) :: rest -> f.ctrl <- rest
-  | (In_while w as c) :: rest ->
-      f.ctrl <- rest;
-      let end_pos = f.pos in
-      f.pos <- w.cond_pos;
-      let cond = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
-      if cond then begin
-        if w.count >= t.config.limits.max_loop_iterations then
-          fail t loc "#while loop stopped after %d iterations (the limit; raise it with --max-loop)"
-            w.count;
-        w.count <- w.count + 1;
-        f.ctrl <- c :: rest
-      end
-      else f.pos <- end_pos
-  | (In_for r as c) :: rest ->
-      let v =
-        match Env.find t.env r.var with
-        | Some (Env.Decl (Decl.Value (Value.Float v))) -> v +. r.step
-        | _ -> fail t loc "the #for variable %s was changed to something else than a float" r.var
-      in
-      Env.declare t.env r.var (Env.Decl (Decl.Value (Value.Float v)));
-      if (r.step > 0. && v <= r.stop +. 1e-12) || (r.step < 0. && v >= r.stop -. 1e-12) then begin
-        if r.count >= t.config.limits.max_loop_iterations then
-          fail t loc "#for loop stopped after %d iterations (the limit; raise it with --max-loop)"
-            r.count;
-        r.count <- r.count + 1;
-        f.pos <- r.body_pos
-      end
-      else f.ctrl <- rest;
-      ignore c
-
-and for_loop t loc =
-  expect_tok t Parser.LPAREN "'(' after #for";
-  let var, _ = expect_ident t "the loop variable" in
-  expect_tok t Parser.COMMA "','";
-  let start = Value.to_float loc (parse t Parser.Incremental.expr_then_comma) in
-  let stop, closed = parse t Parser.Incremental.macro_arg in
-  let num d = match d with Decl.Value v -> Value.to_float loc v | _ -> fail t loc "#for bounds must be floats" in
-  let stop = num stop in
-  let step = if closed then 1. else Value.to_float loc (parse t Parser.Incremental.expr_then_rparen) in
-  if step = 0. then fail t loc "#for step cannot be 0";
-  Env.declare t.env var (Env.Decl (Decl.Value (Value.Float start)));
-  let f = top t in
-  if (step > 0. && start <= stop) || (step < 0. && start >= stop) then
-    f.ctrl <- In_for { var; stop; step; body_pos = f.pos; count = 1 } :: f.ctrl
-  else skip_to_end t
-
-and switch t loc =
-  let v = Value.to_float loc (parse t Parser.Incremental.paren_expr) in
-  let f = top t in
-  let rec seek () =
-    match skip_block t ~stop:[ "case"; "range"; "else" ] with
-    | "case", tok ->
-        let c = Value.to_float tok.loc (parse t Parser.Incremental.paren_expr) in
-        if Float.abs (c -. v) <= 1e-10 then f.ctrl <- In_switch :: f.ctrl else seek ()
-    | "range", tok ->
-        expect_tok t Parser.LPAREN "'(' after #range";
-        let lo = Value.to_float tok.loc (parse t Parser.Incremental.expr_then_comma) in
-        let hi = Value.to_float tok.loc (parse t Parser.Incremental.expr_then_rparen) in
-        if v >= lo && v <= hi then f.ctrl <- In_switch :: f.ctrl else seek ()
-    | "else", _ -> f.ctrl <- In_switch :: f.ctrl
-    | _ -> ()
-  in
-  (* the first clause starts right away: no tokens may stand before it *)
-  seek ()
-
-and break t loc =
-  let f = top t in
-  let rec unwind = function
-    | In_switch :: rest -> f.ctrl <- rest; skip_to_end t
-    | In_if :: rest -> f.ctrl <- rest; skip_to_end t; unwind rest
-    | (In_while _ | In_for _) :: rest -> f.ctrl <- rest; skip_to_end t
-    | [] -> fail t loc "#break outside #switch or a loop"
-  in
-  unwind f.ctrl
 
 and declare t ~local loc =
   let name, nloc = expect_ident t "an identifier after #declare" in
@@ -597,201 +356,109 @@ and declare t ~local loc =
   | _ -> (
       expect_tok t Parser.EQ "'=' after the identifier";
       match (raw_peek t).raw with
+      | Ident "spline" ->
+          let sloc = (raw_next t).loc in
+          bind (Env.Decl (Decl.Spline (Splread.read t sloc)));
+          (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | Ident "array" ->
           ignore (raw_next t);
-          bind (Env.Array (new_array t loc));
+          bind (Env.Array (Arrays.make t loc));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
-      | _ -> bind (Env.Decl (rhs t)))
+      | _ -> (
+          (* #declare A = B; for B a whole array or a function (not a call) *)
+          let f = top t in
+          let whole =
+            match f.toks.(f.pos).raw with
+            | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
+                match (Env.find t.env n, f.toks.(f.pos + 1).raw) with
+                | Some (Env.Array a), r when r <> Tok Parser.LBRACKET -> Some (Env.Array (Arrays.copy a))
+                | Some (Env.Decl (Decl.Function _) as b), r when r <> Tok Parser.LPAREN -> Some b
+                | _ -> None)
+            | _ -> None
+          in
+          match whole with
+          | Some b ->
+              f.pos <- f.pos + 1;
+              bind b;
+              (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
+          | None -> bind (Env.Decl (rhs t))))
+
+(* A string #declare may end without ';' (POV-Ray's rule). A string
+   expression is one term (a literal, a string identifier or a string
+   function's call), so whether a ';' follows can be seen in the raw
+   tokens; without one, the string is parsed with no lookahead, so that
+   a directive right after it runs only once the name is bound. *)
+and string_without_semi t =
+  let f = top t in
+  let at i = if i < Array.length f.toks then f.toks.(i).raw else Eof in
+  let after_term =
+    if t.pending <> [] then None
+    else
+      match at f.pos with
+      | Tok (Parser.STRING _) -> Some (f.pos + 1)
+      | Ident n when (match Env.find t.env n with Some (Env.Array _) -> false | _ -> true) -> (
+          match Env.find t.env n with
+          | Some (Env.Decl (Decl.Value (Value.String _))) -> Some (f.pos + 1)
+          | _ -> None)
+      | Ident _ ->
+          (* an array element, NAME[i]...: the term ends after the brackets *)
+          let rec close i depth =
+            match at i with
+            | Tok Parser.LBRACKET -> close (i + 1) (depth + 1)
+            | Tok Parser.RBRACKET ->
+                if depth = 1 then (match at (i + 1) with Tok Parser.LBRACKET -> close (i + 1) 0 | _ -> Some (i + 1))
+                else close (i + 1) (depth - 1)
+            | Eof | Directive _ -> None
+            | _ when depth = 0 -> None
+            | _ -> close (i + 1) depth
+          in
+          close (f.pos + 1) 0
+      | Tok (Parser.FUNC name) when List.mem name string_functions && at (f.pos + 1) = Tok Parser.LPAREN ->
+          let rec close i depth =
+            match at i with
+            | Tok Parser.LPAREN -> close (i + 1) (depth + 1)
+            | Tok Parser.RPAREN -> if depth = 1 then Some (i + 1) else close (i + 1) (depth - 1)
+            | Eof | Directive _ -> None
+            | _ -> close (i + 1) depth
+          in
+          close (f.pos + 1) 0
+      | _ -> None
+  in
+  match after_term with
+  | Some i -> (
+      match at i with
+      | Tok (Parser.SEMI | Parser.PLUS | Parser.MINUS | Parser.STAR | Parser.SLASH | Parser.MEMBER _) -> `Plain
+      | _ -> ( match at f.pos with Ident n when Env.find t.env n <> None && at (f.pos + 1) = Tok Parser.LBRACKET -> `Bounded (f, i) | _ -> `String))
+  | None -> `Plain
+
+and string_functions = [ "concat"; "str"; "chr"; "substr"; "strupr"; "strlwr"; "vstr" ]
 
 and rhs t =
-  let d = parse t Parser.Incremental.declare_rhs in
+  let saved = t.context in
+  t.context <- Some "#declare of a float, vector or colour";
+  let d =
+    Fun.protect ~finally:(fun () -> t.context <- saved) (fun () ->
+        match string_without_semi t with
+        | `String -> Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
+        | `Plain -> parse t Parser.Incremental.declare_rhs
+        | `Bounded (f, i) -> (
+            (* hand the parser the missing ';', then insist on a string *)
+            let l = f.toks.(i).loc in
+            t.stop_at <- Some (f, i);
+            let d = Fun.protect ~finally:(fun () -> t.stop_at <- None) (fun () -> parse t Parser.Incremental.declare_rhs) in
+            match d with
+            | Decl.Value (Value.String _) -> d
+            | _ ->
+                fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
+                  (describe f.toks.(i).raw)))
+  in
   (match d with
   | Decl.Value _ -> ()
   | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
   d
 
-and new_array t loc =
-  let rec dims acc =
-    match (raw_peek t).raw with
-    | Tok Parser.LBRACKET ->
-        ignore (raw_next t);
-        let n = Value.to_int loc (parse t Parser.Incremental.expr_then_rbracket) in
-        if n <= 0 then fail t loc "array size must be positive, found %d" n;
-        dims (n :: acc)
-    | _ -> List.rev acc
-  in
-  let ds = dims [] in
-  if ds = [] then fail t loc "expected [size] after array";
-  let total = List.fold_left ( * ) 1 ds in
-  if total > t.config.limits.max_array_size then
-    fail t loc "array of %d elements exceeds the limit %d" total t.config.limits.max_array_size;
-  let rec make = function
-    | [] -> assert false
-    | [ n ] -> Array.make n None
-    | n :: rest -> Array.init n (fun _ -> Some (Env.Array (make rest)))
-  in
-  let a = make ds in
-  (match (raw_peek t).raw with
-  | Tok Parser.LBRACE -> fill t loc a ds
-  | _ -> ());
-  a
 
-and fill t loc a ds =
-  ignore (raw_next t);
-  (* at '{' already consumed *)
-  match ds with
-  | [ n ] ->
-      let rec go i =
-        if i >= n then fail t loc "too many initialisers (the array has %d elements)" n;
-        let d, closed = parse t Parser.Incremental.array_elem in
-        a.(i) <- Some (Env.Decl d);
-        if not closed then go (i + 1)
-        else if i + 1 <> n then fail t loc "%d initialisers for an array of %d" (i + 1) n
-      in
-      go 0
-  | n :: rest ->
-      for i = 0 to n - 1 do
-        (match a.(i) with
-        | Some (Env.Array sub) ->
-            (match (raw_peek t).raw with
-            | Tok Parser.LBRACE -> fill t loc sub rest
-            | r -> fail t loc "expected '{' for a row of the array, found %s" (describe r))
-        | _ -> assert false);
-        let sep = raw_next t in
-        match sep.raw with
-        | Tok Parser.COMMA when i < n - 1 -> ()
-        | Tok Parser.RBRACE when i = n - 1 -> ()
-        | r -> fail t sep.loc "expected %s, found %s" (if i < n - 1 then "','" else "'}'") (describe r)
-      done
-  | [] -> assert false
-
-and define_macro t loc =
-  let name, _ = expect_ident t "the macro's name" in
-  expect_tok t Parser.LPAREN "'(' after the macro name";
-  let rec params acc =
-    let tok = raw_next t in
-    match tok.raw with
-    | Tok Parser.RPAREN when acc = [] -> []
-    | Ident p -> (
-        let sep = raw_next t in
-        match sep.raw with
-        | Tok Parser.COMMA -> params (p :: acc)
-        | Tok Parser.RPAREN -> List.rev (p :: acc)
-        | r -> fail t sep.loc "expected ',' or ')' in the parameter list, found %s" (describe r))
-    | r -> fail t tok.loc "expected a parameter name, found %s" (describe r)
-  in
-  let ps = params [] in
-  let f = top t in
-  let body_start = f.pos in
-  ignore (skip_block t ~stop:[]);
-  let body_end = f.pos - 1 in
-  let eof = { raw = Eof; loc = f.toks.(body_end).loc } in
-  let body = Array.append (Array.sub f.toks body_start (body_end - body_start)) [| eof |] in
-  Env.declare t.env name (Env.Macro { name; params = ps; body; file = f.file; mloc = loc })
-
-and call_macro t (m : Env.macro) loc =
-  let depth = List.length (List.filter (fun f -> match f.kind with Macro_call _ -> true | _ -> false) t.frames) in
-  if depth >= t.config.limits.max_macro_depth then
-    fail t loc "macro %s: calls nested deeper than %d (the limit; raise it with --max-macro-depth)"
-      m.name t.config.limits.max_macro_depth;
-  let lp = raw_next t in
-  (match lp.raw with
-  | Tok Parser.LPAREN -> ()
-  | r -> fail t lp.loc "expected '(' after the macro name %s, found %s" m.name (describe r));
-  let args =
-    match m.params with
-    | [] ->
-        expect_tok t Parser.RPAREN "')' (this macro takes no arguments)";
-        []
-    | ps ->
-        let rec go acc = function
-          | [] -> List.rev acc
-          | p :: rest ->
-              let arg, closed = macro_arg t in
-              if closed && rest <> [] then
-                fail t loc "macro %s expects %d arguments, got %d" m.name (List.length ps)
-                  (List.length acc + 1);
-              if (not closed) && rest = [] then
-                fail t loc "macro %s expects %d arguments, got more" m.name (List.length ps);
-              go ((p, arg) :: acc) rest
-        in
-        go [] ps
-  in
-  Env.push_scope t.env;
-  List.iter (fun (p, (b, _)) -> Env.local t.env p b) args;
-  let byref = List.filter_map (fun (p, (_, n)) -> Option.map (fun n -> (p, n)) n) args in
-  t.frames <-
-    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
-      scoped = true; version_at_entry = Defaults.version (); byref }
-    :: t.frames
-
-(* One macro argument and whether it closed the list. A bare declared
-   identifier (NAME followed by ',' or ')') is passed by reference, as in
-   POV-Ray: arrays as themselves, other values copied back at the end. *)
-and macro_arg t =
-  let f = top t in
-  let bare =
-    match f.toks.(f.pos).raw with
-    | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
-        match (f.toks.(f.pos + 1).raw, Env.find t.env n) with
-        | Tok ((Parser.COMMA | Parser.RPAREN) as sep), Some ((Env.Array _ | Env.Decl _) as b) ->
-            f.pos <- f.pos + 2;
-            Some ((b, Some n), sep = Parser.RPAREN)
-        | _ -> None)
-    | _ -> None
-  in
-  match bare with
-  | Some x -> x
-  | None ->
-      let d, closed = parse t Parser.Incremental.macro_arg in
-      ((Env.Decl d, None), closed)
-
-(* Where #include and file_exists look: the current folder, the scene's
-   folder, then the include folders. *)
-and candidates t name =
-  let scene_dir =
-    let main = List.find (fun f -> f.kind = Main) t.frames in
-    Filename.dirname main.file
-  in
-  if not (Filename.is_relative name) then [ name ]
-  else List.map (fun d -> Filename.concat d name) ("." :: scene_dir :: t.config.include_dirs)
-
-and find_file t name =
-  List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) (candidates t name)
-
-and include_file t loc =
-  let tok = raw_next t in
-  let name =
-    match tok.raw with
-    | Tok (Parser.STRING s) -> s
-    | Ident _ | Tok (Parser.FUNC _) ->
-        (top t).pos <- (top t).pos - 1;
-        parse t Parser.Incremental.string_arg
-    | r -> fail t tok.loc "expected a file name after #include, found %s" (describe r)
-  in
-  let depth = List.length (List.filter (fun f -> match f.kind with Include _ -> true | _ -> false) t.frames) in
-  if depth >= t.config.limits.max_include_depth then
-    fail t loc "#include nested deeper than %d files" t.config.limits.max_include_depth;
-  let name = if Filename.extension name = "" then name ^ ".inc" else name in
-  match find_file t name with
-  | None ->
-      fail t tok.loc "cannot find include file %S (looked in %s)" name
-        (String.concat ", " (List.sort_uniq compare (List.map Filename.dirname (candidates t name))))
-  | Some path ->
-      (match Access.check t.config.access path with
-      | Ok () -> ()
-      | Error msg -> fail t tok.loc "%s" msg);
-      let abs = if Filename.is_relative path then Filename.concat (Sys.getcwd ()) path else path in
-      if List.exists (fun f -> f.file = path && f.kind <> Main) t.frames then
-        fail t tok.loc "include cycle: %S includes itself" name;
-      let text =
-        try In_channel.with_open_bin path In_channel.input_all
-        with Sys_error e -> fail t tok.loc "cannot read %s: %s" path e
-      in
-      let toks = Lexer.tokenize ~file:path text in
-      if not (List.mem abs t.files) then t.files <- abs :: t.files;
-      Env.push_scope t.env;
-      t.frames <-
-        { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true;
-          version_at_entry = Defaults.version (); byref = [] }
-        :: t.frames
+let create config env ~file toks =
+  let t = Cursor.create config env ~file toks in
+  t.runner <- { run = (fun entry -> parse t entry) };
+  t

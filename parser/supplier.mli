@@ -3,10 +3,14 @@
     evaluates POV-Ray's directives as it meets them ([#version],
     [#declare], [#local], [#undef], [#include], [#if]/[#ifdef]/[#ifndef]/
     [#elseif]/[#else], [#switch]/[#case]/[#range]/[#break], [#while],
-    [#for], [#macro], [#debug]/[#warning]/[#error], [#default]) and hands
-    the parser identifiers typed by what they are bound to. Sub-parses
-    (a [#declare]'s right-hand side, a condition) pull tokens from the same
-    supplier, so directives nest anywhere. *)
+    [#for], [#macro], [#debug]/[#warning]/[#error], [#default],
+    [#fopen]/[#read]/[#write]/[#fclose]) and hands the parser identifiers
+    typed by what they are bound to; [function { ... }] bodies are read
+    here and compiled by {!Fnparse}. Sub-parses (a [#declare]'s right-hand
+    side, a condition) pull tokens from the same supplier, so directives
+    nest anywhere. The state and the directive groups live in {!Cursor},
+    {!Control}, {!Macros}, {!Arrays} and {!Dataio}; this module types
+    identifiers, drives menhir and dispatches directives. *)
 
 type limits = {
   max_loop_iterations : int;  (** per [#while]/[#for] loop *)
@@ -35,6 +39,9 @@ val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 
 (** Run a (sub-)parse from an entry point of the grammar, pulling tokens
     from the supplier. Raises {!Diag.Error} with a located message naming
     what was expected and what was found. *)
+
+val close_files : t -> unit
+(** Close the files that [#fopen] left open (call at the end of a parse). *)
 
 val files_read : t -> string list
 (** Every file read so far (the scene and its includes), absolute paths. *)

@@ -22,4 +22,7 @@ let () =
       Test_bvh.tests;
       Test_object.tests;
       Test_geom_render.tests;
+      Test_spline.tests;
+      Test_parse.tests;
+      Test_errors.tests;
     ]

@@ -59,6 +59,15 @@ let tests =
             (floats
                "#macro Swap(a, b) #local T = a; #declare a = b; #declare b = T; #end\n\
                 #declare X1 = 1; #declare X2 = 2; Swap(X1, X2) sphere {0, X1} sphere {0, X2}"));
+      Alcotest.test_case "by reference: #local on a parameter, array elements, #undef stays local" `Quick (fun () ->
+          (* POV-Ray 3.7: M: 5, N: 3, Z defined, E: 7 *)
+          check "refs" [ 5.; 3.; 1.; 7. ]
+            (floats
+               "#macro M(a) #local a = 5; #end\n#macro N(a) #declare a = a + 1; #end\n#macro K(a) #undef a #end\n\
+                #macro E(a) #declare a = 7; #end\n\
+                #declare X = 1; M(X) #declare Y = 1; N(Y) N(Y) #declare Z = 1; K(Z)\n\
+                #declare A = array[2] {1, 2}; E(A[0])\n\
+                sphere {0, X} sphere {0, Y} sphere {0, defined(Z)} sphere {0, A[0]}"));
       Alcotest.test_case "an array passed to a macro is shared" `Quick (fun () ->
           check "fill" [ 3. ]
             (floats
@@ -78,6 +87,42 @@ let tests =
                 sphere {0, dimensions(A)} sphere {0, dimensions(B)} sphere {0, dimension_size(B, 2)}\n\
                 sphere {0, B[1][2]} sphere {0, E[2]}\n\
                 sphere {0, defined(E[2])} sphere {0, defined(E[1])} sphere {0, defined(A)} sphere {0, defined(Nope)}"));
+      Alcotest.test_case "#declare of a whole array copies it; of a function aliases it" `Quick (fun () ->
+          check "copy" [ 1.; 9.; 6. ]
+            (floats
+               "#declare A = array[2] {1, 2}; #declare B = A; #declare B[0] = 9;\n\
+                sphere {0, A[0]} sphere {0, B[0]}\n\
+                #declare F = function { x * 2 } #declare G = F; sphere {0, G(3, 0, 0)}"));
+      Alcotest.test_case "a string #declare may omit ';', even before a directive using it" `Quick (fun () ->
+          check "strings" [ 4.; 3. ]
+            (floats
+               "#declare S = \"abc\"\n#declare T = concat(S, \"d\")\nsphere { 0, strlen(T) }\n\
+                #declare U = str(1.5, 0, 1) sphere { 0, strlen(U) }"));
+      Alcotest.test_case "a string array element may be declared without ';'" `Quick (fun () ->
+          check "element" [ 2. ]
+            (floats "#declare A = array[2] {\"a\", \"b\"}\n#declare S = A[1]\n#declare T = concat(S, \"c\")\nsphere { 0, strlen(T) }");
+          Scn.check_message "#declare A = array[1] {1}\n#declare F = A[0]\nsphere { 0, F }" "ends with ';'");
+      Alcotest.test_case "a float #declare may not omit ';'" `Quick (fun () ->
+          Scn.check_message "#declare F = 1\nsphere { 0, F }" "ends with ';'");
+      Alcotest.test_case "array initialisers may end with a comma" `Quick (fun () ->
+          check "trailing" [ 2. ] (floats "#declare A = array[2] { 1, 2, }\nsphere { 0, A[1] }"));
+      Alcotest.test_case "'default' without '#', a lone '#', form feeds" `Quick (fun () ->
+          check "lexing" [ 1. ] (floats "default { finish { phong 1 } }\n# \012 sphere { 0, 1 }"));
+      Alcotest.test_case "#fopen/#write then #read back until the file closes itself" `Quick (fun () ->
+          with_dir [ ("main.pov", "") ] (fun dir ->
+              let data = Filename.concat dir "data.txt" in
+              let text =
+                Printf.sprintf
+                  "#fopen F %S write\n#write (F, 1.5, \",\", <1,2,3>, \",\", \"\\\"s\\\"\", \",\", -0.25)\n#fclose F\n\
+                   #fopen G %S read\n#declare N = 0;\n\
+                   #while (defined(G)) #read (G, V) #declare N = N + 1; #end\n\
+                   sphere { 0, N } sphere { 0, V }\n"
+                  data data
+              in
+              check "read" [ 4.; -0.25 ] (floats text);
+              Alcotest.(check string) "written" "1.5,<1,2,3> ,\"s\",-0.25"
+                (In_channel.with_open_bin data In_channel.input_all);
+              Sys.remove data));
       Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
           check "ifdef" [ 2.; 4. ]
             (floats

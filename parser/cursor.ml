@@ -1,0 +1,194 @@
+(* The supplier's state and its raw token cursors: the stack of frames
+   (file, include, macro body), open control structures, and the
+   primitives every directive module uses. See cursor.mli. *)
+open Lexer
+
+type limits = {
+  max_loop_iterations : int;
+  max_macro_depth : int;
+  max_include_depth : int;
+  max_array_size : int;
+}
+
+let default_limits =
+  { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
+    max_array_size = 10_000_000 }
+
+type config = {
+  include_dirs : string list;
+  limits : limits;
+  builtins : (string * float) list;
+  access : Access.t;  (** what the scene may read and write *)
+}
+
+(* Open control structures of one frame, innermost first. *)
+type ctrl =
+  | In_if of Loc.t  (** executing a taken branch of #if/#ifdef/#ifndef *)
+  | In_while of { cond_pos : int; mutable count : int; wloc : Loc.t }
+  | In_for of {
+      var : string; stop : float; step : float; body_pos : int; mutable count : int; floc : Loc.t }
+  | In_switch of Loc.t  (** executing a matched clause *)
+
+let opener = function
+  | In_if l -> ("#if", l)
+  | In_while w -> ("#while", w.wloc)
+  | In_for r -> ("#for", r.floc)
+  | In_switch l -> ("#switch", l)
+
+(* A file opened by #fopen: data tokens to #read, or a channel to #write. *)
+type reader = { data : token array; mutable at : int }
+type handle = Reading of reader | Writing of out_channel
+
+(* Where a macro parameter passed by reference writes back. *)
+type target = Name of string | Element of Env.binding option array * int
+
+type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
+
+type frame = {
+  toks : token array;
+  mutable pos : int;
+  kind : kind;
+  file : string;
+  mutable ctrl : ctrl list;
+  scoped : bool;
+  version_at_entry : float;  (** restored when an included file ends *)
+  byref : (string * target) list;
+      (** macro parameters given a bare identifier, with that identifier:
+          their final values are copied back when the macro ends
+          (POV-Ray passes identifiers by reference) *)
+}
+
+(* Runs a sub-parse from an entry point; set by Supplier.create. *)
+type runner = { run : 'a. (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a }
+
+type t = {
+  config : config;
+  mutable runner : runner;
+  env : Env.t;
+  mutable frames : frame list;
+  mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
+  mutable last : Loc.t;
+  mutable files : string list;
+  handles : (string, handle) Hashtbl.t;  (** #fopen'ed files by identifier *)
+  mutable stop_at : (frame * int) option;
+      (** hand the parser a ';' when this frame reaches this position
+          (ends a value that has no terminator, see {!Splread}) *)
+  mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
+  mutable context : string option;  (** what is being parsed, for messages *)
+  deprecated : (string, string * bool * bool ref) Hashtbl.t;
+      (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+}
+
+let files_read t = List.rev t.files
+let parse t entry = t.runner.run entry
+
+let create config env ~file toks =
+  let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
+  { config; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
+                 version_at_entry = Defaults.version (); byref = [] } ];
+    pending = []; last = Loc.none; files = [ abs ];
+    deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
+    handles = Hashtbl.create 4 }
+
+let chain t =
+  List.filter_map
+    (fun f ->
+      match f.kind with
+      | Main -> None
+      | Include l -> Some ("included from", l)
+      | Macro_call (name, l) -> Some ("in macro " ^ name ^ " called at", l))
+    t.frames
+
+let fail t loc fmt = Diag.error ~chain:(chain t) loc fmt
+let top t = match t.frames with f :: _ -> f | [] -> assert false
+
+(* ---------- raw token access ---------- *)
+
+let rec raw_next t =
+  let f = top t in
+  let tok = f.toks.(f.pos) in
+  match tok.raw with
+  | Eof when f.ctrl <> [] ->
+      let d, l = opener (List.hd f.ctrl) in
+      fail t l "this %s has no matching #end (the %s ends first)" d
+        (match f.kind with Macro_call _ -> "macro" | _ -> "file")
+  | Eof when f.kind <> Main ->
+      let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
+      if f.scoped then Env.pop_scope t.env;
+      List.iter
+        (fun (target, b) ->
+          match target with
+          | Name n -> Env.declare t.env n b
+          | Element (a, i) -> a.(i) <- Some b)
+        back;
+      (match f.kind with
+      | Include _ -> Defaults.restore_version f.version_at_entry
+      | Main | Macro_call _ -> ());
+      t.frames <- List.tl t.frames;
+      raw_next t
+  | Eof -> tok
+  | _ ->
+      f.pos <- f.pos + 1;
+      tok
+
+let raw_peek t =
+  let f = top t in
+  f.toks.(f.pos)
+
+let expect_raw t what pred =
+  let tok = raw_next t in
+  if not (pred tok.raw) then fail t tok.loc "expected %s, found %s" what (describe tok.raw);
+  tok
+
+let expect_tok t tk what = ignore (expect_raw t what (function Tok x -> x = tk | _ -> false))
+
+let expect_ident t what =
+  let tok = expect_raw t what (function Ident _ -> true | _ -> false) in
+  match tok.raw with Ident s -> (s, tok.loc) | _ -> assert false
+
+(* Skip tokens of the current frame up to the directive that ends the
+   current block at depth 0: returns the directive name ("else", "elseif",
+   "end", "case", "range", "break") and its token. [stop] says which
+   names end the skip. *)
+let opens = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
+
+let skip_block t ~stop =
+  let f = top t in
+  let start = if f.pos > 0 then f.toks.(f.pos - 1).loc else Loc.none in
+  let rec go depth =
+    let tok = f.toks.(f.pos) in
+    match tok.raw with
+    | Eof -> fail t start "this directive has no matching #end"
+    | Directive d ->
+        f.pos <- f.pos + 1;
+        if List.mem d opens then go (depth + 1)
+        else if d = "end" then if depth = 0 then (d, tok) else go (depth - 1)
+        else if depth = 0 && List.mem d stop then (d, tok)
+        else go depth
+    | _ ->
+        f.pos <- f.pos + 1;
+        go depth
+  in
+  go 0
+
+
+
+(* Where #include and file_exists look: the current folder, the scene's
+   folder, then the include folders. *)
+let candidates t name =
+  let scene_dir =
+    let main = List.find (fun f -> f.kind = Main) t.frames in
+    Filename.dirname main.file
+  in
+  if not (Filename.is_relative name) then [ name ]
+  else
+    List.map (fun d -> if d = "." then name else Filename.concat d name)
+      ("." :: scene_dir :: t.config.include_dirs)
+
+(* Fail unless the scene may touch [path] (see Access). *)
+let allowed t loc path =
+  match Access.check t.config.access path with Ok () -> () | Error msg -> fail t loc "%s" msg
+
+let find_file t name =
+  List.find_opt (fun p -> Sys.file_exists p && not (Sys.is_directory p)) (candidates t name)
+

@@ -1,0 +1,116 @@
+(** The token supplier's state: a stack of token cursors (the scene, its
+    included files, macro bodies), the control structures open in each,
+    the symbol table and the open data files, with the raw-token
+    primitives shared by the directive modules ({!Control}, {!Macros},
+    {!Arrays}, {!Dataio}) and {!Supplier}. Internal to the scene
+    language. *)
+
+open Lexer
+
+type limits = {
+  max_loop_iterations : int;
+  max_macro_depth : int;
+  max_include_depth : int;
+  max_array_size : int;
+}
+
+val default_limits : limits
+
+type config = {
+  include_dirs : string list;
+  limits : limits;
+  builtins : (string * float) list;
+  access : Access.t;  (** what the scene may read and write *)
+}
+
+(* Open control structures of one frame, innermost first. *)
+type ctrl =
+  | In_if of Loc.t  (** executing a taken branch of #if/#ifdef/#ifndef *)
+  | In_while of { cond_pos : int; mutable count : int; wloc : Loc.t }
+  | In_for of {
+      var : string; stop : float; step : float; body_pos : int; mutable count : int; floc : Loc.t }
+  | In_switch of Loc.t  (** executing a matched clause *)
+
+val opener : ctrl -> string * Loc.t
+(** The directive that opened a structure and where, for messages. *)
+
+(* A file opened by #fopen: data tokens to #read, or a channel to #write. *)
+type reader = { data : token array; mutable at : int }
+type handle = Reading of reader | Writing of out_channel
+
+(* Where a macro parameter passed by reference writes back. *)
+type target = Name of string | Element of Env.binding option array * int
+
+type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
+
+type frame = {
+  toks : token array;
+  mutable pos : int;
+  kind : kind;
+  file : string;
+  mutable ctrl : ctrl list;
+  scoped : bool;
+  version_at_entry : float;  (** restored when an included file ends *)
+  byref : (string * target) list;
+      (** macro parameters given a bare identifier, with that identifier:
+          their final values are copied back when the macro ends
+          (POV-Ray passes identifiers by reference) *)
+}
+
+(* Runs a sub-parse from an entry point; set by Supplier.create. *)
+type runner = { run : 'a. (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a }
+
+type t = {
+  config : config;
+  mutable runner : runner;
+  env : Env.t;
+  mutable frames : frame list;
+  mutable pending : (Parser.token * Loc.t) list;  (** pushed-back tokens *)
+  mutable last : Loc.t;
+  mutable files : string list;
+  handles : (string, handle) Hashtbl.t;  (** #fopen'ed files by identifier *)
+  mutable stop_at : (frame * int) option;
+      (** hand the parser a ';' when this frame reaches this position
+          (ends a value that has no terminator, see {!Splread}) *)
+  mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
+  mutable context : string option;  (** what is being parsed, for messages *)
+  deprecated : (string, string * bool * bool ref) Hashtbl.t;
+      (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+}
+
+val create : config -> Env.t -> file:string -> token array -> t
+(** A supplier state on a file's tokens; its [runner] is set by
+    {!Supplier.create}. *)
+
+val files_read : t -> string list
+val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a
+(** A sub-parse from an entry point, through [t.runner]. *)
+
+val chain : t -> (string * Loc.t) list
+(** The include/macro chain of the current position, innermost first. *)
+
+val fail : t -> Loc.t -> ('a, unit, string, 'b) format4 -> 'a
+(** Raise a located error carrying the current chain. *)
+
+val top : t -> frame
+val raw_next : t -> token
+(** The next raw token, leaving finished included files and macro bodies
+    (restoring scopes, #version and by-reference arguments). Raises when
+    a frame ends with a structure still open. *)
+
+val raw_peek : t -> token
+val expect_raw : t -> string -> (raw -> bool) -> token
+val expect_tok : t -> Parser.token -> string -> unit
+val expect_ident : t -> string -> string * Loc.t
+
+val skip_block : t -> stop:string list -> string * token
+(** Skip to the directive ending the current block at depth 0 ([#end],
+    or one of [stop]); returns its name and token. *)
+
+val candidates : t -> string -> string list
+(** Where [#include] and [file_exists] look for a name, in order. *)
+
+val allowed : t -> Loc.t -> string -> unit
+(** Fail, located, unless the scene may read or write [path] ({!Access}). *)
+
+val find_file : t -> string -> string option

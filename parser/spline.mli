@@ -1,0 +1,24 @@
+(** POV-Ray's splines: [linear_spline] (the default), [quadratic_spline],
+    [cubic_spline] (Catmull-Rom) and [natural_spline], with POV-Ray 3.7's
+    formulas and end rules (no extrapolation: the end values outside the
+    range; lower orders when there are too few points). *)
+
+type kind = Linear | Quadratic | Cubic | Natural
+
+type t
+
+val empty : kind -> t
+val kind_of_name : string -> kind option
+(** ["linear_spline"] -> [Linear], ... *)
+
+val with_kind : t -> kind -> t
+val length : t -> int
+
+val add : t -> float -> terms:int -> float array -> t
+(** [add s p ~terms v]: the entry (p, v) ([v] up to 5 components, [terms]
+    of them meaningful); a parameter already present is replaced. *)
+
+val eval : ?kind:kind -> t -> float -> float array
+(** The value at a parameter, with [max 2 terms] components, optionally
+    with another interpolation. Raises [Invalid_argument] on an empty
+    spline. *)
