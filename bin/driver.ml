@@ -123,7 +123,7 @@ let render o =
         let pixel =
           match o.mode with
           | Whitted -> Whitted.pixel scene ~width ~height
-          | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp:o.spp ~max_depth
+          | Monte_carlo -> Path.pixel (Path.prepare scene) ~width ~height ~seed:o.seed ~spp:o.spp ~max_depth
         in
         let tty = Unix.isatty Unix.stderr && not o.quiet in
         let t1 = Unix.gettimeofday () in
