@@ -10,4 +10,5 @@ let () =
       Test_cli.tests;
       Test_pov_scenes.tests;
       Test_image.tests;
+      Test_path.tests;
     ]
