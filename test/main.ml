@@ -10,5 +10,6 @@ let () =
       Test_cli.tests;
       Test_pov_scenes.tests;
       Test_image.tests;
+      Test_bsdf.tests;
       Test_path.tests;
     ]
