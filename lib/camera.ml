@@ -35,12 +35,17 @@ let ray c sx sy =
       let o = Vec3.madd (Vec3.madd c.location sx c.right) sy c.up in
       Ray.make o (Vec3.normalize c.direction)
 
+(* POV-Ray (tracepixel.cpp, JitterCameraRay): the eye moves by
+   (aperture / 2) x a point of the disc of radius 1/2, so the lens radius is
+   aperture / 4; the unnormalised ray direction (direction + sx right +
+   sy up) scaled by focal_distance / |direction| stays aimed at the same
+   point, so the in-focus surface is the plane at focal_distance along the
+   view axis. *)
 let ray_lens c sx sy u v =
   let r = ray c sx sy in
   if c.aperture <= 0. then r
   else
-    (* concentric-free polar mapping of the unit square onto the disc *)
-    let rad = 0.5 *. c.aperture *. Float.sqrt u in
+    let rad = 0.25 *. c.aperture *. Float.sqrt u in
     let phi = 2. *. Float.pi *. v in
     let ru = Vec3.normalize c.right and rv = Vec3.normalize c.up in
     let offset = Vec3.add (Vec3.scale (rad *. Float.cos phi) ru) (Vec3.scale (rad *. Float.sin phi) rv) in

@@ -203,6 +203,31 @@ let domains () =
   let b = render ~domains:2 ~w:20 ~h:15 ~spp:4 ~depth:8 text in
   fold a (fun () x y c -> if c <> Helpers.pixel b x y then Alcotest.failf "pixel (%d,%d)" x y) ()
 
+(* Depth of field: every lens sample through a screen point meets the same
+   point of the focal plane; the lens has radius aperture / 4 (POV-Ray). *)
+let lens () =
+  let s =
+    Helpers.compile_string
+      "#version 3.7;\ncamera { location <0,0,-5> look_at 0 aperture 2 focal_point <0,0,1> }\n"
+  in
+  let cam = s.camera in
+  let pinhole = Camera.ray cam 0.2 (-0.1) in
+  let tf = 6. /. pinhole.dir.z in
+  let focus = Ray.at pinhole tf in
+  let far = ref 0. in
+  for i = 0 to 9 do
+    for j = 0 to 9 do
+      let r = Camera.ray_lens cam 0.2 (-0.1) (float i /. 9. *. 0.999999) (float j /. 10.) in
+      let off = Vec3.dist r.origin cam.location in
+      far := Float.max !far off;
+      if off > 0.5 +. 1e-12 then Alcotest.failf "lens offset %g > aperture/4" off;
+      let t = (1. -. r.origin.z) /. r.dir.z in
+      let p = Ray.at r t in
+      if Vec3.dist p focus > 1e-9 then Alcotest.failf "not in focus: %s" (Vec3.to_string p)
+    done
+  done;
+  Alcotest.(check (float 1e-3)) "lens radius" 0.5 !far
+
 let tests =
   ( "path",
     [
@@ -215,4 +240,5 @@ let tests =
       Alcotest.test_case "NEE+MIS and BSDF-only sampling agree" `Quick nee_vs_bsdf;
       Alcotest.test_case "RMSE falls as spp^-1/2" `Quick convergence;
       Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
+      Alcotest.test_case "depth of field: focal plane and lens radius" `Quick lens;
     ] )
