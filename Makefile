@@ -4,7 +4,7 @@ SHELL := /bin/bash
 CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
-.PHONY: all setup build render test bench fuzz clean
+.PHONY: all setup build render test bench fuzz clean mc-convergence
 
 all: build
 
@@ -23,6 +23,10 @@ test: build
 
 bench: build
 	dune exec --release bench/main.exe
+
+# the long Monte Carlo convergence study (a few minutes on 2 cores)
+mc-convergence: build
+	dune exec --release test/mc/convergence.exe
 
 clean:
 	dune clean
