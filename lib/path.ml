@@ -167,6 +167,8 @@ let pixel t ~width ~height ~seed ~spp ~max_depth x y =
     let ray =
       Camera.ray_lens t.scene.camera sx sy (Sampler.get sampler 2) (Sampler.get sampler 3)
     in
-    acc := add !acc (li t sampler ~max_depth ray)
+    let c = li t sampler ~max_depth ray in
+    (* a non-finite sample (never expected) would poison the pixel: drop it *)
+    if Float.is_finite (c.r +. c.g +. c.b) then acc := add !acc c
   done;
   scale (1. /. float_of_int spp) !acc

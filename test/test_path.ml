@@ -83,7 +83,7 @@ let enclosure a le expected tol () =
 
 (* One point light, one diffuse sphere, ambient 0, black background: one
    bounce only, so both modes compute a c cos(theta) exactly; a spotlight
-   with distance fade also. *)
+   with distance fade and a parallel light also. *)
 let vs_whitted () =
   let text =
     header
@@ -91,6 +91,7 @@ let vs_whitted () =
        light_source { <-3, 4, -4> color rgb <1, 0.8, 0.6> }\n\
        light_source { <3, 1, -3> color rgb 2 spotlight point_at 0 radius 10 falloff 20\n\
       \  fade_distance 3 fade_power 2 }\n\
+       light_source { <0, 5, -5> color rgb 0.3 parallel point_at 0 }\n\
        sphere { 0, 1 pigment { rgb <0.9, 0.5, 0.2> } finish { ambient 0 diffuse 0.8 } }\n"
   in
   let w = 24 and h = 24 in
@@ -228,6 +229,39 @@ let lens () =
   done;
   Alcotest.(check (float 1e-3)) "lens radius" 0.5 !far
 
+(* POV's area light as a rectangle of fall-off-free point lights: over a
+   Lambertian plane at height h below its centre, the radiance is
+   a c <cos theta> (the mean of cos over the rectangle), by quadrature. *)
+let area_light () =
+  let s =
+    Helpers.compile_string
+      "#version 3.7;\nplane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.5 } }\n"
+  in
+  let h = 1. and side = 2. in
+  let light = Light.point (Vec3.make 0. h 0.) (Color.gray 1.) in
+  let area =
+    Emitter.Area { light; axis1 = Vec3.make side 0. 0.; axis2 = Vec3.make 0. 0. side }
+  in
+  let t = Path.prepare ~extra:[ area ] s in
+  let n = 20000 in
+  let sum = ref 0. in
+  for k = 0 to n - 1 do
+    let sampler = Sampler.create ~seed:3 ~pixel:0 ~sample:k in
+    let c = Path.li t sampler ~max_depth:1 (Ray.make (Vec3.make 0. 2. 0.) (Vec3.neg Vec3.unit_y)) in
+    sum := !sum +. c.r
+  done;
+  let q = 400 in
+  let mean_cos = ref 0. in
+  for i = 0 to q - 1 do
+    for j = 0 to q - 1 do
+      let x = side *. (((float i +. 0.5) /. float q) -. 0.5)
+      and z = side *. (((float j +. 0.5) /. float q) -. 0.5) in
+      mean_cos := !mean_cos +. (h /. Float.sqrt ((h *. h) +. (x *. x) +. (z *. z)))
+    done
+  done;
+  let expected = 0.5 *. !mean_cos /. float (q * q) in
+  Alcotest.(check (float (0.01 *. expected))) "radiance" expected (!sum /. float n)
+
 let tests =
   ( "path",
     [
@@ -241,4 +275,5 @@ let tests =
       Alcotest.test_case "RMSE falls as spp^-1/2" `Quick convergence;
       Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
       Alcotest.test_case "depth of field: focal plane and lens radius" `Quick lens;
+      Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
     ] )
