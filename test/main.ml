@@ -10,6 +10,7 @@ let () =
       Test_cli.tests;
       Test_pov_scenes.tests;
       Test_image.tests;
+      Test_sampler.tests;
       Test_bsdf.tests;
       Test_path.tests;
     ]
