@@ -262,6 +262,26 @@ let area_light () =
   let expected = 0.5 *. !mean_cos /. float (q * q) in
   Alcotest.(check (float (0.01 *. expected))) "radiance" expected (!sum /. float n)
 
+(* The Monte Carlo scenes of test/mc render (tiny, 2 spp) to finite,
+   non-negative pixels, and not all black. *)
+let mc_scenes () =
+  let dir = Filename.concat (Filename.dirname (Helpers.scenes_dir ())) "test/mc" in
+  let files = Sys.readdir dir |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".scn") in
+  if List.length files < 4 then Alcotest.failf "expected the mc scenes in %s" dir;
+  List.iter
+    (fun f ->
+      let text = In_channel.with_open_bin (Filename.concat dir f) In_channel.input_all in
+      let img = render ~w:16 ~h:9 ~spp:2 ~depth:16 text in
+      fold img
+        (fun () x y (r, g, b) ->
+          List.iter
+            (fun v ->
+              if not (Float.is_finite v && v >= 0.) then Alcotest.failf "%s (%d,%d): %g" f x y v)
+            [ r; g; b ])
+        ();
+      if mean img <= 0. then Alcotest.failf "%s is black" f)
+    files
+
 let tests =
   ( "path",
     [
@@ -276,4 +296,5 @@ let tests =
       Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
       Alcotest.test_case "depth of field: focal plane and lens radius" `Quick lens;
       Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
+      Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
     ] )
