@@ -4,7 +4,7 @@ SHELL := /bin/bash
 CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
-.PHONY: all setup build render test bench fuzz stress clean
+.PHONY: all setup build render test bench fuzz stress clean mc-convergence
 
 all: build
 
@@ -29,6 +29,10 @@ bench: build
 
 stress: build
 	@bash scripts/stress.sh 50
+
+# the long Monte Carlo convergence study (a few minutes on 2 cores)
+mc-convergence: build
+	dune exec --release test/mc/convergence.exe
 
 clean:
 	dune clean

@@ -168,7 +168,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let pixel =
         match o.mode with
         | Whitted -> Whitted.pixel scene ~width ~height
-        | Monte_carlo -> Path.pixel scene ~width ~height ~seed:o.seed ~spp ~max_depth
+        | Monte_carlo -> Path.pixel (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth
       in
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in

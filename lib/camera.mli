@@ -24,9 +24,11 @@ val ray : t -> float -> float -> Ray.t
 
 val ray_lens : t -> float -> float -> float -> float -> Ray.t
 (** [ray_lens cam sx sy u v]: as [ray], with the origin moved to the point
-    [(u, v)] in [[0,1)^2] of the lens, a disc of radius [aperture / 4] as in
-    POV-Ray (its [aperture] is twice the lens diameter), and aimed at the
-    same point of the focal plane. Same as [ray] when [aperture = 0]. *)
+    [(u, v)] in [[0,1)^2] of the lens and aimed at the same point of the
+    focal plane (the plane at [focal_distance] along the view axis). The
+    lens is a disc of radius [aperture / 4], as in POV-Ray 3.7 (its focal
+    blur moves the eye by [aperture / 2] times points of a disc of radius
+    1/2). Same as [ray] when [aperture = 0]. *)
 
 val pixel_coords : width:int -> height:int -> float -> float -> float * float
 (** [pixel_coords ~width ~height px py] maps image coordinates (pixel

@@ -1,99 +1,174 @@
 open Color
 
-(* Build an orthonormal basis around [n] (Duff et al. 2017). *)
-let basis (n : Vec3.t) =
-  let sign = Float.copy_sign 1. n.z in
-  let a = -1. /. (sign +. n.z) in
-  let b = n.x *. n.y *. a in
-  ( Vec3.make (1. +. (sign *. n.x *. n.x *. a)) (sign *. b) (-.sign *. n.x),
-    Vec3.make b (sign +. (n.y *. n.y *. a)) (-.n.y) )
+type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool }
 
-let cosine_sample n u1 u2 =
-  let r = Float.sqrt u1 and phi = 2. *. Float.pi *. u2 in
-  let t, b = basis n in
-  let x = r *. Float.cos phi and y = r *. Float.sin phi in
-  let z = Float.sqrt (Float.max 0. (1. -. u1)) in
-  Vec3.add (Vec3.add (Vec3.scale x t) (Vec3.scale y b)) (Vec3.scale z n)
+let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
+  { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee }
 
-(* Direct light from point, spot and parallel lights: a light of POV-Ray
-   colour c gives a Lambertian surface of albedo a the radiance
-   a c cos(theta), exactly POV-Ray's diffuse term. *)
-let direct (s : Scene.t) p n albedo =
-  Array.fold_left
-    (fun acc (light : Light.t) ->
-      let l, dist = Light.direction_to light p in
-      let cos = Vec3.dot n l in
-      if cos <= 0. then acc
-      else
-        let att = Light.attenuation light p in
-        if att <= 0. then acc
-        else
-          let blocked =
-            (not light.shadowless)
-            && not
-                 (Scene.occluders s (Ray.make p l) Ray.shadow_epsilon dist (fun _ _ ->
-                      false))
-          in
-          if blocked then acc else madd acc (att *. cos) (mul albedo light.color))
-    black s.lights
+let power a b =
+  let a2 = a *. a and b2 = b *. b in
+  if a2 +. b2 = 0. then 0. else a2 /. (a2 +. b2)
 
-let li (s : Scene.t) sampler ~max_depth ray =
-  let rec go (ray : Ray.t) depth throughput acc =
-    if depth > max_depth then acc
-    else
-      let tmin = if depth = 0 then 0. else Ray.epsilon in
-      match Scene.intersect s ray tmin infinity with
-      | None -> madd acc 1. (mul throughput s.background)
-      | Some hit ->
-          let d = ray.dir in
-          let n = if Vec3.dot hit.normal d < 0. then hit.normal else Vec3.neg hit.normal in
-          let layer = List.hd hit.obj.texture in
-          let f = layer.finish in
-          let pig = Pigment.eval layer.pigment hit.point in
-          let acc = add acc (mul throughput (mul pig.c f.emission)) in
-          let albedo = scale f.diffuse pig.c in
-          let kr = f.reflection.rmax in
-          let acc = add acc (mul throughput (direct s hit.point n albedo)) in
-          (* choose between mirror and diffuse bounce by their weights *)
-          let wr = max_channel kr and wd = max_channel albedo in
-          if wr +. wd <= 0. then acc
-          else
-            let u = Sampler.float sampler in
-            let pr = wr /. (wr +. wd) in
-            let throughput, dir =
-              if u < pr then
-                (scale (1. /. pr) (mul throughput kr), Vec3.madd d (-2. *. Vec3.dot d n) n)
-              else
-                ( scale (1. /. (1. -. pr)) (mul throughput albedo),
-                  cosine_sample n (Sampler.float sampler) (Sampler.float sampler) )
-            in
-            (* emission and direct light were counted by next-event
-               estimation; the background is reached by the bounce only *)
-            let q = if depth >= 3 then Float.min 0.95 (max_channel throughput) else 1. in
-            if Sampler.float sampler >= q then acc
-            else go (Ray.make hit.point dir) (depth + 1) (scale (1. /. q) throughput) acc
+(* Light that passes straight through along a shadow ray: surfaces that
+   neither refract (ior 1) nor are opaque let (f P + t) through, as a glass
+   lobe with eta 1 would; anything else blocks (light bent by refraction
+   is found by the paths, not by shadow rays). *)
+let transmittance (s : Scene.t) p wi dist =
+  let ray = Ray.make p wi in
+  let acc = ref white in
+  let open_ =
+    Scene.occluders s ray Ray.shadow_epsilon dist (fun (o : Object.t) t ->
+        match o.texture with
+        | [] -> false
+        | (layer : Texture.layer) :: _ ->
+            let c = Pigment.eval layer.pigment (Ray.at ray t) in
+            if c.filter +. c.transmit <= 0. || o.interior.ior <> 1. then false
+            else begin
+              acc := mul !acc (add (scale c.filter c.c) (gray c.transmit));
+              not (is_black !acc)
+            end)
   in
-  go ray 0 white black
+  if open_ then !acc else black
 
-let pixel (s : Scene.t) ~width ~height ~seed ~spp ~max_depth x y =
+(* The random dimensions of one sample: 0-1 pixel, 2-3 lens, then a block
+   per bounce. *)
+let dims_per_bounce t = 8 + (2 * Array.length t.emitters)
+let d_lobe = 0 and d_dir = 1 and d_rr = 3 and d_env = 4 and d_light = 6
+
+(* Next-event estimation at a vertex: every emitter, plus the environment. *)
+let direct t sampler base (m : Material.t) p n wo =
+  let s = t.scene in
+  let acc = ref black in
+  Array.iteri
+    (fun i (e : Emitter.t) ->
+      let u = Sampler.get sampler (base + d_light + (2 * i))
+      and v = Sampler.get sampler (base + d_light + (2 * i) + 1) in
+      match Emitter.sample e p u v with
+      | None -> ()
+      | Some ls ->
+          let ci = Vec3.dot n ls.wi in
+          if ci > 0. then begin
+            let f = Bsdf.eval m ~n ~wo ~wi:ls.wi in
+            if not (is_black f) then
+              match e with
+              | Delta l | Area { light = l; _ } ->
+                  let tr = if l.shadowless then white else transmittance s p ls.wi ls.dist in
+                  acc := add !acc (scale ci (mul f (mul tr ls.value)))
+              | Sphere { obj; _ } -> (
+                  match Scene.intersect s (Ray.make p ls.wi) Ray.epsilon infinity with
+                  | Some h when h.obj == obj ->
+                      let le = Emitter.emission obj h.point in
+                      let pb = Bsdf.pdf m ~n ~wo ~wi:ls.wi in
+                      let w = power ls.pdf pb in
+                      acc := add !acc (scale (ci *. w /. ls.pdf) (mul f le))
+                  | _ -> ())
+          end)
+    t.emitters;
+  (* a uniform environment is sampled cosine-weighted about the normal *)
+  let bg = s.background in
+  if not (is_black bg) then begin
+    let wi =
+      Bsdf.cosine_hemisphere n (Sampler.get sampler (base + d_env))
+        (Sampler.get sampler (base + d_env + 1))
+    in
+    let ci = Vec3.dot n wi in
+    if ci > 0. then begin
+      let f = Bsdf.eval m ~n ~wo ~wi in
+      if not (is_black f) then begin
+        let pl = ci /. Float.pi and pb = Bsdf.pdf m ~n ~wo ~wi in
+        let tr = transmittance s p wi infinity in
+        acc := add !acc (scale (ci *. power pl pb /. pl) (mul f (mul tr bg)))
+      end
+    end
+  end;
+  !acc
+
+(* What the previous vertex needs to weight light found by its bounce. *)
+type prev = Camera | Specular | Smooth of { p : Vec3.t; n : Vec3.t; pdf : float }
+
+let li t sampler ~max_depth (ray : Ray.t) =
+  let s = t.scene in
+  let per = dims_per_bounce t in
+  let rec go (ray : Ray.t) depth thr acc prev =
+    let tmin = if depth = 0 then 0. else Ray.epsilon in
+    match Scene.intersect s ray tmin infinity with
+    | None ->
+        let w =
+          match prev with
+          | Smooth { n; pdf; _ } when t.nee ->
+              power pdf (Float.max 0. (Vec3.dot n ray.dir) /. Float.pi)
+          | _ -> 1.
+        in
+        madd acc w (mul thr s.background)
+    | Some hit ->
+        let obj = hit.obj in
+        let wo = Vec3.neg ray.dir in
+        let entering = Vec3.dot hit.normal ray.dir < 0. in
+        let n = if entering then hit.normal else Vec3.neg hit.normal in
+        (* a ray leaving a solid travelled inside it: interior fade *)
+        let thr = if entering then thr else mul thr (Interior.fade obj.interior hit.t) in
+        let m =
+          Material.of_texture obj.texture obj.interior hit.point ~cos_o:(Vec3.dot n wo) ~entering
+        in
+        let acc =
+          if is_black m.emission then acc
+          else
+            let w =
+              match (prev, Emitter.find t.emitters obj) with
+              | Smooth { p; pdf; _ }, Some e when t.nee ->
+                  power pdf (Emitter.pdf e p hit.point hit.normal)
+              | _ -> 1.
+            in
+            add acc (scale w (mul thr m.emission))
+        in
+        if depth >= max_depth then acc
+        else
+          let base = 4 + (depth * per) in
+          let acc =
+            if t.nee && Bsdf.has_smooth m then
+              add acc (mul thr (direct t sampler base m hit.point n wo))
+            else acc
+          in
+          match
+            Bsdf.sample m ~n ~wo
+              (Sampler.get sampler (base + d_lobe))
+              (Sampler.get sampler (base + d_dir))
+              (Sampler.get sampler (base + d_dir + 1))
+          with
+          | None -> acc
+          | Some bs ->
+              let thr = mul thr bs.weight in
+              let q = if depth >= 3 then Float.min 0.95 (max_channel thr) else 1. in
+              if q <= 0. || Sampler.get sampler (base + d_rr) >= q then acc
+              else
+                let prev =
+                  if bs.delta then Specular else Smooth { p = hit.point; n; pdf = bs.pdf }
+                in
+                go (Ray.make hit.point bs.wi) (depth + 1) (scale (1. /. q) thr) acc prev
+  in
+  go ray 0 white black Camera
+
+let pixel t ~width ~height ~seed ~spp ~max_depth x y =
   let side = int_of_float (Float.sqrt (float_of_int spp)) in
   let strat = side * side = spp in
   let acc = ref black in
   for k = 0 to spp - 1 do
     let sampler = Sampler.create ~seed ~pixel:((y * width) + x) ~sample:k in
-    let u1 = Sampler.float sampler and u2 = Sampler.float sampler in
+    let u1 = Sampler.get sampler 0 and u2 = Sampler.get sampler 1 in
     let jx, jy =
       if strat then
-        ((float_of_int (k mod side) +. u1) /. float_of_int side,
-         (float_of_int (k / side) +. u2) /. float_of_int side)
+        ( (float_of_int (k mod side) +. u1) /. float_of_int side,
+          (float_of_int (k / side) +. u2) /. float_of_int side )
       else (u1, u2)
     in
     let sx, sy =
       Camera.pixel_coords ~width ~height (float_of_int x +. jx) (float_of_int y +. jy)
     in
     let ray =
-      Camera.ray_lens s.camera sx sy (Sampler.float sampler) (Sampler.float sampler)
+      Camera.ray_lens t.scene.camera sx sy (Sampler.get sampler 2) (Sampler.get sampler 3)
     in
-    acc := add !acc (li s sampler ~max_depth ray)
+    let c = li t sampler ~max_depth ray in
+    (* a non-finite sample (never expected) would poison the pixel: drop it *)
+    if Float.is_finite (c.r +. c.g +. c.b) then acc := add !acc c
   done;
   scale (1. /. float_of_int spp) !acc

@@ -1,13 +1,29 @@
-(** Monte Carlo path tracing on the same scenes. This first version: the
-    Lambertian part of a finish (albedo = pigment x diffuse), mirror
-    reflection, emission, the background as an environment light, point
-    lights sampled directly, Russian roulette after three bounces. *)
+(** Monte Carlo path tracing on the same scenes: an unbiased estimator of
+    the radiance reaching the camera. POV-Ray textures become physical
+    materials ({!Material}); light sources and emissive spheres are sampled
+    directly ({!Emitter}) and, for emitters that paths can also hit
+    (emissive objects, the background), light sampling and BSDF sampling
+    are combined by multiple importance sampling with the power heuristic.
+    Russian roulette after three bounces; [max_depth] caps the number of
+    bounces. [ambient] is ignored. *)
 
-val li : Scene.t -> Sampler.t -> max_depth:int -> Ray.t -> Color.t
-(** One radiance sample along a camera ray. *)
+type t
+(** A scene prepared for path tracing (its emitters listed once). *)
+
+val prepare : ?nee:bool -> ?extra:Emitter.t list -> Scene.t -> t
+(** [nee] (default [true]): next-event estimation. With [false], light is
+    found only by BSDF sampling (delta lights are then never seen): the
+    two estimators must agree on scenes without delta lights. [extra]:
+    emitters not (yet) expressible in the scene language. *)
+
+val li : t -> Sampler.t -> max_depth:int -> Ray.t -> Color.t
+(** One radiance sample along a camera ray ([ray.dir] a unit vector).
+    Random dimensions 0-3 of the sampler are left to the caller (pixel and
+    lens). *)
 
 val pixel :
-  Scene.t -> width:int -> height:int -> seed:int -> spp:int -> max_depth:int ->
-  int -> int -> Color.t
+  t -> width:int -> height:int -> seed:int -> spp:int -> max_depth:int -> int -> int -> Color.t
 (** Mean of [spp] samples of pixel [(x, y)], jittered inside the pixel
-    (stratified on a grid when [spp] is a square). *)
+    (stratified on a grid when [spp] is a square), each from its own
+    sampler keyed by (seed, pixel, sample): the result does not depend on
+    which domain computes it. *)

@@ -1,4 +1,4 @@
-(* Counter-based: the n-th number of a stream is hash(key + n * golden),
+(* Counter-based: number [dim] of a stream is hash(key + dim * golden),
    where key mixes seed, pixel and sample. Arithmetic wraps on 63-bit ints;
    we keep 62 bits so every step stays non-negative after masking. *)
 type t = { key : int; mutable n : int }
@@ -16,8 +16,10 @@ let create ~seed ~pixel ~sample =
   let k = hash (hash (hash seed + pixel) + sample) in
   { key = k; n = 0 }
 
+(* top 53 of 62 bits *)
+let get s dim = float_of_int (hash (s.key + (dim * golden)) lsr 9) *. 0x1p-53
+
 let float s =
-  let v = hash (s.key + (s.n * golden)) in
+  let v = get s s.n in
   s.n <- s.n + 1;
-  (* top 53 of 62 bits *)
-  float_of_int (v lsr 9) *. 0x1p-53
+  v

@@ -69,6 +69,6 @@ let prop =
               finite_image (Render.image ~domains:1 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h))
               && finite_image
                    (Render.image ~domains:1 ~width:w ~height:h
-                      (Path.pixel s ~width:w ~height:h ~seed:1 ~spp:2 ~max_depth:6))))
+                      (Path.pixel (Path.prepare s) ~width:w ~height:h ~seed:1 ~spp:2 ~max_depth:6))))
 
 let tests = ("numerics", [ QCheck_alcotest.to_alcotest prop ])

@@ -47,14 +47,14 @@ let units =
         let b = Helpers.render_whitted ~domains:2 ~width:48 ~height:36 text in
         same_images a b);
     Alcotest.test_case "mc: 1 and 2 domains give identical images" `Quick (fun () ->
-        let s = Helpers.compile_string (default_scene ()) in
+        let s = Path.prepare (Helpers.compile_string (default_scene ())) in
         let r d =
           Render.image ~domains:d ~width:24 ~height:18
             (Path.pixel s ~width:24 ~height:18 ~seed:7 ~spp:4 ~max_depth:6)
         in
         same_images (r 1) (r 2));
     Alcotest.test_case "mc: the seed changes the noise" `Quick (fun () ->
-        let s = Helpers.compile_string (default_scene ()) in
+        let s = Path.prepare (Helpers.compile_string (default_scene ())) in
         let r seed = Path.pixel s ~width:24 ~height:18 ~seed ~spp:2 ~max_depth:6 12 12 in
         Alcotest.(check bool) "differs" true (r 1 <> r 2));
     Alcotest.test_case "a mirror at trace level 1 is black (max_trace_level 1)" `Quick (fun () ->

@@ -109,8 +109,9 @@ let tests =
       Alcotest.test_case "'default' without '#', a lone '#', form feeds" `Quick (fun () ->
           check "lexing" [ 1. ] (floats "default { finish { phong 1 } }\n# \012 sphere { 0, 1 }"));
       Alcotest.test_case "#fopen/#write then #read back until the file closes itself" `Quick (fun () ->
-          with_dir [ ("main.pov", "") ] (fun dir ->
-              let data = Filename.concat dir "data.txt" in
+          (* relative to the current folder, where a scene may write *)
+          let data = Printf.sprintf "camlray-fopen-%d.txt" (Unix.getpid ()) in
+          Fun.protect ~finally:(fun () -> try Sys.remove data with Sys_error _ -> ()) (fun () ->
               let text =
                 Printf.sprintf
                   "#fopen F %S write\n#write (F, 1.5, \",\", <1,2,3>, \",\", \"\\\"s\\\"\", \",\", -0.25)\n#fclose F\n\
@@ -121,8 +122,9 @@ let tests =
               in
               check "read" [ 4.; -0.25 ] (floats text);
               Alcotest.(check string) "written" "1.5,<1,2,3> ,\"s\",-0.25"
-                (In_channel.with_open_bin data In_channel.input_all);
-              Sys.remove data));
+                (In_channel.with_open_bin data In_channel.input_all)));
+      Alcotest.test_case "#fopen outside the allowed folders is refused" `Quick (fun () ->
+          Scn.check_message "#fopen F \"/tmp/camlray-never.txt\" write" "is not allowed");
       Alcotest.test_case "#ifdef of an array element, #undef" `Quick (fun () ->
           check "ifdef" [ 2.; 4. ]
             (floats

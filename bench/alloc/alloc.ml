@@ -22,7 +22,7 @@ let () =
               let width = !w and height = !h in
               let pixel, rays, mode =
                 if !mc > 0 then
-                  ( Path.pixel s ~width ~height ~seed:0 ~spp:!mc ~max_depth:16,
+                  ( Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:!mc ~max_depth:16,
                     width * height * !mc, Printf.sprintf "mc %d spp" !mc )
                 else (Whitted.pixel s ~width ~height, width * height, "whitted")
               in

@@ -1,0 +1,39 @@
+(** Scattering by a {!Material.t}: evaluation, sampling and densities of
+    its lobes. Conventions: [n] is the unit shading normal on the side of
+    [wo]; [wo] points away from the surface towards the viewer; [wi] points
+    away from the surface towards where light comes from. Densities are
+    per unit solid angle. *)
+
+val basis : Vec3.t -> Vec3.t * Vec3.t
+(** Two unit tangents completing [n] to an orthonormal basis. *)
+
+val cosine_hemisphere : Vec3.t -> float -> float -> Vec3.t
+(** [cosine_hemisphere n u1 u2]: a direction with density cos / pi about [n]. *)
+
+val eval : Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> Color.t
+(** Sum of the non-delta lobes' f (without the cosine). *)
+
+val pdf : Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> float
+(** Density with which {!sample} picks [wi] through a non-delta lobe. *)
+
+val has_smooth : Material.t -> bool
+(** Some lobe is not a delta (light sampling can help). *)
+
+type sample = {
+  wi : Vec3.t;
+  weight : Color.t;  (** f cos / pdf, selection probabilities included *)
+  pdf : float;  (** density of [wi] (0 for delta lobes) *)
+  delta : bool;
+}
+
+val sample : Material.t -> n:Vec3.t -> wo:Vec3.t -> float -> float -> float -> sample option
+(** [sample m ~n ~wo u v w]: choose a lobe with [u] (in proportion to
+    {!Material.weight}), a direction with [v], [w]. Non-delta lobes are
+    combined (the weight is the sum of their f over the mixture density),
+    which is unbiased; [None] when the material absorbs everything or the
+    direction falls below the surface. *)
+
+val fresnel : float -> float -> float
+(** [fresnel eta cos_i]: exact unpolarised reflectance of a smooth
+    dielectric boundary, [eta] = n_incident / n_transmitted; 1 under total
+    internal reflection. *)

@@ -1,0 +1,107 @@
+type t =
+  | Delta of Light.t
+  | Area of { light : Light.t; axis1 : Vec3.t; axis2 : Vec3.t }
+  | Sphere of { obj : Object.t; center : Vec3.t; radius : float }
+
+let emission (o : Object.t) p =
+  match o.texture with
+  | [] -> Color.black
+  | (layer : Texture.layer) :: _ ->
+      let pc = Pigment.eval layer.pigment p in
+      let alpha = Float.max 0. (1. -. pc.filter -. pc.transmit) in
+      Color.scale alpha (Color.mul pc.c layer.finish.emission)
+
+let emissive (o : Object.t) =
+  match o.texture with
+  | [] -> false
+  | layer :: _ -> not (Color.is_black layer.finish.emission)
+
+(* A sphere under a similarity transform stays a sphere. *)
+let world_sphere (o : Object.t) =
+  match o.geom with
+  | Object.Prim (Shape.Sphere { center; radius }) ->
+      let x = Transform.vector o.xform Vec3.unit_x
+      and y = Transform.vector o.xform Vec3.unit_y
+      and z = Transform.vector o.xform Vec3.unit_z in
+      let lx = Vec3.length x in
+      let near a b = Float.abs (a -. b) <= 1e-9 *. Float.max 1. lx in
+      if near (Vec3.length y) lx && near (Vec3.length z) lx
+         && near (Vec3.dot x y) 0. && near (Vec3.dot y z) 0. && near (Vec3.dot x z) 0.
+      then Some (Transform.point o.xform center, radius *. lx)
+      else None
+  | _ -> None
+
+let of_scene (s : Scene.t) =
+  let lights = Array.to_list (Array.map (fun l -> Delta l) s.lights) in
+  let objs =
+    Array.to_list s.objects
+    |> List.filter_map (fun o ->
+           if not (emissive o) then None
+           else
+             Option.map (fun (center, radius) -> Sphere { obj = o; center; radius }) (world_sphere o))
+  in
+  Array.of_list (lights @ objs)
+
+type sample = { wi : Vec3.t; dist : float; value : Color.t; pdf : float }
+
+let two_pi = 2. *. Float.pi
+
+let point_light (l : Light.t) pos p =
+  let l' = { l with position = pos } in
+  let wi, dist = Light.direction_to l' p in
+  let att = Light.attenuation l' p in
+  if att <= 0. || dist <= 0. then None
+  else Some { wi; dist; value = Color.scale (Float.pi *. att) l.color; pdf = 0. }
+
+let cos_max r d = Float.sqrt (Float.max 0. (1. -. (r *. r /. (d *. d))))
+
+let sample e p u v =
+  match e with
+  | Delta l -> point_light l l.position p
+  | Area { light; axis1; axis2 } ->
+      let q = Vec3.madd (Vec3.madd light.position (u -. 0.5) axis1) (v -. 0.5) axis2 in
+      point_light light q p
+  | Sphere { center; radius; _ } ->
+      let to_c = Vec3.sub center p in
+      let d = Vec3.length to_c in
+      if d > radius then
+        (* uniform in the subtended cone *)
+        let cm = cos_max radius d in
+        let c = 1. -. (u *. (1. -. cm)) in
+        let wi =
+          let s = Float.sqrt (Float.max 0. (1. -. (c *. c))) and phi = two_pi *. v in
+          let t, b = Bsdf.basis (Vec3.scale (1. /. d) to_c) in
+          Vec3.add
+            (Vec3.add (Vec3.scale (s *. Float.cos phi) t) (Vec3.scale (s *. Float.sin phi) b))
+            (Vec3.scale (c /. d) to_c)
+        in
+        Some { wi; dist = d +. radius; value = Color.black; pdf = 1. /. (two_pi *. (1. -. cm)) }
+      else
+        (* inside: uniform by area *)
+        let z = 1. -. (2. *. u) in
+        let s = Float.sqrt (Float.max 0. (1. -. (z *. z))) and phi = two_pi *. v in
+        let nq = Vec3.make (s *. Float.cos phi) (s *. Float.sin phi) z in
+        let q = Vec3.madd center radius nq in
+        let w = Vec3.sub q p in
+        let dist = Vec3.length w in
+        let wi = Vec3.scale (1. /. dist) w in
+        let c = Float.abs (Vec3.dot wi nq) in
+        if c <= 0. then None
+        else
+          Some { wi; dist; value = Color.black;
+                 pdf = dist *. dist /. (c *. 4. *. Float.pi *. radius *. radius) }
+
+let pdf e p q nq =
+  match e with
+  | Delta _ | Area _ -> 0.
+  | Sphere { center; radius; _ } ->
+      let d = Vec3.dist center p in
+      if d > radius then 1. /. (two_pi *. (1. -. cos_max radius d))
+      else
+        let w = Vec3.sub q p in
+        let dist2 = Vec3.length2 w in
+        let c = Float.abs (Vec3.dot w nq) /. Float.sqrt dist2 in
+        if c <= 0. then 0. else dist2 /. (c *. 4. *. Float.pi *. radius *. radius)
+
+let find es o =
+  Array.find_opt (function Sphere { obj; _ } -> obj == o | Delta _ | Area _ -> false) es

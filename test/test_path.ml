@@ -1,0 +1,300 @@
+(* Monte Carlo mode: physics with known answers (furnaces, an emitting
+   enclosure), agreement with the Whitted mode where both are exact,
+   agreement of NEE+MIS with BSDF-only sampling, convergence rate,
+   determinism. Scenes are written in the scene language. *)
+open Camlray
+
+let render ?(nee = true) ?(domains = 1) ?(seed = 1) ~w ~h ~spp ~depth text =
+  let t = Path.prepare ~nee (Helpers.compile_string text) in
+  Render.image ~domains ~width:w ~height:h (Path.pixel t ~width:w ~height:h ~seed ~spp ~max_depth:depth)
+
+let fold img f init =
+  let acc = ref init in
+  for y = 0 to Image.height img - 1 do
+    for x = 0 to Image.width img - 1 do
+      acc := f !acc x y (Image.get_r img x y, Image.get_g img x y, Image.get_b img x y)
+    done
+  done;
+  !acc
+
+let mean img =
+  let s = fold img (fun a _ _ (r, g, b) -> a +. ((r +. g +. b) /. 3.)) 0. in
+  s /. float (Image.width img * Image.height img)
+
+let all_within what img expected tol =
+  fold img
+    (fun () x y (r, g, b) ->
+      List.iter
+        (fun v ->
+          if Float.abs (v -. expected) > tol then
+            Alcotest.failf "%s: pixel (%d,%d) is %g, expected %g +- %g" what x y v expected tol)
+        [ r; g; b ])
+    ()
+
+let header = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
+
+(* Camera outside a unit sphere that fills the middle of the image. *)
+let furnace finish =
+  header ^ "camera { location <0,0,-3> look_at 0 angle 50 }\nbackground { rgb 1 }\n"
+  ^ "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 " ^ finish ^ " } }\n"
+
+let white_furnace () =
+  (* albedo 1 under a uniform environment of radiance 1: every pixel 1 *)
+  all_within "albedo 1" (render ~w:12 ~h:12 ~spp:4 ~depth:16 (furnace "diffuse 1")) 1. 0.01;
+  (* albedo 0.5: light reflects once off a convex sphere, so 0.5 on the
+     sphere and 1 around it; the centre pixel is on the sphere *)
+  let img = render ~w:12 ~h:12 ~spp:4 ~depth:16 (furnace "diffuse 0.5") in
+  let r, _, _ = Helpers.pixel img 6 6 and c, _, _ = Helpers.pixel img 0 0 in
+  Alcotest.(check (float 0.005)) "albedo 0.5 on the sphere" 0.5 r;
+  Alcotest.(check (float 0.)) "background" 1. c;
+  (* a mix of diffuse 0.25 and a mirror 0.25 reflects 0.5 *)
+  (* (lobes are chosen at random: average the 6x6 central pixels) *)
+  let img = render ~w:12 ~h:12 ~spp:256 ~depth:16 (furnace "diffuse 0.25 reflection 0.25") in
+  let s = ref 0. in
+  for y = 3 to 8 do
+    for x = 3 to 8 do
+      let r, _, _ = Helpers.pixel img x y in
+      s := !s +. r
+    done
+  done;
+  Alcotest.(check (float 0.01)) "diffuse + mirror 0.5" 0.5 (!s /. 36.)
+
+let glass_furnace () =
+  (* a clear dielectric loses nothing: exact Fresnel splits, TIR and
+     roulette must keep the mean at 1 *)
+  let img =
+    render ~w:12 ~h:12 ~spp:64 ~depth:64
+      (furnace "diffuse 0 } pigment { rgbt <1,1,1,1> } interior { ior 1.5")
+  in
+  Alcotest.(check (float 0.01)) "mean" 1. (mean img);
+  all_within "glass" img 1. 0.1
+
+(* Inside a closed diffuse sphere of albedo a emitting Le, L = Le / (1 - a)
+   (all bounces: depth 256, Russian roulette). *)
+let enclosure a le expected tol () =
+  let text =
+    Printf.sprintf
+      "%scamera { location <0,0,0> look_at z }\n\
+       sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 diffuse %g emission %g } }\n"
+      header a le
+  in
+  let img = render ~w:8 ~h:8 ~spp:64 ~depth:256 text in
+  Alcotest.(check (float tol)) "radiance" expected (mean img)
+
+(* One point light, one diffuse sphere, ambient 0, black background: one
+   bounce only, so both modes compute a c cos(theta) exactly; a spotlight
+   with distance fade and a parallel light also. *)
+let vs_whitted () =
+  let text =
+    header
+    ^ "camera { location <0,0,-4> look_at 0 angle 40 }\n\
+       light_source { <-3, 4, -4> color rgb <1, 0.8, 0.6> }\n\
+       light_source { <3, 1, -3> color rgb 2 spotlight point_at 0 radius 10 falloff 20\n\
+      \  fade_distance 3 fade_power 2 }\n\
+       light_source { <0, 5, -5> color rgb 0.3 parallel point_at 0 }\n\
+       sphere { 0, 1 pigment { rgb <0.9, 0.5, 0.2> } finish { ambient 0 diffuse 0.8 } }\n"
+  in
+  let w = 24 and h = 24 in
+  let mc = render ~w ~h ~spp:16 ~depth:16 text in
+  (* whitted at 4x4 samples per pixel, box-filtered: the pixel integral *)
+  let big = Helpers.render_whitted ~width:(4 * w) ~height:(4 * h) text in
+  let wh = Image.create w h in
+  for y = 0 to h - 1 do
+    for x = 0 to w - 1 do
+      let r = ref 0. and g = ref 0. and b = ref 0. in
+      for j = 0 to 3 do
+        for i = 0 to 3 do
+          let r', g', b' = Helpers.pixel big ((4 * x) + i) ((4 * y) + j) in
+          r := !r +. (r' /. 16.);
+          g := !g +. (g' /. 16.);
+          b := !b +. (b' /. 16.)
+        done
+      done;
+      Image.set wh x y !r !g !b
+    done
+  done;
+  let m1 = mean mc and m2 = mean wh in
+  if Float.abs (m1 -. m2) > 0.01 *. m2 then Alcotest.failf "image means: mc %g, whitted %g" m1 m2;
+  (* pixels well inside the disc (no edge inside the pixel): within 2% *)
+  fold wh
+    (fun () x y (r, g, b) ->
+      let dx = float x +. 0.5 -. 12. and dy = float y +. 0.5 -. 12. in
+      if Float.sqrt ((dx *. dx) +. (dy *. dy)) < 6. then
+        let r', g', b' = Helpers.pixel mc x y in
+        List.iter2
+          (fun a b ->
+            if Float.abs (a -. b) > 0.02 *. Float.max b 0.05 then
+              Alcotest.failf "pixel (%d,%d): mc %g, whitted %g" x y a b)
+          [ r; g; b ] [ r'; g'; b' ])
+    ()
+
+(* A small emissive sphere over a diffuse floor and a glossy sphere: no
+   delta lights, so BSDF sampling alone sees all the light. *)
+let small_emitter =
+  header
+  ^ "camera { location <0,1.5,-4> look_at <0,0.5,0> angle 50 }\n\
+     sphere { <1, 2.2, 0>, 0.5 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 8 } }\n\
+     plane { y, 0 pigment { rgb 0.7 } finish { ambient 0 diffuse 1 } }\n\
+     sphere { <-0.5, 0.7, 0.5>, 0.7 pigment { rgb <0.8,0.3,0.2> }\n\
+    \  finish { ambient 0 diffuse 0.6 specular 0.4 roughness 0.05 } }\n\
+     background { rgb 0.05 }\n"
+
+let nee_vs_bsdf () =
+  let a = render ~w:16 ~h:16 ~spp:256 ~depth:8 small_emitter in
+  let b = render ~nee:false ~seed:2 ~w:16 ~h:16 ~spp:1024 ~depth:8 small_emitter in
+  let ma = mean a and mb = mean b in
+  if Float.abs (ma -. mb) > 0.02 *. ma then Alcotest.failf "NEE+MIS %g vs BSDF only %g" ma mb
+
+let rmse a b =
+  let n = float (Image.width a * Image.height a * 3) in
+  let s =
+    fold a
+      (fun acc x y (r, g, bl) ->
+        let r', g', b' = Helpers.pixel b x y in
+        acc +. ((r -. r') ** 2.) +. ((g -. g') ** 2.) +. ((bl -. b') ** 2.))
+      0.
+  in
+  Float.sqrt (s /. n)
+
+(* Only bounded estimators here (diffuse surfaces, a sky and a sphere
+   light), so that the sample RMSE is a stable measure; spp values that are
+   not squares, so pixel positions are not stratified either and every
+   sample is independent: RMSE must fall as spp^-1/2. *)
+let lambert_scene =
+  header
+  ^ "camera { location <0,1.5,-4> look_at <0,0.5,0> angle 50 }\n\
+     sphere { <1, 2.2, 0>, 0.5 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 4 } }\n\
+     plane { y, 0 pigment { rgb 0.7 } finish { ambient 0 diffuse 1 } }\n\
+     sphere { <-0.5, 0.7, 0.5>, 0.7 pigment { rgb <0.8,0.3,0.2> } finish { ambient 0 diffuse 1 } }\n\
+     background { rgb <0.3, 0.4, 0.5> }\n"
+
+let convergence () =
+  let w = 12 and h = 12 in
+  let reference = render ~seed:1000 ~w ~h ~spp:4096 ~depth:8 lambert_scene in
+  let spps = [ 2; 8; 32; 128 ] in
+  let pts =
+    List.map
+      (fun spp ->
+        (* mean squared error over four seeds *)
+        let mse =
+          List.fold_left
+            (fun a seed -> a +. (rmse (render ~seed ~w ~h ~spp ~depth:8 lambert_scene) reference ** 2.))
+            0. [ 7; 8; 9; 10 ]
+        in
+        let e = Float.sqrt (mse /. 4.) in
+        if Sys.getenv_opt "MC_VERBOSE" <> None then Printf.printf "spp %d rmse %g\n%!" spp e;
+        (Float.log (float spp), Float.log e))
+      spps
+  in
+  let n = float (List.length pts) in
+  let sx = List.fold_left (fun a (x, _) -> a +. x) 0. pts
+  and sy = List.fold_left (fun a (_, y) -> a +. y) 0. pts in
+  let sxx = List.fold_left (fun a (x, _) -> a +. (x *. x)) 0. pts
+  and sxy = List.fold_left (fun a (x, y) -> a +. (x *. y)) 0. pts in
+  let slope = ((n *. sxy) -. (sx *. sy)) /. ((n *. sxx) -. (sx *. sx)) in
+  if Sys.getenv_opt "MC_VERBOSE" <> None then Printf.printf "slope %g\n" slope;
+  if Float.abs (slope +. 0.5) > 0.1 then Alcotest.failf "RMSE ~ spp^%g, expected spp^-0.5" slope
+
+let domains () =
+  let text =
+    small_emitter
+    ^ "sphere { <1.2, 0.5, -0.5>, 0.5 pigment { rgbf <1,1,1,0.9> } interior { ior 1.5 } }\n"
+  in
+  let a = render ~domains:1 ~w:20 ~h:15 ~spp:4 ~depth:8 text in
+  let b = render ~domains:2 ~w:20 ~h:15 ~spp:4 ~depth:8 text in
+  fold a (fun () x y c -> if c <> Helpers.pixel b x y then Alcotest.failf "pixel (%d,%d)" x y) ()
+
+(* Depth of field: every lens sample through a screen point meets the same
+   point of the focal plane; the lens has radius aperture / 4 (POV-Ray). *)
+let lens () =
+  let s =
+    Helpers.compile_string
+      "#version 3.7;\ncamera { location <0,0,-5> look_at 0 aperture 2 focal_point <0,0,1> }\n"
+  in
+  let cam = s.camera in
+  let pinhole = Camera.ray cam 0.2 (-0.1) in
+  let tf = 6. /. pinhole.dir.z in
+  let focus = Ray.at pinhole tf in
+  let far = ref 0. in
+  for i = 0 to 9 do
+    for j = 0 to 9 do
+      let r = Camera.ray_lens cam 0.2 (-0.1) (float i /. 9. *. 0.999999) (float j /. 10.) in
+      let off = Vec3.dist r.origin cam.location in
+      far := Float.max !far off;
+      if off > 0.5 +. 1e-12 then Alcotest.failf "lens offset %g > aperture/4" off;
+      let t = (1. -. r.origin.z) /. r.dir.z in
+      let p = Ray.at r t in
+      if Vec3.dist p focus > 1e-9 then Alcotest.failf "not in focus: %s" (Vec3.to_string p)
+    done
+  done;
+  Alcotest.(check (float 1e-3)) "lens radius" 0.5 !far
+
+(* POV's area light as a rectangle of fall-off-free point lights: over a
+   Lambertian plane at height h below its centre, the radiance is
+   a c <cos theta> (the mean of cos over the rectangle), by quadrature. *)
+let area_light () =
+  let s =
+    Helpers.compile_string
+      "#version 3.7;\nplane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.5 } }\n"
+  in
+  let h = 1. and side = 2. in
+  let light = Light.point (Vec3.make 0. h 0.) (Color.gray 1.) in
+  let area =
+    Emitter.Area { light; axis1 = Vec3.make side 0. 0.; axis2 = Vec3.make 0. 0. side }
+  in
+  let t = Path.prepare ~extra:[ area ] s in
+  let n = 20000 in
+  let sum = ref 0. in
+  for k = 0 to n - 1 do
+    let sampler = Sampler.create ~seed:3 ~pixel:0 ~sample:k in
+    let c = Path.li t sampler ~max_depth:1 (Ray.make (Vec3.make 0. 2. 0.) (Vec3.neg Vec3.unit_y)) in
+    sum := !sum +. c.r
+  done;
+  let q = 400 in
+  let mean_cos = ref 0. in
+  for i = 0 to q - 1 do
+    for j = 0 to q - 1 do
+      let x = side *. (((float i +. 0.5) /. float q) -. 0.5)
+      and z = side *. (((float j +. 0.5) /. float q) -. 0.5) in
+      mean_cos := !mean_cos +. (h /. Float.sqrt ((h *. h) +. (x *. x) +. (z *. z)))
+    done
+  done;
+  let expected = 0.5 *. !mean_cos /. float (q * q) in
+  Alcotest.(check (float (0.01 *. expected))) "radiance" expected (!sum /. float n)
+
+(* The Monte Carlo scenes of test/mc render (tiny, 2 spp) to finite,
+   non-negative pixels, and not all black. *)
+let mc_scenes () =
+  let dir = Filename.concat (Filename.dirname (Helpers.scenes_dir ())) "test/mc" in
+  let files = Sys.readdir dir |> Array.to_list |> List.filter (fun f -> Filename.check_suffix f ".scn") in
+  if List.length files < 4 then Alcotest.failf "expected the mc scenes in %s" dir;
+  List.iter
+    (fun f ->
+      let text = In_channel.with_open_bin (Filename.concat dir f) In_channel.input_all in
+      let img = render ~w:16 ~h:9 ~spp:2 ~depth:16 text in
+      fold img
+        (fun () x y (r, g, b) ->
+          List.iter
+            (fun v ->
+              if not (Float.is_finite v && v >= 0.) then Alcotest.failf "%s (%d,%d): %g" f x y v)
+            [ r; g; b ])
+        ();
+      if mean img <= 0. then Alcotest.failf "%s is black" f)
+    files
+
+let tests =
+  ( "path",
+    [
+      Alcotest.test_case "white furnace: albedo 1 -> 1, 0.5 -> 0.5, diffuse+mirror mix" `Quick
+        white_furnace;
+      Alcotest.test_case "glass furnace: a clear dielectric keeps radiance 1" `Quick glass_furnace;
+      Alcotest.test_case "enclosure a=0.5 Le=0.5 -> 1" `Quick (enclosure 0.5 0.5 1. 0.02);
+      Alcotest.test_case "enclosure a=0.9 Le=0.5 -> 5" `Quick (enclosure 0.9 0.5 5. 0.15);
+      Alcotest.test_case "one light, one diffuse sphere: mc = whitted" `Quick vs_whitted;
+      Alcotest.test_case "NEE+MIS and BSDF-only sampling agree" `Quick nee_vs_bsdf;
+      Alcotest.test_case "RMSE falls as spp^-1/2" `Quick convergence;
+      Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
+      Alcotest.test_case "depth of field: focal plane and lens radius" `Quick lens;
+      Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
+      Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
+    ] )
