@@ -128,7 +128,9 @@ let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
   if q2 > rr *. rr then false
   else
     let hh = Float.sqrt ((rr *. rr) -. q2) *. (1. +. 1e-9) in
-    let lo = Float.max (-.hh) ((tmin *. dl) -. t0) and hi = Float.min hh ((h.t *. dl) -. t0) in
+    (* the upper end does not depend on [h.t], so that the root found never
+       depends on the order objects are tried in *)
+    let lo = Float.max (-.hh) ((tmin *. dl) -. t0) and hi = hh in
     if not (lo < hi) then false
     else
       let b = 2. *. Vec3.dot q dn in
