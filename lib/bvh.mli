@@ -1,12 +1,11 @@
 (** Bounding volume hierarchies over primitives given only by their
-    axis-aligned boxes: a binned SAH build, flattened into one float array
-    of node boxes and one int array of links, depth first (a node's first
-    child follows it). The primitives themselves stay with the caller: a
+    axis-aligned boxes: a binned SAH build, flattened depth first (a node's
+    first child follows it) into one float array, 64 bytes per node (box
+    and links), so a node visit touches one cache line. The primitives themselves stay with the caller: a
     query calls back with primitive indices.
 
-    Memory: 48 bytes of box and 16 bytes of links per node (at most
-    [2n - 1] nodes, about [n/2] with leaves of ~4), plus 8 bytes per
-    primitive for the index permutation. *)
+    Memory: 64 bytes per node (at most [2n - 1] nodes, about [n/2] with
+    leaves of ~4), plus 8 bytes per primitive for the index permutation. *)
 
 type t
 
@@ -34,3 +33,9 @@ val iter : t -> Ray.t -> float -> float -> (int -> bool) -> bool
 (** [iter b ray tmin tmax f] calls [f i] for primitives whose leaf box meets
     the ray within [(tmin, tmax)], in no particular order, until [f]
     returns [false]; then returns [false]. *)
+
+val renumber : t -> t * int array
+(** [renumber b] is [(b', order)]: the same tree calling back with
+    positions in leaf order, [order.(i)] being the primitive that position
+    [i] stands for. Storing primitives in that order keeps the ones a leaf
+    visits next to each other in memory. *)

@@ -6,7 +6,11 @@ type settings = {
   legacy_alpha : bool;
 }
 
-type accel = { finite : Object.t array; bvh : Bvh.t; infinite : Object.t array }
+(* [finite] is stored in BVH leaf order. [spheres] holds, per finite
+   object, centre and radius when it is a plain sphere (no transform, clip
+   or inversion), radius -1 otherwise: those are tested straight from this
+   flat array, without following pointers to the object. *)
+type accel = { finite : Object.t array; bvh : Bvh.t; infinite : Object.t array; spheres : Float.Array.t }
 
 type t = {
   objects : Object.t array;
@@ -43,9 +47,41 @@ let accelerate objects =
     (fun i (_, (lo : Vec3.t), (hi : Vec3.t)) ->
       List.iteri (fun k v -> Float.Array.set boxes ((6 * i) + k) v) [ lo.x; lo.y; lo.z; hi.x; hi.y; hi.z ])
     finite;
-  { finite = Array.map (fun (o, _, _) -> o) finite; bvh = Bvh.build boxes; infinite = Array.of_list infinite }
+  let bvh, order = Bvh.renumber (Bvh.build boxes) in
+  let finite = Array.map (fun i -> let o, _, _ = finite.(i) in o) order in
+  let spheres = Float.Array.make (4 * Array.length finite) (-1.) in
+  Array.iteri
+    (fun i (o : Object.t) ->
+      match o.geom with
+      | Object.Prim (Shape.Sphere { center; radius })
+        when Transform.is_identity o.xform && Array.length o.clip = 0 && not o.inverted ->
+          Float.Array.set spheres (4 * i) center.x;
+          Float.Array.set spheres ((4 * i) + 1) center.y;
+          Float.Array.set spheres ((4 * i) + 2) center.z;
+          Float.Array.set spheres ((4 * i) + 3) radius
+      | _ -> ())
+    finite;
+  { finite; bvh; infinite = Array.of_list infinite; spheres }
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
+
+(* Nearest root in (tmin, tmax) of the sphere stored at [i], or infinity. *)
+let[@inline] sphere_root sp i rad (r : Ray.t) tmin tmax =
+  let ox = r.origin.x -. Float.Array.unsafe_get sp (4 * i)
+  and oy = r.origin.y -. Float.Array.unsafe_get sp ((4 * i) + 1)
+  and oz = r.origin.z -. Float.Array.unsafe_get sp ((4 * i) + 2) in
+  let dx = r.dir.x and dy = r.dir.y and dz = r.dir.z in
+  let a = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
+  let hb = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
+  let c = (ox *. ox) +. (oy *. oy) +. (oz *. oz) -. (rad *. rad) in
+  let disc = (hb *. hb) -. (a *. c) in
+  if disc < 0. then infinity
+  else
+    let sq = Float.sqrt disc in
+    let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
+    let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
+    let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
+    if lo > tmin && lo < tmax then lo else if hi > tmin && hi < tmax then hi else infinity
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
@@ -58,7 +94,18 @@ let intersect s r tmin tmax =
     for i = 0 to Array.length a.infinite - 1 do
       if Object.hit a.infinite.(i) r tmin h f then any := true
     done;
-    Bvh.nearest a.bvh r tmin h (fun i -> if Object.hit (Array.unsafe_get a.finite i) r tmin h f then any := true);
+    let sp = a.spheres in
+    Bvh.nearest a.bvh r tmin h (fun i ->
+        let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
+        if rad >= 0. then begin
+          let t = sphere_root sp i rad r tmin h.t in
+          if t < h.t then (
+            h.t <- t;
+            h.id <- 0.;
+            f.leaf <- Array.unsafe_get a.finite i;
+            any := true)
+        end
+        else if Object.hit (Array.unsafe_get a.finite i) r tmin h f then any := true);
     if not !any then None
     else
       let point = Ray.at r h.t in
@@ -71,6 +118,20 @@ let occluders s r tmin tmax f =
   let each (o : Object.t) =
     Object.crossings o r tmin tmax (fun (leaf : Object.t) t -> leaf.no_shadow || f leaf t)
   in
-  Array.for_all each a.infinite && Bvh.iter a.bvh r tmin tmax (fun i -> each a.finite.(i))
+  let sp = a.spheres in
+  Array.for_all each a.infinite
+  && Bvh.iter a.bvh r tmin tmax (fun i ->
+         let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
+         if rad < 0. then each a.finite.(i)
+         else
+           let t = sphere_root sp i rad r tmin tmax in
+           t = infinity
+           ||
+           let o = a.finite.(i) in
+           o.no_shadow
+           || f o t
+              &&
+              let t' = sphere_root sp i rad r (Object.next_tmin r t) tmax in
+              t' = infinity || f o t')
 
 let occluded s r tmin tmax = not (occluders s r tmin tmax (fun _ _ -> false))

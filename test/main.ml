@@ -8,4 +8,5 @@ let () =
       Test_bvh.tests;
       Test_object.tests;
       Test_geom_render.tests;
+      Test_bench.tests;
     ]
