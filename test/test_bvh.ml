@@ -19,6 +19,10 @@ let gobj =
       (2, map2 (fun xf s -> let a = Object.make ~xform:xf (Shape.sphere Vec3.zero 1.5) in
                  Object.intersection [| a; Object.invert (Object.make ~xform:xf s) |]) place gshape);
       (1, map2 (fun n d -> Object.make (Shape.plane n d)) gdir (fr (-15.) 15.));
+      (* a union large enough to get its own BVH, alone and inside CSG *)
+      (1, map (fun l -> Object.union (Array.of_list l)) (list_size (return 10) leaf));
+      (1, map2 (fun a l -> Object.intersection [| a; Object.invert (Object.union (Array.of_list l)) |])
+            leaf (list_size (return 12) leaf));
     ]
 
 let gscene = QCheck.Gen.(pair (list_size (int_range 0 60) gobj) (list_size (return 30) (map2 (fun o d -> Ray.make o d) (gvec 15.) gdir)))
@@ -60,6 +64,17 @@ let props =
             (all && !n = 0) || ((not all) && !n = 1)) rays);
   ]
 
+let union_prop =
+  QCheck.Test.make ~name:"a union's own BVH finds the nearest child hit" ~count:200
+    (QCheck.make QCheck.Gen.(pair (list_size (int_range 8 40) gobj) (list_size (return 20) gray)))
+    (fun (l, rays) ->
+      let cs = Array.of_list l in
+      let u = Object.union cs in
+      u.index <> None
+      && List.for_all (fun r ->
+             let t, _ = brute cs r in
+             Object.intersect u r 1e-9 infinity = t) rays)
+
 let boxes l = Float.Array.of_list (List.concat_map (fun (a, b) -> [ a; a; a; b; b; b ]) l)
 
 let units =
@@ -83,4 +98,4 @@ let units =
         Alcotest.(check (list int)) "only box 10" [ 10 ] !seen);
   ]
 
-let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest props)
+let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest (union_prop :: props))
