@@ -3,17 +3,23 @@
    for a leaf, the first entry in [prims] and the primitive count (> 0);
    for an interior node, the index of its second child (the first is k+1)
    and -(axis+1) for the axis it was split along. *)
-type t = { nodes : Float.Array.t; prims : int array; depth : int }
+type f32 = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+type t = { nodes : f32; prims : int array; depth : int }
 
 let size b = Array.length b.prims
-let nodes b = Float.Array.length b.nodes / 8
+let nodes b = Bigarray.Array1.dim b.nodes / 8
+let nget (a : f32) i = Bigarray.Array1.unsafe_get a i
+
+(* Node indices and primitive offsets are stored in float32: exact below
+   2^24. *)
+let max_prims = 1 lsl 23
 let fget = Float.Array.unsafe_get
 let fset = Float.Array.unsafe_set
 
 let bounds b =
-  if Float.Array.length b.nodes = 0 then None
+  if Bigarray.Array1.dim b.nodes = 0 then None
   else
-    let g = fget b.nodes in
+    let g = nget b.nodes in
     Some (Vec3.make (g 0) (g 1) (g 2), Vec3.make (g 3) (g 4) (g 5))
 
 (* fmin/max call C (signbit) to order NaN and -0; boxes hold neither *)
@@ -25,8 +31,13 @@ let half_area x0 y0 z0 x1 y1 z1 =
   let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
   (dx *. dy) +. (dy *. dz) +. (dz *. dx)
 
+(* float32 copies of box bounds, rounded outward: a box only grows *)
+let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 else x
+let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
+
 let build ?(leaf_size = 4) boxes =
   let n = Float.Array.length boxes / 6 in
+  if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
   let prims = Array.init n Fun.id in
   let cent = Float.Array.create (3 * n) in
   for i = 0 to n - 1 do
@@ -172,15 +183,25 @@ let build ?(leaf_size = 4) boxes =
   in
   if n > 0 then ignore (node 0 n 1);
   let c = !count in
+  let out = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (8 * c) in
+  for k = 0 to c - 1 do
+    for a = 0 to 2 do
+      out.{(8 * k) + a} <- down (fget nodes ((8 * k) + a));
+      out.{(8 * k) + 3 + a} <- up (fget nodes ((8 * k) + 3 + a))
+    done;
+    out.{(8 * k) + 6} <- fget nodes ((8 * k) + 6);
+    out.{(8 * k) + 7} <- fget nodes ((8 * k) + 7)
+  done;
   {
-    nodes = Float.Array.sub nodes 0 (8 * c);
+    nodes = out;
     prims;
     depth = !max_depth + 1;
   }
 
 (* Slab test against box k within (t0, t1). *)
-let[@inline] box_hit nodes k ox oy oz ix iy iz t0 t1 =
+let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
   let o = 8 * k in
+  let fget = nget in
   let ax = (fget nodes o -. ox) *. ix and bx = (fget nodes (o + 3) -. ox) *. ix in
   let ay = (fget nodes (o + 1) -. oy) *. iy and by = (fget nodes (o + 4) -. oy) *. iy in
   let az = (fget nodes (o + 2) -. oz) *. iz and bz = (fget nodes (o + 5) -. oz) *. iz in
@@ -191,7 +212,7 @@ let[@inline] box_hit nodes k ox oy oz ix iy iz t0 t1 =
 let inv d = if d = 0. then 1e300 else 1. /. d
 
 let nearest b (r : Ray.t) tmin (h : Hit.t) f =
-  if Float.Array.length b.nodes > 0 then begin
+  if Bigarray.Array1.dim b.nodes > 0 then begin
     let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
     let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
     let stack = Array.make b.depth 0 in
@@ -200,16 +221,16 @@ let nearest b (r : Ray.t) tmin (h : Hit.t) f =
     while !go do
       let kk = !k in
       if box_hit nodes kk ox oy oz ix iy iz tmin h.t then begin
-        let c = int_of_float (fget nodes ((8 * kk) + 7)) in
+        let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
-          let first = int_of_float (fget nodes ((8 * kk) + 6)) in
+          let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           for j = first to first + c - 1 do
             f (Array.unsafe_get b.prims j)
           done;
           if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          let right = int_of_float (fget nodes ((8 * kk) + 6)) in
+          let right = int_of_float (nget nodes ((8 * kk) + 6)) in
           let neg = match c with -1 -> ix < 0. | -2 -> iy < 0. | _ -> iz < 0. in
           if neg then (stack.(!sp) <- kk + 1; k := right)
           else (stack.(!sp) <- right; k := kk + 1);
@@ -221,7 +242,7 @@ let nearest b (r : Ray.t) tmin (h : Hit.t) f =
   end
 
 let iter b (r : Ray.t) tmin tmax f =
-  if Float.Array.length b.nodes = 0 then true
+  if Bigarray.Array1.dim b.nodes = 0 then true
   else begin
     let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
     let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
@@ -231,15 +252,15 @@ let iter b (r : Ray.t) tmin tmax f =
     while !go do
       let kk = !k in
       if box_hit nodes kk ox oy oz ix iy iz tmin tmax then begin
-        let c = int_of_float (fget nodes ((8 * kk) + 7)) in
+        let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
-          let first = int_of_float (fget nodes ((8 * kk) + 6)) in
+          let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
           while !j < first + c && f (Array.unsafe_get b.prims !j) do incr j done;
           if !j < first + c then (ok := false; go := false) else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          stack.(!sp) <- int_of_float (fget nodes ((8 * kk) + 6));
+          stack.(!sp) <- int_of_float (nget nodes ((8 * kk) + 6));
           incr sp;
           k := kk + 1
         end

@@ -7,8 +7,8 @@ type settings = {
 }
 
 (* [finite] is stored in BVH leaf order. [spheres] holds, per finite
-   object, centre and radius when it is a plain sphere (no transform, clip
-   or inversion), radius -1 otherwise: those are tested straight from this
+   object, centre and radius when it is a plain sphere (no transform, clip,
+   inversion or no_shadow), radius -1 otherwise: those are tested straight from this
    flat array, without following pointers to the object. *)
 type accel = { finite : Object.t array; bvh : Bvh.t; infinite : Object.t array; spheres : Float.Array.t }
 
@@ -54,7 +54,7 @@ let accelerate objects =
     (fun i (o : Object.t) ->
       match o.geom with
       | Object.Prim (Shape.Sphere { center; radius })
-        when Transform.is_identity o.xform && Array.length o.clip = 0 && not o.inverted ->
+        when Transform.is_identity o.xform && Array.length o.clip = 0 && (not o.inverted) && not o.no_shadow ->
           Float.Array.set spheres (4 * i) center.x;
           Float.Array.set spheres ((4 * i) + 1) center.y;
           Float.Array.set spheres ((4 * i) + 2) center.z;
@@ -101,7 +101,7 @@ let intersect s r tmin tmax =
           let t = sphere_root sp i rad r tmin h.t in
           if t < h.t then (
             h.t <- t;
-            h.id <- 0.;
+            h.id <- -.float i -. 1.;
             f.leaf <- Array.unsafe_get a.finite i;
             any := true)
         end
@@ -109,7 +109,18 @@ let intersect s r tmin tmax =
     if not !any then None
     else
       let point = Ray.at r h.t in
-      Some { t = h.t; obj = f.leaf; point; normal = Object.normal f.leaf point h }
+      let normal =
+        if h.id >= 0. then Object.normal f.leaf point h
+        else
+          (* a flat-array sphere: its normal without touching the object *)
+          let i = 4 * int_of_float (-.h.id -. 1.) and sp = a.spheres in
+          let k = 1. /. Float.Array.get sp (i + 3) in
+          Vec3.make
+            ((point.x -. Float.Array.get sp i) *. k)
+            ((point.y -. Float.Array.get sp (i + 1)) *. k)
+            ((point.z -. Float.Array.get sp (i + 2)) *. k)
+      in
+      Some { t = h.t; obj = f.leaf; point; normal }
 
 (* Every crossing matters for coloured shadows: each object crossed walks
    all its surface crossings; the BVH skips objects whose box is missed. *)
@@ -128,8 +139,7 @@ let occluders s r tmin tmax f =
            t = infinity
            ||
            let o = a.finite.(i) in
-           o.no_shadow
-           || f o t
+           f o t
               &&
               let t' = sphere_root sp i rad r (Object.next_tmin r t) tmax in
               t' = infinity || f o t')
