@@ -104,27 +104,20 @@ let mesh_data kind n =
   done;
   (verts, faces)
 
-let heap_bytes () =
-  Gc.full_major ();
-  float (Gc.quick_stat ()).heap_words *. float (Sys.word_size / 8)
-
 let mesh ~width ~height ~domains kind n =
   let verts, faces = mesh_data kind n in
-  let before = heap_bytes () in
   let m, t_build =
     time (fun () -> Mesh.make ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None)
   in
-  let after = heap_bytes () in
   let tris = Mesh.triangles m in
   let texture = [ { Texture.pigment = Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. };
                     finish = Finish.default } ] in
   let base = compile header in
   let objects = [| Object.make ~texture (Shape.Mesh m) |] in
   let s = { base with objects; accel = Scene.accelerate objects } in
-  ignore (Sys.opaque_identity m);
   { kind = (match kind with `Sphere -> "sphere mesh" | `Terrain -> "terrain mesh"); count = tris;
     parse_s = 0.; build_s = t_build; trace_s = trace ~width ~height ~domains s;
-    bytes_per_prim = (after -. before) /. float tris }
+    bytes_per_prim = float (Mesh.bytes m) /. float tris }
 
 let run ?(sizes = [ 10; 1000; 100_000; 1_000_000 ]) ?(width = 320) ?(height = 240) ?(domains = 1) () =
   List.concat_map

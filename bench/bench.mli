@@ -10,7 +10,7 @@ type row = {
   parse_s : float;  (** scene text to compiled scene, BVH excluded *)
   build_s : float;  (** BVH build (scene level, or mesh level) *)
   trace_s : float;  (** Whitted render of the image *)
-  bytes_per_prim : float;  (** heap growth / count (meshes) *)
+  bytes_per_prim : float;  (** {!Camlray.Mesh.bytes} / triangles (meshes) *)
 }
 
 val run : ?sizes:int list -> ?width:int -> ?height:int -> ?domains:int -> unit -> row list

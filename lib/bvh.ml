@@ -271,3 +271,5 @@ let iter b (r : Ray.t) tmin tmax f =
   end
 
 let renumber b = ({ b with prims = Array.init (Array.length b.prims) Fun.id }, Array.copy b.prims)
+
+let bytes b = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)

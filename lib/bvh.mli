@@ -1,10 +1,11 @@
 (** Bounding volume hierarchies over primitives given only by their
     axis-aligned boxes: a binned SAH build, flattened depth first (a node's
-    first child follows it) into one float array, 64 bytes per node (box
-    and links), so a node visit touches one cache line. The primitives themselves stay with the caller: a
+    first child follows it) into one float32 array, 32 bytes per node (box
+    rounded outward, and links), so a node visit touches one cache line.
+    At most 2^23 primitives. The primitives themselves stay with the caller: a
     query calls back with primitive indices.
 
-    Memory: 64 bytes per node (at most [2n - 1] nodes, about [n/2] with
+    Memory: 32 bytes per node (at most [2n - 1] nodes, about [n/2] with
     leaves of ~4), plus 8 bytes per primitive for the index permutation. *)
 
 type t
@@ -19,6 +20,9 @@ val size : t -> int
 (** Number of primitives. *)
 
 val nodes : t -> int
+
+val bytes : t -> int
+(** Memory held: 32 bytes per node (float32 boxes), 8 per primitive. *)
 
 val bounds : t -> (Vec3.t * Vec3.t) option
 (** The root box; [None] when there are no primitives. *)

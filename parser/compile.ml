@@ -88,6 +88,8 @@ let positive (o : Sdl.obj) what r =
   if not (r > 0.) then Diag.error o.loc "%s must be positive, found %g" what r
 
 let mesh (o : Sdl.obj) (m : Sdl.mesh) =
+  if Array.length m.faces / 3 > 1 lsl 23 then
+    Diag.error o.loc "a mesh is limited to 2^23 (8388608) triangles, found %d" (Array.length m.faces / 3);
   let mm =
     Mesh.make ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
       ~inside_vector:m.inside_vector

@@ -5,6 +5,15 @@
 open Camlray
 
 let scenes = [
+    ("open", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -5> look_at <0, 0, 0> }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+cylinder { <-1.2, -1, 0>, <-1.2, 1, 0>, 0.8 open pigment { rgb <0.9,0.5,0.2> } }
+cone { <1.2, -1, 0>, 0.3, <1.2, 1, 0>, 0.9 open pigment { rgb <0.2,0.5,0.9> } }
+disc { <0,-1,0>, y, 3 pigment { rgb 0.8 } }
+|pov});
     ("shapes", {pov|#version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -9> look_at <0, 0.5, 0> right x*4/3 }
