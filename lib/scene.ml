@@ -31,24 +31,35 @@ let default_settings =
   }
 
 let accelerate objects =
-  let bounded, infinite =
-    List.partition_map
-      (fun (o : Object.t) ->
-        match o.bounds with
-        | Some ((lo : Vec3.t), (hi : Vec3.t)) when Vec3.is_finite lo && Vec3.is_finite hi ->
-            if lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z then Left (Some (o, lo, hi))
-            else Left None (* empty: an intersection of disjoint solids *)
-        | _ -> Right o)
-      (Array.to_list objects)
+  let box (o : Object.t) =
+    match o.bounds with
+    | Some ((lo : Vec3.t), (hi : Vec3.t)) when Vec3.is_finite lo && Vec3.is_finite hi -> Some (lo, hi)
+    | _ -> None
   in
-  let finite = Array.of_list (List.filter_map Fun.id bounded) in
-  let boxes = Float.Array.create (6 * Array.length finite) in
-  Array.iteri
-    (fun i (_, (lo : Vec3.t), (hi : Vec3.t)) ->
-      List.iteri (fun k v -> Float.Array.set boxes ((6 * i) + k) v) [ lo.x; lo.y; lo.z; hi.x; hi.y; hi.z ])
-    finite;
+  let nonempty ((lo : Vec3.t), (hi : Vec3.t)) = lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z in
+  let infinite = List.filter (fun o -> box o = None) (Array.to_list objects) in
+  (* empty boxes (an intersection of disjoint solids) are dropped *)
+  let n = Array.fold_left (fun n o -> match box o with Some b when nonempty b -> n + 1 | _ -> n) 0 objects in
+  let finite = if n = 0 then [||] else Array.make n objects.(0) in
+  let boxes = Float.Array.create (6 * n) in
+  let k = ref 0 in
+  Array.iter
+    (fun o ->
+      match box o with
+      | Some ((lo, hi) as b) when nonempty b ->
+          let i = !k in
+          finite.(i) <- o;
+          Float.Array.set boxes (6 * i) lo.x;
+          Float.Array.set boxes ((6 * i) + 1) lo.y;
+          Float.Array.set boxes ((6 * i) + 2) lo.z;
+          Float.Array.set boxes ((6 * i) + 3) hi.x;
+          Float.Array.set boxes ((6 * i) + 4) hi.y;
+          Float.Array.set boxes ((6 * i) + 5) hi.z;
+          incr k
+      | _ -> ())
+    objects;
   let bvh, order = Bvh.renumber (Bvh.build boxes) in
-  let finite = Array.map (fun i -> let o, _, _ = finite.(i) in o) order in
+  let finite = Array.map (fun i -> finite.(i)) order in
   let spheres = Float.Array.make (4 * Array.length finite) (-1.) in
   Array.iteri
     (fun i (o : Object.t) ->

@@ -64,21 +64,32 @@ let hit_sphere (center : Vec3.t) radius (r : Ray.t) tmin (h : Hit.t) =
     let lo = Float.min t0 t1 and hi = Float.max t0 t1 in
     accept h tmin lo 0. || accept h tmin hi 0.
 
+(* Slab test along one axis, updating the entry (tn, face fn) and exit (tf,
+   face ff) of the running interval; allocation-free. Returns false on a
+   miss (ray parallel to the slab and outside it). *)
+let[@inline] slab o d l u axis (a : Hit.t) =
+  if d = 0. then o >= l && o <= u
+  else begin
+    let p = (l -. o) /. d and q = (u -. o) /. d in
+    let near = if p < q then p else q and far = if p < q then q else p in
+    let lo_face = 2. *. axis in
+    if near > a.t then (
+      a.t <- near;
+      a.u <- (if p < q then lo_face else lo_face +. 1.));
+    if far < a.v then (
+      a.v <- far;
+      a.id <- (if p < q then lo_face +. 1. else lo_face));
+    true
+  end
+
 let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.t) tmin (h : Hit.t) =
-  (* entry and exit distances with the face each one crosses *)
-  let tn = ref neg_infinity and tf = ref infinity and fn = ref 0. and ff = ref 0. and miss = ref false in
-  let slab o d l u axis =
-    if d = 0. then (if o < l || o > u then miss := true)
-    else
-      let a = (l -. o) /. d and b = (u -. o) /. d in
-      let near, far, nf, xf = if a < b then (a, b, 2. *. axis, (2. *. axis) +. 1.) else (b, a, (2. *. axis) +. 1., 2. *. axis) in
-      if near > !tn then (tn := near; fn := nf);
-      if far < !tf then (tf := far; ff := xf)
-  in
-  slab r.origin.x r.dir.x lo.x hi.x 0.;
-  slab r.origin.y r.dir.y lo.y hi.y 1.;
-  slab r.origin.z r.dir.z lo.z hi.z 2.;
-  (not !miss) && !tn <= !tf && (accept h tmin !tn !fn || accept h tmin !tf !ff)
+  (* the scratch holds entry distance and face (t, u), exit (v, id) *)
+  let a = { Hit.t = neg_infinity; u = 0.; v = infinity; id = 0. } in
+  slab r.origin.x r.dir.x lo.x hi.x 0. a
+  && slab r.origin.y r.dir.y lo.y hi.y 1. a
+  && slab r.origin.z r.dir.z lo.z hi.z 2. a
+  && a.t <= a.v
+  && (accept h tmin a.t a.u || accept h tmin a.v a.id)
 
 let hit_cone ~(base : Vec3.t) ~axis ~u ~v ~length ~r0 ~r1 ~open_ (r : Ray.t) tmin (h : Hit.t) =
   let o = Vec3.sub r.origin base in
