@@ -91,41 +91,46 @@ let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.t) tmin (h : Hit.t) =
   && a.t <= a.v
   && (accept h tmin a.t a.u || accept h tmin a.v a.id)
 
+let[@inline] cone_side oz dz length tmin (h : Hit.t) t =
+  let z = oz +. (t *. dz) in
+  z >= 0. && z <= length && accept h tmin t 0.
+
+let[@inline] cone_cap ox oy oz dx dy dz tmin (h : Hit.t) zc rc id =
+  let t = (zc -. oz) /. dz in
+  let x = ox +. (t *. dx) and y = oy +. (t *. dy) in
+  (x *. x) +. (y *. y) <= rc *. rc && accept h tmin t id
+
+(* In the cone's frame (u, v, axis) the side is x^2 + y^2 = (r0 + k z)^2,
+   0 <= z <= length; the caps are discs at z = 0 and z = length. *)
 let hit_cone ~(base : Vec3.t) ~axis ~u ~v ~length ~r0 ~r1 ~open_ (r : Ray.t) tmin (h : Hit.t) =
   let o = Vec3.sub r.origin base in
   let ox = Vec3.dot o u and oy = Vec3.dot o v and oz = Vec3.dot o axis in
   let dx = Vec3.dot r.dir u and dy = Vec3.dot r.dir v and dz = Vec3.dot r.dir axis in
   let k = (r1 -. r0) /. length in
-  let found = ref false in
-  let side t =
-    let z = oz +. (t *. dz) in
-    if z >= 0. && z <= length && accept h tmin t 0. then found := true
-  in
   let rz0 = r0 +. (k *. oz) in
   let a = (dx *. dx) +. (dy *. dy) -. (k *. k *. dz *. dz) in
   let hb = (ox *. dx) +. (oy *. dy) -. (rz0 *. k *. dz) in
   let c = (ox *. ox) +. (oy *. oy) -. (rz0 *. rz0) in
-  if Float.abs a > 1e-12 *. ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) then begin
-    let disc = (hb *. hb) -. (a *. c) in
-    if disc >= 0. then begin
+  let side =
+    if Float.abs a > 1e-12 *. ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) then begin
+      let disc = (hb *. hb) -. (a *. c) in
+      disc >= 0.
+      &&
       let sq = Float.sqrt disc in
       let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
       let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
-      side (Float.min t0 t1);
-      side (Float.max t0 t1)
+      let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
+      let f0 = cone_side oz dz length tmin h lo in
+      let f1 = cone_side oz dz length tmin h hi in
+      f0 || f1
     end
-  end
-  else if hb <> 0. then side (-.c /. (2. *. hb));
-  if (not open_) && dz <> 0. then begin
-    let cap zc rc id =
-      let t = (zc -. oz) /. dz in
-      let x = ox +. (t *. dx) and y = oy +. (t *. dy) in
-      if (x *. x) +. (y *. y) <= rc *. rc && accept h tmin t id then found := true
-    in
-    cap 0. r0 1.;
-    cap length r1 2.
-  end;
-  !found
+    else hb <> 0. && cone_side oz dz length tmin h (-.c /. (2. *. hb))
+  in
+  if (not open_) && dz <> 0. then
+    let c0 = cone_cap ox oy oz dx dy dz tmin h 0. r0 1. in
+    let c1 = cone_cap ox oy oz dx dy dz tmin h length r1 2. in
+    side || c0 || c1
+  else side
 
 let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
   let dl = Vec3.length r.dir in
