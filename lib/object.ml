@@ -55,8 +55,31 @@ let rec solid_box o =
 
 let clip_box clip b = Array.fold_left (fun b c -> box_inter b (solid_box c)) b clip
 
+(* The scale factor of a similarity (rotation, uniform scale, translation),
+   or [None]. *)
+let similarity xf =
+  let c0 = Transform.vector xf Vec3.unit_x and c1 = Transform.vector xf Vec3.unit_y
+  and c2 = Transform.vector xf Vec3.unit_z in
+  let l0 = Vec3.length2 c0 in
+  let close a b = Float.abs (a -. b) <= 1e-12 *. l0 in
+  if close (Vec3.length2 c1) l0 && close (Vec3.length2 c2) l0 && close (Vec3.dot c0 c1) 0.
+     && close (Vec3.dot c1 c2) 0. && close (Vec3.dot c0 c2) 0. && l0 > 0.
+  then Some (Float.sqrt l0)
+  else None
+
+(* A sphere moved by a similarity is a sphere: no transform to apply per
+   ray (and the scene tests it from a flat array). *)
+let fold xform shape =
+  match shape with
+  | Shape.Sphere { center; radius } when not (Transform.is_identity xform) -> (
+      match similarity xform with
+      | Some k -> (Transform.identity, Shape.sphere (Transform.point xform center) (k *. radius))
+      | None -> (xform, shape))
+  | _ -> (xform, shape)
+
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
+  let xform, shape = fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
   { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b; index = None }
 

@@ -35,7 +35,8 @@ and index = {
 val make :
   ?xform:Transform.t -> ?texture:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
   ?inverted:bool -> ?clip:t array -> Shape.t -> t
-(** A leaf. *)
+(** A leaf. A sphere under a similarity (rotations, uniform scales,
+    translations) is stored moved, with the identity transform. *)
 
 val union : ?clip:t array -> t array -> t
 (** With 8 children or more, they get their own BVH. *)
