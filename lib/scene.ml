@@ -74,6 +74,9 @@ let accelerate objects =
     finite;
   { finite; bvh; infinite = Array.of_list infinite; spheres }
 
+let make ~objects ~lights ~camera ~background ~settings =
+  { objects; lights; camera; background; settings; accel = accelerate objects }
+
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 
 (* Nearest root in (tmin, tmax) of the sphere stored at [i], or infinity. *)

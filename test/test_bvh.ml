@@ -4,8 +4,8 @@ open Camlray
 open Geom_gen
 
 let scene objects =
-  { Scene.objects; lights = [||]; camera = Camera.default; background = Color.black;
-    settings = Scene.default_settings; accel = Scene.accelerate objects }
+  Scene.make ~objects ~lights:[||] ~camera:Camera.default ~background:Color.black
+    ~settings:Scene.default_settings
 
 (* random objects spread over a 20-unit cube, some CSG, some infinite *)
 let gobj =
