@@ -15,6 +15,8 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  aa : float option;  (** anti-aliasing threshold (POV-Ray's +A) *)
+  aa_depth : int;  (** POV-Ray's +R *)
 }
 
 exception Fail of string
@@ -35,7 +37,11 @@ let validate o =
       (o.width * o.height) max_pixels;
   check_range "--spp" o.spp 1 1_000_000;
   Option.iter (fun d -> check_range "--depth" d 1 256) o.depth;
-  Option.iter (fun d -> check_range "--domains" d 1 256) o.domains
+  Option.iter (fun d -> check_range "--domains" d 1 256) o.domains;
+  check_range "--aa-depth" o.aa_depth 1 9;
+  Option.iter
+    (fun t -> if not (t >= 0. && t <= 3.) then fail "--aa must be between 0 and 3, got %g" t)
+    o.aa
 
 let load ~options scene =
   match scene with
@@ -113,6 +119,8 @@ let render o =
         let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
         if o.mode = Whitted && o.spp <> 64 && not o.quiet then
           prerr_endline "camlray: warning: --spp is ignored in whitted mode";
+        if o.mode = Monte_carlo && o.aa <> None && not o.quiet then
+          prerr_endline "camlray: warning: --aa is ignored in mc mode";
         let scene =
           match (o.mode, o.depth) with
           | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
@@ -134,10 +142,14 @@ let render o =
             last := now;
             progress_bar ~start:t1 ~done_ ~total)
         in
+        let cancelled () = Atomic.get cancelled in
         let img =
           with_signals (fun () ->
-              Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled) ~width
-                ~height pixel)
+              match (o.mode, o.aa) with
+              | Whitted, Some threshold ->
+                  Aa.render ~domains ~progress ~cancelled ~width ~height ~threshold
+                    ~depth:o.aa_depth (Whitted.sample scene ~width ~height)
+              | _ -> Render.image ~domains ~progress ~cancelled ~width ~height pixel)
         in
         if tty then prerr_newline ();
         let t2 = Unix.gettimeofday () in

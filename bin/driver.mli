@@ -16,6 +16,8 @@ type render_opts = {
   seed : int;
   quiet : bool;
   include_dirs : string list;
+  aa : float option;  (** anti-aliasing threshold ([--aa]); [None]: off *)
+  aa_depth : int;  (** [--aa-depth], 1..9 *)
 }
 
 val render : render_opts -> int

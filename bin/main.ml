@@ -17,6 +17,20 @@ let scene_arg =
          ~doc:"The scene file ($(b,.scn) or $(b,.pov)). Without it, camlray renders its \
                built-in default scene.")
 
+let aa_args =
+  let aa =
+    Arg.(value & opt (some float) None & info [ "aa" ] ~docv:"THRESHOLD"
+           ~doc:"Anti-alias as POV-Ray's $(b,+A)$(docv) (sampling method 1, no jitter): \
+                 supersample pixels whose gamma-encoded colour differs from a neighbour's by \
+                 at least $(docv) (POV-Ray's default is 0.3). Off when absent. Whitted mode only.")
+  in
+  let depth =
+    Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N"
+           ~doc:"Supersample with an $(docv) x $(docv) grid plus the centre (POV-Ray's \
+                 $(b,+R)$(docv)), 1 to 9.")
+  in
+  Term.(const (fun a d -> (a, d)) $ aa $ depth)
+
 let render_cmd =
   let output =
     Arg.(value & opt (some string) None & info [ "o"; "output" ] ~docv:"OUT"
@@ -47,13 +61,14 @@ let render_cmd =
   in
   let seed = Arg.(value & opt int 0 & info [ "seed" ] ~docv:"N" ~doc:"Random seed (mc mode).") in
   let quiet = Arg.(value & flag & info [ "quiet"; "q" ] ~doc:"Print nothing but errors.") in
-  let run scene output width height mode spp depth domains seed quiet include_dirs =
+  let run scene output width height mode spp depth domains seed quiet include_dirs (aa, aa_depth) =
     Driver.render
-      { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs }
+      { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
+        aa; aa_depth }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
-          $ quiet $ include_path)
+          $ quiet $ include_path $ aa_args)
   in
   let man =
     [ `S Manpage.s_description;
@@ -83,7 +98,7 @@ let main =
       `Pre "  camlray render scenes/default.scn -o out.png\n  camlray check scene.scn" ]
   in
   Cmd.group (Cmd.info "camlray" ~version:"0.1.0" ~doc:"multicore ray tracer for POV-Ray scenes" ~man)
-    [ render_cmd; check_cmd ]
+    [ render_cmd; check_cmd; Compare.cmd ~aa_args ~include_path ]
 
 let () =
   let err_buf = Buffer.create 256 in

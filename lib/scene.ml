@@ -11,6 +11,7 @@ type t = {
   lights : Light.t array;
   camera : Camera.t;
   background : Color.t;
+  sky : Sky.t;
   settings : settings;
 }
 

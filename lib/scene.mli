@@ -15,6 +15,7 @@ type t = {
   lights : Light.t array;
   camera : Camera.t;
   background : Color.t;
+  sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
   settings : settings;
 }
 

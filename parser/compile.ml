@@ -82,6 +82,11 @@ let light (o : Sdl.obj) (l : Sdl.light) =
     fade_distance = l.fade_distance;
     fade_power = l.fade_power;
     shadowless = l.shadowless;
+    area =
+      Option.map
+        (fun (a : Light.area) ->
+          { a with axis1 = Transform.vector x a.axis1; axis2 = Transform.vector x a.axis2 })
+        l.area;
   }
 
 let shape (o : Sdl.obj) =
@@ -96,17 +101,27 @@ let scene (s : Sdl.scene) =
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
+    let sky = ref Sky.none in
+    let add_object (o : Sdl.obj) =
+      let texture = match o.texture with Some t -> t | None -> Texture.default in
+      let interior = Option.value ~default:Interior.default o.interior in
+      objects :=
+        Object.make ~xform:o.xform ~texture ~interior ~no_shadow:o.no_shadow (shape o) :: !objects
+    in
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
       (function
-        | Sdl.Object ({ shape = Sdl.Light l; _ } as o) -> lights := light o l :: !lights
-        | Sdl.Object o ->
-            let texture = match o.texture with Some t -> t | None -> Texture.default in
-            let interior = Option.value ~default:Interior.default o.interior in
-            objects :=
-              Object.make ~xform:o.xform ~texture ~interior ~no_shadow:o.no_shadow (shape o)
-              :: !objects
+        | Sdl.Object ({ shape = Sdl.Light l; _ } as o) ->
+            lights := light o l :: !lights;
+            (* looks_like: an ordinary object at the light, casting no shadow *)
+            Option.iter
+              (fun (ll : Sdl.obj) ->
+                let at = Transform.then_ (Transform.translate l.position) o.xform in
+                add_object { (Sdl.transform_obj at ll) with no_shadow = true })
+              l.looks_like
+        | Sdl.Object o -> add_object o
+        | Sdl.Sky_sphere k -> sky := k
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
         | Sdl.Global_settings (_, gs) ->
@@ -133,6 +148,7 @@ let scene (s : Sdl.scene) =
         lights = Array.of_list (List.rev !lights);
         camera;
         background = !background;
+        sky = !sky;
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }
   with Diag.Error d -> Error d

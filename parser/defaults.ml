@@ -4,14 +4,14 @@ let version_ = ref 3.62
 let given = ref false
 let first = ref None
 let items_seen = ref false
-let tex = ref { Texture.pigment = Pigment.black; finish = Finish.default }
+let tex = ref (Texture.layer Pigment.black Finish.default)
 
 let reset () =
   version_ := 3.62;
   given := false;
   first := None;
   items_seen := false;
-  tex := { Texture.pigment = Pigment.black; finish = Finish.default }
+  tex := Texture.layer Pigment.black Finish.default
 
 let version () = !version_
 

@@ -17,3 +17,6 @@ let nonzero_scale l (v : Vec3.t) =
   let fix c = if c = 0. then (Diag.warning (loc l) "zero scale component replaced by 1"; 1.) else c in
   Vec3.make (fix v.x) (fix v.y) (fix v.z)
 
+let area_field f (o : Sdl.obj) = match o.shape with
+  | Sdl.Light ({ area = Some a; _ } as l) -> { o with shape = Sdl.Light { l with area = Some (f a) } }
+  | _ -> o

@@ -13,3 +13,5 @@ val light_field : (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
 
 val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlray.Vec3.t
 (** POV-Ray replaces zero scale components by 1, with a warning. *)
+val area_field : (Camlray.Light.area -> Camlray.Light.area) -> Sdl.obj -> Sdl.obj
+(** Change the area-light settings of a light (no effect before [area_light]). *)

@@ -6,13 +6,20 @@
 %token TEXTURE PIGMENT FINISH INTERIOR
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR
+%token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
+%token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION
+%token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
+%token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
+%token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
+%token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
 
 %%
 
 %public object_:
   | LIGHT_SOURCE LBRACE p = param COMMA? c = color_value ms = list(light_mod) RBRACE
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
-                  kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false } in
+                  kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
+                  area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
                   texture = None; interior = None; no_shadow = false; hollow = false } in
         List.fold_left (fun o f -> f o) o ms }
@@ -37,6 +44,19 @@
   | FADE_DISTANCE e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_distance = d }) }
   | FADE_POWER e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_power = d }) }
   | SHADOWLESS { light_field (fun l -> { l with shadowless = true }) }
+  | AREA_LIGHT a = param COMMA? b = param COMMA? n1 = param COMMA? n2 = param
+      { let a = v3 $loc(a) a and b = v3 $loc(b) b in
+        let n1 = Value.to_int (loc $loc(n1)) n1 and n2 = Value.to_int (loc $loc(n2)) n2 in
+        if n1 < 1 || n2 < 1 then Diag.error (loc $loc) "area_light needs at least 1 sample along each axis";
+        light_field (fun l -> { l with area = Some (Light.area a b n1 n2) }) }
+  | ADAPTIVE e = param { let k = Value.to_int (loc $loc(e)) e in area_field (fun a -> { a with adaptive = k }) }
+  | JITTER { area_field (fun a -> { a with jitter = true }) }
+  | CIRCULAR { area_field (fun a -> { a with circular = true }) }
+  | ORIENT { area_field (fun a -> { a with orient = true }) }
+  | AREA_ILLUMINATION %prec below_shift { area_field (fun a -> { a with area_illumination = true }) }
+  | AREA_ILLUMINATION b = param
+      { let on = Value.to_bool (loc $loc) b in area_field (fun a -> { a with area_illumination = on }) }
+  | LOOKS_LIKE LBRACE o = object_ RBRACE { light_field (fun l -> { l with looks_like = Some o }) }
 
 %public color_value_noprefix: k = RGB e = unary { Value.to_rgb (loc $loc) (Value.rgb_kind (loc $loc) k e) }
 
@@ -47,16 +67,135 @@
 
 %public texture_mod:
   | PIGMENT LBRACE p = pigment_body RBRACE { fun (l : Texture.layer) -> { l with pigment = p } }
+  | NORMAL LBRACE n = normal_body RBRACE { fun (l : Texture.layer) -> { l with normal = n } }
   | FINISH LBRACE f = finish_body RBRACE { fun (l : Texture.layer) -> { l with finish = f } }
-  | transformation { fun l -> l }
+  | t = transformation { Texture.transform_layer t }
+
+%public object_mod:
+  | NORMAL LBRACE n = normal_body RBRACE { with_texture (fun l -> { l with Texture.normal = n }) }
+
+%public item:
+  | SKY_SPHERE LBRACE ms = list(sky_item) RBRACE
+      { Sdl.Sky_sphere (List.fold_left (fun k f -> f k) Sky.none ms) }
+
+%public sky_item:
+  | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { Sky.pigments = p :: k.pigments } }
+  | t = transformation { Sky.transform t }
 
 %public pigment_body:
-  | p = PIGMENT_ID ms = list(pigment_mod) { ignore ms; p }
-  | c = color_value ms = list(pigment_mod) { ignore ms; Pigment.solid (Value.to_color (loc $loc(c)) c) }
-  | ms = list(pigment_mod) { ignore ms; (Defaults.texture ()).pigment }
+  | p = PIGMENT_ID ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment p))) }
+  | c = color_value ms = list(pigment_mod)
+      { Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) }
+  | k = pattern_kind ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pattern k))) }
+  | k = block_kind cs = block_cells ms = list(pigment_mod)
+      { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
+  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
+      { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
+        Texdesc.(pigment (apply ms (of_pigment p))) }
+  | ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment (Defaults.texture ()).pigment))) }
+
+%public block_cells:
+  | { [] }
+  | c = block_cell COMMA? cs = block_cells { c :: cs }
+
+%public block_cell:
+  | c = cell_color { Pigment.solid (Value.to_color (loc $loc(c)) c) }
+  | PIGMENT LBRACE p = pigment_body RBRACE { p }
+
+(* a colour in a list without separators: no comparisons at the top level *)
+%public cell_color:
+  | e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+
+%public image_item:
+  | ONCE { fun (i : Pigment.image) -> { i with once = true } }
+  | INTERPOLATE e = param { let n = Value.to_int (loc $loc(e)) e in fun (i : Pigment.image) -> { i with interpolate = n > 0 } }
+  | MAP_TYPE e = param
+      { if Value.to_int (loc $loc(e)) e <> 0 then Diag.warning (loc $loc) "only map_type 0 (planar) is supported";
+        fun i -> i }
+  | c = CHANNEL ALL e = param
+      { let x = fl $loc(e) e in
+        fun (i : Pigment.image) -> { i with px = Array.map (fun (p : Color.rgbft) ->
+          if c = "filter" then { p with filter = x } else if c = "transmit" then { p with transmit = x } else p) i.px } }
+
+%public block_kind:
+  | CHECKER { Pattern.Checker }
+  | HEXAGON { Pattern.Hexagon }
+  | BRICK { Pattern.Brick { size = Vec3.make 8. 3. 4.5; mortar = 0.5 } }
+
+%public pattern_kind:
+  | GRADIENT e = param { Pattern.gradient (v3 $loc(e) e) }
+  | RADIAL { Pattern.Radial }
+  | ONION { Pattern.Onion }
+  | WOOD { Pattern.Wood }
+  | MARBLE { Pattern.Marble }
+  | LEOPARD { Pattern.Leopard }
+  | BOZO { Pattern.Bozo }
+  | SPOTTED { Pattern.Bozo }
+  | BUMPS { Pattern.Bozo }
+  | DENTS { Pattern.Dents }
+  | GRANITE { Pattern.Granite }
+  | AGATE { Pattern.Agate 1. }
+  | RIPPLES { Pattern.Ripples }
+  | WAVES { Pattern.Waves }
+  | WRINKLES { Pattern.Wrinkles }
 
 %public pigment_mod:
-  | t = transformation { t }
+  | t = transformation { Texdesc.transform t }
+  | m = pattern_mod { m }
+  | COLOR_MAP LBRACE es = list(map_entry) RBRACE { Texdesc.map es }
+  | PIGMENT_MAP LBRACE es = list(pigment_map_entry) RBRACE { Texdesc.map es }
+
+%public map_entry:
+  | LBRACKET v = param COMMA? c = color_value RBRACKET
+      { (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) }
+
+%public pigment_map_entry:
+  | LBRACKET v = param COMMA? p = PIGMENT_ID ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pigment p)))) }
+  | LBRACKET v = param COMMA? k = pattern_kind ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pattern k)))) }
+  | LBRACKET v = param COMMA? c = color_value RBRACKET
+      { (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) }
+
+%public pattern_mod:
+  | TURBULENCE e = param { Texdesc.turbulence (v3 $loc(e) e) }
+  | OCTAVES e = param { let n = Value.to_int (loc $loc(e)) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with octaves = max 1 (min 10 n) } } | None -> p) }
+  | OMEGA e = param { let x = fl $loc(e) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with omega = x } } | None -> p) }
+  | LAMBDA e = param { let x = fl $loc(e) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with lambda = x } } | None -> p) }
+  | FREQUENCY e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
+  | PHASE e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
+  | RAMP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Ramp }) }
+  | TRIANGLE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Triangle }) }
+  | SINE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Sine }) }
+  | SCALLOP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Scallop }) }
+  | CUBIC_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Cubic }) }
+  | POLY_WAVE e = ioption(param)
+      { let x = match e with Some e -> fl $loc(e) e | None -> 1. in
+        Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
+  | BRICK_SIZE e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Brick b -> Pattern.Brick { b with size = v } | k -> k) }
+  | MORTAR e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
+  | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
+
+%public normal_body:
+  | k = pattern_kind a = ioption(param) ms = list(normal_mod)
+      { let p = Texdesc.of_pattern k in
+        let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
+        Some (Texdesc.normal (Texdesc.apply ms p)) }
+  | ms = list(normal_mod) { ignore ms; None }
+
+%public normal_mod:
+  | t = transformation { Texdesc.transform t }
+  | m = pattern_mod { m }
 
 %public finish_body:
   | f = ioption(FINISH_ID) ms = list(finish_item)

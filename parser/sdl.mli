@@ -16,6 +16,8 @@ and light = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  area : Light.area option;
+  looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }
 
 and obj = {
@@ -54,6 +56,7 @@ type item =
   | Camera of Loc.t * camera_item list
   | Background of Color.rgbft
   | Global_settings of Loc.t * global list
+  | Sky_sphere of Sky.t
 
 type scene = {
   items : item list;  (** in source order *)
