@@ -155,6 +155,8 @@
       { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pigment p)))) }
   | LBRACKET v = param COMMA? k = pattern_kind ms = list(pigment_mod) RBRACKET
       { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pattern k)))) }
+  | LBRACKET v = param COMMA? k = block_kind cs = block_cells ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs }))) }
   | LBRACKET v = param COMMA? c = color_value RBRACKET
       { (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) }
 

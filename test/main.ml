@@ -4,4 +4,9 @@ let () =
     [
       Test_vec3.tests;
       Test_image.tests;
+      Test_whitted.tests;
+      Test_light.tests;
+      Test_pattern.tests;
+      Test_aa.tests;
+      Test_compare.tests;
     ]
