@@ -49,7 +49,9 @@ let checker (p : Vec3.t) =
   in
   if s land 1 = 0 then 0. else 1.
 
-(* Hexagons in the xz plane, side 1 (flat sides facing +-z), three-coloured. *)
+(* Hexagons in the xz plane, side 1, corners along x (flat sides facing
+   +-z), centred at the origin (cell 0); cells around are numbered as
+   POV-Ray does: (2q + r) mod 3 in axial coordinates. *)
 let sqrt3 = Float.sqrt 3.
 
 let hexagon (p : Vec3.t) =
@@ -63,18 +65,19 @@ let hexagon (p : Vec3.t) =
     else if dr > ds then (rq, -.rq -. rs)
     else (rq, rr)
   in
-  let c = (int_of_float rq - int_of_float rr) mod 3 in
+  let c = ((2 * int_of_float rq) + int_of_float rr) mod 3 in
   float_of_int (if c < 0 then c + 3 else c)
 
+(* Bricks of [size] with mortar of width [mortar] at the upper end of
+   each cell; even rows (in y) shift z by half a brick, odd rows shift x
+   (found by sampling POV-Ray's pattern). *)
 let brick (size : Vec3.t) mortar (p : Vec3.t) =
-  (* cell coordinates; odd rows (in y) and odd layers (in z) shift by half *)
-  let y = p.y /. size.y in
-  let row = Float.floor y in
-  let z = (p.z /. size.z) +. if Float.rem (Float.abs row) 2. = 1. then 0.5 else 0. in
-  let layer = Float.floor z in
-  let x = (p.x /. size.x) +. if Float.rem (Float.abs (row +. layer)) 2. = 1. then 0.5 else 0. in
-  let in_mortar c s = frac c *. s < mortar in
-  if in_mortar x size.x || in_mortar y size.y || in_mortar z size.z then 0. else 1.
+  let row = Float.floor (p.y /. size.y) in
+  let odd = Float.rem (Float.abs row) 2. = 1. in
+  let x = if odd then p.x +. (size.x /. 2.) else p.x in
+  let z = if odd then p.z else p.z +. (size.z /. 2.) in
+  let in_mortar c s = frac (c /. s) *. s >= s -. mortar in
+  if in_mortar x size.x || in_mortar p.y size.y || in_mortar z size.z then 0. else 1.
 
 (* Wave sources of ripples and waves: fixed pseudo-random points. *)
 let sources =

@@ -27,6 +27,36 @@ let exact () =
         expected)
     pov
 
+(* (x, y, z, hexagon, brick) sampled from POV-Ray at random points *)
+let blocks =
+  [
+    (5.447195, 0.883730, -3.997774, 1, 1);
+    (-5.581595, 1.914773, -1.404291, 2, 1);
+    (-0.215647, 2.413731, 3.914352, 2, 0);
+    (3.544956, -3.307926, -2.429032, 2, 0);
+    (2.161463, -0.226606, 5.881209, 2, 0);
+    (0.708388, -2.129032, -2.396851, 0, 1);
+    (5.474252, 2.752052, -3.919590, 1, 0);
+    (-0.757065, 2.509429, 4.478348, 1, 0);
+    (-0.115358, -0.128256, 4.457965, 0, 0);
+    (2.134664, 0.289639, 0.220898, 0, 1);
+    (-2.460177, 2.809044, -5.272795, 0, 0);
+    (4.684305, 0.428772, -3.011074, 0, 1);
+    (5.646987, 3.712031, -2.408964, 2, 1);
+    (-0.726943, 2.345753, -3.327018, 1, 1);
+    (-2.583107, -0.449899, -5.076645, 0, 0);
+    (-1.073826, -2.547827, 0.849579, 2, 1);
+  ]
+
+let block_patterns () =
+  let v k (x, y, z) = int_of_float (Pattern.value (Pattern.make k) (Vec3.make x y z)) in
+  let brick = Pattern.Brick { size = Vec3.make 8. 3. 4.5; mortar = 0.5 } in
+  List.iter
+    (fun (x, y, z, h, b) ->
+      Alcotest.(check int) (Printf.sprintf "hexagon at %g %g %g" x y z) h (v Pattern.Hexagon (x, y, z));
+      Alcotest.(check int) (Printf.sprintf "brick at %g %g %g" x y z) b (v brick (x, y, z)))
+    blocks
+
 let gradient () =
   let g v p = Pattern.value (Pattern.make (Pattern.gradient v)) p in
   Scn.close ~eps:1e-4 "gradient x at -1.75" 0.25 (g Vec3.unit_x (Vec3.make (-1.75) 0. 0.));
@@ -66,6 +96,7 @@ let tests =
   ( "pattern",
     [
       Alcotest.test_case "exact patterns = POV-Ray" `Quick exact;
+      Alcotest.test_case "hexagon and brick = POV-Ray" `Quick block_patterns;
       Alcotest.test_case "gradient and waves" `Quick gradient;
       Alcotest.test_case "maps" `Quick maps;
       Alcotest.test_case "transforms" `Quick transforms;
