@@ -17,6 +17,14 @@ let perturb nm point n =
   let g = Transform.normal nm.xform g in
   (* keep only the tangential part; bumps of unit amount tilt by about 45 degrees *)
   let g = Vec3.madd g (-.Vec3.dot g n) n in
-  let scale = nm.amount *. 0.5 in
+  (* fractal patterns have steep gradients (every octave adds about the
+     same slope): scaled down to look like POV-Ray's bumps of that amount *)
+  let gain =
+    match nm.pattern.kind with
+    | Pattern.Wrinkles | Pattern.Granite -> 0.15
+    | Pattern.Dents -> 0.3
+    | _ -> 1.
+  in
+  let scale = nm.amount *. 0.5 *. gain in
   let m = Vec3.madd n (-.scale) g in
   if Vec3.length2 m = 0. then n else Vec3.normalize m

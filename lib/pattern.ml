@@ -11,6 +11,8 @@ type kind =
   | Marble
   | Leopard
   | Bozo
+  | Spotted
+  | Bumps
   | Dents
   | Granite
   | Agate of float
@@ -98,7 +100,7 @@ let raw kind (p : Vec3.t) =
   | Leopard ->
       let s = (Float.sin p.x +. Float.sin p.y +. Float.sin p.z) /. 3. in
       s *. s
-  | Bozo -> Noise.noise p
+  | Bozo | Spotted | Bumps -> Noise.noise p
   | Dents ->
       let n = Noise.noise p in
       n *. n *. n

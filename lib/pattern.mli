@@ -18,7 +18,9 @@ type kind =
   | Wood
   | Marble
   | Leopard
-  | Bozo  (** also spotted and bumps *)
+  | Bozo
+  | Spotted  (** bozo's noise, black to white *)
+  | Bumps  (** bozo's noise, black to white *)
   | Dents
   | Granite
   | Agate of float  (** agate_turb *)

@@ -27,8 +27,10 @@ val black : t
 (** POV-Ray's default pigment. *)
 
 val default_entries : Pattern.kind -> (float * t) array
-(** The colour map a pattern uses when none is given (POV-Ray's built-in
-    ones for checker, hexagon, brick; black to white otherwise). *)
+(** The colour map a pattern uses when none is given: POV-Ray's built-in
+    ones (checker, hexagon, brick, bozo, radial, marble, wood, agate; read
+    from POV-Ray's [function { pigment { ... } }] values), black to white
+    otherwise. *)
 
 val transform : Transform.t -> t -> t
 (** Move a pigment (and its sub-pigments) by a transform applied after

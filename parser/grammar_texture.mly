@@ -131,8 +131,8 @@
   | MARBLE { Pattern.Marble }
   | LEOPARD { Pattern.Leopard }
   | BOZO { Pattern.Bozo }
-  | SPOTTED { Pattern.Bozo }
-  | BUMPS { Pattern.Bozo }
+  | SPOTTED { Pattern.Spotted }
+  | BUMPS { Pattern.Bumps }
   | DENTS { Pattern.Dents }
   | GRANITE { Pattern.Granite }
   | AGATE { Pattern.Agate 1. }
