@@ -13,7 +13,9 @@ type area = {
   n2 : int;
   adaptive : int;  (** levels subdivided unconditionally (100 without [adaptive]) *)
   circular : bool;
-  orient : bool;
+      (** samples moved onto a disc (Shirley's concentric map: close to,
+          not exactly, POV-Ray's arrangement) *)
+  orient : bool;  (** axes turned to face each lit point *)
   jitter : bool;  (** parsed, ignored: camlray's area lights are never jittered *)
   area_illumination : bool;
       (** parsed, ignored: shading always uses the light's centre *)
