@@ -8,5 +8,6 @@ let () =
       Test_light.tests;
       Test_pattern.tests;
       Test_aa.tests;
+      Test_gamma.tests;
       Test_compare.tests;
     ]

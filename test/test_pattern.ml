@@ -92,6 +92,18 @@ let transforms () =
   Scn.color "texture before transform moves" (0., 0., 1.) (obj true);
   Scn.color "texture after transform stays" (0., 1., 0.) (obj false)
 
+let image_map () =
+  let file = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "camlray-im-%d.png" (Unix.getpid ())) in
+  let data = Bytes.of_string "\128\000\255\000\255\000" in
+  Image.write_png file { Image.w = 2; h = 1; data };
+  let px tr =
+    Scn.pixel (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\" } translate %s } finish { ambient 1 diffuse 0 } }" file tr)
+  in
+  (* the image spans [0,1]^2 of the xy plane; PNG values are sRGB-decoded *)
+  Scn.color "left texel" (0.21586, 0., 1.) (px "<-0.25, -0.5, 0>");
+  Scn.color "right texel, repeated" (0., 1., 0.) (px "<-1.75, -0.5, 0>");
+  Sys.remove file
+
 let tests =
   ( "pattern",
     [
@@ -100,4 +112,5 @@ let tests =
       Alcotest.test_case "gradient and waves" `Quick gradient;
       Alcotest.test_case "maps" `Quick maps;
       Alcotest.test_case "transforms" `Quick transforms;
+      Alcotest.test_case "image_map" `Quick image_map;
     ] )
