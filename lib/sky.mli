@@ -9,6 +9,8 @@ val none : t
 val is_empty : t -> bool
 
 val transform : Transform.t -> t -> t
+(** As POV-Ray: the pigments are evaluated at the direction moved like a
+    point (so a translation shifts the sky). *)
 
 val eval : t -> background:Color.t -> Vec3.t -> Color.t
 (** Colour seen along a unit direction. *)

@@ -5,7 +5,17 @@
     (with interior fade), area lights, reflection (constant, falloff,
     Fresnel, exponent, metallic), refraction with nested interiors and
     total internal reflection, trace level and ADC bailout, background and
-    sky_sphere. *)
+    sky_sphere.
+
+    Rules found by cross-rendering with POV-Ray 3.7 (beyond pov-facts.md):
+    - interior fade multiplies what comes through the far side of a medium
+      (the transmitted or totally reflected ray at the surface where the
+      ray leaves, by the distance just travelled inside), not that far
+      surface's own shading;
+    - shadow rays fade over every stretch inside a fading object,
+      including the stretch from a lit point that is itself inside;
+    - a transparent sky_sphere lets the background through (filter and
+      transmit as for surfaces). *)
 
 val trace : Scene.t -> Ray.t -> Color.t
 (** Radiance (linear working space) along a camera ray (trace level 1). *)

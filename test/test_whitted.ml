@@ -152,6 +152,8 @@ let layers () =
   color "two layers" (0.35 +. 0.35, 0.35, 0.35) (pixel src);
   let sky = "sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n" in
   gray ~eps:1e-4 "sky_sphere along +z" 0. (pixel sky);
+  color "transparent sky shows the background" (0.6, 0.7, 0.8)
+    (pixel "background { rgb <.2,.4,.6> }\nsky_sphere { pigment { rgbt <1,1,1,.5> } }");
   gray ~eps:1e-4 "sky_sphere up" 0.70711 (pixel ("camera { look_at <0, 1, 1> }\n" ^ sky))
 
 let tests =
