@@ -87,6 +87,8 @@ let sources =
       let f k = Noise.snoise (Vec3.make (float_of_int i +. 0.37) (float_of_int k +. 0.71) 0.53) in
       Vec3.scale 2. (Vec3.make (f 1) (f 2) (f 3)))
 
+let clamp01 x = Float.min 1. (Float.max 0. x)
+
 let raw kind (p : Vec3.t) =
   match kind with
   | Checker -> checker p
@@ -104,7 +106,9 @@ let raw kind (p : Vec3.t) =
   | Dents ->
       let n = Noise.noise p in
       n *. n *. n
-  | Granite -> Float.min 1. (0.5 *. Noise.fractal ~octaves:6 (Vec3.scale 4. p))
+  | Granite ->
+      (* affine-matched to the mean and spread of POV-Ray's granite values *)
+      clamp01 (0.015 +. (1.726 *. 0.5 *. Noise.fractal ~octaves:6 (Vec3.scale 4. p)))
   | Agate turb ->
       let t = Noise.fractal ~octaves:7 p in
       let v = 0.5 +. (0.5 *. Float.sin (two_pi *. (p.z +. (turb *. t)))) in
@@ -119,10 +123,10 @@ let raw kind (p : Vec3.t) =
             +.
             match kind with
             | Ripples -> 0.5 +. (0.5 *. Float.sin (two_pi *. d))
-            | _ -> 0.5 +. (0.5 *. Float.cos (two_pi *. d) /. (1. +. d)))
+            | _ -> 0.5 +. (0.5 *. Float.cos (two_pi *. d)))
         sources;
       !acc /. float_of_int (Array.length sources)
-  | Wrinkles -> Float.min 1. (0.5 *. Noise.fractal ~octaves:10 p)
+  | Wrinkles -> clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal ~octaves:10 p))
 
 let default_wave = function Wood | Marble -> Triangle | _ -> Ramp
 

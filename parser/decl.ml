@@ -7,6 +7,9 @@ type t =
   | Interior of Camlray.Interior.t
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
+  | Color_map of (float * Camlray.Pigment.t) array
+  | Normal of Camlray.Normal.t option
+  | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -17,3 +20,6 @@ let kind_name = function
   | Interior _ -> "an interior"
   | Transform _ -> "a transform"
   | Camera _ -> "a camera"
+  | Color_map _ -> "a colour map"
+  | Normal _ -> "a normal"
+  | Material _ -> "a material"

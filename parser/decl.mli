@@ -10,6 +10,9 @@ type t =
   | Interior of Camlray.Interior.t
   | Transform of Camlray.Transform.t
   | Camera of Sdl.camera_item list
+  | Color_map of (float * Camlray.Pigment.t) array
+  | Normal of Camlray.Normal.t option
+  | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

@@ -20,3 +20,4 @@ let nonzero_scale l (v : Vec3.t) =
 let area_field f (o : Sdl.obj) = match o.shape with
   | Sdl.Light ({ area = Some a; _ } as l) -> { o with shape = Sdl.Light { l with area = Some (f a) } }
   | _ -> o
+let top_layer f (t : Texture.t) = match t with top :: rest -> f top :: rest | [] -> []

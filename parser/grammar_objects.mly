@@ -25,7 +25,7 @@
   | t = transformation { Sdl.transform_obj t }
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
-          | Some layers -> t :: layers | None -> [ t ]) } }
+          | Some layers -> t @ layers | None -> t) } }
   | PIGMENT LBRACE p = pigment_body RBRACE
       { with_texture (fun l -> { l with Texture.pigment = p }) }
   | FINISH LBRACE f = finish_body RBRACE

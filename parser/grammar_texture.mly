@@ -12,6 +12,10 @@
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
 %token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
+%token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
+%token <Camlray.Normal.t option> NORMAL_ID
+%token CRAND MATERIAL
+%token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 
 %%
 
@@ -60,16 +64,19 @@
 
 %public color_value_noprefix: k = RGB e = unary { Value.to_rgb (loc $loc) (Value.rgb_kind (loc $loc) k e) }
 
+(* a texture: its layers, top first ([texture { T_Layered }] keeps every
+   layer of T_Layered); pigment, normal and finish change the top layer,
+   transformations move every layer *)
 %public texture_body:
   | t = ioption(TEXTURE_ID) ms = list(texture_mod)
-      { let base = match t with Some (top :: _) -> top | _ -> Defaults.texture () in
+      { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
 
 %public texture_mod:
-  | PIGMENT LBRACE p = pigment_body RBRACE { fun (l : Texture.layer) -> { l with pigment = p } }
-  | NORMAL LBRACE n = normal_body RBRACE { fun (l : Texture.layer) -> { l with normal = n } }
-  | FINISH LBRACE f = finish_body RBRACE { fun (l : Texture.layer) -> { l with finish = f } }
-  | t = transformation { Texture.transform_layer t }
+  | PIGMENT LBRACE p = pigment_body RBRACE { top_layer (fun l -> { l with pigment = p }) }
+  | NORMAL LBRACE n = normal_body RBRACE { top_layer (fun l -> { l with normal = n }) }
+  | FINISH LBRACE f = finish_body RBRACE { top_layer (fun l -> { l with finish = f }) }
+  | t = transformation { Texture.transform t }
 
 %public object_mod:
   | NORMAL LBRACE n = normal_body RBRACE { with_texture (fun l -> { l with Texture.normal = n }) }
@@ -140,10 +147,54 @@
   | WAVES { Pattern.Waves }
   | WRINKLES { Pattern.Wrinkles }
 
+%public declare_rhs:
+  | m = COLOR_MAP_ID { Decl.Color_map m }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Decl.Color_map m }
+  | n = NORMAL_ID { Decl.Normal n }
+  | NORMAL LBRACE n = normal_body RBRACE { Decl.Normal n }
+
+%public any_value:
+  | m = COLOR_MAP_ID { Decl.Color_map m }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Decl.Color_map m }
+  | n = NORMAL_ID { Decl.Normal n }
+  | NORMAL LBRACE n = normal_body RBRACE { Decl.Normal n }
+
+%public declare_rhs:
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
+
+%public any_value:
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
+
+%public object_mod:
+  | MATERIAL LBRACE m = material_body RBRACE
+      { fun (o : Sdl.obj) ->
+          let o = match fst m with
+            | Some t -> { o with texture = Some (match o.texture with Some l -> t @ l | None -> t) }
+            | None -> o in
+          match snd m with Some i -> { o with interior = Some i } | None -> o }
+
+(* material { [M_ID] texture { } ... interior { } transforms }: the last
+   texture written is the top layer *)
+%public material_body:
+  | m = ioption(MATERIAL_ID) ms = list(material_item)
+      { List.fold_left (fun m f -> f m) (match m with Some m -> m | None -> (None, None)) ms }
+
+%public material_item:
+  | TEXTURE LBRACE t = texture_body RBRACE
+      { fun (tex, i) -> (Some (match tex with Some l -> t @ l | None -> t), i) }
+  | INTERIOR LBRACE i = interior_body RBRACE { fun (tex, _) -> (tex, Some i) }
+  | t = transformation { fun (tex, i) -> (Option.map (Texture.transform t) tex, i) }
+
+%public color_map_body:
+  | m = COLOR_MAP_ID { m }
+  | es = list(map_entry) { Array.of_list es }
+
 %public pigment_mod:
   | t = transformation { Texdesc.transform t }
   | m = pattern_mod { m }
-  | COLOR_MAP LBRACE es = list(map_entry) RBRACE { Texdesc.map es }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Texdesc.map (Array.to_list m) }
   | PIGMENT_MAP LBRACE es = list(pigment_map_entry) RBRACE { Texdesc.map es }
 
 %public map_entry:
@@ -189,6 +240,11 @@
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
 
 %public normal_body:
+  | n = NORMAL_ID ms = list(normal_mod)
+      { Option.map (fun (n : Normal.t) ->
+          let p = Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern;
+                                     xform = n.xform; amount = n.amount } in
+          Texdesc.normal p) n }
   | k = pattern_kind a = ioption(param) ms = list(normal_mod)
       { let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
@@ -241,6 +297,9 @@
   | IOR e = param
       { ignore e; Diag.warning (loc $loc) "ior in finish is obsolete and ignored: use interior { ior ... }";
         fun f -> f }
+
+%public finish_item:
+  | CRAND e = param { ignore e; fun f -> f }  (* random grain: not reproducible, ignored *)
 
 %public reflection_item:
   | FRESNEL b = ioption(param)

@@ -68,7 +68,8 @@ let texture_keywords =
     ("triangle_wave", TRIANGLE_WAVE); ("sine_wave", SINE_WAVE); ("scallop_wave", SCALLOP_WAVE);
     ("cubic_wave", CUBIC_WAVE); ("poly_wave", POLY_WAVE); ("image_map", IMAGE_MAP);
     ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("map_type", MAP_TYPE);
-    ("all", ALL);
+    ("all", ALL); ("crand", CRAND);
+    ("material", MATERIAL);
   ]
 
 let keywords : (string, Parser.token) Hashtbl.t =

@@ -130,6 +130,9 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Interior i -> Parser.INTERIOR_ID i
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
+  | Decl.Color_map m -> Parser.COLOR_MAP_ID m
+  | Decl.Normal n -> Parser.NORMAL_ID n
+  | Decl.Material m -> Parser.MATERIAL_ID m
 
 let suggest t name =
   let d a b =
@@ -454,6 +457,16 @@ and declare t ~local loc =
 
 and rhs t =
   let d = parse t Parser.Incremental.declare_rhs in
+  (* a layered texture: texture { ... } texture { ... }, the last on top *)
+  let rec layers (d : Decl.t) =
+    match (d, (raw_peek t).raw) with
+    | Decl.Texture below, Tok Parser.TEXTURE -> (
+        match parse t Parser.Incremental.declare_rhs with
+        | Decl.Texture top -> layers (Decl.Texture (top @ below))
+        | other -> other)
+    | _ -> d
+  in
+  let d = layers d in
   (match d with
   | Decl.Value _ -> ()
   | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
