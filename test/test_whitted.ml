@@ -156,6 +156,21 @@ let layers () =
     (pixel "background { rgb <.2,.4,.6> }\nsky_sphere { pigment { rgbt <1,1,1,.5> } }");
   gray ~eps:1e-4 "sky_sphere up" 0.70711 (pixel ("camera { look_at <0, 1, 1> }\n" ^ sky))
 
+let declared () =
+  color "declared colour map" (0.75, 0., 0.25)
+    (pixel "#declare CM = color_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }\n\
+            plane { z, 1 pigment { gradient x color_map { CM } translate -x*0.25 } finish { ambient 1 diffuse 0 } }");
+  color "layered texture identifier keeps its layers" (0.7, 0.35, 0.35)
+    (pixel "light_source { <0,0,-10>, rgb 1 }\n\
+            #declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt <1,0,0,.5> } }\n\
+            plane { z, 1 texture { T } }");
+  let s =
+    compile "#declare M = material { texture { pigment { rgbt 1 } } interior { ior 1.5 } }\n\
+             sphere { 0, 1 material { M } }"
+  in
+  close "material interior" 1.5 s.objects.(0).interior.ior;
+  close "material texture" 1. (Pigment.eval (List.hd s.objects.(0).texture).pigment Vec3.zero).transmit
+
 let tests =
   ( "whitted",
     [
@@ -166,4 +181,5 @@ let tests =
       Alcotest.test_case "transparency" `Quick transparency;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
+      Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
     ] )
