@@ -221,7 +221,24 @@ and reflection s (f : Finish.t) pc n d p level weight media eta =
       let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
       mul kr rc
 
-let trace s ray = trace_ray ~tmin:0. s ray 1 1. []
+(* POV-Ray starts camera rays inside every object that contains the
+   camera (the last one in the scene first). Cached per scene and origin:
+   the camera location is the same for every ray of a pinhole camera. *)
+let start_cache : (Scene.t * Vec3.t * Interior.t list) option Atomic.t = Atomic.make None
+
+let start_media (s : Scene.t) (o : Vec3.t) =
+  match Atomic.get start_cache with
+  | Some (s', o', m) when s' == s && o' = o -> m
+  | _ ->
+      let m =
+        Array.fold_left
+          (fun acc (obj : Object.t) -> if Object.inside obj o then obj.interior :: acc else acc)
+          [] s.objects
+      in
+      Atomic.set start_cache (Some (s, o, m));
+      m
+
+let trace s (ray : Ray.t) = trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
 
 let sample (s : Scene.t) ~width ~height px py =
   let sx, sy = Camera.pixel_coords ~width ~height px py in

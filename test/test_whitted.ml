@@ -143,7 +143,16 @@ let levels () =
       (List.init 8 (fun i -> Printf.sprintf "plane { -z, %d pigment { rgbt 1 } }\n" (-(i + 1))))
   in
   gray "pure transmission uses no level" 1.
-    (pixel ("background { rgb 1 }\nglobal_settings { max_trace_level 2 }\n" ^ stack))
+    (pixel ("background { rgb 1 }\nglobal_settings { max_trace_level 2 }\n" ^ stack));
+  (* the camera is inside eight nested planes of ior 1.5 (POV-Ray starts
+     camera rays inside the objects containing the camera): only leaving
+     the last one refracts *)
+  let nested =
+    String.concat ""
+      (List.init 8 (fun i -> Printf.sprintf "plane { z, %d pigment { rgbt 1 } interior { ior 1.5 } }\n" (i + 1)))
+  in
+  gray "camera inside nested media" 1.
+    (pixel ("background { rgb 1 }\nglobal_settings { max_trace_level 2 }\n" ^ nested))
 
 let layers () =
   (* top layer rgbt .5 red over white: top shading + 0.5 * bottom shading *)
