@@ -81,44 +81,56 @@ let fresnel n c =
     0.5 *. a *. a *. (1. +. (b *. b))
 
 (* Diffuse and highlights of every light for one texture layer. *)
-let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
-  let acc = ref black in
-  Array.iter
-    (fun (light : Light.t) ->
-      let l, dist = Light.direction_to light p in
-      let nl = Vec3.dot n l in
-      let front = nl >= light_min_cos in
-      let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
-      if front || back then begin
-        let att = Light.attenuation light p in
-        if att > 0. then begin
-          let lc = scale att light.color in
-          let lc = if light.shadowless then lc else mul lc (light_shadow s light p l dist) in
-          if not (is_black lc) then
-            if back then
-              acc := madd !acc (alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance) (mul pc lc)
-            else begin
-              if f.diffuse > 0. then
-                acc := madd !acc (alpha *. f.diffuse *. Float.pow nl f.brilliance) (mul pc lc);
-              if not light.shadowless then begin
-                let lm = mul lc (metallic_tint f.metallic nl pc) in
-                if f.phong > 0. then begin
-                  let r = Vec3.madd d (-2. *. Vec3.dot d n) n in
-                  let rl = Vec3.dot r l in
-                  if rl > 0. then acc := madd !acc (f.phong *. Float.pow rl f.phong_size) lm
-                end;
-                if f.specular > 0. then begin
-                  let h = Vec3.normalize (Vec3.sub l d) in
-                  let nh = Vec3.dot n h in
-                  if nh > 0. then
-                    acc := madd !acc (f.specular *. Float.pow nh (1. /. f.roughness)) lm
-                end
-              end
-            end
+(* Diffuse and highlights of one light seen from [p] as if it were at
+   [light.position]; [shadow l dist] is the light let through. *)
+let one_light ?at (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow =
+  let l, dist = Light.direction_to (match at with Some q -> { light with position = q } | None -> light) p in
+  let nl = Vec3.dot n l in
+  let front = nl >= light_min_cos in
+  let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
+  let att = if front || back then Light.attenuation light p else 0. in
+  if att <= 0. then black
+  else
+    let lc = scale att light.color in
+    let lc = if light.shadowless then lc else mul lc (shadow l dist) in
+    if is_black lc then black
+    else if back then scale (alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance) (mul pc lc)
+    else begin
+      let acc = ref black in
+      if f.diffuse > 0. then
+        acc := madd !acc (alpha *. f.diffuse *. Float.pow nl f.brilliance) (mul pc lc);
+      if not light.shadowless then begin
+        let lm = mul lc (metallic_tint f.metallic nl pc) in
+        if f.phong > 0. then begin
+          let r = Vec3.madd d (-2. *. Vec3.dot d n) n in
+          let rl = Vec3.dot r l in
+          if rl > 0. then acc := madd !acc (f.phong *. Float.pow rl f.phong_size) lm
+        end;
+        if f.specular > 0. then begin
+          let h = Vec3.normalize (Vec3.sub l d) in
+          let nh = Vec3.dot n h in
+          if nh > 0. then acc := madd !acc (f.specular *. Float.pow nh (1. /. f.roughness)) lm
         end
-      end)
-    s.lights;
-  !acc
+      end;
+      !acc
+    end
+
+(* Diffuse and highlights of every light for one texture layer. *)
+let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
+  Array.fold_left
+    (fun acc (light : Light.t) ->
+      let c =
+        match light.area with
+        | Some a when a.area_illumination ->
+            (* every sample shades as a point light; averaged like shadows *)
+            Light.average_area a (fun i j ->
+                let q = Light.sample_position light a p i j in
+                one_light f pc alpha p n d { light with position = q; area = None }
+                  (shadow_filter s p))
+        | _ -> one_light f pc alpha p n d light (light_shadow s light p)
+      in
+      add acc c)
+    black s.lights
 
 (* [media]: the interiors the ray is inside, innermost first. *)
 let rec trace_ray ?(tmin = Ray.epsilon) (s : Scene.t) (ray : Ray.t) level weight media =
