@@ -131,7 +131,8 @@ let scene (s : Sdl.scene) =
                 | Sdl.Max_trace_level n ->
                     settings := { !settings with max_trace_level = max 1 (min 256 n) }
                 | Sdl.Adc_bailout a -> settings := { !settings with adc_bailout = a }
-                | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c })
+                | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c }
+                | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;
     let v37 = match s.version with Some v -> v >= 3.7 | None -> false in

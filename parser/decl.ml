@@ -10,6 +10,7 @@ type t =
   | Color_map of (float * Camlray.Pigment.t) array
   | Normal of Camlray.Normal.t option
   | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
+  | Sky_sphere of Camlray.Sky.t
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -23,3 +24,4 @@ let kind_name = function
   | Color_map _ -> "a colour map"
   | Normal _ -> "a normal"
   | Material _ -> "a material"
+  | Sky_sphere _ -> "a sky_sphere"

@@ -26,3 +26,4 @@ let mark_item () = items_seen := true
 let texture () = !tex
 let set_finish f = tex := { !tex with finish = f }
 let set_pigment p = tex := { !tex with pigment = p }
+let set_normal n = tex := { !tex with normal = n }

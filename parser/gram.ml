@@ -21,3 +21,4 @@ let area_field f (o : Sdl.obj) = match o.shape with
   | Sdl.Light ({ area = Some a; _ } as l) -> { o with shape = Sdl.Light { l with area = Some (f a) } }
   | _ -> o
 let top_layer f (t : Texture.t) = match t with top :: rest -> f top :: rest | [] -> []
+let old_entry l1 v1 l2 v2 (c1, c2) = [ (fl l1 v1, c1); (fl l2 v2, c2) ]

@@ -17,3 +17,7 @@ val area_field : (Camlray.Light.area -> Camlray.Light.area) -> Sdl.obj -> Sdl.ob
 (** Change the area-light settings of a light (no effect before [area_light]). *)
 val top_layer : (Camlray.Texture.layer -> Camlray.Texture.layer) -> Camlray.Texture.t -> Camlray.Texture.t
 (** Change the top layer of a texture. *)
+val old_entry :
+  Lexing.position * Lexing.position -> Value.t -> Lexing.position * Lexing.position -> Value.t ->
+  Camlray.Pigment.t * Camlray.Pigment.t -> (float * Camlray.Pigment.t) list
+(** A colour map entry in the old form [[v1, v2 colour1 colour2]]. *)

@@ -14,8 +14,9 @@
 %token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
 %token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
 %token <Camlray.Normal.t option> NORMAL_ID
-%token CRAND MATERIAL
+%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
+%token <Camlray.Sky.t> SKY_SPHERE_ID
 
 %%
 
@@ -82,8 +83,23 @@
   | NORMAL LBRACE n = normal_body RBRACE { with_texture (fun l -> { l with Texture.normal = n }) }
 
 %public item:
-  | SKY_SPHERE LBRACE ms = list(sky_item) RBRACE
-      { Sdl.Sky_sphere (List.fold_left (fun k f -> f k) Sky.none ms) }
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Sdl.Sky_sphere k }
+
+%public declare_rhs:
+  | k = SKY_SPHERE_ID { Decl.Sky_sphere k }
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Decl.Sky_sphere k }
+
+%public any_value:
+  | k = SKY_SPHERE_ID { Decl.Sky_sphere k }
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Decl.Sky_sphere k }
+
+%public global_item:
+  | NOISE_GENERATOR e = param { Sdl.Noise_generator (Value.to_int (loc $loc(e)) e) }
+  | NUMBER_OF_WAVES e = param { Sdl.Number_of_waves (Value.to_int (loc $loc(e)) e) }
+
+%public sky_body:
+  | k = ioption(SKY_SPHERE_ID) ms = list(sky_item)
+      { List.fold_left (fun k f -> f k) (Option.value ~default:Sky.none k) ms }
 
 %public sky_item:
   | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { Sky.pigments = p :: k.pigments } }
@@ -113,6 +129,14 @@
 %public cell_color:
   | e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
   | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+
+(* a colour that starts with a keyword (color ..., rgb ...) *)
+%public kw_color:
+  | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR ms = nonempty_list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
+  | k = RGB e = unary ms = list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.rgb_kind (loc $loc) k e) ms }
 
 %public image_item:
   | ONCE { fun (i : Pigment.image) -> { i with once = true } }
@@ -187,9 +211,12 @@
   | INTERIOR LBRACE i = interior_body RBRACE { fun (tex, _) -> (tex, Some i) }
   | t = transformation { fun (tex, i) -> (Option.map (Texture.transform t) tex, i) }
 
+%public default_item:
+  | NORMAL LBRACE n = normal_body RBRACE { fun () -> Defaults.set_normal n }
+
 %public color_map_body:
   | m = COLOR_MAP_ID { m }
-  | es = list(map_entry) { Array.of_list es }
+  | es = list(map_entry) { Array.of_list (List.concat es) }
 
 %public pigment_mod:
   | t = transformation { Texdesc.transform t }
@@ -198,8 +225,17 @@
   | PIGMENT_MAP LBRACE es = list(pigment_map_entry) RBRACE { Texdesc.map es }
 
 %public map_entry:
-  | LBRACKET v = param COMMA? c = color_value RBRACKET
-      { (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) }
+  | LBRACKET v = param c = color_value RBRACKET
+      { [ (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) ] }
+  | LBRACKET v = param COMMA c = color_value RBRACKET
+      { [ (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) ] }
+  (* the old form [v1, v2 colour1 colour2]: a ramp from v1 to v2 *)
+  | LBRACKET v1 = param COMMA v2 = param cs = kw_color_pair RBRACKET { old_entry $loc(v1) v1 $loc(v2) v2 cs }
+  | LBRACKET v1 = param v2 = param cs = kw_color_pair RBRACKET { old_entry $loc(v1) v1 $loc(v2) v2 cs }
+
+%public kw_color_pair:
+  | c1 = kw_color COMMA? c2 = kw_color
+      { (Pigment.solid (Value.to_color (loc $loc(c1)) c1), Pigment.solid (Value.to_color (loc $loc(c2)) c2)) }
 
 %public pigment_map_entry:
   | LBRACKET v = param COMMA? p = PIGMENT_ID ms = list(pigment_mod) RBRACKET
@@ -238,8 +274,14 @@
       | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
   | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
+  | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
+  | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
 
 %public normal_body:
+  | k = block_kind a = ioption(param) ms = list(normal_mod)
+      { let p = Texdesc.of_pattern k in
+        let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
+        Some (Texdesc.normal (Texdesc.apply ms p)) }
   | n = NORMAL_ID ms = list(normal_mod)
       { Option.map (fun (n : Normal.t) ->
           let p = Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern;

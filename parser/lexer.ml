@@ -69,7 +69,8 @@ let texture_keywords =
     ("cubic_wave", CUBIC_WAVE); ("poly_wave", POLY_WAVE); ("image_map", IMAGE_MAP);
     ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("map_type", MAP_TYPE);
     ("all", ALL); ("crand", CRAND);
-    ("material", MATERIAL);
+    ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
+    ("noise_generator", NOISE_GENERATOR);
   ]
 
 let keywords : (string, Parser.token) Hashtbl.t =

@@ -46,6 +46,8 @@ type global =
   | Max_trace_level of int
   | Adc_bailout of float
   | Ambient_light of Color.t
+  | Noise_generator of int  (** parsed; camlray has one noise *)
+  | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
 type item =
   | Object of obj

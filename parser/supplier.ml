@@ -133,6 +133,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Color_map m -> Parser.COLOR_MAP_ID m
   | Decl.Normal n -> Parser.NORMAL_ID n
   | Decl.Material m -> Parser.MATERIAL_ID m
+  | Decl.Sky_sphere k -> Parser.SKY_SPHERE_ID k
 
 let suggest t name =
   let d a b =

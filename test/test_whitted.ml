@@ -173,6 +173,11 @@ let declared () =
     (pixel "light_source { <0,0,-10>, rgb 1 }\n\
             #declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt <1,0,0,.5> } }\n\
             plane { z, 1 texture { T } }");
+  color "old-form colour map entry" (0.75, 0., 0.25)
+    (pixel "plane { z, 1 pigment { gradient x color_map { [0, 1 color rgb <1,0,0> color rgb <0,0,1>] }\n\
+            translate -x*0.25 } finish { ambient 1 diffuse 0 } }");
+  gray "declared sky_sphere" 0.5
+    (pixel "#declare S = sky_sphere { pigment { rgb 0.5 } }\nsky_sphere { S }");
   let s =
     compile "#declare M = material { texture { pigment { rgbt 1 } } interior { ior 1.5 } }\n\
              sphere { 0, 1 material { M } }"
