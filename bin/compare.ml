@@ -38,7 +38,7 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
    they cannot match POV-Ray pixel for pixel): reported separately. *)
 let noise_words =
   [ "bozo"; "spotted"; "granite"; "agate"; "wrinkles"; "ripples"; "waves"; "bumps"; "dents";
-    "turbulence"; "textures.inc"; "stones"; "jitter" ]
+    "turbulence"; "crackle"; "textures.inc"; "stones"; "jitter" ]
 
 let uses_noise file =
   match In_channel.with_open_bin file In_channel.input_all with

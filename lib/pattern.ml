@@ -19,6 +19,7 @@ type kind =
   | Ripples
   | Waves
   | Wrinkles
+  | Crackle
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
@@ -89,6 +90,29 @@ let sources =
 
 let clamp01 x = Float.min 1. (Float.max 0. x)
 
+(* One feature point per unit cell, placed by hashing the cell with the
+   noise (camlray's own cellular noise: POV-Ray's points differ). *)
+let feature ix iy iz =
+  let c = Vec3.make (float_of_int ix) (float_of_int iy) (float_of_int iz) in
+  let h k = 0.5 +. (0.5 *. Noise.snoise (Vec3.make (c.x +. 0.31 +. k) (c.y +. 0.47) (c.z +. 0.73 -. k))) in
+  Vec3.add c (Vec3.make (h 0.) (h 17.3) (h 41.9))
+
+(* crackle: distance to the second nearest feature point minus the
+   nearest (POV-Ray's default form <-1, 1, 0>) *)
+let crackle (p : Vec3.t) =
+  let fx = int_of_float (Float.floor p.x) and fy = int_of_float (Float.floor p.y)
+  and fz = int_of_float (Float.floor p.z) in
+  let d1 = ref infinity and d2 = ref infinity in
+  for i = -1 to 1 do
+    for j = -1 to 1 do
+      for k = -1 to 1 do
+        let d = Vec3.dist p (feature (fx + i) (fy + j) (fz + k)) in
+        if d < !d1 then (d2 := !d1; d1 := d) else if d < !d2 then d2 := d
+      done
+    done
+  done;
+  clamp01 (!d2 -. !d1)
+
 let raw kind (p : Vec3.t) =
   match kind with
   | Checker -> checker p
@@ -126,6 +150,7 @@ let raw kind (p : Vec3.t) =
             | _ -> 0.5 +. (0.5 *. Float.cos (two_pi *. d)))
         sources;
       !acc /. float_of_int (Array.length sources)
+  | Crackle -> crackle p
   | Wrinkles -> clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal ~octaves:10 p))
 
 let default_wave = function Wood | Marble -> Triangle | _ -> Ramp

@@ -27,6 +27,7 @@ type kind =
   | Ripples
   | Waves
   | Wrinkles
+  | Crackle  (** F2 - F1 cellular noise (camlray's own feature points) *)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 

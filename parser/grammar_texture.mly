@@ -14,7 +14,7 @@
 %token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
 %token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
 %token <Camlray.Normal.t option> NORMAL_ID
-%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR
+%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 
@@ -170,6 +170,7 @@
   | RIPPLES { Pattern.Ripples }
   | WAVES { Pattern.Waves }
   | WRINKLES { Pattern.Wrinkles }
+  | CRACKLE { Pattern.Crackle }
 
 %public declare_rhs:
   | m = COLOR_MAP_ID { Decl.Color_map m }

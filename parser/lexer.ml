@@ -70,7 +70,7 @@ let texture_keywords =
     ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("map_type", MAP_TYPE);
     ("all", ALL); ("crand", CRAND);
     ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
-    ("noise_generator", NOISE_GENERATOR);
+    ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
   ]
 
 let keywords : (string, Parser.token) Hashtbl.t =
