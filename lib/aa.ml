@@ -2,7 +2,7 @@ let block = 32
 let gamma = 1. /. 2.5
 
 let encode (c : Color.t) =
-  let e x = Float.pow (Float.min 1. (Float.max 0. x)) gamma in
+  let e x = Float.pow (Float.max 0. x) gamma in
   Color.make (e c.r) (e c.g) (e c.b)
 
 let differs threshold (a : Color.t) (b : Color.t) =
@@ -22,13 +22,13 @@ let supersample ~depth sample x y (centre : Color.t) =
   Color.scale (1. /. float_of_int ((n * n) + 1)) !acc
 
 (* One block: a (w+1) x (h+1) buffer whose row 0 and column 0 are the
-   neighbours above and left of the block (absent at the image border). *)
+   neighbours above and left of the block (outside the image at its
+   border: still traced, as POV-Ray does). *)
 let render_block ~threshold ~depth sample img (t : Render.tile) =
   let w = t.x1 - t.x0 and h = t.y1 - t.y0 in
   let bw = w + 1 in
   let value = Array.make (bw * (h + 1)) Color.black in
   let enc = Array.make (bw * (h + 1)) Color.black in
-  let valid = Array.make (bw * (h + 1)) false in
   let done_ = Array.make (bw * (h + 1)) false in
   let idx i j = (j * bw) + i in
   let trace i j =
@@ -36,8 +36,7 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
     let c = sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) in
     let k = idx i j in
     value.(k) <- c;
-    enc.(k) <- encode c;
-    valid.(k) <- true
+    enc.(k) <- encode c
   in
   let super i j =
     let k = idx i j in
@@ -48,14 +47,14 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
       enc.(k) <- encode c
     end
   in
-  if t.y0 > 0 then for i = 1 to w do trace i 0 done;
+  for i = 1 to w do trace i 0 done;
   for j = 1 to h do
-    if t.x0 > 0 then trace 0 j;
+    trace 0 j;
     for i = 1 to w do
       trace i j;
       let k = idx i j in
-      let left = valid.(idx (i - 1) j) && differs threshold enc.(idx (i - 1) j) enc.(k) in
-      let up = valid.(idx i (j - 1)) && differs threshold enc.(idx i (j - 1)) enc.(k) in
+      let left = differs threshold enc.(idx (i - 1) j) enc.(k) in
+      let up = differs threshold enc.(idx i (j - 1)) enc.(k) in
       if left then super (i - 1) j;
       if up then super i (j - 1);
       if left || up then super i j

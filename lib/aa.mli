@@ -2,7 +2,9 @@
     without jitter (pov-facts.md section 7). The image is traced in fixed
     32x32 blocks in absolute image coordinates; in each block, pixel
     centres are traced in scan order, together with the row above and the
-    column left of the block (traced for comparison only). A pixel is
+    column left of the block (traced for comparison only, also at the
+    image border, where they lie outside the image: POV-Ray does the same,
+    checked on a cross-render). A pixel is
     compared with its left and upper neighbours on gamma-2.5 encoded
     values (|dr|+|dg|+|db| >= threshold); when they differ, the pixel and
     each differing neighbour not yet supersampled are supersampled: an
@@ -14,7 +16,9 @@ val block : int
 (** 32 *)
 
 val encode : Color.t -> Color.t
-(** Clip to [[0,1]] and raise to 1/2.5 (the antialias gamma). *)
+(** Raise to 1/2.5 (the antialias gamma); values above 1 are not clipped
+    (as in POV-Ray: found by cross-rendering highlights), negative ones
+    count as 0. *)
 
 val differs : float -> Color.t -> Color.t -> bool
 (** [differs threshold a b] on encoded colours. *)
