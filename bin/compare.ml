@@ -112,7 +112,13 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
     0
   end
   else begin
-    (try Unix.mkdir out_dir 0o755 with Unix.Unix_error (Unix.EEXIST, _, _) -> ());
+    let rec mkdir_p d =
+      if not (Sys.file_exists d) then begin
+        mkdir_p (Filename.dirname d);
+        try Unix.mkdir d 0o755 with Unix.Unix_error (Unix.EEXIST, _, _) -> ()
+      end
+    in
+    mkdir_p out_dir;
     let scenes = expand inputs in
     if scenes = [] then prerr_endline "camlray compare: no scenes (.pov or .scn) given";
     let ok = ref (scenes <> []) in
