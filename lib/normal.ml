@@ -4,6 +4,10 @@ let make kind amount = { pattern = Pattern.make kind; amount; xform = Transform.
 let transform t nm = { nm with xform = Transform.then_ nm.xform t }
 let h = 1e-3
 
+(* Bump strength per unit of amount and of pattern-space slope, calibrated
+   on POV-Ray renders of smooth exact patterns (leopard). *)
+let strength = 2. /. 15.
+
 let perturb nm point n =
   let q = Transform.inv_point nm.xform point in
   let f dx dy dz = Pattern.value nm.pattern (Vec3.add q (Vec3.make dx dy dz)) in
@@ -13,18 +17,19 @@ let perturb nm point n =
       ((f 0. h 0. -. f 0. (-.h) 0.) /. (2. *. h))
       ((f 0. 0. h -. f 0. 0. (-.h)) /. (2. *. h))
   in
-  (* pattern-space gradient to world space: inverse transpose of the inverse *)
-  let g = Transform.normal nm.xform g in
-  (* keep only the tangential part; bumps of unit amount tilt by about 45 degrees *)
-  let g = Vec3.madd g (-.Vec3.dot g n) n in
-  (* fractal patterns have steep gradients (every octave adds about the
-     same slope): scaled down to look like POV-Ray's bumps of that amount *)
+  (* as POV-Ray: tilt a unit normal in pattern space, then bring it back *)
+  let np = Vec3.normalize (Transform.normal (Transform.inverse nm.xform) n) in
+  (* POV-Ray computes bumps, dents, ripples, waves and wrinkles with
+     formulas of their own, much stronger than the generic slope; these
+     gains make camlray's look alike (set by eye: the noise differs) *)
   let gain =
     match nm.pattern.kind with
-    | Pattern.Wrinkles | Pattern.Granite -> 0.15
-    | Pattern.Dents -> 0.3
+    | Pattern.Bozo | Pattern.Bumps | Pattern.Spotted | Pattern.Ripples | Pattern.Waves -> 12.
+    | Pattern.Dents -> 1.5
+    | Pattern.Wrinkles | Pattern.Granite -> 0.6
     | _ -> 1.
   in
-  let scale = nm.amount *. 0.5 *. gain in
-  let m = Vec3.madd n (-.scale) g in
+  (* the full slope, normal component included *)
+  let mp = Vec3.madd np (-.nm.amount *. strength *. gain) g in
+  let m = Transform.normal nm.xform mp in
   if Vec3.length2 m = 0. then n else Vec3.normalize m

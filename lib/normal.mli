@@ -1,7 +1,10 @@
 (** Normal perturbation ([normal { bumps 0.5 scale 0.2 }]): the surface
-    normal is tilted by the gradient of a pattern. camlray computes the
-    gradient by central differences of the pattern value (POV-Ray uses
-    pattern-specific formulas), so bump shapes resemble POV-Ray's. *)
+    normal is taken to pattern space, tilted there by amount x 2/15 x the
+    pattern's slope (central differences), and brought back, as POV-Ray
+    does for ordinary patterns (checked on leopard: 59 to 69 dB against
+    POV-Ray, scaled, rotated, non-uniform). POV-Ray's own formulas for
+    bumps, dents, ripples, waves and wrinkles are approximated by gains
+    (and camlray's noise differs), so those only look alike. *)
 
 type t = { pattern : Pattern.t; amount : float; xform : Transform.t }
 
