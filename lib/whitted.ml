@@ -3,11 +3,18 @@ open Color
 let light_min_cos = 1e-10
 
 (* (f*P + t) of a texture at a point: what a surface lets through. *)
-let texture_filter (tex : Texture.t) q =
+let rec texture_filter (tex : Texture.t) q =
   List.fold_left
     (fun acc (layer : Texture.layer) ->
-      let c = Pigment.eval layer.pigment q in
-      mul acc (add (scale c.filter c.c) (gray c.transmit)))
+      match layer.tmap with
+      | Some m ->
+          let f =
+            List.fold_left (fun f (k, t) -> madd f k (texture_filter t q)) black (Texture.blend m q)
+          in
+          mul acc f
+      | None ->
+          let c = Pigment.eval layer.pigment q in
+          mul acc (add (scale c.filter c.c) (gray c.transmit)))
     white tex
 
 let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
@@ -163,39 +170,57 @@ and shade s ray hit level weight media fade =
       let beyond = match rest with i :: _ -> i.Interior.ior | [] -> 1. in
       (inner.ior /. beyond, rest)
   in
-  (* shade the layers top down; [w] is what the layers above let through *)
-  let top_normal = ref n0 in
-  let rec layers acc w first = function
+  (* shade the layers top down; [w] is what the layers above let through;
+     returns the colour and what the whole texture lets through *)
+  let top_normal = ref None in
+  let rec layers acc w = function
     | [] -> (acc, w)
-    | (layer : Texture.layer) :: rest ->
-        let n =
-          match layer.normal with
-          | None -> n0
-          | Some nm ->
-              let m = Normal.perturb nm p n0 in
-              if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize else m
-        in
-        if first then top_normal := n;
-        let f = layer.finish in
-        let pig = Pigment.eval layer.pigment p in
-        let pc = pig.c in
-        let alpha =
-          if s.settings.legacy_alpha then 1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
-          else 1. -. pig.filter -. pig.transmit
-        in
-        let local =
-          madd (direct s f pc alpha p n d) alpha
-            (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
-        in
-        let local = add local (reflection s f pc n d p level (weight *. max_channel w) media eta) in
-        let acc = add acc (mul w local) in
-        let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
-        if is_black w then (acc, w) else layers acc w false rest
+    | (layer : Texture.layer) :: rest -> (
+        match layer.tmap with
+        | Some m ->
+            (* a patterned layer: blend the textures around the value *)
+            let c, f =
+              List.fold_left
+                (fun (c, f) (k, t) ->
+                  let c', f' = layers black white t in
+                  (madd c k c', madd f k f'))
+                (black, black) (Texture.blend m p)
+            in
+            let acc = add acc (mul w c) and w = mul w f in
+            if is_black w then (acc, w) else layers acc w rest
+        | None ->
+            let n =
+              match layer.normal with
+              | None -> n0
+              | Some nm ->
+                  let m = Normal.perturb nm p n0 in
+                  if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
+                  else m
+            in
+            if !top_normal = None then top_normal := Some n;
+            let f = layer.finish in
+            let pig = Pigment.eval layer.pigment p in
+            let pc = pig.c in
+            let alpha =
+              if s.settings.legacy_alpha then
+                1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
+              else 1. -. pig.filter -. pig.transmit
+            in
+            let local =
+              madd (direct s f pc alpha p n d) alpha
+                (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
+            in
+            let local =
+              add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
+            in
+            let acc = add acc (mul w local) in
+            let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
+            if is_black w then (acc, w) else layers acc w rest)
   in
-  let c, tr = layers black white true hit.obj.texture in
+  let c, tr = layers black white hit.obj.texture in
   if Color.luminance tr <= s.settings.adc_bailout then c
   else
-    let n = !top_normal in
+    let n = Option.value ~default:n0 !top_normal in
     let w = weight *. Color.max_channel tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)

@@ -22,3 +22,10 @@ let area_field f (o : Sdl.obj) = match o.shape with
   | _ -> o
 let top_layer f (t : Texture.t) = match t with top :: rest -> f top :: rest | [] -> []
 let old_entry l1 v1 l2 v2 (c1, c2) = [ (fl l1 v1, c1); (fl l2 v2, c2) ]
+let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =
+  match l.tmap with
+  | None -> l
+  | Some t -> (
+      match (m { (Texdesc.of_pattern Pattern.Bozo) with pattern = Some t.pattern }).pattern with
+      | Some pattern -> { l with tmap = Some { t with pattern } }
+      | None -> l)

@@ -21,3 +21,6 @@ val old_entry :
   Lexing.position * Lexing.position -> Value.t -> Lexing.position * Lexing.position -> Value.t ->
   Camlray.Pigment.t * Camlray.Pigment.t -> (float * Camlray.Pigment.t) list
 (** A colour map entry in the old form [[v1, v2 colour1 colour2]]. *)
+val tmap_pattern : Texdesc.modifier -> Camlray.Texture.layer -> Camlray.Texture.layer
+(** Apply a pattern modifier (turbulence, frequency, ...) to a patterned
+    texture layer. *)

@@ -14,7 +14,7 @@
 %token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
 %token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
 %token <Camlray.Normal.t option> NORMAL_ID
-%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE
+%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 
@@ -72,6 +72,26 @@
   | t = ioption(TEXTURE_ID) ms = list(texture_mod)
       { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
+  | k = pattern_kind ms = list(tmap_mod)
+      { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
+  | k = block_kind ts = list(block_texture) ms = list(tmap_mod)
+      { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
+        [ List.fold_left (fun l f -> f l) l ms ] }
+
+%public block_texture:
+  | TEXTURE LBRACE t = texture_body RBRACE COMMA? { t }
+
+(* modifiers of a patterned texture layer *)
+%public tmap_mod:
+  | t = transformation { Texture.transform_layer t }
+  | m = pattern_mod { tmap_pattern m }
+  | TEXTURE_MAP LBRACE es = list(texture_map_entry) RBRACE
+      { fun (l : Texture.layer) -> match l.tmap with
+          | Some m -> { l with tmap = Some { m with entries = Array.of_list es } }
+          | None -> l }
+
+%public texture_map_entry:
+  | LBRACKET v = param COMMA? t = texture_body RBRACKET { (fl $loc(v) v, t) }
 
 %public texture_mod:
   | PIGMENT LBRACE p = pigment_body RBRACE { top_layer (fun l -> { l with pigment = p }) }

@@ -71,6 +71,7 @@ let texture_keywords =
     ("all", ALL); ("crand", CRAND);
     ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
+    ("texture_map", TEXTURE_MAP);
   ]
 
 let keywords : (string, Parser.token) Hashtbl.t =

@@ -13,7 +13,7 @@ let scenes_dir = "../../../scenes/whitted-extra"
 let expectations =
   [ ("checker", 0.98, 50.); ("area", 0.98, 50.); ("layered", 0.98, 50.); ("sky", 0.98, 50.);
     ("backdiffuse", 0.98, 50.); ("fadeshadow", 0.98, 50.); ("glass", 0.98, 50.);
-    ("lights", 0.98, 50.); ("patterns", 0.98, 50.); ("normals", 0.98, 50.) ]
+    ("lights", 0.98, 50.); ("patterns", 0.98, 50.); ("normals", 0.98, 50.); ("texmap", 0.98, 50.) ]
 
 let read_tsv file =
   let ic = open_in file in
