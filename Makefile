@@ -4,7 +4,7 @@ SHELL := /bin/bash
 CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
-.PHONY: all setup build render test bench fuzz stress clean mc-convergence
+.PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance
 
 all: build
 
@@ -20,6 +20,13 @@ render: build
 
 test: build
 	@bash scripts/run-tests.sh
+
+# Cross-render against POV-Ray (skipped with a message when povray is
+# missing): CONFORMANCE_SCENES, size and anti-aliasing can be overridden.
+CONFORMANCE_SCENES ?= scenes/whitted-extra
+CONFORMANCE_FLAGS ?= -W 320 -H 240 --aa 0.3
+conformance: build
+	$(CAMLRAY) compare $(CONFORMANCE_SCENES) $(CONFORMANCE_FLAGS) -o out/conformance
 
 bench: build
 	dune build bench/whole/whole.exe bench/alloc/alloc.exe

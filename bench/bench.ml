@@ -52,8 +52,9 @@ let direct_spheres n =
   let base = compile header in
   let rng = Random.State.make [| 1; n |] in
   let r = 0.5 *. (float n ** (-1. /. 3.)) in
-  let texture = [ { Texture.pigment = Pigment.Solid { c = Color.make 0.9 0.5 0.2; filter = 0.; transmit = 0. };
-                    finish = Finish.default } ] in
+  let texture =
+    Texture.plain (Pigment.Solid { c = Color.make 0.9 0.5 0.2; filter = 0.; transmit = 0. }) Finish.default
+  in
   let objects = Array.init n (fun _ ->
       let c () = Random.State.float rng 2. -. 1. in
       let x = c () in let y = c () in let z = c () in
@@ -110,8 +111,7 @@ let mesh ~width ~height ~domains kind n =
     time (fun () -> Mesh.make ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None)
   in
   let tris = Mesh.triangles m in
-  let texture = [ { Texture.pigment = Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. };
-                    finish = Finish.default } ] in
+  let texture = Texture.plain (Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. }) Finish.default in
   let base = compile header in
   let objects = [| Object.make ~texture (Shape.Mesh m) |] in
   let s = { base with objects; accel = Scene.accelerate objects } in

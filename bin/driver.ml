@@ -23,6 +23,8 @@ type render_opts = {
   clock_range : (float * float) option;
   subset : (int * int) option;
   tile_order_seed : int option;
+  aa : float option;
+  aa_depth : int;
 }
 
 exception Fail of string
@@ -43,7 +45,11 @@ let validate o =
       (o.width * o.height) max_pixels;
   Option.iter (fun s -> check_range "--spp" s 1 1_000_000) o.spp;
   Option.iter (fun d -> check_range "--depth" d 1 256) o.depth;
-  Option.iter (fun d -> check_range "--domains" d 1 256) o.domains
+  Option.iter (fun d -> check_range "--domains" d 1 256) o.domains;
+  check_range "--aa-depth" o.aa_depth 1 9;
+  Option.iter
+    (fun t -> if not (t >= 0. && t <= 3.) then fail "--aa must be between 0 and 3, got %g" t)
+    o.aa
 
 let load ~options scene =
   match scene with
@@ -117,7 +123,10 @@ let render_id o files ~clock =
        (String.concat "\000"
           (texts
           @ [ Printf.sprintf "%dx%d mode=%s spp=%s depth=%s seed=%d clock=%h" o.width o.height
-                (match o.mode with Whitted -> "whitted" | Monte_carlo -> "mc")
+                (match (o.mode, o.aa) with
+                | Whitted, None -> "whitted"
+                | Whitted, Some t -> Printf.sprintf "whitted aa=%h/%d" t o.aa_depth
+                | Monte_carlo, _ -> "mc")
                 (match o.spp with Some s -> string_of_int s | None -> "-")
                 (match o.depth with Some d -> string_of_int d | None -> "-")
                 o.seed clock ])))
@@ -130,6 +139,16 @@ let region_of o =
   | None, Some p -> (
       match Part.of_pov ~width:o.width ~height:o.height p with Ok r -> Some r | Error e -> fail "%s" e)
   | None, None -> None
+
+let crop img (r : Render.tile) =
+  let out = Image.create (r.x1 - r.x0) (r.y1 - r.y0) in
+  for y = r.y0 to r.y1 - 1 do
+    for x = r.x0 to r.x1 - 1 do
+      Image.set out (x - r.x0) (y - r.y0) (Image.get_r img x y) (Image.get_g img x y)
+        (Image.get_b img x y)
+    done
+  done;
+  out
 
 let render_frame o ~clock ~frame ~out ~t0 =
   let options =
@@ -179,11 +198,21 @@ let render_frame o ~clock ~frame ~out ~t0 =
           last := now;
           progress_bar ~start:t1 ~done_ ~total)
       in
+      let cancelled () = Atomic.get cancelled in
       let img =
         with_signals (fun () ->
-            Render.image ~domains ~progress ~cancelled:(fun () -> Atomic.get cancelled)
-              ?order_seed:o.tile_order_seed ?region
-              ~width ~height pixel)
+            match (o.mode, o.aa) with
+            | Whitted, Some threshold ->
+                (* anti-aliasing works on whole 32x32 blocks: render them,
+                   then keep the region *)
+                let full =
+                  Aa.render ~domains ~progress ~cancelled ~width ~height ~threshold
+                    ~depth:o.aa_depth (Whitted.sample scene ~width ~height)
+                in
+                Option.fold ~none:full ~some:(crop full) region
+            | _ ->
+                Render.image ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
+                  ~width ~height pixel)
       in
       if tty then prerr_newline ();
       let t2 = Unix.gettimeofday () in
@@ -207,7 +236,10 @@ let render_frame o ~clock ~frame ~out ~t0 =
           (match region with
           | Some r -> Printf.sprintf " region %d,%d,%d,%d" r.x0 r.y0 r.x1 r.y1
           | None -> "")
-          (match o.mode with Whitted -> "whitted" | Monte_carlo -> Printf.sprintf "mc %d spp" spp)
+          (match (o.mode, o.aa) with
+           | Whitted, None -> "whitted"
+           | Whitted, Some t -> Printf.sprintf "whitted +A%g +R%d" t o.aa_depth
+           | Monte_carlo, _ -> Printf.sprintf "mc %d spp" spp)
           domains (if domains = 1 then "" else "s") (t3 -. t0) (t1 -. t0) (t2 -. t1)
           (samples /. (t2 -. t1) /. 1e6) (t3 -. t2)
       end;
@@ -218,6 +250,8 @@ let render o =
     validate o;
     if o.mode = Whitted && o.spp <> None && not o.quiet then
       prerr_endline "camlray: warning: --spp is ignored in whitted mode";
+    if o.mode = Monte_carlo && o.aa <> None && not o.quiet then
+      prerr_endline "camlray: warning: --aa is ignored in mc mode (samples are spread over each pixel)";
     let out = output_path o in
     match o.frames with
     | None ->

@@ -24,6 +24,8 @@ type render_opts = {
   clock_range : (float * float) option;  (** clock at the first and last frame *)
   subset : (int * int) option;  (** render only these frames of [frames] *)
   tile_order_seed : int option;  (** test hook: shuffle the tile order *)
+  aa : float option;  (** anti-aliasing threshold (POV-Ray's +A); whitted mode *)
+  aa_depth : int;  (** POV-Ray's +R *)
 }
 
 val render : render_opts -> int

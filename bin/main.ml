@@ -23,6 +23,20 @@ let scene_arg =
          ~doc:"The scene file ($(b,.scn) or $(b,.pov)). Without it, camlray renders its \
                built-in default scene.")
 
+let aa_args =
+  let aa =
+    Arg.(value & opt (some float) None & info [ "aa" ] ~docv:"THRESHOLD"
+           ~doc:"Anti-alias as POV-Ray's $(b,+A)$(docv) (sampling method 1, no jitter): \
+                 supersample pixels whose gamma-encoded colour differs from a neighbour's by \
+                 at least $(docv) (POV-Ray's default is 0.3). Off when absent. Whitted mode only.")
+  in
+  let depth =
+    Arg.(value & opt int 3 & info [ "aa-depth" ] ~docv:"N"
+           ~doc:"Supersample with an $(docv) x $(docv) grid plus the centre (POV-Ray's \
+                 $(b,+R)$(docv)), 1 to 9.")
+  in
+  Term.(const (fun a d -> (a, d)) $ aa $ depth)
+
 let render_cmd =
   let output =
     Arg.(value & opt (some string) None & info [ "o"; "output" ] ~docv:"OUT"
@@ -101,15 +115,16 @@ let render_cmd =
     Arg.(value & opt (some int) None & info [ "tile-order-seed" ] ~docs:Manpage.s_none)
   in
   let run scene output width height mode spp depth domains seed quiet include_dirs allow_read
-      region pov_region frames clock clock_range subset tile_order_seed =
+      region pov_region frames clock clock_range subset tile_order_seed (aa, aa_depth) =
     Driver.render
       { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
-        allow_read; region; pov_region; frames; clock; clock_range; subset; tile_order_seed }
+        allow_read; region; pov_region; frames; clock; clock_range; subset; tile_order_seed; aa;
+        aa_depth }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
           $ quiet $ include_path $ allow_read $ region $ pov_region $ frames $ clock $ clock_range
-          $ subset $ tile_order_seed)
+          $ subset $ tile_order_seed $ aa_args)
   in
   let man =
     [ `S Manpage.s_description;
@@ -177,7 +192,7 @@ let main =
       `Pre "  camlray render scenes/default.scn -o out.png\n  camlray check scene.scn" ]
   in
   Cmd.group (Cmd.info "camlray" ~version:"0.1.0" ~doc:"multicore ray tracer for POV-Ray scenes" ~man)
-    [ render_cmd; check_cmd; merge_cmd; scenes_cmd; obj2pov_cmd ]
+    [ render_cmd; check_cmd; merge_cmd; scenes_cmd; obj2pov_cmd; Compare.cmd ~aa_args ~include_path ]
 
 let () =
   let err_buf = Buffer.create 256 in

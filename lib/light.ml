@@ -3,6 +3,18 @@ type kind =
   | Spot of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
   | Parallel of { point_at : Vec3.t }
 
+type area = {
+  axis1 : Vec3.t;
+  axis2 : Vec3.t;
+  n1 : int;
+  n2 : int;
+  adaptive : int;
+  circular : bool;
+  orient : bool;
+  jitter : bool;
+  area_illumination : bool;
+}
+
 type t = {
   position : Vec3.t;
   color : Color.t;
@@ -10,10 +22,16 @@ type t = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  area : area option;
 }
 
 let point position color =
-  { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false }
+  { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
+    area = None }
+
+let area axis1 axis2 n1 n2 =
+  { axis1; axis2; n1 = max 1 n1; n2 = max 1 n2; adaptive = 100; circular = false;
+    orient = false; jitter = false; area_illumination = false }
 
 let direction_to l p =
   match l.kind with
@@ -52,3 +70,60 @@ let attenuation l p =
     let _, d = direction_to l p in
     spot *. 2. /. (1. +. Float.pow (d /. l.fade_distance) l.fade_power)
   else spot
+
+let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
+
+let sample_position l a p i j =
+  let u = offset a.n1 i and v = offset a.n2 j in
+  let u, v =
+    if a.circular && (u <> 0. || v <> 0.) then
+      (* square [-0.5,0.5]^2 to the disc of diameter 1 (concentric map) *)
+      let x = 2. *. u and y = 2. *. v in
+      let r, phi =
+        if Float.abs x > Float.abs y then (x, Float.pi /. 4. *. (y /. x))
+        else (y, (Float.pi /. 2.) -. (Float.pi /. 4. *. (x /. y)))
+      in
+      (0.5 *. r *. Float.cos phi, 0.5 *. r *. Float.sin phi)
+    else (u, v)
+  in
+  let a1, a2 =
+    if not a.orient then (a.axis1, a.axis2)
+    else
+      (* axes turned to be perpendicular to the direction to the point *)
+      let d = Vec3.normalize (Vec3.sub p l.position) in
+      let helper = if Float.abs d.y < 0.9 then Vec3.unit_y else Vec3.unit_x in
+      let e1 = Vec3.normalize (Vec3.cross helper d) in
+      let e2 = Vec3.cross d e1 in
+      (Vec3.scale (Vec3.length a.axis1) e1, Vec3.scale (Vec3.length a.axis2) e2)
+  in
+  Vec3.add l.position (Vec3.add (Vec3.scale u a1) (Vec3.scale v a2))
+
+let differ (a : Color.t) (b : Color.t) =
+  Float.abs (a.r -. b.r) +. Float.abs (a.g -. b.g) +. Float.abs (a.b -. b.b) > 0.1
+
+let average_area a f =
+  let cache = Array.make (a.n1 * a.n2) None in
+  let get i j =
+    match cache.((j * a.n1) + i) with
+    | Some c -> c
+    | None ->
+        let c = f i j in
+        cache.((j * a.n1) + i) <- Some c;
+        c
+  in
+  let rec go u1 v1 u2 v2 level =
+    let c1 = get u1 v1 and c2 = get u2 v1 and c3 = get u1 v2 and c4 = get u2 v2 in
+    let corners () = Color.scale 0.25 (Color.add (Color.add c1 c2) (Color.add c3 c4)) in
+    if u2 - u1 <= 1 && v2 - v1 <= 1 then corners ()
+    else if level >= a.adaptive && not (differ c1 c2 || differ c3 c4 || differ c1 c3 || differ c2 c4)
+    then corners ()
+    else
+      let ua = (u1 + u2) / 2 and va = (v1 + v2) / 2 in
+      let ub = (u1 + u2 + 1) / 2 and vb = (v1 + v2 + 1) / 2 in
+      let q a b c d = go a b c d (level + 1) in
+      Color.scale 0.25
+        (Color.add
+           (Color.add (q u1 v1 ua va) (q ub v1 u2 va))
+           (Color.add (q u1 vb ua v2) (q ub vb u2 v2)))
+  in
+  go 0 0 (a.n1 - 1) (a.n2 - 1) 0

@@ -1,10 +1,43 @@
-(** Pigments: the colour (with filter and transmit) of a surface point. *)
+(** Pigments: the colour (with filter and transmit) of a surface point.
+    A pattern pigment carries the transform from pattern space to world
+    space accumulated from its own modifiers and those of the textures and
+    objects written after it (POV-Ray's rule). *)
 
-type t = Solid of Color.rgbft
+type image = {
+  w : int;
+  h : int;
+  px : Color.rgbft array;  (** row-major, row 0 at the top, linear values *)
+  once : bool;
+  interpolate : bool;
+}
+(** A planar image map: the image covers the unit square of the xy plane
+    (x to the right, y up) and repeats unless [once]. *)
+
+type t =
+  | Solid of Color.rgbft
+  | Map of { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t }
+      (** colour_map / pigment_map: entries sorted by value; solid entries
+          are colour map entries *)
+  | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
+      (** checker, hexagon, brick with their list of colours or pigments *)
+  | Image_map of { image : image; xform : Transform.t }
 
 val solid : Color.rgbft -> t
 val black : t
 (** POV-Ray's default pigment. *)
 
+val default_entries : Pattern.kind -> (float * t) array
+(** The colour map a pattern uses when none is given: POV-Ray's built-in
+    ones (checker, hexagon, brick, bozo, radial, marble, wood, agate; read
+    from POV-Ray's [function { pigment { ... } }] values), black to white
+    otherwise. *)
+
+val transform : Transform.t -> t -> t
+(** Move a pigment (and its sub-pigments) by a transform applied after
+    its current one. Solid colours are unchanged. *)
+
 val eval : t -> Vec3.t -> Color.rgbft
 (** The colour at a point in world space. *)
+
+val lerp : Color.rgbft -> Color.rgbft -> float -> Color.rgbft
+(** Interpolate all five channels. *)

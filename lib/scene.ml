@@ -17,6 +17,7 @@ type t = {
   lights : Light.t array;
   camera : Camera.t;
   background : Color.t;
+  sky : Sky.t;
   settings : settings;
   accel : accel;
 }
@@ -74,8 +75,8 @@ let accelerate objects =
     finite;
   { finite; bvh; infinite = Array.of_list infinite; spheres }
 
-let make ~objects ~lights ~camera ~background ~settings =
-  { objects; lights; camera; background; settings; accel = accelerate objects }
+let make ?(sky = Sky.none) ~objects ~lights ~camera ~background ~settings () =
+  { objects; lights; camera; background; sky; settings; accel = accelerate objects }
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 

@@ -20,6 +20,7 @@ type t = {
   lights : Light.t array;
   camera : Camera.t;
   background : Color.t;
+  sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
   settings : settings;
   accel : accel;  (** built from [objects] by {!accelerate}; rebuild it when
                       replacing [objects] *)
@@ -29,8 +30,8 @@ val accelerate : Object.t array -> accel
 (** Build the BVH (binned SAH) over the objects' world bounds. *)
 
 val make :
-  objects:Object.t array -> lights:Light.t array -> camera:Camera.t -> background:Color.t ->
-  settings:settings -> t
+  ?sky:Sky.t -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
+  background:Color.t -> settings:settings -> unit -> t
 (** A scene with its acceleration structure built. *)
 
 val bvh_nodes : t -> int

@@ -1,12 +1,41 @@
-(** Textures: pigment and finish (and, later, normal perturbation), single
-    or layered. *)
+(** Textures: a stack of layers, the top layer first (POV-Ray's layered
+    textures: several [texture { }] on one object, the last one written on
+    top). A layer is plain (pigment, normal, finish) or patterned
+    ([texture { gradient x texture_map { [0 T1] [1 T2] } }] or
+    [texture { checker texture { T1 } texture { T2 } }]): then the
+    textures around the pattern's value are shaded and blended. *)
 
-type layer = { pigment : Pigment.t; finish : Finish.t }
+type layer = {
+  pigment : Pigment.t;
+  normal : Normal.t option;
+  finish : Finish.t;
+  tmap : tmap option;  (** [Some]: a patterned layer; the other fields are unused *)
+}
 
-type t = layer list
-(** Layers from the top (last written) down; never empty. *)
+and tmap = {
+  pattern : Pattern.t;
+  entries : (float * t) array;  (** by value; for block patterns, one per cell *)
+  xform : Transform.t;
+}
+
+and t = layer list
+
+val layer : Pigment.t -> Finish.t -> layer
+(** No normal perturbation. *)
 
 val plain : Pigment.t -> Finish.t -> t
 val default : t
-(** Black pigment, default finish: what POV-Ray gives an object with no
-    texture. *)
+(** Black pigment, default finish: what objects without a texture get. *)
+
+val patterned : Pattern.t -> (float * t) array -> layer
+(** A texture_map layer (entries sorted by value), or a block pattern's
+    textures (entry [i] for cell [i]). *)
+
+val blend : tmap -> Vec3.t -> (float * t) list
+(** The textures to shade at a world point with their weights (summing
+    to 1): one, or the two around the pattern's value. *)
+
+val transform_layer : Transform.t -> layer -> layer
+val transform : Transform.t -> t -> t
+(** Move the patterns of a texture (a texture written before an object
+    transform moves with the object). *)

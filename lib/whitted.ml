@@ -2,22 +2,72 @@ open Color
 
 let light_min_cos = 1e-10
 
-(* Light reaching [p] from a light along [l] over [dist]: the product of
-   (f*P + t) of every surface crossed; black when an opaque one blocks. *)
+(* (f*P + t) of a texture at a point: what a surface lets through. *)
+let rec texture_filter (tex : Texture.t) q =
+  List.fold_left
+    (fun acc (layer : Texture.layer) ->
+      match layer.tmap with
+      | Some m ->
+          let f =
+            List.fold_left (fun f (k, t) -> madd f k (texture_filter t q)) black (Texture.blend m q)
+          in
+          mul acc f
+      | None ->
+          let c = Pigment.eval layer.pigment q in
+          mul acc (add (scale c.filter c.c) (gray c.transmit)))
+    white tex
+
+let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
+
+(* Light reaching [p] from [dist] along the unit direction [l]: the product
+   of (f*P + t) of every surface crossed, with interior fade over the
+   lengths travelled inside fading objects; black when something opaque
+   blocks. *)
 let shadow_filter (s : Scene.t) p l dist =
   let ray = Ray.make p l in
   let acc = ref white in
+  let faders = ref [] in
   let visible =
     Scene.occluders s ray Ray.shadow_epsilon dist (fun (o : Object.t) t ->
-        let q = Ray.at ray t in
-        List.iter
-          (fun (layer : Texture.layer) ->
-            let c = Pigment.eval layer.pigment q in
-            acc := mul !acc (add (scale c.filter c.c) (gray c.transmit)))
-          o.texture;
+        acc := mul !acc (texture_filter o.texture (Ray.at ray t));
+        if has_fade o.interior then faders := (o, t) :: !faders;
         not (is_black !acc))
   in
-  if visible then !acc else black
+  if not visible then black
+  else if !faders = [] then !acc
+  else begin
+    (* group crossings by object; inside segments between them get faded *)
+    let seen = ref [] in
+    List.iter
+      (fun ((o : Object.t), _) ->
+        if not (List.memq o !seen) then begin
+          seen := o :: !seen;
+          let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) !faders in
+          let ts = List.sort Float.compare ts in
+          let bounds = (0. :: ts) @ [ dist ] in
+          let rec segs = function
+            | a :: (b :: _ as rest) ->
+                if b > a && Object.inside o (Ray.at ray (0.5 *. (a +. b))) then
+                  acc := mul !acc (Interior.fade o.interior (b -. a));
+                segs rest
+            | _ -> ()
+          in
+          segs bounds
+        end)
+      !faders;
+    !acc
+  end
+
+(* Shadow colour of one light at [p]: area lights average their samples. *)
+let light_shadow s (light : Light.t) p l dist =
+  match light.area with
+  | None -> shadow_filter s p l dist
+  | Some a ->
+      Light.average_area a (fun i j ->
+          let q = Light.sample_position light a p i j in
+          let v = Vec3.sub q p in
+          let d = Vec3.length v in
+          shadow_filter s p (Vec3.scale (1. /. d) v) d)
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
 let metallic_tint m cos_angle (pc : Color.t) =
@@ -37,117 +87,199 @@ let fresnel n c =
     let a = (g -. c) /. (g +. c) and b = ((c *. (g +. c)) -. 1.) /. ((c *. (g -. c)) +. 1.) in
     0.5 *. a *. a *. (1. +. (b *. b))
 
-let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
-  let acc = ref black in
-  Array.iter
-    (fun (light : Light.t) ->
-      let l, dist = Light.direction_to light p in
-      let nl = Vec3.dot n l in
-      if nl >= light_min_cos then begin
-        let att = Light.attenuation light p in
-        if att > 0. then begin
-          let lc = scale att light.color in
-          let lc = if light.shadowless then lc else mul lc (shadow_filter s p l dist) in
-          if not (is_black lc) then begin
-            if f.diffuse > 0. then
-              acc := madd !acc (alpha *. f.diffuse *. Float.pow nl f.brilliance) (mul pc lc);
-            if not light.shadowless then begin
-              let lm = mul lc (metallic_tint f.metallic nl pc) in
-              if f.phong > 0. then begin
-                let r = Vec3.madd d (-2. *. Vec3.dot d n) n in
-                let rl = Vec3.dot r l in
-                if rl > 0. then acc := madd !acc (f.phong *. Float.pow rl f.phong_size) lm
-              end;
-              if f.specular > 0. then begin
-                let h = Vec3.normalize (Vec3.sub l d) in
-                let nh = Vec3.dot n h in
-                if nh > 0. then
-                  acc := madd !acc (f.specular *. Float.pow nh (1. /. f.roughness)) lm
-              end
-            end
-          end
+(* Diffuse and highlights of every light for one texture layer. *)
+(* Diffuse and highlights of one light seen from [p] as if it were at
+   [light.position]; [shadow l dist] is the light let through. *)
+let one_light ?at (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow =
+  let l, dist = Light.direction_to (match at with Some q -> { light with position = q } | None -> light) p in
+  let nl = Vec3.dot n l in
+  let front = nl >= light_min_cos in
+  let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
+  let att = if front || back then Light.attenuation light p else 0. in
+  if att <= 0. then black
+  else
+    let lc = scale att light.color in
+    let lc = if light.shadowless then lc else mul lc (shadow l dist) in
+    if is_black lc then black
+    else if back then scale (alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance) (mul pc lc)
+    else begin
+      let acc = ref black in
+      if f.diffuse > 0. then
+        acc := madd !acc (alpha *. f.diffuse *. Float.pow nl f.brilliance) (mul pc lc);
+      if not light.shadowless then begin
+        let lm = mul lc (metallic_tint f.metallic nl pc) in
+        if f.phong > 0. then begin
+          let r = Vec3.madd d (-2. *. Vec3.dot d n) n in
+          let rl = Vec3.dot r l in
+          if rl > 0. then acc := madd !acc (f.phong *. Float.pow rl f.phong_size) lm
+        end;
+        if f.specular > 0. then begin
+          let h = Vec3.normalize (Vec3.sub l d) in
+          let nh = Vec3.dot n h in
+          if nh > 0. then acc := madd !acc (f.specular *. Float.pow nh (1. /. f.roughness)) lm
         end
-      end)
-    s.lights;
-  !acc
+      end;
+      !acc
+    end
 
-(* [medium]: the interior the ray travels through (None: outside). *)
-let rec trace_ray (s : Scene.t) (ray : Ray.t) level weight medium =
+(* Diffuse and highlights of every light for one texture layer. *)
+let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
+  Array.fold_left
+    (fun acc (light : Light.t) ->
+      let c =
+        match light.area with
+        | Some a when a.area_illumination ->
+            (* every sample shades as a point light; averaged like shadows *)
+            Light.average_area a (fun i j ->
+                let q = Light.sample_position light a p i j in
+                one_light f pc alpha p n d { light with position = q; area = None }
+                  (shadow_filter s p))
+        | _ -> one_light f pc alpha p n d light (light_shadow s light p)
+      in
+      add acc c)
+    black s.lights
+
+(* [media]: the interiors the ray is inside, innermost first. *)
+let rec trace_ray ?(tmin = Ray.epsilon) (s : Scene.t) (ray : Ray.t) level weight media =
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
   else
-    let tmin = if level = 1 then 0. else Ray.epsilon in
     match Scene.intersect s ray tmin infinity with
-    | None -> s.background
+    | None ->
+        if Sky.is_empty s.sky then s.background
+        else Sky.eval s.sky ~background:s.background (Vec3.normalize ray.dir)
     | Some hit ->
-        let c = shade s ray hit level weight medium in
-        (match medium with
-        | Some (i : Interior.t) -> mul c (Interior.fade i hit.t)
-        | None -> c)
+        (* POV-Ray fades what comes through the far side of a medium, not
+           the far surface's own shading *)
+        let fade = match media with (i : Interior.t) :: _ -> Interior.fade i hit.t | [] -> white in
+        shade s ray hit level weight media fade
 
-and shade s ray hit level weight medium =
+and shade s ray hit level weight media fade =
   let d = ray.dir in
-  let outward = hit.normal in
-  let entering = Vec3.dot outward d < 0. in
-  let n = if entering then outward else Vec3.neg outward in
+  let entering = Vec3.dot hit.normal d < 0. in
+  let n0 = if entering then hit.normal else Vec3.neg hit.normal in
   let p = hit.point in
-  (* TODO(layers): only the top layer is shaded for now *)
-  let layer = List.hd hit.obj.texture in
-  let f = layer.finish in
-  let pig = Pigment.eval layer.pigment p in
-  let pc = pig.c in
-  let alpha =
-    if s.settings.legacy_alpha then 1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
-    else 1. -. pig.filter -. pig.transmit
-  in
-  let local =
-    madd (direct s f pc alpha p n d) alpha
-      (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
-  in
-  let cos_i = -.Vec3.dot d n in
+  let cos_of n = -.Vec3.dot d n in
+  let reflect n = Vec3.madd d (2. *. cos_of n) n in
   (* relative index of refraction across this surface *)
-  let ior = hit.obj.interior.ior in
-  let eta = if entering then 1. /. ior else ior in
-  let rf = f.reflection in
-  let kr =
-    if not (Finish.has_reflection f) then black
+  let inner = hit.obj.interior in
+  let outer_ior = match media with i :: _ -> i.Interior.ior | [] -> 1. in
+  let eta, next_media =
+    if entering then (outer_ior /. inner.ior, inner :: media)
     else
-      let k =
-        if rf.fresnel then if ior = 1. then 0. else fresnel (1. /. eta) cos_i
-        else Float.pow (1. -. cos_i) rf.falloff
-      in
-      let k = Color.add rf.rmin (Color.scale k (Color.add rf.rmax (Color.scale (-1.) rf.rmin))) in
-      Color.mul k (metallic_tint rf.rmetallic cos_i pc)
+      let rest = match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m in
+      let beyond = match rest with i :: _ -> i.Interior.ior | [] -> 1. in
+      (inner.ior /. beyond, rest)
   in
-  let reflect () = Vec3.madd d (2. *. cos_i) n in
-  let c =
-    if Color.is_black kr then local
-    else
-      let w = weight *. Color.max_channel kr in
-      let rc = trace_ray s (Ray.make p (reflect ())) (level + 1) w medium in
-      let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
-      Color.add local (Color.mul kr rc)
+  (* shade the layers top down; [w] is what the layers above let through;
+     returns the colour and what the whole texture lets through *)
+  let top_normal = ref None in
+  let rec layers acc w = function
+    | [] -> (acc, w)
+    | (layer : Texture.layer) :: rest -> (
+        match layer.tmap with
+        | Some m ->
+            (* a patterned layer: blend the textures around the value *)
+            let c, f =
+              List.fold_left
+                (fun (c, f) (k, t) ->
+                  let c', f' = layers black white t in
+                  (madd c k c', madd f k f'))
+                (black, black) (Texture.blend m p)
+            in
+            let acc = add acc (mul w c) and w = mul w f in
+            if is_black w then (acc, w) else layers acc w rest
+        | None ->
+            let n =
+              match layer.normal with
+              | None -> n0
+              | Some nm ->
+                  let m = Normal.perturb nm p n0 in
+                  if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
+                  else m
+            in
+            if !top_normal = None then top_normal := Some n;
+            let f = layer.finish in
+            let pig = Pigment.eval layer.pigment p in
+            let pc = pig.c in
+            let alpha =
+              if s.settings.legacy_alpha then
+                1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
+              else 1. -. pig.filter -. pig.transmit
+            in
+            let local =
+              madd (direct s f pc alpha p n d) alpha
+                (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
+            in
+            let local =
+              add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
+            in
+            let acc = add acc (mul w local) in
+            let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
+            if is_black w then (acc, w) else layers acc w rest)
   in
-  let tr = add (scale pig.filter pc) (gray pig.transmit) in
+  let c, tr = layers black white hit.obj.texture in
   if Color.luminance tr <= s.settings.adc_bailout then c
   else
-    let next_medium = if entering then Some hit.obj.interior else None in
+    let n = Option.value ~default:n0 !top_normal in
     let w = weight *. Color.max_channel tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)
-      Color.add c (Color.mul tr (trace_ray s (Ray.make p d) level w next_medium))
+      add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w next_media))
     else
+      let cos_i = cos_of n in
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
       if k < 0. then
-        (* total internal reflection: unfiltered *)
-        Color.add c (trace_ray s (Ray.make p (reflect ())) (level + 1) weight medium)
+        (* total internal reflection: not filtered by the surface colour *)
+        add c (mul fade (trace_ray s (Ray.make p (reflect n)) (level + 1) weight media))
       else
         let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
-        Color.add c (Color.mul tr (trace_ray s (Ray.make p t) (level + 1) w next_medium))
+        add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w next_media))
 
-let trace s ray = trace_ray s ray 1 1. None
+and reflection s (f : Finish.t) pc n d p level weight media eta =
+  if not (Finish.has_reflection f) then black
+  else
+    let rf = f.reflection in
+    let cos_i = -.Vec3.dot d n in
+    let kr, w =
+      let span = add rf.rmax (scale (-1.) rf.rmin) in
+      if rf.fresnel then
+        let k = if eta = 1. then 0. else fresnel (1. /. eta) cos_i in
+        let kr = add rf.rmin (scale k span) in
+        (kr, max_channel kr)
+      else
+        let k = Float.pow (1. -. cos_i) rf.falloff in
+        (add rf.rmin (scale k span), Float.max (max_channel rf.rmin) (max_channel rf.rmax))
+    in
+    let kr = mul kr (metallic_tint rf.rmetallic cos_i pc) in
+    if is_black kr then black
+    else
+      let dir = Vec3.madd d (2. *. cos_i) n in
+      let rc = trace_ray s (Ray.make p dir) (level + 1) (weight *. w) media in
+      let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
+      mul kr rc
 
-let pixel (s : Scene.t) ~width ~height x y =
-  let sx, sy =
-    Camera.pixel_coords ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)
-  in
+(* POV-Ray starts camera rays inside every object that contains the
+   camera (the last one in the scene first). Cached per scene and origin:
+   the camera location is the same for every ray of a pinhole camera. *)
+let start_cache : (Scene.t * Vec3.t * Interior.t list) option Atomic.t = Atomic.make None
+
+let start_media (s : Scene.t) (o : Vec3.t) =
+  match Atomic.get start_cache with
+  | Some (s', o', m) when s' == s && o' = o -> m
+  | _ ->
+      let m =
+        Array.fold_left
+          (fun acc (obj : Object.t) -> if Object.inside obj o then obj.interior :: acc else acc)
+          [] s.objects
+      in
+      Atomic.set start_cache (Some (s, o, m));
+      m
+
+let trace s (ray : Ray.t) = trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
+
+let sample (s : Scene.t) ~width ~height px py =
+  let sx, sy = Camera.pixel_coords ~width ~height px py in
   trace s (Camera.ray s.camera sx sy)
+
+let pixel s ~width ~height x y =
+  sample s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)

@@ -1,10 +1,29 @@
 (** POV-Ray 3.7's classic lighting model (pov-facts.md section 5):
-    ambient, diffuse with brilliance, Phong and Blinn highlights, metallic,
-    shadows through filtering and transmitting surfaces, reflection and
-    refraction, trace level and ADC bailout. *)
+    ambient and emission, diffuse with brilliance and back-side diffuse,
+    Phong and Blinn highlights, metallic, layered textures, normal
+    perturbation, shadows through filtering and transmitting surfaces
+    (with interior fade), area lights, reflection (constant, falloff,
+    Fresnel, exponent, metallic), refraction with nested interiors and
+    total internal reflection, trace level and ADC bailout, background and
+    sky_sphere.
+
+    Rules found by cross-rendering with POV-Ray 3.7 (beyond pov-facts.md):
+    - interior fade multiplies what comes through the far side of a medium
+      (the transmitted or totally reflected ray at the surface where the
+      ray leaves, by the distance just travelled inside), not that far
+      surface's own shading;
+    - shadow rays fade over every stretch inside a fading object,
+      including the stretch from a lit point that is itself inside;
+    - a transparent sky_sphere lets the background through (filter and
+      transmit as for surfaces). *)
 
 val trace : Scene.t -> Ray.t -> Color.t
 (** Radiance (linear working space) along a camera ray (trace level 1). *)
+
+val sample : Scene.t -> width:int -> height:int -> float -> float -> Color.t
+(** [sample s ~width ~height px py]: the camera ray through the image
+    point [(px, py)] (pixel [(i, j)] spans [[i, i+1) x [j, j+1)], row 0 at
+    the top). *)
 
 val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 (** The colour of pixel [(x, y)]: one ray through the pixel centre. *)

@@ -82,6 +82,11 @@ let light (o : Sdl.obj) (l : Sdl.light) =
     fade_distance = l.fade_distance;
     fade_power = l.fade_power;
     shadowless = l.shadowless;
+    area =
+      Option.map
+        (fun (a : Light.area) ->
+          { a with axis1 = Transform.vector x a.axis1; axis2 = Transform.vector x a.axis2 })
+        l.area;
   }
 
 let positive (o : Sdl.obj) what r =
@@ -179,7 +184,10 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   match o.shape with
   | Sdl.Light l ->
       ctx.lights := light o l :: !(ctx.lights);
-      None
+      (* looks_like: an ordinary object placed at the light, casting no
+         shadow (so that it does not block its own light) *)
+      Option.bind l.looks_like (fun (ll : Sdl.obj) ->
+          obj { ctx' with no_shadow = true } (Sdl.transform_obj (Transform.translate l.position) ll))
   | Sdl.Csg (op, l) -> (
       let cs = children l in
       match op with
@@ -246,6 +254,7 @@ and scene_ (s : Sdl.scene) =
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
+    let sky = ref Sky.none in
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
@@ -253,6 +262,7 @@ and scene_ (s : Sdl.scene) =
         | Sdl.Object o ->
             let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; lights } in
             objects := top ctx o !objects
+        | Sdl.Sky_sphere k -> sky := k
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
         | Sdl.Global_settings (_, gs) ->
@@ -262,7 +272,8 @@ and scene_ (s : Sdl.scene) =
                 | Sdl.Max_trace_level n ->
                     settings := { !settings with max_trace_level = max 1 (min 256 n) }
                 | Sdl.Adc_bailout a -> settings := { !settings with adc_bailout = a }
-                | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c })
+                | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c }
+                | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;
     let v37 = match s.version with Some v -> v >= 3.7 | None -> false in
@@ -281,6 +292,7 @@ and scene_ (s : Sdl.scene) =
         lights = Array.of_list (List.rev !lights);
         camera;
         background = !background;
+        sky = !sky;
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }
   with Diag.Error d -> Error d

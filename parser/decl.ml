@@ -9,6 +9,10 @@ type t =
   | Camera of Sdl.camera_item list
   | Function of Fn.t
   | Spline of Spline.t
+  | Color_map of (float * Camlray.Pigment.t) array
+  | Normal of Camlray.Normal.t option
+  | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
+  | Sky_sphere of Camlray.Sky.t
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -21,3 +25,7 @@ let kind_name = function
   | Camera _ -> "a camera"
   | Function _ -> "a function"
   | Spline _ -> "a spline"
+  | Color_map _ -> "a colour map"
+  | Normal _ -> "a normal"
+  | Material _ -> "a material"
+  | Sky_sphere _ -> "a sky_sphere"

@@ -12,6 +12,10 @@ type t =
   | Camera of Sdl.camera_item list
   | Function of Fn.t  (** [function { ... }] *)
   | Spline of Spline.t  (** [spline { ... }] *)
+  | Color_map of (float * Camlray.Pigment.t) array
+  | Normal of Camlray.Normal.t option
+  | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
+  | Sky_sphere of Camlray.Sky.t
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

@@ -4,14 +4,14 @@ let version_ = ref 3.62
 let given = ref false
 let first = ref None
 let items_seen = ref false
-let tex = ref { Texture.pigment = Pigment.black; finish = Finish.default }
+let tex = ref (Texture.layer Pigment.black Finish.default)
 
 let reset () =
   version_ := 3.62;
   given := false;
   first := None;
   items_seen := false;
-  tex := { Texture.pigment = Pigment.black; finish = Finish.default }
+  tex := Texture.layer Pigment.black Finish.default
 
 let version () = !version_
 
@@ -27,3 +27,4 @@ let mark_item () = items_seen := true
 let texture () = !tex
 let set_finish f = tex := { !tex with finish = f }
 let set_pigment p = tex := { !tex with pigment = p }
+let set_normal n = tex := { !tex with normal = n }

@@ -22,3 +22,4 @@ val mark_item : unit -> unit
 val texture : unit -> Camlray.Texture.layer
 val set_finish : Camlray.Finish.t -> unit
 val set_pigment : Camlray.Pigment.t -> unit
+val set_normal : Camlray.Normal.t option -> unit

@@ -17,3 +17,15 @@ let nonzero_scale l (v : Vec3.t) =
   let fix c = if c = 0. then (Diag.warning (loc l) "zero scale component replaced by 1"; 1.) else c in
   Vec3.make (fix v.x) (fix v.y) (fix v.z)
 
+let area_field f (o : Sdl.obj) = match o.shape with
+  | Sdl.Light ({ area = Some a; _ } as l) -> { o with shape = Sdl.Light { l with area = Some (f a) } }
+  | _ -> o
+let top_layer f (t : Texture.t) = match t with top :: rest -> f top :: rest | [] -> []
+let old_entry l1 v1 l2 v2 (c1, c2) = [ (fl l1 v1, c1); (fl l2 v2, c2) ]
+let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =
+  match l.tmap with
+  | None -> l
+  | Some t -> (
+      match (m { (Texdesc.of_pattern Pattern.Bozo) with pattern = Some t.pattern }).pattern with
+      | Some pattern -> { l with tmap = Some { t with pattern } }
+      | None -> l)

@@ -13,3 +13,14 @@ val light_field : (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
 
 val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlray.Vec3.t
 (** POV-Ray replaces zero scale components by 1, with a warning. *)
+val area_field : (Camlray.Light.area -> Camlray.Light.area) -> Sdl.obj -> Sdl.obj
+(** Change the area-light settings of a light (no effect before [area_light]). *)
+val top_layer : (Camlray.Texture.layer -> Camlray.Texture.layer) -> Camlray.Texture.t -> Camlray.Texture.t
+(** Change the top layer of a texture. *)
+val old_entry :
+  Lexing.position * Lexing.position -> Value.t -> Lexing.position * Lexing.position -> Value.t ->
+  Camlray.Pigment.t * Camlray.Pigment.t -> (float * Camlray.Pigment.t) list
+(** A colour map entry in the old form [[v1, v2 colour1 colour2]]. *)
+val tmap_pattern : Texdesc.modifier -> Camlray.Texture.layer -> Camlray.Texture.layer
+(** Apply a pattern modifier (turbulence, frequency, ...) to a patterned
+    texture layer. *)

@@ -67,7 +67,7 @@ open Gram
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
   | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
-  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture [ t ] }
+  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture t }
   | INTERIOR LBRACE i = interior_body RBRACE { Decl.Interior i }
   | TRANSFORM LBRACE t = transform_body RBRACE { Decl.Transform t }
   | CAMERA LBRACE c = camera_body RBRACE { Decl.Camera c }
@@ -109,7 +109,8 @@ open Gram
   | FINISH LBRACE f = finish_body RBRACE { fun () -> Defaults.set_finish f }
   | PIGMENT LBRACE p = pigment_body RBRACE { fun () -> Defaults.set_pigment p }
   | TEXTURE LBRACE t = texture_body RBRACE
-      { fun () -> Defaults.set_pigment t.Texture.pigment; Defaults.set_finish t.Texture.finish }
+      { let t = List.hd t in
+        fun () -> Defaults.set_pigment t.Texture.pigment; Defaults.set_finish t.Texture.finish }
 
 %public any_value:
   | o = OBJECT_ID { Decl.Object o }
@@ -125,7 +126,7 @@ open Gram
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
   | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
-  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture [ t ] }
+  | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture t }
   | INTERIOR LBRACE i = interior_body RBRACE { Decl.Interior i }
   | TRANSFORM LBRACE t = transform_body RBRACE { Decl.Transform t }
 

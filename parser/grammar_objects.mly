@@ -69,7 +69,7 @@ mesh_triangle:
       { Shapes.mesh_triangle (loc $loc)
           [| v3 $loc(a) a; v3 $loc(na) na; v3 $loc(b) b; v3 $loc(nb) nb; v3 $loc(c) c; v3 $loc(nc) nc |] t }
 
-mesh_texture: TEXTURE LBRACE t = texture_body RBRACE { [ t ] }
+mesh_texture: TEXTURE LBRACE t = texture_body RBRACE { t }
 
 mesh2_block:
   | VERTEX_VECTORS LBRACE n = param vs = items RBRACE { Shapes.vertex_vectors (loc $loc) n vs }
@@ -93,7 +93,7 @@ items:
   | t = transformation { Sdl.transform_obj t }
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
-          | Some layers -> t :: layers | None -> [ t ]) } }
+          | Some layers -> t @ layers | None -> t) } }
   | PIGMENT LBRACE p = pigment_body RBRACE
       { with_texture (fun l -> { l with Texture.pigment = p }) }
   | FINISH LBRACE f = finish_body RBRACE

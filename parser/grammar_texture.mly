@@ -6,13 +6,25 @@
 %token TEXTURE PIGMENT FINISH INTERIOR
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR
+%token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
+%token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION
+%token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
+%token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
+%token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
+%token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
+%token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
+%token <Camlray.Normal.t option> NORMAL_ID
+%token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
+%token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
+%token <Camlray.Sky.t> SKY_SPHERE_ID
 
 %%
 
 %public object_:
   | LIGHT_SOURCE LBRACE p = param COMMA? c = color_value ms = list(light_mod) RBRACE
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
-                  kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false } in
+                  kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
+                  area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
                   texture = None; interior = None; no_shadow = false; hollow = false } in
         List.fold_left (fun o f -> f o) o ms }
@@ -37,26 +49,274 @@
   | FADE_DISTANCE e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_distance = d }) }
   | FADE_POWER e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_power = d }) }
   | SHADOWLESS { light_field (fun l -> { l with shadowless = true }) }
+  | AREA_LIGHT a = param COMMA? b = param COMMA? n1 = param COMMA? n2 = param
+      { let a = v3 $loc(a) a and b = v3 $loc(b) b in
+        let n1 = Value.to_int (loc $loc(n1)) n1 and n2 = Value.to_int (loc $loc(n2)) n2 in
+        if n1 < 1 || n2 < 1 then Diag.error (loc $loc) "area_light needs at least 1 sample along each axis";
+        light_field (fun l -> { l with area = Some (Light.area a b n1 n2) }) }
+  | ADAPTIVE e = param { let k = Value.to_int (loc $loc(e)) e in area_field (fun a -> { a with adaptive = k }) }
+  | JITTER { area_field (fun a -> { a with jitter = true }) }
+  | CIRCULAR { area_field (fun a -> { a with circular = true }) }
+  | ORIENT { area_field (fun a -> { a with orient = true }) }
+  | AREA_ILLUMINATION %prec below_shift { area_field (fun a -> { a with area_illumination = true }) }
+  | AREA_ILLUMINATION b = param
+      { let on = Value.to_bool (loc $loc) b in area_field (fun a -> { a with area_illumination = on }) }
+  | LOOKS_LIKE LBRACE o = object_ RBRACE { light_field (fun l -> { l with looks_like = Some o }) }
 
 %public color_value_noprefix: k = RGB e = unary { Value.to_rgb (loc $loc) (Value.rgb_kind (loc $loc) k e) }
 
+(* a texture: its layers, top first ([texture { T_Layered }] keeps every
+   layer of T_Layered); pigment, normal and finish change the top layer,
+   transformations move every layer *)
 %public texture_body:
   | t = ioption(TEXTURE_ID) ms = list(texture_mod)
-      { let base = match t with Some (top :: _) -> top | _ -> Defaults.texture () in
+      { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
+  | k = pattern_kind ms = list(tmap_mod)
+      { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
+  | k = block_kind ts = list(block_texture) ms = list(tmap_mod)
+      { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
+        [ List.fold_left (fun l f -> f l) l ms ] }
+
+%public block_texture:
+  | TEXTURE LBRACE t = texture_body RBRACE COMMA? { t }
+
+(* modifiers of a patterned texture layer *)
+%public tmap_mod:
+  | t = transformation { Texture.transform_layer t }
+  | m = pattern_mod { tmap_pattern m }
+  | TEXTURE_MAP LBRACE es = list(texture_map_entry) RBRACE
+      { fun (l : Texture.layer) -> match l.tmap with
+          | Some m -> { l with tmap = Some { m with entries = Array.of_list es } }
+          | None -> l }
+
+%public texture_map_entry:
+  | LBRACKET v = param COMMA? t = texture_body RBRACKET { (fl $loc(v) v, t) }
 
 %public texture_mod:
-  | PIGMENT LBRACE p = pigment_body RBRACE { fun (l : Texture.layer) -> { l with pigment = p } }
-  | FINISH LBRACE f = finish_body RBRACE { fun (l : Texture.layer) -> { l with finish = f } }
-  | transformation { fun l -> l }
+  | PIGMENT LBRACE p = pigment_body RBRACE { top_layer (fun l -> { l with pigment = p }) }
+  | NORMAL LBRACE n = normal_body RBRACE { top_layer (fun l -> { l with normal = n }) }
+  | FINISH LBRACE f = finish_body RBRACE { top_layer (fun l -> { l with finish = f }) }
+  | t = transformation { Texture.transform t }
+
+%public object_mod:
+  | NORMAL LBRACE n = normal_body RBRACE { with_texture (fun l -> { l with Texture.normal = n }) }
+
+%public item:
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Sdl.Sky_sphere k }
+
+%public declare_rhs:
+  | k = SKY_SPHERE_ID { Decl.Sky_sphere k }
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Decl.Sky_sphere k }
+
+%public any_value:
+  | k = SKY_SPHERE_ID { Decl.Sky_sphere k }
+  | SKY_SPHERE LBRACE k = sky_body RBRACE { Decl.Sky_sphere k }
+
+%public global_item:
+  | NOISE_GENERATOR e = param { Sdl.Noise_generator (Value.to_int (loc $loc(e)) e) }
+  | NUMBER_OF_WAVES e = param { Sdl.Number_of_waves (Value.to_int (loc $loc(e)) e) }
+
+%public sky_body:
+  | k = ioption(SKY_SPHERE_ID) ms = list(sky_item)
+      { List.fold_left (fun k f -> f k) (Option.value ~default:Sky.none k) ms }
+
+%public sky_item:
+  | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { Sky.pigments = p :: k.pigments } }
+  | t = transformation { Sky.transform t }
 
 %public pigment_body:
-  | p = PIGMENT_ID ms = list(pigment_mod) { ignore ms; p }
-  | c = color_value ms = list(pigment_mod) { ignore ms; Pigment.solid (Value.to_color (loc $loc(c)) c) }
-  | ms = list(pigment_mod) { ignore ms; (Defaults.texture ()).pigment }
+  | p = PIGMENT_ID ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment p))) }
+  | c = color_value ms = list(pigment_mod)
+      { Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) }
+  | k = pattern_kind ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pattern k))) }
+  | k = block_kind cs = block_cells ms = list(pigment_mod)
+      { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
+  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
+      { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
+        Texdesc.(pigment (apply ms (of_pigment p))) }
+  | ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment (Defaults.texture ()).pigment))) }
+
+%public block_cells:
+  | { [] }
+  | c = block_cell COMMA? cs = block_cells { c :: cs }
+
+%public block_cell:
+  | c = cell_color { Pigment.solid (Value.to_color (loc $loc(c)) c) }
+  | PIGMENT LBRACE p = pigment_body RBRACE { p }
+
+(* a colour in a list without separators: no comparisons at the top level *)
+%public cell_color:
+  | e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+
+(* a colour that starts with a keyword (color ..., rgb ...) *)
+%public kw_color:
+  | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR ms = nonempty_list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
+  | k = RGB e = unary ms = list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.rgb_kind (loc $loc) k e) ms }
+
+%public image_item:
+  | ONCE { fun (i : Pigment.image) -> { i with once = true } }
+  | INTERPOLATE e = param { let n = Value.to_int (loc $loc(e)) e in fun (i : Pigment.image) -> { i with interpolate = n > 0 } }
+  | MAP_TYPE e = param
+      { if Value.to_int (loc $loc(e)) e <> 0 then Diag.warning (loc $loc) "only map_type 0 (planar) is supported";
+        fun i -> i }
+  | c = CHANNEL ALL e = param
+      { let x = fl $loc(e) e in
+        fun (i : Pigment.image) -> { i with px = Array.map (fun (p : Color.rgbft) ->
+          if c = "filter" then { p with filter = x } else if c = "transmit" then { p with transmit = x } else p) i.px } }
+
+%public block_kind:
+  | CHECKER { Pattern.Checker }
+  | HEXAGON { Pattern.Hexagon }
+  | BRICK { Pattern.Brick { size = Vec3.make 8. 3. 4.5; mortar = 0.5 } }
+
+%public pattern_kind:
+  | GRADIENT e = param { Pattern.gradient (v3 $loc(e) e) }
+  | RADIAL { Pattern.Radial }
+  | ONION { Pattern.Onion }
+  | WOOD { Pattern.Wood }
+  | MARBLE { Pattern.Marble }
+  | LEOPARD { Pattern.Leopard }
+  | BOZO { Pattern.Bozo }
+  | SPOTTED { Pattern.Spotted }
+  | BUMPS { Pattern.Bumps }
+  | DENTS { Pattern.Dents }
+  | GRANITE { Pattern.Granite }
+  | AGATE { Pattern.Agate 1. }
+  | RIPPLES { Pattern.Ripples }
+  | WAVES { Pattern.Waves }
+  | WRINKLES { Pattern.Wrinkles }
+  | CRACKLE { Pattern.Crackle }
+
+%public declare_rhs:
+  | m = COLOR_MAP_ID { Decl.Color_map m }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Decl.Color_map m }
+  | n = NORMAL_ID { Decl.Normal n }
+  | NORMAL LBRACE n = normal_body RBRACE { Decl.Normal n }
+
+%public any_value:
+  | m = COLOR_MAP_ID { Decl.Color_map m }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Decl.Color_map m }
+  | n = NORMAL_ID { Decl.Normal n }
+  | NORMAL LBRACE n = normal_body RBRACE { Decl.Normal n }
+
+%public declare_rhs:
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
+
+%public any_value:
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
+
+%public object_mod:
+  | MATERIAL LBRACE m = material_body RBRACE
+      { fun (o : Sdl.obj) ->
+          let o = match fst m with
+            | Some t -> { o with texture = Some (match o.texture with Some l -> t @ l | None -> t) }
+            | None -> o in
+          match snd m with Some i -> { o with interior = Some i } | None -> o }
+
+(* material { [M_ID] texture { } ... interior { } transforms }: the last
+   texture written is the top layer *)
+%public material_body:
+  | m = ioption(MATERIAL_ID) ms = list(material_item)
+      { List.fold_left (fun m f -> f m) (match m with Some m -> m | None -> (None, None)) ms }
+
+%public material_item:
+  | TEXTURE LBRACE t = texture_body RBRACE
+      { fun (tex, i) -> (Some (match tex with Some l -> t @ l | None -> t), i) }
+  | INTERIOR LBRACE i = interior_body RBRACE { fun (tex, _) -> (tex, Some i) }
+  | t = transformation { fun (tex, i) -> (Option.map (Texture.transform t) tex, i) }
+
+%public default_item:
+  | NORMAL LBRACE n = normal_body RBRACE { fun () -> Defaults.set_normal n }
+
+%public color_map_body:
+  | m = COLOR_MAP_ID { m }
+  | es = list(map_entry) { Array.of_list (List.concat es) }
 
 %public pigment_mod:
-  | t = transformation { t }
+  | t = transformation { Texdesc.transform t }
+  | m = pattern_mod { m }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { Texdesc.map (Array.to_list m) }
+  | PIGMENT_MAP LBRACE es = list(pigment_map_entry) RBRACE { Texdesc.map es }
+
+%public map_entry:
+  | LBRACKET v = param c = color_value RBRACKET
+      { [ (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) ] }
+  | LBRACKET v = param COMMA c = color_value RBRACKET
+      { [ (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) ] }
+  (* the old form [v1, v2 colour1 colour2]: a ramp from v1 to v2 *)
+  | LBRACKET v1 = param COMMA v2 = param cs = kw_color_pair RBRACKET { old_entry $loc(v1) v1 $loc(v2) v2 cs }
+  | LBRACKET v1 = param v2 = param cs = kw_color_pair RBRACKET { old_entry $loc(v1) v1 $loc(v2) v2 cs }
+
+%public kw_color_pair:
+  | c1 = kw_color COMMA? c2 = kw_color
+      { (Pigment.solid (Value.to_color (loc $loc(c1)) c1), Pigment.solid (Value.to_color (loc $loc(c2)) c2)) }
+
+%public pigment_map_entry:
+  | LBRACKET v = param COMMA? p = PIGMENT_ID ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pigment p)))) }
+  | LBRACKET v = param COMMA? k = pattern_kind ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pattern k)))) }
+  | LBRACKET v = param COMMA? k = block_kind cs = block_cells ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs }))) }
+  | LBRACKET v = param COMMA? c = color_value RBRACKET
+      { (fl $loc(v) v, Pigment.solid (Value.to_color (loc $loc(c)) c)) }
+
+%public pattern_mod:
+  | TURBULENCE e = param { Texdesc.turbulence (v3 $loc(e) e) }
+  | OCTAVES e = param { let n = Value.to_int (loc $loc(e)) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with octaves = max 1 (min 10 n) } } | None -> p) }
+  | OMEGA e = param { let x = fl $loc(e) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with omega = x } } | None -> p) }
+  | LAMBDA e = param { let x = fl $loc(e) e in
+      Texdesc.pattern_mod (fun p -> match p.turbulence with
+        | Some tb -> { p with turbulence = Some { tb with lambda = x } } | None -> p) }
+  | FREQUENCY e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
+  | PHASE e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
+  | RAMP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Ramp }) }
+  | TRIANGLE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Triangle }) }
+  | SINE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Sine }) }
+  | SCALLOP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Scallop }) }
+  | CUBIC_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Cubic }) }
+  | POLY_WAVE e = ioption(param)
+      { let x = match e with Some e -> fl $loc(e) e | None -> 1. in
+        Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
+  | BRICK_SIZE e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Brick b -> Pattern.Brick { b with size = v } | k -> k) }
+  | MORTAR e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
+  | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
+  | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
+  | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
+
+%public normal_body:
+  | k = block_kind a = ioption(param) ms = list(normal_mod)
+      { let p = Texdesc.of_pattern k in
+        let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
+        Some (Texdesc.normal (Texdesc.apply ms p)) }
+  | n = NORMAL_ID ms = list(normal_mod)
+      { Option.map (fun (n : Normal.t) ->
+          let p = Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern;
+                                     xform = n.xform; amount = n.amount } in
+          Texdesc.normal p) n }
+  | k = pattern_kind a = ioption(param) ms = list(normal_mod)
+      { let p = Texdesc.of_pattern k in
+        let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
+        Some (Texdesc.normal (Texdesc.apply ms p)) }
+  | ms = list(normal_mod) { ignore ms; None }
+
+%public normal_mod:
+  | t = transformation { Texdesc.transform t }
+  | m = pattern_mod { m }
 
 %public finish_body:
   | f = ioption(FINISH_ID) ms = list(finish_item)
@@ -100,6 +360,9 @@
   | IOR e = param
       { ignore e; Diag.warning (loc $loc) "ior in finish is obsolete and ignored: use interior { ior ... }";
         fun f -> f }
+
+%public finish_item:
+  | CRAND e = param { ignore e; fun f -> f }  (* random grain: not reproducible, ignored *)
 
 %public reflection_item:
   | FRESNEL b = ioption(param)

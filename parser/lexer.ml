@@ -61,7 +61,24 @@ let texture_keywords =
     ("specular", SPECULAR); ("roughness", ROUGHNESS); ("metallic", METALLIC);
     ("reflection", REFLECTION); ("fresnel", FRESNEL); ("exponent", EXPONENT);
     ("reflection_exponent", REFLECTION_EXPONENT); ("conserve_energy", CONSERVE_ENERGY);
-    ("ior", IOR);
+    ("ior", IOR); ("area_light", AREA_LIGHT); ("adaptive", ADAPTIVE); ("jitter", JITTER);
+    ("circular", CIRCULAR); ("orient", ORIENT); ("area_illumination", AREA_ILLUMINATION);
+    ("looks_like", LOOKS_LIKE); ("sky_sphere", SKY_SPHERE); ("normal", NORMAL);
+    ("color_map", COLOR_MAP); ("colour_map", COLOR_MAP); ("pigment_map", PIGMENT_MAP);
+    ("checker", CHECKER); ("hexagon", HEXAGON); ("brick", BRICK); ("brick_size", BRICK_SIZE);
+    ("mortar", MORTAR); ("gradient", GRADIENT); ("radial", RADIAL); ("onion", ONION);
+    ("bozo", BOZO); ("spotted", SPOTTED); ("granite", GRANITE); ("marble", MARBLE);
+    ("wood", WOOD); ("agate", AGATE); ("agate_turb", AGATE_TURB); ("leopard", LEOPARD);
+    ("ripples", RIPPLES); ("waves", WAVES); ("wrinkles", WRINKLES); ("bumps", BUMPS);
+    ("dents", DENTS); ("turbulence", TURBULENCE); ("octaves", OCTAVES); ("omega", OMEGA);
+    ("lambda", LAMBDA); ("frequency", FREQUENCY); ("phase", PHASE); ("ramp_wave", RAMP_WAVE);
+    ("triangle_wave", TRIANGLE_WAVE); ("sine_wave", SINE_WAVE); ("scallop_wave", SCALLOP_WAVE);
+    ("cubic_wave", CUBIC_WAVE); ("poly_wave", POLY_WAVE); ("image_map", IMAGE_MAP);
+    ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("map_type", MAP_TYPE);
+    ("all", ALL); ("crand", CRAND);
+    ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
+    ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
+    ("texture_map", TEXTURE_MAP);
   ]
 
 let keywords : (string, Parser.token) Hashtbl.t =

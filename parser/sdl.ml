@@ -44,6 +44,8 @@ and light = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  area : Light.area option;
+  looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }
 
 and obj = {
@@ -76,17 +78,20 @@ type global =
   | Max_trace_level of int
   | Adc_bailout of float
   | Ambient_light of Color.t
+  | Noise_generator of int  (** parsed; camlray has one noise *)
+  | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
 type item =
   | Object of obj
   | Camera of Loc.t * camera_item list
   | Background of Color.rgbft
   | Global_settings of Loc.t * global list
+  | Sky_sphere of Sky.t
 
 type scene = { items : item list; version : float option; file : string }
 
-(* Solid pigments do not move; patterns (later) carry their own transform. *)
-let transform_texture _t tex = tex
+(* Patterns carry their own transform; solid colours do not move. *)
+let transform_texture t tex = Texture.transform t tex
 
 let transform_obj t o =
   { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture }

@@ -48,6 +48,8 @@ and light = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  area : Light.area option;
+  looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }
 
 and obj = {
@@ -80,12 +82,15 @@ type global =
   | Max_trace_level of int
   | Adc_bailout of float
   | Ambient_light of Color.t
+  | Noise_generator of int  (** parsed; camlray has one noise *)
+  | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
 type item =
   | Object of obj
   | Camera of Loc.t * camera_item list
   | Background of Color.rgbft
   | Global_settings of Loc.t * global list
+  | Sky_sphere of Sky.t
 
 type scene = {
   items : item list;  (** in source order *)

@@ -38,6 +38,10 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Camera c -> Parser.CAMERA_ID c
   | Decl.Function f -> Parser.FUNCTION_ID f
   | Decl.Spline _ -> Parser.UNDEFINED_ID "a spline (call it: S(t))"
+  | Decl.Color_map m -> Parser.COLOR_MAP_ID m
+  | Decl.Normal n -> Parser.NORMAL_ID n
+  | Decl.Material m -> Parser.MATERIAL_ID m
+  | Decl.Sky_sphere k -> Parser.SKY_SPHERE_ID k
 
 let suggest t name =
   let d a b =
@@ -318,7 +322,7 @@ and declare t ~local loc =
     else begin
       (* #declare deprecated [once] "message" NAME = ... *)
       let once =
-        match (raw_peek t).raw with Ident "once" -> ignore (raw_next t); true | _ -> false
+        match (raw_peek t).raw with Ident "once" | Tok Parser.ONCE -> ignore (raw_next t); true | _ -> false
       in
       let msg =
         match (raw_next t).raw with
@@ -452,6 +456,16 @@ and rhs t =
                 fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
                   (describe f.toks.(i).raw)))
   in
+  (* a layered texture: texture { ... } texture { ... }, the last on top *)
+  let rec layers (d : Decl.t) =
+    match (d, (raw_peek t).raw) with
+    | Decl.Texture below, Tok Parser.TEXTURE -> (
+        match parse t Parser.Incremental.declare_rhs with
+        | Decl.Texture top -> layers (Decl.Texture (top @ below))
+        | other -> other)
+    | _ -> d
+  in
+  let d = layers d in
   (match d with
   | Decl.Value _ -> ()
   | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));

@@ -28,4 +28,10 @@ let () =
       Test_sampler.tests;
       Test_bsdf.tests;
       Test_path.tests;
+      Test_whitted.tests;
+      Test_light.tests;
+      Test_pattern.tests;
+      Test_aa.tests;
+      Test_gamma.tests;
+      Test_compare.tests;
     ]

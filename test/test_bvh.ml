@@ -5,7 +5,7 @@ open Geom_gen
 
 let scene objects =
   Scene.make ~objects ~lights:[||] ~camera:Camera.default ~background:Color.black
-    ~settings:Scene.default_settings
+    ~settings:Scene.default_settings ()
 
 (* random objects spread over a 20-unit cube, some CSG, some infinite *)
 let gobj =

@@ -1,0 +1,73 @@
+(* Perlin's improved-noise construction with camlray's own permutation. *)
+
+let perm =
+  let p = Array.init 256 Fun.id in
+  (* fixed xorshift shuffle: the same table on every run *)
+  let s = ref 0x2545F491 in
+  let next () =
+    let x = !s in
+    let x = x lxor ((x lsl 13) land 0xFFFFFFFF) in
+    let x = x lxor (x lsr 17) in
+    let x = x lxor ((x lsl 5) land 0xFFFFFFFF) in
+    s := x;
+    x
+  in
+  for i = 255 downto 1 do
+    let j = next () mod (i + 1) in
+    let t = p.(i) in
+    p.(i) <- p.(j);
+    p.(j) <- t
+  done;
+  Array.init 512 (fun i -> p.(i land 255))
+
+let[@inline] fade t = t *. t *. t *. ((t *. ((t *. 6.) -. 15.)) +. 10.)
+let[@inline] lerp t a b = a +. (t *. (b -. a))
+
+let[@inline] grad h x y z =
+  let h = h land 15 in
+  let u = if h < 8 then x else y in
+  let v = if h < 4 then y else if h = 12 || h = 14 then x else z in
+  (if h land 1 = 0 then u else -.u) +. if h land 2 = 0 then v else -.v
+
+let snoise (p : Vec3.t) =
+  let fx = Float.floor p.x and fy = Float.floor p.y and fz = Float.floor p.z in
+  let xi = int_of_float fx land 255 and yi = int_of_float fy land 255
+  and zi = int_of_float fz land 255 in
+  let x = p.x -. fx and y = p.y -. fy and z = p.z -. fz in
+  let u = fade x and v = fade y and w = fade z in
+  let a = perm.(xi) + yi and b = perm.(xi + 1) + yi in
+  let aa = perm.(a) + zi and ab = perm.(a + 1) + zi in
+  let ba = perm.(b) + zi and bb = perm.(b + 1) + zi in
+  let x1 = x -. 1. and y1 = y -. 1. and z1 = z -. 1. in
+  lerp w
+    (lerp v
+       (lerp u (grad perm.(aa) x y z) (grad perm.(ba) x1 y z))
+       (lerp u (grad perm.(ab) x y1 z) (grad perm.(bb) x1 y1 z)))
+    (lerp v
+       (lerp u (grad perm.(aa + 1) x y z1) (grad perm.(ba + 1) x1 y z1))
+       (lerp u (grad perm.(ab + 1) x y1 z1) (grad perm.(bb + 1) x1 y1 z1)))
+
+let noise p = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise p)))
+
+let off1 = Vec3.make 31.416 17.21 (-9.73)
+let off2 = Vec3.make (-23.1) 41.7 13.3
+
+let dnoise p =
+  Vec3.make (snoise p) (snoise (Vec3.add p off1)) (snoise (Vec3.add p off2))
+
+let turbulence ~octaves ~omega ~lambda p =
+  let acc = ref Vec3.zero and amp = ref 1. and freq = ref 1. in
+  for _ = 1 to max 1 octaves do
+    acc := Vec3.madd !acc !amp (dnoise (Vec3.scale !freq p));
+    amp := !amp *. omega;
+    freq := !freq *. lambda
+  done;
+  !acc
+
+let fractal ~octaves p =
+  let acc = ref 0. and f = ref 1. in
+  for _ = 1 to max 1 octaves do
+    acc := !acc +. (Float.abs (snoise (Vec3.scale !f p)) /. !f);
+    f := !f *. 2.
+  done;
+  !acc

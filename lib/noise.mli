@@ -1,0 +1,23 @@
+(** Solid noise for patterns: camlray's own gradient noise (Perlin's
+    "improved noise" construction: quintic fade, 12 edge gradients) with a
+    permutation table made by a fixed shuffle. It is NOT POV-Ray's noise
+    (whose tables are not reproduced), so noise-based patterns (bozo,
+    granite, marble with turbulence, ...) look alike but differ pixel by
+    pixel from POV-Ray's. Deterministic and thread-safe. *)
+
+val noise : Vec3.t -> float
+(** Scalar noise in [[0, 1]], 0.5 at lattice points. *)
+
+val snoise : Vec3.t -> float
+(** Signed noise, about [[-1, 1]], 0 at lattice points. *)
+
+val dnoise : Vec3.t -> Vec3.t
+(** Vector noise: three decorrelated signed noises. *)
+
+val turbulence : octaves:int -> omega:float -> lambda:float -> Vec3.t -> Vec3.t
+(** [sum_{i < octaves} omega^i dnoise(lambda^i p)]: the displacement
+    POV-Ray's [turbulence] warp scales per axis. *)
+
+val fractal : octaves:int -> Vec3.t -> float
+(** [sum_i |snoise(2^i p)| / 2^i], in about [[0, 2]]: the scalar 1/f
+    noise used by granite, wrinkles, agate. *)

@@ -1,0 +1,59 @@
+(** Pattern functions of POV-Ray pigments and normals: a number in
+    [[0, 1]] (or a cell index for the block patterns checker, hexagon,
+    brick) for a point in pattern space. The exact patterns (checker,
+    gradient, radial, onion, wood, marble, leopard, hexagon, brick) agree
+    with POV-Ray 3.7's [function { pattern { ... } }] values; the noise
+    patterns use {!Noise}, camlray's own noise, and only resemble
+    POV-Ray's. *)
+
+type wave = Ramp | Triangle | Sine | Scallop | Cubic | Poly of float
+
+type kind =
+  | Checker
+  | Hexagon
+  | Brick of { size : Vec3.t; mortar : float }
+  | Gradient of Vec3.t  (** normalised by {!gradient} *)
+  | Radial
+  | Onion
+  | Wood
+  | Marble
+  | Leopard
+  | Bozo
+  | Spotted  (** bozo's noise, black to white *)
+  | Bumps  (** bozo's noise, black to white *)
+  | Dents
+  | Granite
+  | Agate of float  (** agate_turb *)
+  | Ripples
+  | Waves
+  | Wrinkles
+  | Crackle  (** F2 - F1 cellular noise (camlray's own feature points) *)
+
+type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
+
+type t = {
+  kind : kind;
+  turbulence : turbulence option;
+  frequency : float;
+  phase : float;
+  wave : wave option;  (** [None]: the pattern's default wave *)
+}
+
+val make : kind -> t
+(** No turbulence, frequency 1, phase 0, default wave. *)
+
+val gradient : Vec3.t -> kind
+val default_turbulence : Vec3.t -> turbulence
+(** octaves 6, omega 0.5, lambda 2. *)
+
+val is_block : kind -> bool
+(** checker, hexagon, brick: the value is a cell index, used with a list
+    of colours or pigments rather than a map. *)
+
+val block_count : kind -> int
+(** Number of cells: 2 (checker, brick) or 3 (hexagon). *)
+
+val value : t -> Vec3.t -> float
+(** The pattern at a point of pattern space: turbulence warp, the raw
+    pattern, then frequency, phase and wave shaping (block patterns:
+    the cell index as a float, no shaping). *)

@@ -1,0 +1,94 @@
+open Camlray
+
+type pat = {
+  pattern : Pattern.t option;
+  base : Pigment.t;
+  entries : (float * Pigment.t) array option;
+  cells : Pigment.t list;
+  xform : Transform.t;
+  amount : float;
+}
+
+type modifier = pat -> pat
+
+let empty =
+  { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
+    amount = 0.5 }
+
+let of_pigment (p : Pigment.t) =
+  match p with
+  | Pigment.Map { pattern; entries; xform } ->
+      { empty with pattern = Some pattern; entries = Some entries; xform; base = p }
+  | Pigment.Blocks { pattern; cells; xform } ->
+      { empty with pattern = Some pattern; cells = Array.to_list cells; xform; base = p }
+  | _ -> { empty with base = p }
+
+let of_pattern k = { empty with pattern = Some (Pattern.make k) }
+let apply ms p = List.fold_left (fun p m -> m p) p ms
+
+let transform t p =
+  match p.pattern with
+  | None -> { p with base = Pigment.transform t p.base }
+  | Some _ ->
+      {
+        p with
+        xform = Transform.then_ p.xform t;
+        entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries;
+        cells = List.map (Pigment.transform t) p.cells;
+      }
+
+let pattern_mod f p = match p.pattern with Some pt -> { p with pattern = Some (f pt) } | None -> p
+
+let turbulence v =
+  pattern_mod (fun pt ->
+      let tb =
+        match pt.turbulence with
+        | Some tb -> { tb with amount = v }
+        | None -> Pattern.default_turbulence v
+      in
+      { pt with turbulence = Some tb })
+
+let map es p = { p with entries = Some (Array.of_list es) }
+let kind_mod f = pattern_mod (fun pt -> { pt with kind = f pt.kind })
+
+let pigment p =
+  match p.pattern with
+  | None -> p.base
+  | Some pattern ->
+      if Pattern.is_block pattern.kind then
+        let defaults = Array.map snd (Pigment.default_entries pattern.kind) in
+        let given = Array.of_list p.cells in
+        let cells =
+          Array.init (Pattern.block_count pattern.kind) (fun i ->
+              if i < Array.length given then given.(i) else defaults.(i))
+        in
+        Pigment.Blocks { pattern; cells; xform = p.xform }
+      else
+        let entries =
+          match p.entries with Some e -> e | None -> Pigment.default_entries pattern.kind
+        in
+        Pigment.Map { pattern; entries; xform = p.xform }
+
+let normal p =
+  match p.pattern with
+  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform }
+  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform }
+
+let image_map loc ~gamma_decode file mods =
+  let img =
+    try Image.read file
+    with Sys_error e | Failure e -> Diag.error loc "cannot read image_map %s: %s" file e
+  in
+  let dec x =
+    let c = float_of_int x /. 255. in
+    if gamma_decode then
+      if c <= 0.04045 then c /. 12.92 else Float.pow ((c +. 0.055) /. 1.055) 2.4
+    else c
+  in
+  let px =
+    Array.init (img.w * img.h) (fun i ->
+        let b k = dec (Char.code (Bytes.get img.data ((3 * i) + k))) in
+        Color.opaque (Color.make (b 0) (b 1) (b 2)))
+  in
+  let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false } in
+  Pigment.Image_map { image = List.fold_left (fun i f -> f i) im mods; xform = Transform.identity }

@@ -1,0 +1,34 @@
+(** Building pigments, normals and sky spheres from the modifiers written
+    in a [pigment { }] or [normal { }] block (grammar_texture.mly's
+    semantic actions). A modifier is a function on {!pat}, applied in the
+    written order. *)
+
+open Camlray
+
+type pat = {
+  pattern : Pattern.t option;  (** [None]: a plain colour or identifier *)
+  base : Pigment.t;  (** for [None]: the colour or declared pigment *)
+  entries : (float * Pigment.t) array option;  (** colour_map / pigment_map *)
+  cells : Pigment.t list;  (** block pattern colours, in written order *)
+  xform : Transform.t;
+  amount : float;  (** normals: bump amount *)
+}
+
+type modifier = pat -> pat
+
+val of_pigment : Pigment.t -> pat
+val of_pattern : Pattern.kind -> pat
+val apply : modifier list -> pat -> pat
+
+val pigment : pat -> Pigment.t
+val normal : pat -> Normal.t
+
+val transform : Transform.t -> modifier
+val pattern_mod : (Pattern.t -> Pattern.t) -> modifier
+val turbulence : Vec3.t -> modifier
+val map : (float * Pigment.t) list -> modifier
+val kind_mod : (Pattern.kind -> Pattern.kind) -> modifier
+
+val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
+(** Read a PNG into a planar image map (values decoded from sRGB when
+    [gamma_decode]). Errors are located. *)

@@ -1,0 +1,57 @@
+(* Area lights: POV-Ray's recursive averaging (pov-facts.md 5.3). *)
+open Camlray
+
+let avg n1 n2 blocked =
+  let a = Light.area Vec3.unit_x Vec3.unit_z n1 n2 in
+  (Light.average_area a (fun i j -> if List.mem (i, j) blocked then Color.black else Color.white)).r
+
+let check msg expected actual = Scn.close msg expected actual
+
+let averaging () =
+  check "3x1, an end blocked" 0.75 (avg 3 1 [ (0, 0) ]);
+  check "3x1, the middle blocked" 0.5 (avg 3 1 [ (1, 0) ]);
+  check "5x1, an end blocked" 0.875 (avg 5 1 [ (0, 0) ]);
+  check "2x1 is the plain mean" 0.5 (avg 2 1 [ (1, 0) ]);
+  check "4x1 is the plain mean" 0.75 (avg 4 1 [ (2, 0) ]);
+  check "2x2 is the plain mean" 0.75 (avg 2 2 [ (1, 1) ]);
+  check "1x1" 0. (avg 1 1 [ (0, 0) ])
+
+let adaptive () =
+  let a = { (Light.area Vec3.unit_x Vec3.unit_z 5 5) with adaptive = 1 } in
+  let f i j = if (i, j) = (1, 1) then Color.black else Color.white in
+  check "adaptive 1 misses an interior sample" 1. (Light.average_area a f).r;
+  let calls = ref 0 in
+  let a = Light.area Vec3.unit_x Vec3.unit_z 9 9 in
+  ignore (Light.average_area a (fun _ _ -> incr calls; Color.white));
+  Alcotest.(check int) "each sample traced once" 81 !calls
+
+let positions () =
+  let l = { (Light.point (Vec3.make 0. 5. 0.) Color.white) with
+            area = Some (Light.area (Vec3.make 2. 0. 0.) (Vec3.make 0. 0. 4.) 3 2) } in
+  let a = Option.get l.area in
+  let p i j = Light.sample_position l a Vec3.zero i j in
+  let eq msg (e : Vec3.t) (v : Vec3.t) =
+    Scn.close (msg ^ " x") e.x v.x; Scn.close (msg ^ " y") e.y v.y; Scn.close (msg ^ " z") e.z v.z
+  in
+  eq "corner" (Vec3.make (-1.) 5. (-2.)) (p 0 0);
+  eq "middle of axis 1, end of axis 2" (Vec3.make 0. 5. 2.) (p 1 1)
+
+(* a blocker covering one end sample of a 3x1 light: 0.75 of the light *)
+let scene () =
+  let c =
+    Scn.pixel
+      ("light_source { <0,0,-10>, rgb 1 area_light <4,0,0>, <0,0,0>, 3, 1 }\n\
+        sphere { <-2,0,-9>, 0.2 pigment { rgb 1 } }\n\
+        plane { z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }")
+  in
+  (* the light centre is head-on: diffuse 1; shadow average 0.75 *)
+  Scn.gray "3x1 area light, an end blocked" 0.75 c
+
+let tests =
+  ( "light",
+    [
+      Alcotest.test_case "recursive averaging" `Quick averaging;
+      Alcotest.test_case "adaptive" `Quick adaptive;
+      Alcotest.test_case "sample positions" `Quick positions;
+      Alcotest.test_case "area light in a scene" `Quick scene;
+    ] )

@@ -1,0 +1,199 @@
+(* The classic lighting model against POV-Ray 3.7's measured values
+   (pov-facts.md section 5). Scenes look along +z from the origin at a
+   plane z = 1; one light 30 degrees off the normal. *)
+open Camlray
+open Scn
+
+let light30 = "light_source { <5, 0, -7.660254>, rgb 1 }\n"
+let plane ?(pig = "rgb 1") fin = Printf.sprintf "plane { z, 1 pigment { %s } finish { %s } }\n" pig fin
+let lit ?pig fin = pixel (light30 ^ plane ?pig fin)
+
+let finishes () =
+  gray "default finish" 0.61962 (lit "");
+  gray "brilliance 2" 0.55 (lit "brilliance 2");
+  gray "phong 1 size 10" 0.23730 (lit "ambient 0 diffuse 0 phong 1 phong_size 10");
+  gray "phong default size" 0.00317 (lit "ambient 0 diffuse 0 phong 1");
+  color "phong on red is white" (0.23730, 0.23730, 0.23730)
+    (lit ~pig:"rgb <1,0,0>" "ambient 0 diffuse 0 phong 1 phong_size 10");
+  gray "specular 1" 0.49989 (lit "ambient 0 diffuse 0 specular 1");
+  gray "specular .5 roughness .01" 0.01561 (lit "ambient 0 diffuse 0 specular 0.5 roughness 0.01");
+  color ~eps:1e-4 "phong + metallic on red" (0.2373, 0.0028, 0.0028)
+    (lit ~pig:"rgb <1,0,0>" "ambient 0 diffuse 0 phong 1 phong_size 10 metallic");
+  color "coloured ambient" (0.2, 0.2, 0.)
+    (pixel (plane ~pig:"rgb <1,.5,0>" "ambient <.2,.4,.6> diffuse 0"));
+  color "emission" (0.5, 0.25, 0.) (pixel (plane ~pig:"rgb <1,.5,0>" "ambient 0 diffuse 0 emission 0.5"));
+  gray "ambient_light" 0.2
+    (pixel ("global_settings { ambient_light 0.5 }\n" ^ plane "ambient 0.4 diffuse 0"));
+  gray "emission ignores ambient_light" 0.3
+    (pixel ("global_settings { ambient_light 0.5 }\n" ^ plane "ambient 0 diffuse 0 emission 0.3"));
+  color "light colour per channel" (0.6 *. 0.866025, 0.3 *. 0.866025, 1.2 *. 0.866025)
+    (pixel ("light_source { <5, 0, -7.660254>, rgb <1,.5,2> }\n" ^ plane "ambient 0"))
+
+let lights () =
+  let spot a = Printf.sprintf
+      "light_source { <0,0,0>, rgb 1 spotlight point_at <%f, 0, %f> }\n" (sin a) (cos a) in
+  let rad d = d *. Float.pi /. 180. in
+  (* camera ray hits (0,0,1); the spot axis is turned away by the angle *)
+  let spot_at d = pixel (spot (rad d) ^ plane "ambient 0 diffuse 1") in
+  gray "spot at 35" 0.79033 (spot_at 35.);
+  gray "spot at 40" 0.31061 (spot_at 40.);
+  gray "spot at 46" 0. (spot_at 46.);
+  gray "spot tight" 0.85805
+    (pixel
+       (Printf.sprintf
+          "light_source { 0, rgb 1 spotlight point_at <%f,0,%f> radius 15 falloff 25 tightness 10 }\n"
+          (sin (rad 10.)) (cos (rad 10.))
+       ^ plane "ambient 0 diffuse 1"));
+  let fade fd fp =
+    pixel (Printf.sprintf "light_source { <0,0,-9>, rgb 1 fade_distance %g fade_power %g }\n" fd fp
+           ^ plane "ambient 0 diffuse 1")
+  in
+  gray "fade 5 1 at 10" 0.66667 (fade 5. 1.);
+  gray "fade 5 2 at 10" 0.4 (fade 5. 2.);
+  gray "fade power 0" 1. (fade 5. 0.);
+  gray "parallel" 0.866025
+    (pixel ("light_source { <0,0,0>, rgb 1 parallel point_at <-0.5, 0, 0.8660254> }\n"
+            ^ plane "ambient 0 diffuse 1"));
+  gray "shadowless: no highlight" (0.866025 *. 0.6 +. 0.1)
+    (pixel ("light_source { <5, 0, -7.660254>, rgb 1 shadowless }\n" ^ plane "phong 1 phong_size 10"));
+  gray "back diffuse" (0.4 *. 0.866025)
+    (pixel ("light_source { <5, 0, 9.660254>, rgb 1 }\n" ^ plane "ambient 0 diffuse 0.6, 0.4"))
+
+(* a blocker halfway along the shadow ray of the 30-degree light *)
+let shadow pig extra =
+  pixel (light30 ^ Printf.sprintf "sphere { <2.5, 0, -3.33>, 0.5 pigment { %s } %s }\n" pig extra
+         ^ plane "ambient 0 diffuse 1")
+
+let shadows () =
+  let k = 0.866025 in
+  gray "opaque blocker" 0. (shadow "rgb 1" "");
+  gray "rgbt .5 twice" (0.25 *. k) (shadow "rgbt <1,1,1,.5>" "");
+  gray "rgbf .5 white" (0.25 *. k) (shadow "rgbf <1,1,1,.5>" "");
+  color "rgbf <1,.5,0,1>" (k, 0.25 *. k, 0.) (shadow "rgbf <1,.5,0,1>" "");
+  color "rgbft" (k, 0.5625 *. k, 0.25 *. k) (shadow "rgbft <1,.5,0,.5,.5>" "");
+  gray "ior ignored" (0.25 *. k) (shadow "rgbt <1,1,1,.5>" "interior { ior 1.5 }");
+  gray "no_shadow" k (shadow "rgb 1" "no_shadow");
+  (* path inside the sphere: 1 unit; fade 1/(1+(1/0.5)^2) = 0.2 *)
+  gray ~eps:1e-4 "interior fade in shadow" (0.2 *. k)
+    (shadow "rgbt 1" "interior { fade_distance 0.5 fade_power 2 }")
+
+let bg = "background { rgb <.2,.4,.6> }\n"
+let tilted = "plane { <0, 0.8660254, -0.5>, -0.5 "
+
+let reflection () =
+  color "reflection {.1,.9} head-on" (0.02, 0.04, 0.06)
+    (pixel (bg ^ "plane { z, 1 finish { reflection { 0.1, 0.9 } } }"));
+  color "reflection {.1,.9} at 60" (0.1, 0.2, 0.3)
+    (pixel (bg ^ tilted ^ "finish { reflection { 0.1, 0.9 } } }"));
+  color "falloff 2 at 60" (0.06, 0.12, 0.18)
+    (pixel (bg ^ tilted ^ "finish { reflection { 0.1, 0.9 falloff 2 } } }"));
+  color "exponent 0.5" (0.02, 0.08, 0.18)
+    (pixel (bg ^ "plane { z, 1 finish { reflection { 0.5 exponent 0.5 } } }"));
+  color ~eps:1e-4 "reflection metallic head-on" (0.1, 0.1, 0.)
+    (pixel (bg ^ "plane { z, 1 pigment { rgb <1,.5,0> } finish { ambient 0 diffuse 0 reflection { 0.5 metallic } } }"));
+  color "white + reflection adds" (0.7 +. 0.1, 0.7 +. 0.2, 0.7 +. 0.3)
+    (pixel (bg ^ "light_source { <0,0,-10>, rgb 1 }\nplane { z, 1 pigment { rgb 1 } finish { reflection 0.5 } }"));
+  let fres tilt =
+    let a = tilt *. Float.pi /. 180. in
+    pixel
+      (Printf.sprintf
+         "background { rgb 1 }\nplane { <0, %f, %f>, %f finish { reflection { 0, 1 fresnel on } } interior { ior 1.5 } }"
+         (sin a) (-.cos a) (-.cos a))
+  in
+  gray ~eps:1e-4 "fresnel head-on" 0.04 (fres 0.);
+  gray ~eps:1e-4 "fresnel 60" 0.0892 (fres 60.);
+  gray ~eps:1e-4 "fresnel 80" 0.3877 (fres 80.);
+  gray "fresnel without ior" 0.
+    (pixel "background { rgb 1 }\nplane { z, 1 finish { reflection { 0, 1 fresnel on } } }")
+
+let transparency () =
+  let back = "plane { z, 2 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n" in
+  let front pig = "light_source { <0,0,-10>, rgb 1 }\n" ^ back
+                  ^ Printf.sprintf "plane { z, 1 pigment { %s } }\n" pig in
+  color "rgbt over white" (0.85, 0.675, 0.5) (pixel (front "rgbt <1,.5,0,.5>"));
+  color "rgbf over white" (0.85, 0.425, 0.) (pixel (front "rgbf <1,.5,0,.5>"));
+  gray "rgbt 1 + phong 0.5 shows the highlight" 0.5
+    (pixel "light_source { <0,0,-10>, rgb 1 }\nplane { z, 1 pigment { rgbt 1 } finish { phong 0.5 } }");
+  (* legacy alpha: no #version *)
+  let legacy =
+    Whitted.pixel
+      (compile ~raw:true
+         ("light_source { <0,0,-10>, rgb 1 }\nplane { z, 1 pigment { rgbf <.5,.25,0,.5> } }\n"))
+      ~width:1 ~height:1 0 0
+  in
+  close "legacy alpha" 0.2625 legacy.r
+
+let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
+               plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
+
+let levels () =
+  List.iter
+    (fun (n, v) ->
+      gray (Printf.sprintf "max_trace_level %d" n) v
+        (pixel (Printf.sprintf "global_settings { max_trace_level %d }\n" n ^ mirrors)))
+    [ (1, 0.1); (2, 0.15); (3, 0.175); (5, 0.19375) ];
+  gray ~eps:1e-5 "adc bailout default" 0.19922
+    (pixel ("global_settings { max_trace_level 100 }\n" ^ mirrors));
+  gray ~eps:1e-6 "adc bailout 0" 0.2
+    (pixel ("global_settings { max_trace_level 100 adc_bailout 0 }\n" ^ mirrors));
+  gray "mirror at level 1 returns black" 0.
+    (pixel "background { rgb 1 }\nglobal_settings { max_trace_level 1 }\nplane { z, 1 finish { reflection 1 } }");
+  let stack =
+    String.concat ""
+      (List.init 8 (fun i -> Printf.sprintf "plane { -z, %d pigment { rgbt 1 } }\n" (-(i + 1))))
+  in
+  gray "pure transmission uses no level" 1.
+    (pixel ("background { rgb 1 }\nglobal_settings { max_trace_level 2 }\n" ^ stack));
+  (* the camera is inside eight nested planes of ior 1.5 (POV-Ray starts
+     camera rays inside the objects containing the camera): only leaving
+     the last one refracts *)
+  let nested =
+    String.concat ""
+      (List.init 8 (fun i -> Printf.sprintf "plane { z, %d pigment { rgbt 1 } interior { ior 1.5 } }\n" (i + 1)))
+  in
+  gray "camera inside nested media" 1.
+    (pixel ("background { rgb 1 }\nglobal_settings { max_trace_level 2 }\n" ^ nested))
+
+let layers () =
+  (* top layer rgbt .5 red over white: top shading + 0.5 * bottom shading *)
+  let src = "light_source { <0,0,-10>, rgb 1 }\n\
+             plane { z, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1,0,0,.5> } } }" in
+  color "two layers" (0.35 +. 0.35, 0.35, 0.35) (pixel src);
+  let sky = "sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n" in
+  gray ~eps:1e-4 "sky_sphere along +z" 0. (pixel sky);
+  color "transparent sky shows the background" (0.6, 0.7, 0.8)
+    (pixel "background { rgb <.2,.4,.6> }\nsky_sphere { pigment { rgbt <1,1,1,.5> } }");
+  gray ~eps:1e-4 "sky_sphere up" 0.70711 (pixel ("camera { look_at <0, 1, 1> }\n" ^ sky))
+
+let declared () =
+  color "declared colour map" (0.75, 0., 0.25)
+    (pixel "#declare CM = color_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] }\n\
+            plane { z, 1 pigment { gradient x color_map { CM } translate -x*0.25 } finish { ambient 1 diffuse 0 } }");
+  color "layered texture identifier keeps its layers" (0.7, 0.35, 0.35)
+    (pixel "light_source { <0,0,-10>, rgb 1 }\n\
+            #declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt <1,0,0,.5> } }\n\
+            plane { z, 1 texture { T } }");
+  color "old-form colour map entry" (0.75, 0., 0.25)
+    (pixel "plane { z, 1 pigment { gradient x color_map { [0, 1 color rgb <1,0,0> color rgb <0,0,1>] }\n\
+            translate -x*0.25 } finish { ambient 1 diffuse 0 } }");
+  gray "declared sky_sphere" 0.5
+    (pixel "#declare S = sky_sphere { pigment { rgb 0.5 } }\nsky_sphere { S }");
+  let s =
+    compile "#declare M = material { texture { pigment { rgbt 1 } } interior { ior 1.5 } }\n\
+             sphere { 0, 1 material { M } }"
+  in
+  close "material interior" 1.5 s.objects.(0).interior.ior;
+  close "material texture" 1. (Pigment.eval (List.hd s.objects.(0).texture).pigment Vec3.zero).transmit
+
+let tests =
+  ( "whitted",
+    [
+      Alcotest.test_case "finishes" `Quick finishes;
+      Alcotest.test_case "lights" `Quick lights;
+      Alcotest.test_case "shadows" `Quick shadows;
+      Alcotest.test_case "reflection" `Quick reflection;
+      Alcotest.test_case "transparency" `Quick transparency;
+      Alcotest.test_case "trace levels" `Quick levels;
+      Alcotest.test_case "layers and sky" `Quick layers;
+      Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
+    ] )
