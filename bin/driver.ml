@@ -23,6 +23,7 @@ type render_opts = {
   clock_range : (float * float) option;
   subset : (int * int) option;
   tile_order_seed : int option;
+  limits : Supplier.limits;
 }
 
 exception Fail of string
@@ -134,7 +135,7 @@ let region_of o =
 let render_frame o ~clock ~frame ~out ~t0 =
   let options =
     { Parse.default_options with include_dirs = o.include_dirs; allow_read = o.allow_read;
-      image_width = o.width;
+      limits = o.limits; image_width = o.width;
       image_height = o.height; clock; frame_number = frame }
   in
   match compile ~options o.scene with
@@ -256,8 +257,8 @@ let merge parts out =
       prerr_endline ("camlray: " ^ e);
       1
 
-let check path include_dirs allow_read =
-  let options = { Parse.default_options with include_dirs; allow_read } in
+let check path include_dirs allow_read limits =
+  let options = { Parse.default_options with include_dirs; allow_read; limits } in
   try
     match compile ~options (Some path) with
     | Error d ->

@@ -24,11 +24,12 @@ type render_opts = {
   clock_range : (float * float) option;  (** clock at the first and last frame *)
   subset : (int * int) option;  (** render only these frames of [frames] *)
   tile_order_seed : int option;  (** test hook: shuffle the tile order *)
+  limits : Camlray_lang.Supplier.limits;  (** loop, macro-depth and token caps *)
 }
 
 val render : render_opts -> int
-val check : string -> string list -> string list -> int
-(** [check scene include_dirs allow_read] *)
+val check : string -> string list -> string list -> Camlray_lang.Supplier.limits -> int
+(** [check scene include_dirs allow_read limits] *)
 
 val merge : string list -> string -> int
 (** [merge parts out]: assemble partial renders. *)

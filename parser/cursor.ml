@@ -8,11 +8,12 @@ type limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 let default_limits =
   { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
-    max_array_size = 10_000_000 }
+    max_array_size = 10_000_000; max_tokens = 1_000_000_000 }
 
 type config = {
   include_dirs : string list;
@@ -77,6 +78,7 @@ type t = {
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+  mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
 }
 
 let files_read t = List.rev t.files
@@ -88,7 +90,7 @@ let create config env ~file toks =
                  version_at_entry = Defaults.version (); byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
-    handles = Hashtbl.create 4 }
+    handles = Hashtbl.create 4; supplied = 0 }
 
 let chain t =
   List.filter_map
@@ -129,6 +131,9 @@ let rec raw_next t =
   | Eof -> tok
   | _ ->
       f.pos <- f.pos + 1;
+      t.supplied <- t.supplied + 1;
+      if t.supplied > t.config.limits.max_tokens then
+        fail t tok.loc "parsing stopped after %d tokens (the limit)" t.config.limits.max_tokens;
       tok
 
 let raw_peek t =

@@ -12,6 +12,7 @@ type limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 val default_limits : limits
@@ -76,6 +77,7 @@ type t = {
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+  mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
 }
 
 val create : config -> Env.t -> file:string -> token array -> t

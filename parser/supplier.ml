@@ -7,6 +7,7 @@ type limits = Cursor.limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 let default_limits = Cursor.default_limits
