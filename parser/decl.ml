@@ -9,6 +9,9 @@ type t =
   | Camera of Sdl.camera_item list
   | Function of Fn.t
   | Spline of Spline.t
+  | Material of material
+
+and material = { mtexture : Camlray.Texture.t option; minterior : Camlray.Interior.t option }
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -21,3 +24,4 @@ let kind_name = function
   | Camera _ -> "a camera"
   | Function _ -> "a function"
   | Spline _ -> "a spline"
+  | Material _ -> "a material"

@@ -12,6 +12,10 @@ type t =
   | Camera of Sdl.camera_item list
   | Function of Fn.t  (** [function { ... }] *)
   | Spline of Spline.t  (** [spline { ... }] *)
+  | Material of material
+
+(** [material { texture {...} interior {...} }]: either part may be absent. *)
+and material = { mtexture : Camlray.Texture.t option; minterior : Camlray.Interior.t option }
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

@@ -23,6 +23,7 @@ open Gram
 %token <Camlray.Interior.t> INTERIOR_ID
 %token <Camlray.Transform.t> TRANSFORM_ID
 %token <Sdl.camera_item list> CAMERA_ID
+%token <Decl.material> MATERIAL_ID
 %token <string> UNDEFINED_ID
 %token <Fn.t> FUNCTION_ID
 %token <Fn.t> FUNCTION_LIT  (* a function { ... } the supplier compiled *)
@@ -33,7 +34,7 @@ open Gram
 %token LBRACE RBRACE LPAREN RPAREN LBRACKET RBRACKET
 %token LT GT LE GE EQ NE PLUS MINUS STAR SLASH COMMA SEMI QUESTION COLON AND OR BANG
 %token EOF
-%token COLOR SCALE ROTATE TRANSLATE MATRIX TRANSFORM INVERSE
+%token COLOR SCALE ROTATE TRANSLATE MATRIX TRANSFORM INVERSE MATERIAL
 
 (* Greedy parsing where POV-Ray is greedy: a parameter extends over a
    following '+'/'-', a member access binds to the nearest value. *)
@@ -64,6 +65,8 @@ open Gram
   | t = TRANSFORM_ID { Decl.Transform t }
   | c = CAMERA_ID { Decl.Camera c }
   | f = FUNCTION_LIT { Decl.Function f }
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
   | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
@@ -121,6 +124,8 @@ open Gram
   | c = CAMERA_ID { Decl.Camera c }
   | f = FUNCTION_ID { Decl.Function f }
   | f = FUNCTION_LIT { Decl.Function f }
+  | m = MATERIAL_ID { Decl.Material m }
+  | MATERIAL LBRACE m = material_body RBRACE { Decl.Material m }
   | v = color_value { Decl.Value v }
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
@@ -128,6 +133,29 @@ open Gram
   | TEXTURE LBRACE t = texture_body RBRACE { Decl.Texture [ t ] }
   | INTERIOR LBRACE i = interior_body RBRACE { Decl.Interior i }
   | TRANSFORM LBRACE t = transform_body RBRACE { Decl.Transform t }
+
+(* material { [M] texture {...} interior {...} }: what it sets replaces
+   the object's texture and interior (transformations are accepted and,
+   like a texture's, not applied yet) *)
+%public material_body:
+  | m = ioption(MATERIAL_ID) items = list(material_item)
+      { List.fold_left (fun m f -> f m) (match m with Some m -> m | None ->
+          { Decl.mtexture = None; minterior = None }) items }
+
+%public material_item:
+  | TEXTURE LBRACE t = texture_body RBRACE
+      { fun (m : Decl.material) -> { m with Decl.mtexture = Some (match m.mtexture with
+          | Some layers -> t :: layers | None -> [ t ]) } }
+  | t = TEXTURE_ID { fun (m : Decl.material) -> { m with Decl.mtexture = Some t } }
+  | INTERIOR LBRACE i = interior_body RBRACE { fun (m : Decl.material) -> { m with Decl.minterior = Some i } }
+  | transformation { fun m -> m }
+
+(* the object modifier (the rest of object_mod is in grammar_objects) *)
+%public object_mod:
+  | MATERIAL LBRACE m = material_body RBRACE
+      { fun (o : Sdl.obj) ->
+          { o with texture = (match m.Decl.mtexture with Some t -> Some t | None -> o.texture);
+                   interior = (match m.Decl.minterior with Some i -> Some i | None -> o.interior) } }
 
 %public expr:
   | c = logic QUESTION a = expr COLON b = expr

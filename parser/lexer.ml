@@ -11,7 +11,7 @@ let lang_keywords =
   [
     ("color", COLOR); ("colour", COLOR); ("scale", SCALE); ("rotate", ROTATE);
     ("translate", TRANSLATE); ("matrix", MATRIX); ("transform", TRANSFORM);
-    ("inverse", INVERSE);
+    ("inverse", INVERSE); ("material", MATERIAL);
     ("x", VECTOR [| 1.; 0.; 0. |]); ("y", VECTOR [| 0.; 1.; 0. |]);
     ("z", VECTOR [| 0.; 0.; 1. |]); ("t", VECTOR [| 0.; 0.; 0.; 1. |]);
     ("u", VECTOR [| 1.; 0. |]); ("v", VECTOR [| 0.; 1. |]);

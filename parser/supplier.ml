@@ -38,6 +38,7 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Transform x -> Parser.TRANSFORM_ID x
   | Decl.Camera c -> Parser.CAMERA_ID c
   | Decl.Function f -> Parser.FUNCTION_ID f
+  | Decl.Material m -> Parser.MATERIAL_ID m
   | Decl.Spline _ -> Parser.UNDEFINED_ID "a spline (call it: S(t))"
 
 let suggest t name =
