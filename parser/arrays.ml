@@ -64,7 +64,8 @@ and element t name a loc : Decl.t =
       | None -> fail t loc "element %s[%d] has not been set" name i
       | Some (Env.Decl d) -> d
       | Some (Env.Array a') -> element t (Printf.sprintf "%s[%d]" name i) a' loc
-      | Some (Env.Macro _) -> fail t loc "an array cannot hold a macro")
+      | Some (Env.Macro _) -> fail t loc "an array cannot hold a macro"
+      | Some (Env.Unsupported u) -> unsupported_name t (Printf.sprintf "%s[%d]" name i) u loc)
   | _ -> fail t loc "the array %s must be indexed: %s[...]" name name
 
 and copy a =

@@ -51,7 +51,6 @@ type frame = {
   file : string;
   mutable ctrl : ctrl list;
   scoped : bool;
-  version_at_entry : float;  (** restored when an included file ends *)
   byref : (string * target) list;
       (** macro parameters given a bare identifier, with that identifier:
           their final values are copied back when the macro ends
@@ -94,6 +93,22 @@ val chain : t -> (string * Loc.t) list
 val fail : t -> Loc.t -> ('a, unit, string, 'b) format4 -> 'a
 (** Raise a located error carrying the current chain. *)
 
+exception Unsupported_use of Diag.t * Env.unsupported
+(** Raised where a POV-Ray word camlray does not know (or a name bound to
+    such a #declare) is met: a [#declare] catches it and binds its name to
+    an {!Env.Unsupported} marker; anywhere else it becomes the error. *)
+
+val unsupported :
+  t -> Loc.t -> Env.unsupported -> ('a, unit, string, 'b) format4 -> 'a
+(** Raise {!Unsupported_use} with a located message. *)
+
+val unsupported_name : t -> string -> Env.unsupported -> Loc.t -> 'a
+(** A name bound to a marker is used: raise {!Unsupported_use}. *)
+
+val skip_phrase : t -> unit
+(** Skip the rest of a phrase of the current frame: to a ';' at depth 0
+    (included), a directive or an unmatched closing bracket. *)
+
 val top : t -> frame
 val raw_next : t -> token
 (** The next raw token, leaving finished included files and macro bodies
@@ -101,6 +116,11 @@ val raw_next : t -> token
     a frame ends with a structure still open. *)
 
 val raw_peek : t -> token
+
+val peek_past_ends : t -> from:frame -> token
+(** The next raw token, first leaving the finished frames above [from]
+    (a macro called at the end of a #declare's value), so that a ';'
+    after the call is seen. *)
 val expect_raw : t -> string -> (raw -> bool) -> token
 val expect_tok : t -> Parser.token -> string -> unit
 val expect_ident : t -> string -> string * Loc.t

@@ -114,6 +114,7 @@ and ident t name loc =
           Macros.call t m loc;
           next t
       | Some (Env.Array a) -> (token_of_decl (Arrays.element t name a loc), loc)
+      | Some (Env.Unsupported u) -> unsupported_name t name u loc
       | None ->
           if name = "default" && (raw_peek t).raw = Tok Parser.LBRACE then begin
             (* 'default { ... }' without '#': POV-Ray accepts it too *)
@@ -131,7 +132,10 @@ and ident t name loc =
             (Parser.FLOAT (Arrays.query t name loc), loc)
           else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
-            fail t loc "%s is not supported by camlray" name
+            (* a POV-Ray word camlray does not know: inside a #declare the
+               name becomes a marker (see [guarded]), elsewhere an error *)
+            unsupported t loc { feature = name; feature_loc = loc; declared = loc; failure = None }
+              "%s is not supported by camlray" name
           else (Parser.UNDEFINED_ID name, loc))
 
 (* function [(params)] { body }: the body is read here, token by token,
@@ -353,18 +357,18 @@ and declare t ~local loc =
       | Some (Env.Array a) ->
           let a, i = target a in
           expect_tok t Parser.EQ "'='";
-          a.(i) <- Some (Env.Decl (rhs t))
+          a.(i) <- Some (guarded t nloc (fun () -> Env.Decl (rhs t)))
       | _ -> fail t nloc "%s is not an array" name)
   | _ -> (
       expect_tok t Parser.EQ "'=' after the identifier";
       match (raw_peek t).raw with
       | Ident "spline" ->
           let sloc = (raw_next t).loc in
-          bind (Env.Decl (Decl.Spline (Splread.read t sloc)));
+          bind (guarded t nloc (fun () -> Env.Decl (Decl.Spline (Splread.read t sloc))));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | Ident "array" ->
           ignore (raw_next t);
-          bind (Env.Array (Arrays.make t loc));
+          bind (guarded t nloc (fun () -> Env.Array (Arrays.make t loc)));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | _ -> (
           (* #declare A = B; for B a whole array or a function (not a call) *)
@@ -383,7 +387,37 @@ and declare t ~local loc =
               f.pos <- f.pos + 1;
               bind b;
               (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
-          | None -> bind (Env.Decl (rhs t))))
+          | None -> bind (guarded t nloc (fun () -> Env.Decl (rhs t)))))
+
+(* Evaluate a right-hand side; if it meets something camlray does not
+   support, go back to where it started, skip it (balanced brackets, up
+   to a ';' or a closing '}') and bind a marker instead: the error is
+   reported where the name is used. In an include file (often one of
+   POV-Ray's own), any error in a #declare is deferred the same way. *)
+and guarded t nloc f =
+  let frames = t.frames in
+  let saved = List.map (fun fr -> (fr.pos, fr.ctrl)) frames in
+  let pending = t.pending and scopes = Env.mark t.env and braces = t.braces in
+  let context = t.context and stop_at = t.stop_at and version = Defaults.version () in
+  let recover () =
+    t.frames <- frames;
+    List.iter2 (fun fr (pos, ctrl) -> fr.pos <- pos; fr.ctrl <- ctrl) frames saved;
+    t.pending <- pending;
+    t.braces <- braces;
+    t.context <- context;
+    t.stop_at <- stop_at;
+    Defaults.restore_version version;
+    Env.restore t.env scopes;
+    skip_phrase t
+  in
+  let in_include = match frames with { kind = Include _; _ } :: _ -> true | _ -> false in
+  try f () with
+  | Unsupported_use (_, u) ->
+      recover ();
+      Env.Unsupported { u with declared = nloc }
+  | Diag.Error d when in_include ->
+      recover ();
+      Env.Unsupported { feature = ""; feature_loc = d.loc; declared = nloc; failure = Some d.msg }
 
 (* A string #declare may end without ';' (POV-Ray's rule). A string
    expression is one term (a literal, a string identifier or a string
@@ -436,6 +470,7 @@ and string_without_semi t =
 and string_functions = [ "concat"; "str"; "chr"; "substr"; "strupr"; "strlwr"; "vstr" ]
 
 and rhs t =
+  let start = top t in
   let saved = t.context in
   t.context <- Some "#declare of a float, vector or colour";
   let d =
@@ -454,9 +489,20 @@ and rhs t =
                 fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
                   (describe f.toks.(i).raw)))
   in
+  (* layered textures: texture {...} texture {...}, the last on top *)
+  let rec layers d =
+    match d with
+    | Decl.Texture below when t.pending = [] && (peek_past_ends t ~from:start).raw = Tok Parser.TEXTURE -> (
+        match parse t Parser.Incremental.declare_rhs with
+        | Decl.Texture above -> layers (Decl.Texture (above @ below))
+        | _ -> assert false)
+    | _ -> d
+  in
+  let d = layers d in
   (match d with
   | Decl.Value _ -> ()
-  | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
+  | _ when t.pending <> [] -> ()
+  | _ -> ( match (peek_past_ends t ~from:start).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
   d
 
 
@@ -464,3 +510,7 @@ let create config env ~file toks =
   let t = Cursor.create config env ~file toks in
   t.runner <- { run = (fun entry -> parse t entry) };
   t
+
+(* The entry point: an unsupported feature met outside a #declare is an
+   error like any other. *)
+let parse t start = try parse t start with Unsupported_use (d, _) -> raise (Diag.Error d)
