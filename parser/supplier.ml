@@ -247,7 +247,7 @@ and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
       let semi = List.mem "';'" expected in
       let msg =
         match Messages.message (I.current_state_number env) with
-        | m -> String.trim m
+        | m -> Printf.sprintf "%s, found %s" (String.trim m) found
         | exception Not_found -> (
             match expected with
             | [] -> "unexpected " ^ found
