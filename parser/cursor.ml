@@ -78,6 +78,10 @@ type t = {
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
   mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable optional_sep : Parser.token option;
+      (** for the next sub-parse only: a separator that may be left out
+          (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
+          where the next token cannot continue *)
 }
 
 let files_read t = List.rev t.files
@@ -89,7 +93,7 @@ let create config env ~file toks =
                  byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
-    handles = Hashtbl.create 4; supplied = 0 }
+    handles = Hashtbl.create 4; supplied = 0; optional_sep = None }
 
 let chain t =
   let l =

@@ -77,6 +77,10 @@ type t = {
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
   mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable optional_sep : Parser.token option;
+      (** for the next sub-parse only: a separator that may be left out
+          (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
+          where the next token cannot continue *)
 }
 
 val create : config -> Env.t -> file:string -> token array -> t

@@ -205,15 +205,29 @@ and function_lit t loc =
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->
   let pos = (top t).toks.((top t).pos).loc.start in
-  let rec loop cp last shifted =
+  let sep = t.optional_sep in
+  t.optional_sep <- None;
+  (* [prev]: the checkpoint the last token was offered to *)
+  let rec loop cp prev last shifted =
     match cp with
     | I.InputNeeded _ ->
         let tok, loc = next t in
         t.last <- loc;
-        loop (I.offer cp (tok, loc.start, loc.stop)) (Some (tok, loc)) false
-    | I.Shifting _ -> loop (I.resume cp) last true
-    | I.AboutToReduce _ -> loop (I.resume cp) last shifted
-    | I.HandlingError env -> syntax_error t env last
+        loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
+    | I.Shifting _ -> loop (I.resume cp) prev last true
+    | I.AboutToReduce _ -> loop (I.resume cp) prev last shifted
+    | I.HandlingError env -> (
+        match (sep, last) with
+        | Some s, Some ((tok, loc) as x) when tok <> s && I.acceptable prev s loc.start ->
+            (* the optional separator was left out: supply it, and give
+               the token again after it *)
+            (match tok with
+            | Parser.LBRACE -> (match t.braces with _ :: r -> t.braces <- r | [] -> ())
+            | Parser.RBRACE -> t.braces <- loc :: t.braces
+            | _ -> ());
+            t.pending <- x :: t.pending;
+            loop (I.offer prev (s, loc.start, loc.start)) prev None true
+        | _ -> syntax_error t env last)
     | I.Accepted v ->
         (match last with
         | Some x when not shifted -> t.pending <- x :: t.pending
@@ -221,7 +235,8 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
         v
     | I.Rejected -> fail t t.last "syntax error"
   in
-  loop (start pos) None true
+  let cp0 = start pos in
+  loop cp0 cp0 None true
 
 and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
  fun t env last ->
