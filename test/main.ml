@@ -26,6 +26,7 @@ let () =
       Test_parse.tests;
       Test_errors.tests;
       Test_golden.tests;
+      Test_printer.tests;
       Test_sampler.tests;
       Test_bsdf.tests;
       Test_path.tests;
