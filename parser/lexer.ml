@@ -135,6 +135,8 @@ let reserved =
     (String.split_on_char ' ' pov_words);
   t
 
+let keyword_names () = Hashtbl.fold (fun k _ acc -> k :: acc) keywords [] |> List.sort compare
+
 let pov_reserved w = Hashtbl.mem reserved w || Hashtbl.mem keywords w
 
 let describe = function

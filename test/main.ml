@@ -27,6 +27,7 @@ let () =
       Test_errors.tests;
       Test_golden.tests;
       Test_printer.tests;
+      Test_lang.tests;
       Test_sampler.tests;
       Test_bsdf.tests;
       Test_path.tests;
