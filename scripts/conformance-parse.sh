@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # make conformance-parse: run `camlray check` over every POV-Ray example
 # scene (.pov, or .pov.gz decompressed to a temporary folder), two at a
-# time, classify the outcome (accepted / unsupported feature / error) and
+# time, in a scratch copy of the examples, classify the outcome (accepted / unsupported feature / error) and
 # write the table to docs/conformance-parse.md.
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -12,18 +12,21 @@ JOBS=${JOBS:-2}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# the scene list; gzip-compressed scenes are decompressed next to a copy
-# of their folder's include files
+# Scenes run in a scratch copy of the examples: some #write files into
+# their own folder, and nothing may be written next to the originals.
+cp -r "$EXAMPLES" "$tmp/ex"
+SRC=$EXAMPLES
+EXAMPLES=$tmp/ex
+# the scene list; gzip-compressed scenes (and their folder's compressed
+# include files) are decompressed in the copy
 : > "$tmp/list"
 while IFS= read -r f; do
   case "$f" in
     *.pov.gz)
-      d="$tmp/gz/$(dirname "${f#$EXAMPLES/}")"
-      mkdir -p "$d"
-      cp "$(dirname "$f")"/*.inc "$d"/ 2>/dev/null
-      for g in "$(dirname "$f")"/*.inc.gz; do [ -e "$g" ] && gzip -dc "$g" > "$d/$(basename "${g%.gz}")"; done
-      gzip -dc "$f" > "$d/$(basename "${f%.gz}")"
-      echo "$d/$(basename "${f%.gz}")" >> "$tmp/list" ;;
+      d=$(dirname "$f")
+      for g in "$d"/*.inc.gz; do [ -e "$g" ] && gzip -dc "$g" > "${g%.gz}"; done
+      gzip -dc "$f" > "${f%.gz}"
+      echo "${f%.gz}" >> "$tmp/list" ;;
     *) echo "$f" >> "$tmp/list" ;;
   esac
 done < <(find "$EXAMPLES" -type f \( -name '*.pov' -o -name '*.pov.gz' \) | sort)
@@ -31,7 +34,7 @@ done < <(find "$EXAMPLES" -type f \( -name '*.pov' -o -name '*.pov.gz' \) | sort
 # one scene -> "name<TAB>class<TAB>detail"
 check_one() {
   f=$1
-  name=${f#"$EXAMPLES"/}; name=${name#"$TMPD"/gz/}
+  name=${f#"$EXAMPLES"/}
   err=$(cd "$(dirname "$f")" && timeout 60 "$EXE" check "$(basename "$f")" 2>&1 >/dev/null)
   rc=$?
   first=$(printf '%s\n' "$err" | grep -m1 ': error: ' | sed 's/^.*: error: //')
@@ -47,7 +50,7 @@ check_one() {
   fi
 }
 export -f check_one
-export EXAMPLES EXE TMPD="$tmp"
+export EXAMPLES EXE
 xargs -a "$tmp/list" -d '\n' -P "$JOBS" -I{} bash -c 'check_one "$1"' _ {} | sort > "$tmp/results"
 
 total=$(wc -l < "$tmp/results")
@@ -58,7 +61,8 @@ errs=$(awk -F'\t' '$2=="error"' "$tmp/results" | wc -l)
   echo "# Parse conformance over POV-Ray's example scenes"
   echo
   echo "\`make conformance-parse\` runs \`camlray check\` (parse and compile, no render) on every"
-  echo "example scene in $EXAMPLES. Generated $(date -u +%Y-%m-%d)."
+  echo "example scene in $SRC (run in a scratch copy, so that scenes that #write"
+  echo "leave nothing behind). Generated $(date -u +%Y-%m-%d)."
   echo
   echo "| outcome | scenes |"
   echo "|---|---|"
