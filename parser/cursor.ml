@@ -82,6 +82,11 @@ type t = {
       (** for the next sub-parse only: a separator that may be left out
           (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
           where the next token cannot continue *)
+  mutable semi_probe : (string * Loc.t) option ref option;
+      (** for the next sub-parse only: where a directive (or the end of
+          the file) stands in the same file where a ';' could end the
+          phrase, the parser is given that ';' and the directive is
+          recorded here (POV-Ray: a #declare missing its ';') *)
 }
 
 let files_read t = List.rev t.files
@@ -93,7 +98,8 @@ let create config env ~file toks =
                  byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
-    handles = Hashtbl.create 4; supplied = 0; optional_sep = None }
+    handles = Hashtbl.create 4; supplied = 0; optional_sep = None;
+    semi_probe = None }
 
 let chain t =
   let l =

@@ -81,6 +81,11 @@ type t = {
       (** for the next sub-parse only: a separator that may be left out
           (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
           where the next token cannot continue *)
+  mutable semi_probe : (string * Loc.t) option ref option;
+      (** for the next sub-parse only: where a directive (or the end of
+          the file) stands in the same file where a ';' could end the
+          phrase, the parser is given that ';' and the directive is
+          recorded here (POV-Ray: a #declare missing its ';') *)
 }
 
 val create : config -> Env.t -> file:string -> token array -> t

@@ -205,15 +205,35 @@ and function_lit t loc =
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->
   let pos = (top t).toks.((top t).pos).loc.start in
-  let sep = t.optional_sep in
+  let sep = t.optional_sep and probe = t.semi_probe in
   t.optional_sep <- None;
+  t.semi_probe <- None;
+  let frame = top t in
   (* [prev]: the checkpoint the last token was offered to *)
   let rec loop cp prev last shifted =
     match cp with
-    | I.InputNeeded _ ->
-        let tok, loc = next t in
-        t.last <- loc;
-        loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
+    | I.InputNeeded _ -> (
+        let read () =
+          let tok, loc = next t in
+          t.last <- loc;
+          loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
+        in
+        let ends what (loc : Loc.t) r =
+          if I.acceptable cp Parser.SEMI loc.start then begin
+            r := Some (what, loc);
+            loop (I.offer cp (Parser.SEMI, loc.start, loc.start)) cp None true
+          end
+          else read ()
+        in
+        match probe with
+        | Some r when t.pending = [] && top t == frame -> (
+            match raw_peek t with
+            | { raw = Directive d; loc }
+              when not (List.mem d [ "else"; "elseif"; "end"; "case"; "range"; "break" ]) ->
+                ends ("#" ^ d) loc r
+            | { raw = Eof; loc } -> ends "end of file" loc r
+            | _ -> read ())
+        | _ -> read ())
     | I.Shifting _ -> loop (I.resume cp) prev last true
     | I.AboutToReduce _ -> loop (I.resume cp) prev last shifted
     | I.HandlingError env -> (
@@ -492,7 +512,24 @@ and rhs t =
     Fun.protect ~finally:(fun () -> t.context <- saved) (fun () ->
         match string_without_semi t with
         | `String -> Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
-        | `Plain -> parse t Parser.Incremental.declare_rhs
+        | `Plain -> (
+            (* POV-Ray: a float, vector or colour #declare ends with ';'
+               since #version 3.5; before, the value ends where it can *)
+            let missing = ref None in
+            t.semi_probe <- Some missing;
+            let old = Defaults.version () < 3.5 in
+            if old then t.optional_sep <- Some Parser.SEMI;
+            let d = parse t Parser.Incremental.declare_rhs in
+            match (!missing, d) with
+            | Some (found, loc), Decl.Value (Value.Float _ | Value.Vector _) ->
+                if old then
+                  Diag.warning loc "a float, vector or colour #declare should end with ';'"
+                else
+                  fail t loc
+                    "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
+                    found;
+                d
+            | _ -> d)
         | `Bounded (f, i) -> (
             (* hand the parser the missing ';', then insist on a string *)
             let l = f.toks.(i).loc in
