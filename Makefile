@@ -27,6 +27,7 @@ bench: build
 	./_build/default/bench/alloc/alloc.exe scenes/default.scn scenes/seeds/diagrams-snowman.scn
 	./_build/default/bench/alloc/alloc.exe --mc 4 scenes/default.scn
 	./_build/default/bench/whole/whole.exe
+	dune exec --release bench/main.exe
 
 stress: build
 	@bash scripts/stress.sh 50

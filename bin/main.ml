@@ -171,6 +171,17 @@ let scenes_cmd =
     (Cmd.info "scenes" ~doc:"List the scenes that come with camlray, a line each.")
     Term.(const run $ const ())
 
+let obj2pov_cmd =
+  let file = Arg.(required & pos 0 (some file) None & info [] ~docv:"FILE.obj" ~doc:"A Wavefront OBJ file.") in
+  Cmd.v
+    (Cmd.info "obj2pov"
+       ~doc:"Convert a Wavefront OBJ file into POV-Ray mesh2 declarations (on standard output)."
+       ~man:[ `S Manpage.s_description;
+              `P "Writes one $(b,#declare OBJ_<group> = mesh2 {...}) per group or object, \
+                  polygons triangulated, then $(b,OBJ_<file>_all) gathering them. Both camlray \
+                  and POV-Ray read the result." ])
+    Term.(const Obj2pov.run $ file)
+
 let main =
   let man =
     [ `S Manpage.s_description;
@@ -180,7 +191,7 @@ let main =
       `Pre "  camlray render scenes/default.scn -o out.png\n  camlray check scene.scn" ]
   in
   Cmd.group (Cmd.info "camlray" ~version:"0.1.0" ~doc:"multicore ray tracer for POV-Ray scenes" ~man)
-    [ render_cmd; check_cmd; merge_cmd; scenes_cmd ]
+    [ render_cmd; check_cmd; merge_cmd; scenes_cmd; obj2pov_cmd ]
 
 let () =
   let err_buf = Buffer.create 256 in

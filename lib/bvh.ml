@@ -1,28 +1,43 @@
-(* Nodes: box k at nodes.(6k .. 6k+5). links.(2k) is, for a leaf, the first
-   entry in [prims]; for an interior node, the index of its second child
-   (the first is k+1). links.(2k+1) is the leaf's primitive count (> 0), or
-   -(axis+1) for an interior node split along [axis]. *)
-type t = { nodes : Float.Array.t; links : int array; prims : int array; depth : int }
+(* Node k is 8 floats at nodes.(8k .. 8k+7), 64 bytes, one cache line:
+   its box (min x, y, z, max x, y, z), then two integers stored as floats:
+   for a leaf, the first entry in [prims] and the primitive count (> 0);
+   for an interior node, the index of its second child (the first is k+1)
+   and -(axis+1) for the axis it was split along. *)
+type f32 = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+type t = { nodes : f32; prims : int array; depth : int }
 
 let size b = Array.length b.prims
-let nodes b = Array.length b.links / 2
+let nodes b = Bigarray.Array1.dim b.nodes / 8
+let nget (a : f32) i = Bigarray.Array1.unsafe_get a i
+
+(* Node indices and primitive offsets are stored in float32: exact below
+   2^24. *)
+let max_prims = 1 lsl 23
 let fget = Float.Array.unsafe_get
 let fset = Float.Array.unsafe_set
 
 let bounds b =
-  if Array.length b.links = 0 then None
+  if Bigarray.Array1.dim b.nodes = 0 then None
   else
-    let g = fget b.nodes in
+    let g = nget b.nodes in
     Some (Vec3.make (g 0) (g 1) (g 2), Vec3.make (g 3) (g 4) (g 5))
 
+(* fmin/max call C (signbit) to order NaN and -0; boxes hold neither *)
+let[@inline] fmin (a : float) b = if a < b then a else b
+let[@inline] fmax (a : float) b = if a > b then a else b
 let bins = 16
 
 let half_area x0 y0 z0 x1 y1 z1 =
   let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
   (dx *. dy) +. (dy *. dz) +. (dz *. dx)
 
+(* float32 copies of box bounds, rounded outward: a box only grows *)
+let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 else x
+let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
+
 let build ?(leaf_size = 4) boxes =
   let n = Float.Array.length boxes / 6 in
+  if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
   let prims = Array.init n Fun.id in
   let cent = Float.Array.create (3 * n) in
   for i = 0 to n - 1 do
@@ -31,7 +46,7 @@ let build ?(leaf_size = 4) boxes =
     done
   done;
   let cap = max 1 (2 * n) in
-  let nodes = Float.Array.create (6 * cap) and links = Array.make (2 * cap) 0 in
+  let nodes = Float.Array.create (8 * cap) in
   let count = ref 0 and max_depth = ref 1 in
   (* bin scratch: per bin box (6) and count *)
   let bbox = Float.Array.create (6 * bins) and bcount = Array.make bins 0 in
@@ -47,21 +62,21 @@ let build ?(leaf_size = 4) boxes =
     for j = lo to hi - 1 do
       let i = prims.(j) in
       let o = 6 * i in
-      bx0 := Float.min !bx0 (fget boxes o);
-      by0 := Float.min !by0 (fget boxes (o + 1));
-      bz0 := Float.min !bz0 (fget boxes (o + 2));
-      bx1 := Float.max !bx1 (fget boxes (o + 3));
-      by1 := Float.max !by1 (fget boxes (o + 4));
-      bz1 := Float.max !bz1 (fget boxes (o + 5));
+      bx0 := fmin !bx0 (fget boxes o);
+      by0 := fmin !by0 (fget boxes (o + 1));
+      bz0 := fmin !bz0 (fget boxes (o + 2));
+      bx1 := fmax !bx1 (fget boxes (o + 3));
+      by1 := fmax !by1 (fget boxes (o + 4));
+      bz1 := fmax !bz1 (fget boxes (o + 5));
       let c = 3 * i in
-      cx0 := Float.min !cx0 (fget cent c);
-      cy0 := Float.min !cy0 (fget cent (c + 1));
-      cz0 := Float.min !cz0 (fget cent (c + 2));
-      cx1 := Float.max !cx1 (fget cent c);
-      cy1 := Float.max !cy1 (fget cent (c + 1));
-      cz1 := Float.max !cz1 (fget cent (c + 2))
+      cx0 := fmin !cx0 (fget cent c);
+      cy0 := fmin !cy0 (fget cent (c + 1));
+      cz0 := fmin !cz0 (fget cent (c + 2));
+      cx1 := fmax !cx1 (fget cent c);
+      cy1 := fmax !cy1 (fget cent (c + 1));
+      cz1 := fmax !cz1 (fget cent (c + 2))
     done;
-    let o = 6 * k in
+    let o = 8 * k in
     fset nodes o !bx0;
     fset nodes (o + 1) !by0;
     fset nodes (o + 2) !bz0;
@@ -70,8 +85,8 @@ let build ?(leaf_size = 4) boxes =
     fset nodes (o + 5) !bz1;
     let m = hi - lo in
     let leaf () =
-      links.(2 * k) <- lo;
-      links.((2 * k) + 1) <- m
+      fset nodes ((8 * k) + 6) (float lo);
+      fset nodes ((8 * k) + 7) (float m)
     in
     let ex = !cx1 -. !cx0 and ey = !cy1 -. !cy0 and ez = !cz1 -. !cz0 in
     let axis = if ex >= ey && ex >= ez then 0 else if ey >= ez then 1 else 2 in
@@ -91,15 +106,15 @@ let build ?(leaf_size = 4) boxes =
         done
       done;
       let scale = float bins /. ext *. (1. -. 1e-9) in
-      let bin_of i = min (bins - 1) (int_of_float ((fget cent ((3 * i) + axis) -. c0) *. scale)) in
+      let bin_of i = Int.min (bins - 1) (int_of_float ((fget cent ((3 * i) + axis) -. c0) *. scale)) in
       for j = lo to hi - 1 do
         let i = prims.(j) in
         let b = bin_of i in
         bcount.(b) <- bcount.(b) + 1;
         for a = 0 to 2 do
           let q = (6 * b) + a in
-          fset bbox q (Float.min (fget bbox q) (fget boxes ((6 * i) + a)));
-          fset bbox (q + 3) (Float.max (fget bbox (q + 3)) (fget boxes ((6 * i) + 3 + a)))
+          fset bbox q (fmin (fget bbox q) (fget boxes ((6 * i) + a)));
+          fset bbox (q + 3) (fmax (fget bbox (q + 3)) (fget boxes ((6 * i) + 3 + a)))
         done
       done;
       (* right-to-left sweep *)
@@ -108,12 +123,12 @@ let build ?(leaf_size = 4) boxes =
       let acc = ref 0 in
       for b = bins - 1 downto 1 do
         let q = 6 * b in
-        x0 := Float.min !x0 (fget bbox q);
-        y0 := Float.min !y0 (fget bbox (q + 1));
-        z0 := Float.min !z0 (fget bbox (q + 2));
-        x1 := Float.max !x1 (fget bbox (q + 3));
-        y1 := Float.max !y1 (fget bbox (q + 4));
-        z1 := Float.max !z1 (fget bbox (q + 5));
+        x0 := fmin !x0 (fget bbox q);
+        y0 := fmin !y0 (fget bbox (q + 1));
+        z0 := fmin !z0 (fget bbox (q + 2));
+        x1 := fmax !x1 (fget bbox (q + 3));
+        y1 := fmax !y1 (fget bbox (q + 4));
+        z1 := fmax !z1 (fget bbox (q + 5));
         acc := !acc + bcount.(b);
         rcount.(b) <- !acc;
         fset rarea b (if !acc = 0 then 0. else half_area !x0 !y0 !z0 !x1 !y1 !z1)
@@ -123,12 +138,12 @@ let build ?(leaf_size = 4) boxes =
       let lc = ref 0 and best = ref infinity and best_b = ref 0 in
       for b = 0 to bins - 2 do
         let q = 6 * b in
-        x0 := Float.min !x0 (fget bbox q);
-        y0 := Float.min !y0 (fget bbox (q + 1));
-        z0 := Float.min !z0 (fget bbox (q + 2));
-        x1 := Float.max !x1 (fget bbox (q + 3));
-        y1 := Float.max !y1 (fget bbox (q + 4));
-        z1 := Float.max !z1 (fget bbox (q + 5));
+        x0 := fmin !x0 (fget bbox q);
+        y0 := fmin !y0 (fget bbox (q + 1));
+        z0 := fmin !z0 (fget bbox (q + 2));
+        x1 := fmax !x1 (fget bbox (q + 3));
+        y1 := fmax !y1 (fget bbox (q + 4));
+        z1 := fmax !z1 (fget bbox (q + 5));
         lc := !lc + bcount.(b);
         if !lc > 0 && rcount.(b + 1) > 0 then begin
           let cost =
@@ -163,87 +178,98 @@ let build ?(leaf_size = 4) boxes =
   and split k lo hi mid axis depth =
     ignore (node lo mid (depth + 1));
     let r = node mid hi (depth + 1) in
-    links.(2 * k) <- r;
-    links.((2 * k) + 1) <- -(axis + 1)
+    fset nodes ((8 * k) + 6) (float r);
+    fset nodes ((8 * k) + 7) (float (-(axis + 1)))
   in
   if n > 0 then ignore (node 0 n 1);
   let c = !count in
+  let out = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (8 * c) in
+  for k = 0 to c - 1 do
+    for a = 0 to 2 do
+      out.{(8 * k) + a} <- down (fget nodes ((8 * k) + a));
+      out.{(8 * k) + 3 + a} <- up (fget nodes ((8 * k) + 3 + a))
+    done;
+    out.{(8 * k) + 6} <- fget nodes ((8 * k) + 6);
+    out.{(8 * k) + 7} <- fget nodes ((8 * k) + 7)
+  done;
   {
-    nodes = Float.Array.sub nodes 0 (6 * c);
-    links = Array.sub links 0 (2 * c);
+    nodes = out;
     prims;
     depth = !max_depth + 1;
   }
 
 (* Slab test against box k within (t0, t1). *)
-let[@inline] box_hit nodes k ox oy oz ix iy iz t0 t1 =
-  let o = 6 * k in
+let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
+  let o = 8 * k in
+  let fget = nget in
   let ax = (fget nodes o -. ox) *. ix and bx = (fget nodes (o + 3) -. ox) *. ix in
   let ay = (fget nodes (o + 1) -. oy) *. iy and by = (fget nodes (o + 4) -. oy) *. iy in
   let az = (fget nodes (o + 2) -. oz) *. iz and bz = (fget nodes (o + 5) -. oz) *. iz in
-  let lo = Float.max (Float.max (Float.min ax bx) (Float.min ay by)) (Float.max (Float.min az bz) t0) in
-  let hi = Float.min (Float.min (Float.max ax bx) (Float.max ay by)) (Float.min (Float.max az bz) t1) in
+  let lo = fmax (fmax (fmin ax bx) (fmin ay by)) (fmax (fmin az bz) t0) in
+  let hi = fmin (fmin (fmax ax bx) (fmax ay by)) (fmin (fmax az bz) t1) in
   lo <= hi
 
 let inv d = if d = 0. then 1e300 else 1. /. d
 
 let nearest b (r : Ray.t) tmin (h : Hit.t) f =
-  if Array.length b.links > 0 then begin
+  if Bigarray.Array1.dim b.nodes > 0 then begin
     let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
     let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
     let stack = Array.make b.depth 0 in
     let sp = ref 0 and k = ref 0 and go = ref true in
-    let nodes = b.nodes and links = b.links in
+    let nodes = b.nodes in
     while !go do
       let kk = !k in
-      let pop () = if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp) in
       if box_hit nodes kk ox oy oz ix iy iz tmin h.t then begin
-        let c = Array.unsafe_get links ((2 * kk) + 1) in
+        let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
-          let first = Array.unsafe_get links (2 * kk) in
+          let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           for j = first to first + c - 1 do
             f (Array.unsafe_get b.prims j)
           done;
-          pop ()
+          if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          let right = Array.unsafe_get links (2 * kk) in
+          let right = int_of_float (nget nodes ((8 * kk) + 6)) in
           let neg = match c with -1 -> ix < 0. | -2 -> iy < 0. | _ -> iz < 0. in
           if neg then (stack.(!sp) <- kk + 1; k := right)
           else (stack.(!sp) <- right; k := kk + 1);
           incr sp
         end
       end
-      else pop ()
+      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
     done
   end
 
 let iter b (r : Ray.t) tmin tmax f =
-  if Array.length b.links = 0 then true
+  if Bigarray.Array1.dim b.nodes = 0 then true
   else begin
     let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
     let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
     let stack = Array.make b.depth 0 in
     let sp = ref 0 and k = ref 0 and go = ref true and ok = ref true in
-    let nodes = b.nodes and links = b.links in
+    let nodes = b.nodes in
     while !go do
       let kk = !k in
-      let pop () = if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp) in
       if box_hit nodes kk ox oy oz ix iy iz tmin tmax then begin
-        let c = Array.unsafe_get links ((2 * kk) + 1) in
+        let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
-          let first = Array.unsafe_get links (2 * kk) in
+          let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
           while !j < first + c && f (Array.unsafe_get b.prims !j) do incr j done;
-          if !j < first + c then (ok := false; go := false) else pop ()
+          if !j < first + c then (ok := false; go := false) else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          stack.(!sp) <- Array.unsafe_get links (2 * kk);
+          stack.(!sp) <- int_of_float (nget nodes ((8 * kk) + 6));
           incr sp;
           k := kk + 1
         end
       end
-      else pop ()
+      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
     done;
     !ok
   end
+
+let renumber b = ({ b with prims = Array.init (Array.length b.prims) Fun.id }, Array.copy b.prims)
+
+let bytes b = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)

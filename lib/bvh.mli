@@ -1,12 +1,12 @@
 (** Bounding volume hierarchies over primitives given only by their
-    axis-aligned boxes: a binned SAH build, flattened into one float array
-    of node boxes and one int array of links, depth first (a node's first
-    child follows it). The primitives themselves stay with the caller: a
+    axis-aligned boxes: a binned SAH build, flattened depth first (a node's
+    first child follows it) into one float32 array, 32 bytes per node (box
+    rounded outward, and links), so a node visit touches one cache line.
+    At most 2^23 primitives. The primitives themselves stay with the caller: a
     query calls back with primitive indices.
 
-    Memory: 48 bytes of box and 16 bytes of links per node (at most
-    [2n - 1] nodes, about [n/2] with leaves of ~4), plus 8 bytes per
-    primitive for the index permutation. *)
+    Memory: 32 bytes per node (at most [2n - 1] nodes, about [n/2] with
+    leaves of ~4), plus 8 bytes per primitive for the index permutation. *)
 
 type t
 
@@ -21,6 +21,9 @@ val size : t -> int
 
 val nodes : t -> int
 
+val bytes : t -> int
+(** Memory held: 32 bytes per node (float32 boxes), 8 per primitive. *)
+
 val bounds : t -> (Vec3.t * Vec3.t) option
 (** The root box; [None] when there are no primitives. *)
 
@@ -34,3 +37,9 @@ val iter : t -> Ray.t -> float -> float -> (int -> bool) -> bool
 (** [iter b ray tmin tmax f] calls [f i] for primitives whose leaf box meets
     the ray within [(tmin, tmax)], in no particular order, until [f]
     returns [false]; then returns [false]. *)
+
+val renumber : t -> t * int array
+(** [renumber b] is [(b', order)]: the same tree calling back with
+    positions in leaf order, [order.(i)] being the primitive that position
+    [i] stands for. Storing primitives in that order keeps the ones a leaf
+    visits next to each other in memory. *)

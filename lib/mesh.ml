@@ -1,7 +1,9 @@
+(* Triangles are stored in BVH leaf order, 9 floats each (the three
+   corners), so a leaf's triangles are contiguous in memory; [nfaces] (3
+   normal indices per triangle, or empty) follows the same order. *)
 type t = {
-  verts : Float.Array.t;
+  tris : Float.Array.t;
   normals : Float.Array.t;
-  faces : int array;
   nfaces : int array;
   bvh : Bvh.t;
   inside_vector : Vec3.t option;
@@ -40,7 +42,7 @@ let smooth_normal n1 n2 n3 u v =
   let w = 1. -. u -. v in
   Vec3.normalize (Vec3.madd (Vec3.madd (Vec3.scale w n1) u n2) v n3)
 
-let vert m i = Vec3.make (fget m.verts (3 * i)) (fget m.verts ((3 * i) + 1)) (fget m.verts ((3 * i) + 2))
+let vert verts i = Vec3.make (fget verts (3 * i)) (fget verts ((3 * i) + 1)) (fget verts ((3 * i) + 2))
 
 let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
   let normals = Float.Array.copy normals in
@@ -51,7 +53,7 @@ let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
   done;
   let n = Array.length faces / 3 in
   let smooth = Array.length normal_faces > 0 in
-  let v = { verts; normals; faces; nfaces = [||]; bvh = Bvh.build (Float.Array.create 0); inside_vector } in
+  let v = verts in
   let keep =
     List.filter
       (fun i ->
@@ -80,18 +82,32 @@ let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
       Float.Array.set boxes ((6 * j) + 4) hi.y;
       Float.Array.set boxes ((6 * j) + 5) hi.z)
     keep;
-  { v with faces = faces'; nfaces = nfaces'; bvh = Bvh.build boxes }
+  let bvh, order = Bvh.renumber (Bvh.build boxes) in
+  let tris = Float.Array.create (9 * k) in
+  Array.iteri
+    (fun j i ->
+      for c = 0 to 2 do
+        let p = vert v faces'.((3 * i) + c) in
+        Float.Array.set tris ((9 * j) + (3 * c)) p.x;
+        Float.Array.set tris ((9 * j) + (3 * c) + 1) p.y;
+        Float.Array.set tris ((9 * j) + (3 * c) + 2) p.z
+      done)
+    order;
+  let nfaces = if smooth then Array.init (3 * k) (fun q -> nfaces'.((3 * order.(q / 3)) + (q mod 3))) else [||] in
+  { tris; normals; nfaces; bvh; inside_vector }
 
-let triangles m = Array.length m.faces / 3
+let triangles m = Float.Array.length m.tris / 9
+
+let bytes m =
+  (8 * (Float.Array.length m.tris + Float.Array.length m.normals + Array.length m.nfaces)) + Bvh.bytes m.bvh
 
 let bounds m =
   match Bvh.bounds m.bvh with Some b -> b | None -> (Vec3.zero, Vec3.zero)
 
 let[@inline] tri m i r tmin h =
-  let f = m.faces and p = m.verts in
-  let a = 3 * Array.unsafe_get f (3 * i)
-  and b = 3 * Array.unsafe_get f ((3 * i) + 1)
-  and c = 3 * Array.unsafe_get f ((3 * i) + 2) in
+  let p = m.tris in
+  let a = 9 * i in
+  let b = a + 3 and c = a + 6 in
   tri_hit (fget p a) (fget p (a + 1)) (fget p (a + 2)) (fget p b) (fget p (b + 1)) (fget p (b + 2))
     (fget p c) (fget p (c + 1)) (fget p (c + 2)) r tmin h
 
@@ -111,7 +127,7 @@ let normal m (h : Hit.t) =
   if na >= 0 then
     smooth_normal (nrm m na) (nrm m m.nfaces.((3 * i) + 1)) (nrm m m.nfaces.((3 * i) + 2)) h.u h.v
   else
-    let a = vert m m.faces.(3 * i) and b = vert m m.faces.((3 * i) + 1) and c = vert m m.faces.((3 * i) + 2) in
+    let a = vert m.tris (3 * i) and b = vert m.tris ((3 * i) + 1) and c = vert m.tris ((3 * i) + 2) in
     Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a))
 
 let inside m p =

@@ -1,8 +1,9 @@
-(** Triangle meshes in flat arrays with their own BVH over triangles (the
-    storage behind POV-Ray's [mesh] and [mesh2]). Memory per triangle: 24
-    bytes of vertex indices (48 with per-vertex normals), 8 of BVH
-    permutation and about 16 of BVH nodes, plus 24 per shared vertex (and
-    normal). *)
+(** Triangle meshes with their own BVH over triangles (the storage behind
+    POV-Ray's [mesh] and [mesh2]). Corners are copied per triangle in BVH
+    leaf order, so the triangles a leaf holds sit together in memory.
+    Memory per triangle: 72 bytes of corners, 8 of BVH permutation and
+    about 16 of BVH nodes (~96; 24 more with per-vertex normals, plus 24
+    per normal); see {!bytes}. *)
 
 type t
 
@@ -19,6 +20,9 @@ val make :
 
 val triangles : t -> int
 (** Number of triangles kept. *)
+
+val bytes : t -> int
+(** Memory held (arrays and BVH). *)
 
 val bounds : t -> Vec3.t * Vec3.t
 (** A point box at the origin for an empty mesh. *)

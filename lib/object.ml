@@ -7,9 +7,12 @@ type t = {
   inverted : bool;
   clip : t array;
   bounds : (Vec3.t * Vec3.t) option;
+  index : index option;
 }
 
 and geom = Prim of Shape.t | Union of t array | Intersection of t array | Merge of t array
+
+and index = { bvh : Bvh.t; bounded : t array; unbounded : t array }
 
 let box_union a b =
   match (a, b) with
@@ -52,10 +55,33 @@ let rec solid_box o =
 
 let clip_box clip b = Array.fold_left (fun b c -> box_inter b (solid_box c)) b clip
 
+(* The scale factor of a similarity (rotation, uniform scale, translation),
+   or [None]. *)
+let similarity xf =
+  let c0 = Transform.vector xf Vec3.unit_x and c1 = Transform.vector xf Vec3.unit_y
+  and c2 = Transform.vector xf Vec3.unit_z in
+  let l0 = Vec3.length2 c0 in
+  let close a b = Float.abs (a -. b) <= 1e-12 *. l0 in
+  if close (Vec3.length2 c1) l0 && close (Vec3.length2 c2) l0 && close (Vec3.dot c0 c1) 0.
+     && close (Vec3.dot c1 c2) 0. && close (Vec3.dot c0 c2) 0. && l0 > 0.
+  then Some (Float.sqrt l0)
+  else None
+
+(* A sphere moved by a similarity is a sphere: no transform to apply per
+   ray (and the scene tests it from a flat array). *)
+let fold xform shape =
+  match shape with
+  | Shape.Sphere { center; radius } when not (Transform.is_identity xform) -> (
+      match similarity xform with
+      | Some k -> (Transform.identity, Shape.sphere (Transform.point xform center) (k *. radius))
+      | None -> (xform, shape))
+  | _ -> (xform, shape)
+
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
+  let xform, shape = fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
-  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b }
+  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b; index = None }
 
 let node geom clip b =
   {
@@ -67,13 +93,37 @@ let node geom clip b =
     inverted = false;
     clip;
     bounds = clip_box clip b;
+    index = None;
   }
+
+(* A BVH over the children of a large union. *)
+let index_min = 8
+
+let make_index cs =
+  let bounded, unbounded =
+    List.partition (fun c -> match c.bounds with Some (lo, hi) -> Vec3.is_finite lo && Vec3.is_finite hi | None -> false)
+      (Array.to_list cs)
+  in
+  let bounded = Array.of_list bounded in
+  let boxes = Float.Array.create (6 * Array.length bounded) in
+  Array.iteri
+    (fun i c ->
+      match c.bounds with
+      | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
+          List.iteri (fun k x -> Float.Array.set boxes ((6 * i) + k) x)
+            [ lo.x; lo.y; lo.z; Float.max lo.x hi.x; Float.max lo.y hi.y; Float.max lo.z hi.z ]
+      | None -> ())
+    bounded;
+  let bvh, order = Bvh.renumber (Bvh.build boxes) in
+  { bvh; bounded = Array.map (fun i -> bounded.(i)) order; unbounded = Array.of_list unbounded }
 
 let union_box cs =
   if Array.length cs = 0 then Some (Vec3.zero, Vec3.zero)
   else Array.fold_left (fun b c -> box_union b c.bounds) cs.(0).bounds cs
 
-let union ?(clip = [||]) cs = node (Union cs) clip (union_box cs)
+let union ?(clip = [||]) cs =
+  let n = node (Union cs) clip (union_box cs) in
+  if Array.length cs >= index_min then { n with index = Some (make_index cs) } else n
 let merge ?(clip = [||]) cs = node (Merge cs) clip (union_box cs)
 
 let intersection ?(clip = [||]) cs =
@@ -119,6 +169,24 @@ let others_all cs i p pred =
   done;
   !ok
 
+(* Whether the ray misses the object's box within (tmin, tmax). *)
+let box_missed o (r : Ray.t) tmin tmax =
+  match o.bounds with
+  | None -> false
+  | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
+      let t0 = ref tmin and t1 = ref tmax in
+      let slab o d l u =
+        if d = 0. then (if o < l || o > u then t1 := neg_infinity)
+        else
+          let a = (l -. o) /. d and b = (u -. o) /. d in
+          if a < b then (if a > !t0 then t0 := a; if b < !t1 then t1 := b)
+          else (if b > !t0 then t0 := b; if a < !t1 then t1 := a)
+      in
+      slab r.origin.x r.dir.x lo.x hi.x;
+      slab r.origin.y r.dir.y lo.y hi.y;
+      slab r.origin.z r.dir.z lo.z hi.z;
+      !t0 > !t1
+
 let rec hit o (r : Ray.t) tmin (h : Hit.t) f =
   if Array.length o.clip = 0 then raw_hit o r tmin h f
   else first_accepted raw_hit o r tmin h f (fun p -> Array.for_all (fun c -> inside c p) o.clip)
@@ -132,12 +200,18 @@ and raw_hit o r tmin h f =
         f.leaf <- o;
         true)
       else false
-  | Union cs ->
+  | Union cs -> (
       let any = ref false in
-      for i = 0 to Array.length cs - 1 do
-        if hit cs.(i) r tmin h f then any := true
-      done;
-      !any
+      match o.index with
+      | None ->
+          for i = 0 to Array.length cs - 1 do
+            if (not (box_missed cs.(i) r tmin h.t)) && hit cs.(i) r tmin h f then any := true
+          done;
+          !any
+      | Some x ->
+          Array.iter (fun c -> if hit c r tmin h f then any := true) x.unbounded;
+          Bvh.nearest x.bvh r tmin h (fun i -> if hit (Array.unsafe_get x.bounded i) r tmin h f then any := true);
+          !any)
   | Intersection cs -> csg cs r tmin h f (fun i p -> others_all cs i p inside)
   | Merge cs -> csg cs r tmin h f (fun i p -> others_all cs i p (fun c p -> not (inside c p)))
 
@@ -146,7 +220,7 @@ and raw_hit o r tmin h f =
 and csg cs r tmin h f keep =
   let any = ref false in
   for i = 0 to Array.length cs - 1 do
-    if first_accepted hit cs.(i) r tmin h f (keep i) then any := true
+    if (not (box_missed cs.(i) r tmin h.t)) && first_accepted hit cs.(i) r tmin h f (keep i) then any := true
   done;
   !any
 

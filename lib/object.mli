@@ -17,6 +17,7 @@ type t = private {
   inverted : bool;  (** leaf: inside and outside swapped, normal flipped *)
   clip : t array;  (** [clipped_by]: surfaces outside any of these are removed *)
   bounds : (Vec3.t * Vec3.t) option;  (** world box; [None] when infinite *)
+  index : index option;  (** a BVH over the children of a large union *)
 }
 
 and geom =
@@ -25,12 +26,21 @@ and geom =
   | Intersection of t array  (** surfaces inside all other children *)
   | Merge of t array  (** surfaces outside all other children; inside any *)
 
+and index = {
+  bvh : Bvh.t;
+  bounded : t array;  (** children with finite bounds, in BVH leaf order *)
+  unbounded : t array;
+}
+
 val make :
   ?xform:Transform.t -> ?texture:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
   ?inverted:bool -> ?clip:t array -> Shape.t -> t
-(** A leaf. *)
+(** A leaf. A sphere under a similarity (rotations, uniform scales,
+    translations) is stored moved, with the identity transform. *)
 
 val union : ?clip:t array -> t array -> t
+(** With 8 children or more, they get their own BVH. *)
+
 val intersection : ?clip:t array -> t array -> t
 val merge : ?clip:t array -> t array -> t
 

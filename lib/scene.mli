@@ -28,6 +28,11 @@ type t = {
 val accelerate : Object.t array -> accel
 (** Build the BVH (binned SAH) over the objects' world bounds. *)
 
+val make :
+  objects:Object.t array -> lights:Light.t array -> camera:Camera.t -> background:Color.t ->
+  settings:settings -> t
+(** A scene with its acceleration structure built. *)
+
 val bvh_nodes : t -> int
 (** Number of BVH nodes over the finite objects (for reports). *)
 

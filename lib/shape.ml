@@ -64,57 +64,73 @@ let hit_sphere (center : Vec3.t) radius (r : Ray.t) tmin (h : Hit.t) =
     let lo = Float.min t0 t1 and hi = Float.max t0 t1 in
     accept h tmin lo 0. || accept h tmin hi 0.
 
-let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.t) tmin (h : Hit.t) =
-  (* entry and exit distances with the face each one crosses *)
-  let tn = ref neg_infinity and tf = ref infinity and fn = ref 0. and ff = ref 0. and miss = ref false in
-  let slab o d l u axis =
-    if d = 0. then (if o < l || o > u then miss := true)
-    else
-      let a = (l -. o) /. d and b = (u -. o) /. d in
-      let near, far, nf, xf = if a < b then (a, b, 2. *. axis, (2. *. axis) +. 1.) else (b, a, (2. *. axis) +. 1., 2. *. axis) in
-      if near > !tn then (tn := near; fn := nf);
-      if far < !tf then (tf := far; ff := xf)
-  in
-  slab r.origin.x r.dir.x lo.x hi.x 0.;
-  slab r.origin.y r.dir.y lo.y hi.y 1.;
-  slab r.origin.z r.dir.z lo.z hi.z 2.;
-  (not !miss) && !tn <= !tf && (accept h tmin !tn !fn || accept h tmin !tf !ff)
+(* Slab test along one axis, updating the entry (tn, face fn) and exit (tf,
+   face ff) of the running interval; allocation-free. Returns false on a
+   miss (ray parallel to the slab and outside it). *)
+let[@inline] slab o d l u axis (a : Hit.t) =
+  if d = 0. then o >= l && o <= u
+  else begin
+    let p = (l -. o) /. d and q = (u -. o) /. d in
+    let near = if p < q then p else q and far = if p < q then q else p in
+    let lo_face = 2. *. axis in
+    if near > a.t then (
+      a.t <- near;
+      a.u <- (if p < q then lo_face else lo_face +. 1.));
+    if far < a.v then (
+      a.v <- far;
+      a.id <- (if p < q then lo_face +. 1. else lo_face));
+    true
+  end
 
+let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.t) tmin (h : Hit.t) =
+  (* the scratch holds entry distance and face (t, u), exit (v, id) *)
+  let a = { Hit.t = neg_infinity; u = 0.; v = infinity; id = 0. } in
+  slab r.origin.x r.dir.x lo.x hi.x 0. a
+  && slab r.origin.y r.dir.y lo.y hi.y 1. a
+  && slab r.origin.z r.dir.z lo.z hi.z 2. a
+  && a.t <= a.v
+  && (accept h tmin a.t a.u || accept h tmin a.v a.id)
+
+let[@inline] cone_side oz dz length tmin (h : Hit.t) t =
+  let z = oz +. (t *. dz) in
+  z >= 0. && z <= length && accept h tmin t 0.
+
+let[@inline] cone_cap ox oy oz dx dy dz tmin (h : Hit.t) zc rc id =
+  let t = (zc -. oz) /. dz in
+  let x = ox +. (t *. dx) and y = oy +. (t *. dy) in
+  (x *. x) +. (y *. y) <= rc *. rc && accept h tmin t id
+
+(* In the cone's frame (u, v, axis) the side is x^2 + y^2 = (r0 + k z)^2,
+   0 <= z <= length; the caps are discs at z = 0 and z = length. *)
 let hit_cone ~(base : Vec3.t) ~axis ~u ~v ~length ~r0 ~r1 ~open_ (r : Ray.t) tmin (h : Hit.t) =
   let o = Vec3.sub r.origin base in
   let ox = Vec3.dot o u and oy = Vec3.dot o v and oz = Vec3.dot o axis in
   let dx = Vec3.dot r.dir u and dy = Vec3.dot r.dir v and dz = Vec3.dot r.dir axis in
   let k = (r1 -. r0) /. length in
-  let found = ref false in
-  let side t =
-    let z = oz +. (t *. dz) in
-    if z >= 0. && z <= length && accept h tmin t 0. then found := true
-  in
   let rz0 = r0 +. (k *. oz) in
   let a = (dx *. dx) +. (dy *. dy) -. (k *. k *. dz *. dz) in
   let hb = (ox *. dx) +. (oy *. dy) -. (rz0 *. k *. dz) in
   let c = (ox *. ox) +. (oy *. oy) -. (rz0 *. rz0) in
-  if Float.abs a > 1e-12 *. ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) then begin
-    let disc = (hb *. hb) -. (a *. c) in
-    if disc >= 0. then begin
+  let side =
+    if Float.abs a > 1e-12 *. ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) then begin
+      let disc = (hb *. hb) -. (a *. c) in
+      disc >= 0.
+      &&
       let sq = Float.sqrt disc in
       let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
       let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
-      side (Float.min t0 t1);
-      side (Float.max t0 t1)
+      let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
+      let f0 = cone_side oz dz length tmin h lo in
+      let f1 = cone_side oz dz length tmin h hi in
+      f0 || f1
     end
-  end
-  else if hb <> 0. then side (-.c /. (2. *. hb));
-  if (not open_) && dz <> 0. then begin
-    let cap zc rc id =
-      let t = (zc -. oz) /. dz in
-      let x = ox +. (t *. dx) and y = oy +. (t *. dy) in
-      if (x *. x) +. (y *. y) <= rc *. rc && accept h tmin t id then found := true
-    in
-    cap 0. r0 1.;
-    cap length r1 2.
-  end;
-  !found
+    else hb <> 0. && cone_side oz dz length tmin h (-.c /. (2. *. hb))
+  in
+  if (not open_) && dz <> 0. then
+    let c0 = cone_cap ox oy oz dx dy dz tmin h 0. r0 1. in
+    let c1 = cone_cap ox oy oz dx dy dz tmin h length r1 2. in
+    side || c0 || c1
+  else side
 
 let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
   let dl = Vec3.length r.dir in
@@ -128,7 +144,9 @@ let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
   if q2 > rr *. rr then false
   else
     let hh = Float.sqrt ((rr *. rr) -. q2) *. (1. +. 1e-9) in
-    let lo = Float.max (-.hh) ((tmin *. dl) -. t0) and hi = Float.min hh ((h.t *. dl) -. t0) in
+    (* the upper end does not depend on [h.t], so that the root found never
+       depends on the order objects are tried in *)
+    let lo = Float.max (-.hh) ((tmin *. dl) -. t0) and hi = hh in
     if not (lo < hi) then false
     else
       let b = 2. *. Vec3.dot q dn in

@@ -87,7 +87,29 @@ let light (o : Sdl.obj) (l : Sdl.light) =
 let positive (o : Sdl.obj) what r =
   if not (r > 0.) then Diag.error o.loc "%s must be positive, found %g" what r
 
-let mesh (o : Sdl.obj) (m : Sdl.mesh) =
+(* Meshes are built once per declared value: every [object { M }] of a
+   declared mesh shares the same triangles and BVH (instancing). *)
+module Phys = Hashtbl.Make (struct
+  type t = Sdl.mesh
+
+  let equal = ( == )
+  let hash = Hashtbl.hash
+end)
+
+let built : Shape.t Phys.t = Phys.create 16
+let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16
+
+let rec mesh (o : Sdl.obj) (m : Sdl.mesh) =
+  match Phys.find_opt built m with
+  | Some s -> s
+  | None ->
+      let s = build_mesh o m in
+      Phys.replace built m s;
+      s
+
+and build_mesh (o : Sdl.obj) (m : Sdl.mesh) =
+  if Array.length m.faces / 3 > 1 lsl 23 then
+    Diag.error o.loc "a mesh is limited to 2^23 (8388608) triangles, found %d" (Array.length m.faces / 3);
   let mm =
     Mesh.make ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
       ~inside_vector:m.inside_vector
@@ -182,10 +204,18 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
       let groups = Hashtbl.create 8 in
       Array.iteri (fun i t -> Hashtbl.replace groups t (i :: Option.value ~default:[] (Hashtbl.find_opt groups t)))
         m.face_textures;
+      let cache = match Phys.find_opt parts m with
+        | Some c -> c
+        | None -> let c = Hashtbl.create 8 in Phys.replace parts m c; c in
       let part t faces_idx =
         let pick a = if Array.length a = 0 then a else
             Array.concat (List.rev_map (fun i -> Array.sub a (3 * i) 3) faces_idx) in
-        let m' = { m with faces = pick m.faces; normal_faces = pick m.normal_faces; face_textures = [||] } in
+        let m' = match Hashtbl.find_opt cache t with
+          | Some m' -> m'
+          | None ->
+              let m' = { m with faces = pick m.faces; normal_faces = pick m.normal_faces; face_textures = [||] } in
+              Hashtbl.replace cache t m';
+              m' in
         let texture = if t >= 0 && t < Array.length m.textures then Some m.textures.(t) else tex in
         leaf ctx' { o with shape = Sdl.Mesh m' } texture inter
       in
@@ -209,7 +239,10 @@ let rec top ctx (o : Sdl.obj) acc =
       List.fold_left (fun acc c -> top ctx' c acc) acc l
   | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
 
-let scene (s : Sdl.scene) =
+let rec scene (s : Sdl.scene) =
+  Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts) (fun () -> scene_ s)
+
+and scene_ (s : Sdl.scene) =
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in

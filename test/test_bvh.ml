@@ -4,8 +4,8 @@ open Camlray
 open Geom_gen
 
 let scene objects =
-  { Scene.objects; lights = [||]; camera = Camera.default; background = Color.black;
-    settings = Scene.default_settings; accel = Scene.accelerate objects }
+  Scene.make ~objects ~lights:[||] ~camera:Camera.default ~background:Color.black
+    ~settings:Scene.default_settings
 
 (* random objects spread over a 20-unit cube, some CSG, some infinite *)
 let gobj =
@@ -15,10 +15,17 @@ let gobj =
   oneof_weighted
     [
       (20, leaf);
+      (* plain spheres: the scene tests these from a flat array *)
+      (10, map3 (fun c r ns -> Object.make ~no_shadow:ns (Shape.sphere c r)) (gvec 10.) (fr 0.2 2.)
+             (map (fun k -> k = 0) (int_bound 5)));
       (2, map2 (fun a b -> Object.intersection [| a; b |]) leaf leaf);
       (2, map2 (fun xf s -> let a = Object.make ~xform:xf (Shape.sphere Vec3.zero 1.5) in
                  Object.intersection [| a; Object.invert (Object.make ~xform:xf s) |]) place gshape);
       (1, map2 (fun n d -> Object.make (Shape.plane n d)) gdir (fr (-15.) 15.));
+      (* a union large enough to get its own BVH, alone and inside CSG *)
+      (1, map (fun l -> Object.union (Array.of_list l)) (list_size (return 10) leaf));
+      (1, map2 (fun a l -> Object.intersection [| a; Object.invert (Object.union (Array.of_list l)) |])
+            leaf (list_size (return 12) leaf));
     ]
 
 let gscene = QCheck.Gen.(pair (list_size (int_range 0 60) gobj) (list_size (return 30) (map2 (fun o d -> Ray.make o d) (gvec 15.) gdir)))
@@ -41,7 +48,10 @@ let props =
             let t, leaf = brute objects r in
             match Scene.intersect s r 1e-9 infinity, leaf with
             | None, None -> true
-            | Some h, Some l -> h.t = t && (h.obj == l || h.t = t)
+            | Some h, Some l ->
+                let n = Object.normal l h.point (Hit.create 0.) in
+                h.t = t && (h.obj == l || h.t = t)
+                && (match l.geom with Object.Prim (Shape.Sphere _) when h.obj == l -> Vec3.dist n h.normal < 1e-12 | _ -> true)
             | Some h, None -> QCheck.Test.fail_reportf "BVH found t=%g, brute force nothing" h.t
             | None, Some _ -> QCheck.Test.fail_reportf "BVH missed the hit at t=%g" t) rays);
     QCheck.Test.make ~name:"occluders: same crossings as brute force" ~count:200 arb (fun (objs, rays) ->
@@ -50,7 +60,7 @@ let props =
         List.for_all (fun r ->
             let a = ref [] and b = ref [] in
             ignore (Scene.occluders s r 1e-9 30. (fun _ t -> a := t :: !a; true));
-            Array.iter (fun o -> ignore (Object.crossings o r 1e-9 30. (fun _ t -> b := t :: !b; true))) objects;
+            Array.iter (fun o -> ignore (Object.crossings o r 1e-9 30. (fun (l : Object.t) t -> if not l.no_shadow then b := t :: !b; true))) objects;
             List.sort compare !a = List.sort compare !b) rays);
     QCheck.Test.make ~name:"occluders stops when told to" ~count:100 arb (fun (objs, rays) ->
         let s = scene (Array.of_list objs) in
@@ -59,6 +69,17 @@ let props =
             let all = Scene.occluders s r 1e-9 30. (fun _ _ -> incr n; false) in
             (all && !n = 0) || ((not all) && !n = 1)) rays);
   ]
+
+let union_prop =
+  QCheck.Test.make ~name:"a union's own BVH finds the nearest child hit" ~count:200
+    (QCheck.make QCheck.Gen.(pair (list_size (int_range 8 40) gobj) (list_size (return 20) gray)))
+    (fun (l, rays) ->
+      let cs = Array.of_list l in
+      let u = Object.union cs in
+      u.index <> None
+      && List.for_all (fun r ->
+             let t, _ = brute cs r in
+             Object.intersect u r 1e-9 infinity = t) rays)
 
 let boxes l = Float.Array.of_list (List.concat_map (fun (a, b) -> [ a; a; a; b; b; b ]) l)
 
@@ -83,4 +104,4 @@ let units =
         Alcotest.(check (list int)) "only box 10" [ 10 ] !seen);
   ]
 
-let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest props)
+let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest (union_prop :: props))

@@ -5,6 +5,15 @@
 open Camlray
 
 let scenes = [
+    ("open", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <0, 4, -5> look_at <0, 0, 0> }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+cylinder { <-1.2, -1, 0>, <-1.2, 1, 0>, 0.8 open pigment { rgb <0.9,0.5,0.2> } }
+cone { <1.2, -1, 0>, 0.3, <1.2, 1, 0>, 0.9 open pigment { rgb <0.2,0.5,0.9> } }
+disc { <0,-1,0>, y, 3 pigment { rgb 0.8 } }
+|pov});
     ("shapes", {pov|#version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -9> look_at <0, 0.5, 0> right x*4/3 }
@@ -115,22 +124,85 @@ let within2 (a : Image.rgb8) (b : Image.rgb8) =
   done;
   float !ok /. float n
 
+(* Render [src] (written into [dir]) with both and compare. *)
+let compare_with_pov dir name src =
+  let pov = Filename.concat dir (name ^ ".pov") in
+  Out_channel.with_open_bin pov (fun oc -> output_string oc src);
+  let ours = Filename.concat dir "ours.png" and theirs = Filename.concat dir "pov.png" in
+  run (Printf.sprintf "%s render %s -W 160 -H 120 -q -o %s" (Filename.quote (exe ())) (Filename.quote pov)
+         (Filename.quote ours));
+  run (Printf.sprintf "cd %s && povray +I%s +O%s +W160 +H120 -D -A +FN > /dev/null 2>&1" (Filename.quote dir)
+         (Filename.quote pov) (Filename.quote theirs));
+  let a = Image.read ours and b = Image.read theirs in
+  let frac = within2 a b and psnr = Image.psnr a b in
+  if frac < 0.99 || psnr < 35. then
+    Alcotest.failf "%s: %.2f%% of pixels within 2/255, PSNR %.1f dB (files in %s)" name (100. *. frac) psnr dir
+
 let case (name, src) =
   Alcotest.test_case ("camlray = POV-Ray: " ^ name) `Slow (fun () ->
       if not (have_povray ()) then Alcotest.skip ()
-      else begin
-        let dir = Filename.temp_dir "camlray-geom" "" in
-        let pov = Filename.concat dir (name ^ ".pov") in
-        Out_channel.with_open_bin pov (fun oc -> output_string oc src);
-        let ours = Filename.concat dir "ours.png" and theirs = Filename.concat dir "pov.png" in
-        run (Printf.sprintf "%s render %s -W 160 -H 120 -q -o %s" (Filename.quote (exe ())) (Filename.quote pov)
-               (Filename.quote ours));
-        run (Printf.sprintf "povray +I%s +O%s +W160 +H120 -D -A +FN > /dev/null 2>&1" (Filename.quote pov)
-               (Filename.quote theirs));
-        let a = Image.read ours and b = Image.read theirs in
-        let frac = within2 a b and psnr = Image.psnr a b in
-        if frac < 0.99 || psnr < 35. then
-          Alcotest.failf "%s: %.2f%% of pixels within 2/255, PSNR %.1f dB (files in %s)" name (100. *. frac) psnr dir
-      end)
+      else compare_with_pov (Filename.temp_dir "camlray-geom" "") name src)
 
-let tests = ("geometry vs POV-Ray", List.map case scenes)
+(* obj2pov: a generated OBJ (quads, a group with normals, negative
+   indices) converted and rendered by both. *)
+let obj = {obj|# a cube with quads, and a smooth pyramid group
+o cube
+v -1 -1 -1
+v 1 -1 -1
+v 1 1 -1
+v -1 1 -1
+v -1 -1 1
+v 1 -1 1
+v 1 1 1
+v -1 1 1
+f 1 2 3 4
+f 5 8 7 6
+f 1 5 6 2
+f 2 6 7 3
+f 3 7 8 4
+f 5 1 4 8
+g pyramid
+v 2 -1 -1
+v 4 -1 -1
+v 4 -1 1
+v 2 -1 1
+v 3 1 0
+vn -1 0.5 -1
+vn 1 0.5 -1
+vn 1 0.5 1
+vn -1 0.5 1
+vn 0 1 0
+f 9//1 10//2 13//5
+f 10//2 11//3 13//5
+f 11//3 12//4 13//5
+f -2//4 -5//1 -1//5
+|obj}
+
+let obj_scene = {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 }
+camera { location <1, 4, -8> look_at <1.5, 0, 0> right x*4/3 }
+light_source { <-5, 10, -6> color rgb 1 }
+background { color rgb <0.3, 0.4, 0.6> }
+#include "t.inc"
+object { OBJ_t_all pigment { rgb <0.9, 0.6, 0.3> } rotate y*20 }
+object { OBJ_pyramid pigment { rgb <0.3, 0.6, 0.9> } translate <-3, 0, 2> }
+|pov}
+
+let obj2pov =
+  Alcotest.test_case "obj2pov output renders the same in camlray and POV-Ray" `Slow (fun () ->
+      let dir = Filename.temp_dir "camlray-obj" "" in
+      let f name text = Out_channel.with_open_bin (Filename.concat dir name) (fun oc -> output_string oc text) in
+      f "t.obj" obj;
+      f "bad.obj" "v 0 0 0\nv 1 0 0\nf 1 2 3\n";
+      run (Printf.sprintf "cd %s && %s obj2pov t.obj > t.inc" (Filename.quote dir) (Filename.quote (exe ())));
+      let bad = Sys.command (Printf.sprintf "cd %s && %s obj2pov bad.obj > /dev/null 2> err.txt" (Filename.quote dir)
+                               (Filename.quote (exe ()))) in
+      Alcotest.(check int) "bad OBJ: exit 1" 1 bad;
+      let err = In_channel.with_open_bin (Filename.concat dir "err.txt") In_channel.input_all in
+      Alcotest.(check string) "located message"
+        "camlray obj2pov: bad.obj:3: error: vertex index \"3\" out of range (1..2)\n" err;
+      f "scene.pov" obj_scene;
+      if have_povray () then compare_with_pov dir "scene" obj_scene
+      else run (Printf.sprintf "%s check %s" (Filename.quote (exe ())) (Filename.quote (Filename.concat dir "scene.pov"))))
+
+let tests = ("geometry vs POV-Ray", List.map case scenes @ [ obj2pov ])

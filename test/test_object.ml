@@ -93,6 +93,17 @@ let mesh_inside =
       Alcotest.(check bool) "outside" false (Object.inside o (Vec3.make 0.5 0.5 0.5));
       Alcotest.(check bool) "hit" true (Object.intersect o (Ray.make (Vec3.make 0.1 0.1 (-1.)) Vec3.unit_z) 0. 10. = 1.))
 
+let instancing =
+  Alcotest.test_case "object { M } of a declared mesh shares its triangles" `Quick (fun () ->
+      match
+        objects
+          "#declare M = mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> } face_indices { 1, <0,1,2> } }\n\
+           object { M translate x } object { M rotate y*90 }"
+      with
+      | [| { geom = Object.Prim (Shape.Mesh a); _ }; { geom = Object.Prim (Shape.Mesh b); _ } |] ->
+          Alcotest.(check bool) "same mesh" true (a == b)
+      | _ -> Alcotest.fail "expected two meshes")
+
 (* bad input: a located error, never an exception *)
 let error_case src line needle =
   Alcotest.test_case ("error: " ^ needle) `Quick (fun () ->
@@ -130,5 +141,5 @@ let degenerate =
 
 let tests =
   ( "object",
-    [ texturing; no_shadow; mesh_inside; degenerate ] @ errors
+    [ texturing; no_shadow; mesh_inside; degenerate; instancing ] @ errors
     @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props) )

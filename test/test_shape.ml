@@ -140,4 +140,14 @@ let props =
         | _ -> false);
   ]
 
-let tests = ("shape", hand @ inside_cases @ List.map QCheck_alcotest.to_alcotest props)
+let folded =
+  Alcotest.test_case "a sphere under a similarity is stored moved" `Quick (fun () ->
+      let xf = Transform.then_ (Transform.then_ (Transform.scale (v 2. 2. 2.)) (Transform.rotate (v 10. 20. 30.)))
+          (Transform.translate (v 3. 0. 0.)) in
+      let o = Object.make ~xform:xf (Shape.sphere Vec3.zero 1.) in
+      Alcotest.(check bool) "identity transform" true (Transform.is_identity o.xform);
+      Alcotest.(check (float 1e-12)) "distance" 8. (Object.intersect o (Ray.make (v 3. 0. (-10.)) z) 0. infinity);
+      let o' = Object.make ~xform:(Transform.scale (v 2. 1. 1.)) (Shape.sphere Vec3.zero 1.) in
+      Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
+
+let tests = ("shape", folded :: hand @ inside_cases @ List.map QCheck_alcotest.to_alcotest props)

@@ -1,0 +1,25 @@
+(** Scene size against trace time: spheres (written in the scene language
+    and parsed) and triangle meshes (a subdivided sphere, a heightfield
+    terrain, generated in code), from 10 to 10^6 objects filling the same
+    volume and the same part of the screen, at a fixed resolution. Parse,
+    BVH build and trace times are reported separately. *)
+
+type row = {
+  kind : string;
+  count : int;
+  parse_s : float;  (** scene text to compiled scene, BVH excluded *)
+  build_s : float;  (** BVH build (scene level, or mesh level) *)
+  trace_s : float;  (** Whitted render of the image *)
+  bytes_per_prim : float;  (** {!Camlray.Mesh.bytes} / triangles (meshes) *)
+}
+
+val run : ?sizes:int list -> ?width:int -> ?height:int -> ?domains:int -> unit -> row list
+(** Run every workload at every size (default 10, 10^3, 10^5, 10^6) at
+    [width] x [height] (default 320x240) on [domains] domains (default 1). *)
+
+val direct_spheres : int -> Camlray.Scene.t
+(** The spheres workload built in code, without parsing (used when
+    CAMLRAY_BENCH_DIRECT is set, to skip the parse of 10^6 spheres). *)
+
+val print : row list -> unit
+(** The table and the ratios t(10^6)/t(10^3). *)
