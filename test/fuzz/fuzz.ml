@@ -8,6 +8,14 @@ let () =
   (* mutated scenes may #fopen files for writing: run in a scratch folder *)
   let scratch = Filename.temp_dir "camlray-fuzz" "" in
   Sys.chdir scratch;
+  let rec remove p =
+    if Sys.is_directory p then begin
+      Array.iter (fun f -> remove (Filename.concat p f)) (Sys.readdir p);
+      Sys.rmdir p
+    end
+    else Sys.remove p
+  in
+  at_exit (fun () -> try remove scratch with Sys_error _ -> ());
   let ok = ref 0 and rej = ref 0 and crashes = ref [] and hangs = ref [] in
   let t0 = Unix.gettimeofday () in
   Fuzz_gen.with_stderr_silenced (fun () ->
