@@ -4,7 +4,8 @@ SHELL := /bin/bash
 CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
-.PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance
+.PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance \
+  conformance-parse messages-coverage
 
 all: build
 
@@ -41,6 +42,20 @@ stress: build
 # the long Monte Carlo convergence study (a few minutes on 2 cores)
 mc-convergence: build
 	dune exec --release test/mc/convergence.exe
+
+# Parser robustness: 10^5 random inputs (FUZZ_N to change), none may raise.
+FUZZ_N ?= 100000
+fuzz: build
+	@dune build test/fuzz/fuzz.exe 2>&1 | grep -v '^Read ' | head -50
+	./_build/default/test/fuzz/fuzz.exe $(FUZZ_N)
+
+# `camlray check` over POV-Ray's example scenes -> docs/conformance-parse.md
+conformance-parse: build
+	@bash scripts/conformance-parse.sh
+
+# How many parser error states have a hand-written message (never fails).
+messages-coverage:
+	@bash scripts/messages-coverage.sh
 
 clean:
 	dune clean

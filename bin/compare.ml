@@ -139,7 +139,7 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
                     mode = Driver.Whitted; spp = None; depth = None; domains = None; seed = 0;
                     quiet = true; include_dirs; allow_read = []; region = None; pov_region = None;
                     frames = None; clock = None; clock_range = None; subset = None;
-                    tile_order_seed = None; aa; aa_depth })
+                    tile_order_seed = None; aa; aa_depth; limits = Camlray_lang.Supplier.default_limits })
           in
           let noise = uses_noise scene in
           let row note = { name; noise; psnr = nan; ssim = nan; max_diff = -1; pov_s; cam_s; note } in

@@ -25,6 +25,7 @@ type render_opts = {
   tile_order_seed : int option;
   aa : float option;
   aa_depth : int;
+  limits : Supplier.limits;
 }
 
 exception Fail of string
@@ -153,7 +154,7 @@ let crop img (r : Render.tile) =
 let render_frame o ~clock ~frame ~out ~t0 =
   let options =
     { Parse.default_options with include_dirs = o.include_dirs; allow_read = o.allow_read;
-      image_width = o.width;
+      limits = o.limits; image_width = o.width;
       image_height = o.height; clock; frame_number = frame }
   in
   match compile ~options o.scene with
@@ -290,8 +291,8 @@ let merge parts out =
       prerr_endline ("camlray: " ^ e);
       1
 
-let check path include_dirs allow_read =
-  let options = { Parse.default_options with include_dirs; allow_read } in
+let check path include_dirs allow_read limits =
+  let options = { Parse.default_options with include_dirs; allow_read; limits } in
   try
     match compile ~options (Some path) with
     | Error d ->

@@ -26,11 +26,12 @@ type render_opts = {
   tile_order_seed : int option;  (** test hook: shuffle the tile order *)
   aa : float option;  (** anti-aliasing threshold (POV-Ray's +A); whitted mode *)
   aa_depth : int;  (** POV-Ray's +R *)
+  limits : Camlray_lang.Supplier.limits;  (** loop, macro-depth and token caps *)
 }
 
 val render : render_opts -> int
-val check : string -> string list -> string list -> int
-(** [check scene include_dirs allow_read] *)
+val check : string -> string list -> string list -> Camlray_lang.Supplier.limits -> int
+(** [check scene include_dirs allow_read limits] *)
 
 val merge : string list -> string -> int
 (** [merge parts out]: assemble partial renders. *)

@@ -12,6 +12,20 @@ let include_path =
          ~doc:"Also search $(docv) for $(b,#include) files (after the current folder and \
                the scene's folder, before POV-Ray's include folder). Repeatable.")
 
+let limits =
+  let d = Camlray_lang.Supplier.default_limits in
+  let max_loop =
+    Arg.(value & opt int d.max_loop_iterations & info [ "max-loop" ] ~docv:"N"
+           ~doc:"Stop a $(b,#while) or $(b,#for) loop with an error after $(docv) iterations.")
+  in
+  let max_macro =
+    Arg.(value & opt int d.max_macro_depth & info [ "max-macro-depth" ] ~docv:"N"
+           ~doc:"Stop with an error when macro calls nest deeper than $(docv).")
+  in
+  Term.(const (fun l m ->
+      { d with Camlray_lang.Supplier.max_loop_iterations = max 1 l; max_macro_depth = max 1 m })
+        $ max_loop $ max_macro)
+
 let allow_read =
   Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR"
          ~doc:"Let the scene read files inside $(docv) too. Without it a scene reads only \
@@ -115,16 +129,16 @@ let render_cmd =
     Arg.(value & opt (some int) None & info [ "tile-order-seed" ] ~docs:Manpage.s_none)
   in
   let run scene output width height mode spp depth domains seed quiet include_dirs allow_read
-      region pov_region frames clock clock_range subset tile_order_seed (aa, aa_depth) =
+      region pov_region frames clock clock_range subset tile_order_seed (aa, aa_depth) limits =
     Driver.render
       { Driver.scene; output; width; height; mode; spp; depth; domains; seed; quiet; include_dirs;
         allow_read; region; pov_region; frames; clock; clock_range; subset; tile_order_seed; aa;
-        aa_depth }
+        aa_depth; limits }
   in
   let term =
     Term.(const run $ scene_arg $ output $ width $ height $ mode $ spp $ depth $ domains $ seed
           $ quiet $ include_path $ allow_read $ region $ pov_region $ frames $ clock $ clock_range
-          $ subset $ tile_order_seed $ aa_args)
+          $ subset $ tile_order_seed $ aa_args $ limits)
   in
   let man =
     [ `S Manpage.s_description;
@@ -149,7 +163,7 @@ let check_cmd =
   let scene = Arg.(required & pos 0 (some string) None & info [] ~docv:"SCENE" ~doc:"The scene file.") in
   Cmd.v
     (Cmd.info "check" ~doc:"Parse and compile a scene, report errors, render nothing.")
-    Term.(const Driver.check $ scene $ include_path $ allow_read)
+    Term.(const Driver.check $ scene $ include_path $ allow_read $ limits)
 
 let merge_cmd =
   let parts = Arg.(non_empty & pos_all file [] & info [] ~docv:"PART" ~doc:"Partial renders (PNG).") in

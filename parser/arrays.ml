@@ -64,7 +64,8 @@ and element t name a loc : Decl.t =
       | None -> fail t loc "element %s[%d] has not been set" name i
       | Some (Env.Decl d) -> d
       | Some (Env.Array a') -> element t (Printf.sprintf "%s[%d]" name i) a' loc
-      | Some (Env.Macro _) -> fail t loc "an array cannot hold a macro")
+      | Some (Env.Macro _) -> fail t loc "an array cannot hold a macro"
+      | Some (Env.Unsupported u) -> unsupported_name t (Printf.sprintf "%s[%d]" name i) u loc)
   | _ -> fail t loc "the array %s must be indexed: %s[...]" name name
 
 and copy a =
@@ -107,11 +108,14 @@ and fill t loc a ds =
           match (raw_peek t).raw with
           | Tok Parser.RBRACE -> ignore (raw_next t)
           | _ -> fail t loc "too many initialisers (the array has %d elements)" n
-        else
+        else begin
+          (* commas between elements are optional *)
+          t.optional_sep <- Some Parser.COMMA;
           let d, closed = Cursor.parse t Parser.Incremental.array_elem in
           a.(i) <- Some (Env.Decl d);
           if not closed then go (i + 1)
           else if i + 1 <> n then fail t loc "%d initialisers for an array of %d" (i + 1) n
+        end
       in
       go 0
   | n :: rest ->

@@ -8,11 +8,12 @@ type limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 let default_limits =
   { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
-    max_array_size = 10_000_000 }
+    max_array_size = 10_000_000; max_tokens = 1_000_000_000 }
 
 type config = {
   include_dirs : string list;
@@ -51,7 +52,6 @@ type frame = {
   file : string;
   mutable ctrl : ctrl list;
   scoped : bool;
-  version_at_entry : float;  (** restored when an included file ends *)
   byref : (string * target) list;
       (** macro parameters given a bare identifier, with that identifier:
           their final values are copied back when the macro ends
@@ -77,6 +77,16 @@ type t = {
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+  mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable optional_sep : Parser.token option;
+      (** for the next sub-parse only: a separator that may be left out
+          (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
+          where the next token cannot continue *)
+  mutable semi_probe : (string * Loc.t) option ref option;
+      (** for the next sub-parse only: where a directive (or the end of
+          the file) stands in the same file where a ';' could end the
+          phrase, the parser is given that ';' and the directive is
+          recorded here (POV-Ray: a #declare missing its ';') *)
 }
 
 let files_read t = List.rev t.files
@@ -85,24 +95,76 @@ let parse t entry = t.runner.run entry
 let create config env ~file toks =
   let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
   { config; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
-                 version_at_entry = Defaults.version (); byref = [] } ];
+                 byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
-    handles = Hashtbl.create 4 }
+    handles = Hashtbl.create 4; supplied = 0; optional_sep = None;
+    semi_probe = None }
 
 let chain t =
-  List.filter_map
-    (fun f ->
-      match f.kind with
-      | Main -> None
-      | Include l -> Some ("included from", l)
-      | Macro_call (name, l) -> Some ("in macro " ^ name ^ " called at", l))
-    t.frames
+  let l =
+    List.filter_map
+      (fun f ->
+        match f.kind with
+        | Main -> None
+        | Include l -> Some ("included from", l)
+        | Macro_call (name, l) -> Some ("in macro " ^ name ^ " called at", l))
+      t.frames
+  in
+  (* recursion: fold runs of the same call site into one line *)
+  let rec fold = function
+    | ((w, l) as x) :: rest ->
+        let rec count n = function
+          | (w', l') :: r when w' = w && l' = l -> count (n + 1) r
+          | r -> (n, r)
+        in
+        let n, rest = count 0 rest in
+        if n = 0 then x :: fold rest
+        else
+          let w =
+            if Filename.check_suffix w " at" then
+              Printf.sprintf "%s %d times at" (Filename.chop_suffix w " at") (n + 1)
+            else w
+          in
+          (w, l) :: fold rest
+    | [] -> []
+  in
+  fold l
 
 let fail t loc fmt = Diag.error ~chain:(chain t) loc fmt
+
+exception Unsupported_use of Diag.t * Env.unsupported
+
+let unsupported t loc (u : Env.unsupported) fmt =
+  Printf.ksprintf
+    (fun msg -> raise (Unsupported_use ({ Diag.loc; msg; chain = chain t }, u)))
+    fmt
+
+let unsupported_name t name (u : Env.unsupported) loc =
+  match u.failure with
+  | Some msg ->
+      unsupported t loc u "%s cannot be used: its #declare at %s failed at %s: %s" name
+        (Loc.to_string u.declared) (Loc.to_string u.feature_loc) msg
+  | None ->
+      unsupported t loc u "%s uses %s, which camlray does not support yet (%s at %s; %s declared at %s)"
+        name u.feature u.feature (Loc.to_string u.feature_loc) name (Loc.to_string u.declared)
 let top t = match t.frames with f :: _ -> f | [] -> assert false
 
 (* ---------- raw token access ---------- *)
+
+(* A finished include or macro frame is left: its scope ends and the
+   macro's by-reference arguments are written back. An include file's
+   #version stays in force after it (povray 3.7 does the same). *)
+let leave t f =
+  let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
+  if f.scoped then Env.pop_scope t.env;
+  List.iter
+    (fun (target, b) ->
+      match target with
+      | Name n -> Env.declare t.env n b
+      | Element (a, i) -> a.(i) <- Some b)
+    back;
+  t.frames <- List.tl t.frames
 
 let rec raw_next t =
   let f = top t in
@@ -113,27 +175,27 @@ let rec raw_next t =
       fail t l "this %s has no matching #end (the %s ends first)" d
         (match f.kind with Macro_call _ -> "macro" | _ -> "file")
   | Eof when f.kind <> Main ->
-      let back = List.filter_map (fun (p, n) -> Option.map (fun b -> (n, b)) (Env.find t.env p)) f.byref in
-      if f.scoped then Env.pop_scope t.env;
-      List.iter
-        (fun (target, b) ->
-          match target with
-          | Name n -> Env.declare t.env n b
-          | Element (a, i) -> a.(i) <- Some b)
-        back;
-      (match f.kind with
-      | Include _ -> Defaults.restore_version f.version_at_entry
-      | Main | Macro_call _ -> ());
-      t.frames <- List.tl t.frames;
+      leave t f;
       raw_next t
   | Eof -> tok
   | _ ->
       f.pos <- f.pos + 1;
+      t.supplied <- t.supplied + 1;
+      if t.supplied > t.config.limits.max_tokens then
+        fail t tok.loc "parsing stopped after %d tokens (the limit)" t.config.limits.max_tokens;
       tok
 
 let raw_peek t =
   let f = top t in
   f.toks.(f.pos)
+
+let rec peek_past_ends t ~from =
+  let f = top t in
+  if f != from && f.kind <> Main && f.ctrl = [] && f.toks.(f.pos).raw = Eof then begin
+    leave t f;
+    peek_past_ends t ~from
+  end
+  else raw_peek t
 
 let expect_raw t what pred =
   let tok = raw_next t in
@@ -172,6 +234,29 @@ let skip_block t ~stop =
   go 0
 
 
+
+(* Skip the rest of a phrase in the current frame: up to a ';' at depth
+   0 (included), a directive or an unmatched closing bracket. A layered
+   texture (texture {...} texture {...}) is skipped whole. *)
+let skip_phrase t =
+  let f = top t in
+  let first = f.toks.(f.pos).raw in
+  let rec go depth =
+    let tok = f.toks.(f.pos) in
+    let step () = f.pos <- f.pos + 1 in
+    match tok.raw with
+    | Eof -> ()
+    | Directive _ when depth = 0 -> ()
+    | Tok Parser.SEMI when depth = 0 -> step ()
+    | Tok (Parser.LBRACE | Parser.LPAREN | Parser.LBRACKET) -> step (); go (depth + 1)
+    | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) when depth = 0 -> ()
+    | Tok Parser.RBRACE when depth = 1 ->
+        step ();
+        if f.toks.(f.pos).raw = first && first = Tok Parser.TEXTURE then go 0
+    | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) -> step (); go (depth - 1)
+    | _ -> step (); go depth
+  in
+  go 0
 
 (* Where #include and file_exists look: the current folder, the scene's
    folder, then the include folders. *)

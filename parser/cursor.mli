@@ -12,6 +12,7 @@ type limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 val default_limits : limits
@@ -50,7 +51,6 @@ type frame = {
   file : string;
   mutable ctrl : ctrl list;
   scoped : bool;
-  version_at_entry : float;  (** restored when an included file ends *)
   byref : (string * target) list;
       (** macro parameters given a bare identifier, with that identifier:
           their final values are copied back when the macro ends
@@ -76,6 +76,16 @@ type t = {
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
+  mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable optional_sep : Parser.token option;
+      (** for the next sub-parse only: a separator that may be left out
+          (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
+          where the next token cannot continue *)
+  mutable semi_probe : (string * Loc.t) option ref option;
+      (** for the next sub-parse only: where a directive (or the end of
+          the file) stands in the same file where a ';' could end the
+          phrase, the parser is given that ';' and the directive is
+          recorded here (POV-Ray: a #declare missing its ';') *)
 }
 
 val create : config -> Env.t -> file:string -> token array -> t
@@ -92,6 +102,22 @@ val chain : t -> (string * Loc.t) list
 val fail : t -> Loc.t -> ('a, unit, string, 'b) format4 -> 'a
 (** Raise a located error carrying the current chain. *)
 
+exception Unsupported_use of Diag.t * Env.unsupported
+(** Raised where a POV-Ray word camlray does not know (or a name bound to
+    such a #declare) is met: a [#declare] catches it and binds its name to
+    an {!Env.Unsupported} marker; anywhere else it becomes the error. *)
+
+val unsupported :
+  t -> Loc.t -> Env.unsupported -> ('a, unit, string, 'b) format4 -> 'a
+(** Raise {!Unsupported_use} with a located message. *)
+
+val unsupported_name : t -> string -> Env.unsupported -> Loc.t -> 'a
+(** A name bound to a marker is used: raise {!Unsupported_use}. *)
+
+val skip_phrase : t -> unit
+(** Skip the rest of a phrase of the current frame: to a ';' at depth 0
+    (included), a directive or an unmatched closing bracket. *)
+
 val top : t -> frame
 val raw_next : t -> token
 (** The next raw token, leaving finished included files and macro bodies
@@ -99,6 +125,11 @@ val raw_next : t -> token
     a frame ends with a structure still open. *)
 
 val raw_peek : t -> token
+
+val peek_past_ends : t -> from:frame -> token
+(** The next raw token, first leaving the finished frames above [from]
+    (a macro called at the end of a #declare's value), so that a ';'
+    after the call is seen. *)
 val expect_raw : t -> string -> (raw -> bool) -> token
 val expect_tok : t -> Parser.token -> string -> unit
 val expect_ident : t -> string -> string * Loc.t

@@ -6,7 +6,18 @@ type macro = {
   mloc : Loc.t;
 }
 
-type binding = Decl of Decl.t | Macro of macro | Array of binding option array
+type binding =
+  | Decl of Decl.t
+  | Macro of macro
+  | Array of binding option array
+  | Unsupported of unsupported
+
+and unsupported = {
+  feature : string;
+  feature_loc : Loc.t;
+  declared : Loc.t;
+  failure : string option;
+}
 
 type t = { globals : (string, binding) Hashtbl.t; mutable scopes : (string, binding) Hashtbl.t list }
 
@@ -36,6 +47,11 @@ let undef t name =
 
 let push_scope t = t.scopes <- Hashtbl.create 16 :: t.scopes
 let pop_scope t = match t.scopes with [] -> () | _ :: rest -> t.scopes <- rest
+
+type mark = (string, binding) Hashtbl.t list
+
+let mark t = t.scopes
+let restore t m = t.scopes <- m
 
 let names t =
   let acc = ref [] in

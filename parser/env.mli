@@ -16,6 +16,19 @@ type binding =
   | Array of binding option array
       (** an array (elements [None] until assigned); multi-dimensional
           arrays are arrays of arrays *)
+  | Unsupported of unsupported
+      (** a [#declare] whose right-hand side uses something camlray cannot
+          parse yet: the error is reported only when the name is used *)
+
+and unsupported = {
+  feature : string;  (** the POV-Ray word camlray does not know, e.g. [marble] *)
+  feature_loc : Loc.t;  (** where that word stands *)
+  declared : Loc.t;  (** where the name was declared *)
+  failure : string option;
+      (** [Some msg]: not an unknown word but an error in a [#declare] of an
+          include file (e.g. syntax camlray's grammar does not cover yet),
+          reported, with [feature_loc], only when the name is used *)
+}
 
 type t
 
@@ -33,5 +46,12 @@ val local : t -> string -> binding -> unit
 val undef : t -> string -> unit
 val push_scope : t -> unit
 val pop_scope : t -> unit
+
+type mark
+
+val mark : t -> mark
+(** The current scope stack, to return to after an aborted sub-parse. *)
+
+val restore : t -> mark -> unit
 val names : t -> string list
 (** Every visible name (for "did you mean" suggestions). *)

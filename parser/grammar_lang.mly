@@ -86,9 +86,15 @@ open Gram
   | d = any_value COMMA { (d, false) }
   | d = any_value RPAREN { (d, true) }
 
+(* array elements: no comparisons at the top level, so that <1,2> <3,4>
+   (commas between elements are optional) is two vectors *)
 %public array_elem:
-  | d = any_value COMMA { (d, false) }
-  | d = any_value RBRACE { (d, true) }
+  | d = value_of(elem_color) COMMA { (d, false) }
+  | d = value_of(elem_color) RBRACE { (d, true) }
+
+%public elem_color:
+  | e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
 
 %public string_arg:
   | s = STRING { s }
@@ -112,7 +118,9 @@ open Gram
       { let t = List.hd t in
         fun () -> Defaults.set_pigment t.Texture.pigment; Defaults.set_finish t.Texture.finish }
 
-%public any_value:
+%public any_value: d = value_of(color_value) { d }
+
+%public value_of(V):
   | o = OBJECT_ID { Decl.Object o }
   | p = PIGMENT_ID { Decl.Pigment p }
   | f = FINISH_ID { Decl.Finish f }
@@ -122,7 +130,7 @@ open Gram
   | c = CAMERA_ID { Decl.Camera c }
   | f = FUNCTION_ID { Decl.Function f }
   | f = FUNCTION_LIT { Decl.Function f }
-  | v = color_value { Decl.Value v }
+  | v = V { Decl.Value v }
   | o = object_ { Decl.Object o }
   | PIGMENT LBRACE p = pigment_body RBRACE { Decl.Pigment p }
   | FINISH LBRACE f = finish_body RBRACE { Decl.Finish f }
@@ -180,8 +188,9 @@ open Gram
   | s = STRING { Value.String s }
   | s = STRING_ID { Value.String s }
   | LPAREN e = expr RPAREN { e }
-  | LT cs = separated_nonempty_list(COMMA, add) GT
-      { let n = List.length cs in
+  | LT c = add cs = list(vector_more) GT
+      { let cs = c :: cs in
+        let n = List.length cs in
         (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
         if (n < 2 || n > 5) && n <> 12 then
           Diag.error (loc $loc) "a vector has 2 to 5 components, this one has %d" n;
@@ -197,12 +206,29 @@ open Gram
 
 %public param: e = add %prec below_shift { e }
 
+(* POV-Ray lets vector components go without commas: <0 20 0> *)
+%public vector_more:
+  | COMMA e = add { e }
+  | e = add_nosign { e }
+
+(* a component written without a comma cannot start with a sign: <1 -2>
+   is one component, 1 - 2 *)
+%public add_nosign:
+  | a = add_nosign PLUS b = mul { Value.binop (loc $loc) "+" a b }
+  | a = add_nosign MINUS b = mul { Value.binop (loc $loc) "-" a b }
+  | e = mul_nosign { e }
+
+%public mul_nosign:
+  | a = mul_nosign STAR b = unary { Value.binop (loc $loc) "*" a b }
+  | a = mul_nosign SLASH b = unary { Value.binop (loc $loc) "/" a b }
+  | e = postfix { e }
+
 (* a colour: optional 'color', a value, then channel settings *)
 
 %public color_value:
   | e = expr ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
   | COLOR e = expr ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
-  | COLOR ms = nonempty_list(channel)
+  | COLOR? ms = nonempty_list(channel)
       { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
 
 %public channel: c = CHANNEL e = param { (loc $loc, c, fl $loc(e) e) }

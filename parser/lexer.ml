@@ -90,48 +90,60 @@ let keywords : (string, Parser.token) Hashtbl.t =
     (lang_keywords @ scene_keywords @ object_keywords @ texture_keywords);
   t
 
-(* POV-Ray 3.7's reserved words that camlray does not (yet) give meaning to. *)
+(* POV-Ray 3.7's reserved words (its keyword list, as in Vim's pov.vim); the
+   ones camlray's lexer knows are keywords before this list is consulted. *)
 let pov_words =
-  "aa_level aa_threshold absorption accuracy agate agate_turb all all_intersections alpha \
-   altitude always_sample area_illumination area_light array arc_angle ascii assumed_gamma \
-   autostop average b_spline bezier_spline bicubic_patch black_hole blob box boxed bozo brick \
-   brick_size brightness brilliance bump_map bump_size bumps camera caustics cells \
-   charset checker chr circular clipped_by clock clock_delta clock_on collect color_map \
-   colour_map component composite concat cone confidence conic_sweep contained_by \
-   control0 control1 coords count crackle crand cube cubic cubic_spline cubic_wave \
-   cutaway_textures cylinder cylindrical defined degrees density density_file density_map \
-   dents df3 difference dimension_size dimensions disc dispersion dispersion_samples \
-   dist_exp distance dither double_illuminate eccentricity emission error_bound \
-   evaluate expand extinction face_indices facets falloff_angle file_exists filter finish \
-   fisheye flatness flip floor focal_point fog fog_alt fog_offset fog_type form frame_number \
-   frequency fresnel function gather gif global_lights gradient granite gray_threshold \
-   height_field hexagon hf_gray_16 hierarchy hypercomplex iff image_height image_map \
-   image_pattern image_width importance inside inside_vector interior_texture interpolate \
-   intersection intervals irid irid_wavelength isosurface jitter jpeg julia julia_fractal \
-   lambda lathe leopard light_group linear_spline linear_sweep load_file look_at \
-   looks_like low_error_factor magnet major_radius mandel map_type marble material \
-   material_map matrix max_extent max_gradient max_intersections max_iteration \
-   max_sample media media_attenuation media_interaction merge mesh mesh2 metric \
-   min_extent minimum_reuse mortar natural_spline nearest_count no_bump_scale no_image \
-   no_radiosity no_reflection noise_generator normal normal_indices normal_map \
-   normal_vectors number_of_waves octaves offset omega omnimax once onion open \
-   orient orientation panoramic parametric pattern pavement pgm phase photons \
-   pigment_map pigment_pattern planar png point_at poly poly_wave polygon pot pov \
-   pow ppm precision precompute pretrace_end pretrace_start prism prod projected_through \
-   pwr quadratic_spline quadric quartic quaternion quick_color quilted radial \
-   radiosity ramp_wave rand range ratio read reciprocal recursion_limit \
-   refraction render repeat rgbf rgbft rgbt right ripples rotate roughness \
-   samples save_file scallop_wave scattering seed select sgi shadowless sine_wave \
-   sint16be sint16le sint32be sint32le sint8 size sky_sphere slice slope slope_map \
-   smooth smooth_triangle solid sor spacing specular sphere_sweep spherical spiral1 \
-   spiral2 spline split_union spotted square srgb sturm subsurface sum superellipsoid \
-   sys t tga thickness threshold tile2 tiles tolerance toroidal torus trace \
-   transmit triangle triangle_wave triangular turb_depth turbulence type u_steps \
-   uint16be uint16le uint8 ultra_wide_angle union up use_alpha use_color use_colour \
-   use_index utf8 uv_indices uv_mapping uv_vectors v_steps val variance vaxis_rotate \
-   vcross vdot version vertex_vectors vlength vnormalize vrotate vstr vturbulence \
-   warning warp water_level waves width wood wrinkles write x y yes z \
-   adaptive albedo anisotropy aoi append bmp bokeh bounded_by dtag expand_thresholds exr exterior gamma hdr internal max_trace mesh_camera method maximum_reuse mm_per_unit number_of_sides number_of_tiles ovus pass_through polynomial premultiplied quick_colour rainbow statistics steps strength target texture_list texture_map text tiff tiling translucency ttf xyz"
+  "aa_level aa_threshold abs absorption accuracy acos acosh adaptive adc_bailout agate \
+   agate_turb all all_intersections alpha altitude always_sample ambient ambient_light angle \
+   aoi aperture arc_angle area_illumination area_light array asc ascii asin asinh assumed_gamma \
+   atan atan2 atanh atmosphere autostop average b_spline background bezier_spline bicubic_patch \
+   bitwise_and bitwise_or bitwise_xor black_hole blob blur_samples bokeh bounded_by box boxed \
+   bozo brick brick_size brightness brilliance bump_map bump_size bumps camera caustics ceil \
+   cells charset checker chr circular clipped_by clock clock_delta clock_on collect color \
+   color_map colour colour_map component composite concat cone confidence conic_sweep \
+   conserve_energy contained_by control0 control1 coords cos cosh count crackle crand cube \
+   cubic cubic_spline cubic_wave cutaway_textures cylinder cylindrical datetime defined degrees \
+   density density_file density_map dents deprecated df3 difference diffuse dimension_size \
+   dimensions direction disc dispersion dispersion_samples dist_exp distance distance_maximum \
+   dither div double_illuminate eccentricity emission error_bound evaluate exp expand \
+   expand_thresholds exponent exr exterior extinction face_indices facets fade_color \
+   fade_colour fade_distance fade_power falloff falloff_angle false file_exists filter \
+   final_clock final_frame finish fisheye flatness flip floor focal_point fog fog_alt \
+   fog_offset fog_type form frame_number frequency fresnel function gamma gather gif \
+   global_lights global_settings gradient granite gray_threshold h_angle hdr height_field \
+   hexagon hf_gray_16 hierarchy hollow hypercomplex iff image_height image_map image_pattern \
+   image_width importance initial_clock initial_frame input_file_name inside inside_vector int \
+   interior interior_texture internal interpolate intersection intervals inverse ior irid \
+   irid_wavelength isosurface jitter jpeg julia julia_fractal lambda lathe leopard light_group \
+   light_source linear_spline linear_sweep ln load_file location log look_at looks_like \
+   low_error_factor magnet major_radius mandel map_type marble material material_map matrix max \
+   max_extent max_gradient max_intersections max_iteration max_sample max_trace max_trace_level \
+   maximum_reuse media media_attenuation media_interaction merge mesh mesh2 mesh_camera \
+   metallic method metric min min_extent minimum_reuse mm_per_unit mod mortar natural_spline \
+   nearest_count no no_bump_scale no_image no_radiosity no_reflection no_shadow noise_generator \
+   normal normal_indices normal_map normal_vectors now number_of_waves object octaves off \
+   offset omega omnimax on once onion open orient orientation orthographic ovus panoramic \
+   parallel parametric pass_through pattern pavement perspective pgm phase phong phong_size \
+   photons pi pigment pigment_map pigment_pattern planar plane png point_at poly poly_wave \
+   polygon polynomial pot pov pow ppm precision precompute premultiplied pretrace_end \
+   pretrace_start prism prod projected_through pwr quadratic_spline quadric quartic quaternion \
+   quick_color quick_colour quilted radial radians radiosity radius rainbow ramp_wave rand \
+   range range_divider ratio read reciprocal recursion_limit reflection reflection_exponent \
+   refraction render repeat rgb rgbf rgbft rgbt right ripples rotate roughness samples \
+   save_file scale scallop_wave scattering seed select sgi shadowless sin sine_wave sinh \
+   sint16be sint16le sint32be sint32le sint8 size sky sky_sphere slice slope slope_map smooth \
+   smooth_triangle solid sor spacing specular sphere sphere_sweep spherical spiral1 spiral2 \
+   spline split_union spotlight spotted sqr sqrt square srgb srgbf srgbft srgbt str strcmp \
+   strength strlen strlwr strupr sturm substr subsurface sum superellipsoid sys t tan tanh \
+   target text texture texture_list texture_map tga thickness threshold tiff tightness tile2 \
+   tiles tiling tolerance toroidal torus trace transform translate transmit triangle \
+   triangle_wave triangular true ttf turb_depth turbulence type u_steps uint16be uint16le uint8 \
+   ultra_wide_angle union up use_alpha use_color use_colour use_index utf8 uv_indices \
+   uv_mapping uv_vectors v_angle v_steps val variance vaxis_rotate vcross vdot version \
+   vertex_vectors vlength vnormalize vrotate vstr vturbulence warning warp water_level waves \
+   width wood wrinkles write x y yes z \
+   albedo xyz statistics number_of_tiles steps bmp translucency number_of_sides dtag \
+   anisotropy append"
 
 let reserved =
   let t = Hashtbl.create 512 in
@@ -139,6 +151,8 @@ let reserved =
     (fun w -> if w <> "" then Hashtbl.replace t w ())
     (String.split_on_char ' ' pov_words);
   t
+
+let keyword_names () = Hashtbl.fold (fun k _ acc -> k :: acc) keywords [] |> List.sort compare
 
 let pov_reserved w = Hashtbl.mem reserved w || Hashtbl.mem keywords w
 

@@ -18,6 +18,10 @@ val describe : raw -> string
 (** How a token is named in messages: ["'{'"], ["keyword sphere"],
     ["identifier Foo"], ["end of file"]. *)
 
+val keyword_names : unit -> string list
+(** Every word the lexer turns into a keyword token (for fuzzing and
+    tools). *)
+
 val pov_reserved : string -> bool
 (** Whether a name is a POV-Ray 3.7 reserved word (so that an unsupported
     keyword can be reported by name). *)

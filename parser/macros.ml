@@ -60,7 +60,7 @@ let rec call t (m : Env.macro) loc =
   let byref = List.filter_map (fun (p, (_, n)) -> Option.map (fun n -> (p, n)) n) args in
   t.frames <-
     { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
-      scoped = true; version_at_entry = Defaults.version (); byref }
+      scoped = true; byref }
     :: t.frames
 
 (* One macro argument and whether it closed the list. A bare declared
@@ -149,6 +149,6 @@ let include_file t loc =
       Env.push_scope t.env;
       t.frames <-
         { toks; pos = 0; kind = Include loc; file = path; ctrl = []; scoped = true;
-          version_at_entry = Defaults.version (); byref = [] }
+          byref = [] }
         :: t.frames
 

@@ -7,6 +7,7 @@ type limits = Cursor.limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 let default_limits = Cursor.default_limits
@@ -116,6 +117,7 @@ and ident t name loc =
           Macros.call t m loc;
           next t
       | Some (Env.Array a) -> (token_of_decl (Arrays.element t name a loc), loc)
+      | Some (Env.Unsupported u) -> unsupported_name t name u loc
       | None ->
           if name = "default" && (raw_peek t).raw = Tok Parser.LBRACE then begin
             (* 'default { ... }' without '#': POV-Ray accepts it too *)
@@ -133,7 +135,10 @@ and ident t name loc =
             (Parser.FLOAT (Arrays.query t name loc), loc)
           else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
-            fail t loc "%s is not supported by camlray" name
+            (* a POV-Ray word camlray does not know: inside a #declare the
+               name becomes a marker (see [guarded]), elsewhere an error *)
+            unsupported t loc { feature = name; feature_loc = loc; declared = loc; failure = None }
+              "%s is not supported by camlray" name
           else (Parser.UNDEFINED_ID name, loc))
 
 (* function [(params)] { body }: the body is read here, token by token,
@@ -203,15 +208,49 @@ and function_lit t loc =
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->
   let pos = (top t).toks.((top t).pos).loc.start in
-  let rec loop cp last shifted =
+  let sep = t.optional_sep and probe = t.semi_probe in
+  t.optional_sep <- None;
+  t.semi_probe <- None;
+  let frame = top t in
+  (* [prev]: the checkpoint the last token was offered to *)
+  let rec loop cp prev last shifted =
     match cp with
-    | I.InputNeeded _ ->
-        let tok, loc = next t in
-        t.last <- loc;
-        loop (I.offer cp (tok, loc.start, loc.stop)) (Some (tok, loc)) false
-    | I.Shifting _ -> loop (I.resume cp) last true
-    | I.AboutToReduce _ -> loop (I.resume cp) last shifted
-    | I.HandlingError env -> syntax_error t env last
+    | I.InputNeeded _ -> (
+        let read () =
+          let tok, loc = next t in
+          t.last <- loc;
+          loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
+        in
+        let ends what (loc : Loc.t) r =
+          if I.acceptable cp Parser.SEMI loc.start then begin
+            r := Some (what, loc);
+            loop (I.offer cp (Parser.SEMI, loc.start, loc.start)) cp None true
+          end
+          else read ()
+        in
+        match probe with
+        | Some r when t.pending = [] && top t == frame -> (
+            match raw_peek t with
+            | { raw = Directive d; loc }
+              when not (List.mem d [ "else"; "elseif"; "end"; "case"; "range"; "break" ]) ->
+                ends ("#" ^ d) loc r
+            | { raw = Eof; loc } -> ends "end of file" loc r
+            | _ -> read ())
+        | _ -> read ())
+    | I.Shifting _ -> loop (I.resume cp) prev last true
+    | I.AboutToReduce _ -> loop (I.resume cp) prev last shifted
+    | I.HandlingError env -> (
+        match (sep, last) with
+        | Some s, Some ((tok, loc) as x) when tok <> s && I.acceptable prev s loc.start ->
+            (* the optional separator was left out: supply it, and give
+               the token again after it *)
+            (match tok with
+            | Parser.LBRACE -> (match t.braces with _ :: r -> t.braces <- r | [] -> ())
+            | Parser.RBRACE -> t.braces <- loc :: t.braces
+            | _ -> ());
+            t.pending <- x :: t.pending;
+            loop (I.offer prev (s, loc.start, loc.start)) prev None true
+        | _ -> syntax_error t env last)
     | I.Accepted v ->
         (match last with
         | Some x when not shifted -> t.pending <- x :: t.pending
@@ -219,7 +258,8 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
         v
     | I.Rejected -> fail t t.last "syntax error"
   in
-  loop (start pos) None true
+  let cp0 = start pos in
+  loop cp0 cp0 None true
 
 and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
  fun t env last ->
@@ -245,7 +285,7 @@ and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
       let semi = List.mem "';'" expected in
       let msg =
         match Messages.message (I.current_state_number env) with
-        | m -> String.trim m
+        | m -> Printf.sprintf "%s, found %s" (String.trim m) found
         | exception Not_found -> (
             match expected with
             | [] -> "unexpected " ^ found
@@ -355,18 +395,18 @@ and declare t ~local loc =
       | Some (Env.Array a) ->
           let a, i = target a in
           expect_tok t Parser.EQ "'='";
-          a.(i) <- Some (Env.Decl (rhs t))
+          a.(i) <- Some (guarded t nloc (fun () -> Env.Decl (rhs t)))
       | _ -> fail t nloc "%s is not an array" name)
   | _ -> (
       expect_tok t Parser.EQ "'=' after the identifier";
       match (raw_peek t).raw with
       | Ident "spline" ->
           let sloc = (raw_next t).loc in
-          bind (Env.Decl (Decl.Spline (Splread.read t sloc)));
+          bind (guarded t nloc (fun () -> Env.Decl (Decl.Spline (Splread.read t sloc))));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | Ident "array" ->
           ignore (raw_next t);
-          bind (Env.Array (Arrays.make t loc));
+          bind (guarded t nloc (fun () -> Env.Array (Arrays.make t loc)));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | _ -> (
           (* #declare A = B; for B a whole array or a function (not a call) *)
@@ -385,7 +425,37 @@ and declare t ~local loc =
               f.pos <- f.pos + 1;
               bind b;
               (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
-          | None -> bind (Env.Decl (rhs t))))
+          | None -> bind (guarded t nloc (fun () -> Env.Decl (rhs t)))))
+
+(* Evaluate a right-hand side; if it meets something camlray does not
+   support, go back to where it started, skip it (balanced brackets, up
+   to a ';' or a closing '}') and bind a marker instead: the error is
+   reported where the name is used. In an include file (often one of
+   POV-Ray's own), any error in a #declare is deferred the same way. *)
+and guarded t nloc f =
+  let frames = t.frames in
+  let saved = List.map (fun fr -> (fr.pos, fr.ctrl)) frames in
+  let pending = t.pending and scopes = Env.mark t.env and braces = t.braces in
+  let context = t.context and stop_at = t.stop_at and version = Defaults.version () in
+  let recover () =
+    t.frames <- frames;
+    List.iter2 (fun fr (pos, ctrl) -> fr.pos <- pos; fr.ctrl <- ctrl) frames saved;
+    t.pending <- pending;
+    t.braces <- braces;
+    t.context <- context;
+    t.stop_at <- stop_at;
+    Defaults.restore_version version;
+    Env.restore t.env scopes;
+    skip_phrase t
+  in
+  let in_include = match frames with { kind = Include _; _ } :: _ -> true | _ -> false in
+  try f () with
+  | Unsupported_use (_, u) ->
+      recover ();
+      Env.Unsupported { u with declared = nloc }
+  | Diag.Error d when in_include ->
+      recover ();
+      Env.Unsupported { feature = ""; feature_loc = d.loc; declared = nloc; failure = Some d.msg }
 
 (* A string #declare may end without ';' (POV-Ray's rule). A string
    expression is one term (a literal, a string identifier or a string
@@ -438,13 +508,31 @@ and string_without_semi t =
 and string_functions = [ "concat"; "str"; "chr"; "substr"; "strupr"; "strlwr"; "vstr" ]
 
 and rhs t =
+  let start = top t in
   let saved = t.context in
   t.context <- Some "#declare of a float, vector or colour";
   let d =
     Fun.protect ~finally:(fun () -> t.context <- saved) (fun () ->
         match string_without_semi t with
         | `String -> Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
-        | `Plain -> parse t Parser.Incremental.declare_rhs
+        | `Plain -> (
+            (* POV-Ray: a float, vector or colour #declare ends with ';'
+               since #version 3.5; before, the value ends where it can *)
+            let missing = ref None in
+            t.semi_probe <- Some missing;
+            let old = Defaults.version () < 3.5 in
+            if old then t.optional_sep <- Some Parser.SEMI;
+            let d = parse t Parser.Incremental.declare_rhs in
+            match (!missing, d) with
+            | Some (found, loc), Decl.Value (Value.Float _ | Value.Vector _) ->
+                if old then
+                  Diag.warning loc "a float, vector or colour #declare should end with ';'"
+                else
+                  fail t loc
+                    "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
+                    found;
+                d
+            | _ -> d)
         | `Bounded (f, i) -> (
             (* hand the parser the missing ';', then insist on a string *)
             let l = f.toks.(i).loc in
@@ -456,19 +544,20 @@ and rhs t =
                 fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
                   (describe f.toks.(i).raw)))
   in
-  (* a layered texture: texture { ... } texture { ... }, the last on top *)
-  let rec layers (d : Decl.t) =
-    match (d, (raw_peek t).raw) with
-    | Decl.Texture below, Tok Parser.TEXTURE -> (
+  (* layered textures: texture {...} texture {...}, the last on top *)
+  let rec layers d =
+    match d with
+    | Decl.Texture below when t.pending = [] && (peek_past_ends t ~from:start).raw = Tok Parser.TEXTURE -> (
         match parse t Parser.Incremental.declare_rhs with
-        | Decl.Texture top -> layers (Decl.Texture (top @ below))
+        | Decl.Texture above -> layers (Decl.Texture (above @ below))
         | other -> other)
     | _ -> d
   in
   let d = layers d in
   (match d with
   | Decl.Value _ -> ()
-  | _ -> ( match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
+  | _ when t.pending <> [] -> ()
+  | _ -> ( match (peek_past_ends t ~from:start).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ()));
   d
 
 
@@ -476,3 +565,7 @@ let create config env ~file toks =
   let t = Cursor.create config env ~file toks in
   t.runner <- { run = (fun entry -> parse t entry) };
   t
+
+(* The entry point: an unsupported feature met outside a #declare is an
+   error like any other. *)
+let parse t start = try parse t start with Unsupported_use (d, _) -> raise (Diag.Error d)

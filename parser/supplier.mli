@@ -17,6 +17,7 @@ type limits = {
   max_macro_depth : int;
   max_include_depth : int;
   max_array_size : int;
+  max_tokens : int;  (** raw tokens read in all, loops and macros included *)
 }
 
 val default_limits : limits

@@ -37,10 +37,15 @@ let to_color loc v =
 
 let to_rgb loc v = (to_color loc v).c
 
+(* float -> int, an error where the float is no integer-sized number *)
+let int_of loc f =
+  if Float.is_nan f || Float.abs f > 1e15 then
+    Diag.error loc "%g cannot be used as a whole number here" f
+  else int_of_float f
+
 let to_int loc v =
   let f = to_float loc v in
-  if Float.is_integer f || Float.abs (f -. Float.round f) < 1e-9 then int_of_float (Float.round f)
-  else int_of_float f
+  if Float.abs (f -. Float.round f) < 1e-9 then int_of loc (Float.round f) else int_of loc f
 
 let to_bool loc v = to_float loc v <> 0.
 
@@ -55,6 +60,9 @@ let arith loc op a b =
     | "+" -> ( +. ) | "-" -> ( -. ) | "*" -> ( *. ) | "/" -> ( /. )
     | _ -> assert false
   in
+  (* POV-Ray warns and goes on *)
+  let zero = function Float y -> y = 0. | Vector a -> Array.exists (( = ) 0.) a | String _ -> false in
+  if op = "/" && zero b then Diag.warning loc "Divide by zero.";
   match (a, b) with
   | Float x, Float y -> Float (f x y)
   | Vector x, Float y -> Vector (Array.map (fun c -> f c y) x)
@@ -114,7 +122,7 @@ let functions =
     "abs"; "min"; "max"; "mod"; "int"; "floor"; "ceil"; "div"; "radians"; "degrees"; "select";
     "vlength"; "vnormalize"; "vcross"; "vdot"; "vrotate"; "vaxis_rotate"; "concat"; "str"; "chr";
     "asc"; "strlen"; "substr"; "strupr"; "strlwr"; "val"; "strcmp"; "sinh"; "cosh"; "tanh";
-    "asinh"; "acosh"; "atanh"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
+    "asinh"; "acosh"; "atanh"; "sqr"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
 
 let is_function name = List.mem name functions
 
@@ -139,14 +147,20 @@ let streams : (int, int ref) Hashtbl.t = Hashtbl.create 8
 let stream_count = ref 0
 let reset_streams () = Hashtbl.reset streams; stream_count := 0
 
-let new_stream s =
+(* out-of-range seeds become -2^31, as in povray *)
+let seed_of_float f =
+  if Float.is_nan f || f >= 2147483648. || f <= -2147483649. then -0x8000_0000
+  else int_of_float f
+
+let new_stream f =
+  let s = seed_of_float f in
   let id = !stream_count in
   incr stream_count;
   Hashtbl.replace streams id (ref (s land 0xFFFFFFFF));
   float_of_int id
 
 let rand loc id =
-  match Hashtbl.find_opt streams (int_of_float id) with
+  match Hashtbl.find_opt streams (int_of loc id) with
   | None -> Diag.error loc "rand(%g): no such random stream (make one with seed())" id
   | Some st ->
       st := ((!st * 1812433253) + 12345) land 0xFFFFFFFF;
@@ -163,26 +177,41 @@ let call loc name args =
   in
   let f1 g = arity 1; Float (g (f 0)) in
   let f2 g = arity 2; Float (g (f 0) (f 1)) in
+  (* widths and digit counts: at most 100 (POV-Ray has no use for more) *)
+  let small i = max (-100) (min 100 (int_of loc (f i))) in
   match name with
   | "sin" -> f1 Float.sin | "cos" -> f1 Float.cos | "tan" -> f1 Float.tan
-  | "asin" -> f1 Float.asin | "acos" -> f1 Float.acos
+  | "asin" | "acos" ->
+      (* POV-Ray warns and clamps *)
+      arity 1;
+      let x = f 0 in
+      if x < -1. || x > 1. then Diag.warning loc (Printf.sprintf "Domain error in %s." name);
+      let x = Float.max (-1.) (Float.min 1. x) in
+      Float (if name = "asin" then Float.asin x else Float.acos x)
   | "atan" -> f1 Float.atan | "atan2" -> f2 Float.atan2
   | "sinh" -> f1 Float.sinh | "cosh" -> f1 Float.cosh | "tanh" -> f1 Float.tanh
   | "asinh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) +. 1.)))
   | "acosh" -> f1 (fun x -> Float.log (x +. Float.sqrt ((x *. x) -. 1.)))
   | "atanh" -> f1 (fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)))
-  | "sqrt" -> f1 Float.sqrt
+  | "sqrt" ->
+      arity 1;
+      if f 0 < 0. then Diag.error loc "sqrt of negative number %g" (f 0);
+      Float (Float.sqrt (f 0))
+  | "sqr" -> f1 (fun x -> x *. x)
   | "pow" -> f2 Float.pow | "exp" -> f1 Float.exp
-  | "log" -> f1 Float.log10 | "ln" -> f1 Float.log
+  | "log" | "ln" ->
+      arity 1;
+      if f 0 <= 0. then Diag.error loc "%s of a number that is not positive: %g" name (f 0);
+      Float (if name = "log" then Float.log10 (f 0) else Float.log (f 0))
   | "abs" -> f1 Float.abs
   | "floor" -> f1 Float.floor | "ceil" -> f1 Float.ceil
   | "int" -> f1 Float.trunc
   | "mod" -> f2 Float.rem
   | "div" -> f2 (fun a b -> Float.trunc (a /. b))
   | "radians" -> f1 (fun a -> a /. deg) | "degrees" -> f1 (fun a -> a *. deg)
-  | "bitwise_and" -> f2 (fun a b -> float_of_int (int_of_float a land int_of_float b))
-  | "bitwise_or" -> f2 (fun a b -> float_of_int (int_of_float a lor int_of_float b))
-  | "bitwise_xor" -> f2 (fun a b -> float_of_int (int_of_float a lxor int_of_float b))
+  | "bitwise_and" -> f2 (fun a b -> float_of_int (int_of loc a land int_of loc b))
+  | "bitwise_or" -> f2 (fun a b -> float_of_int (int_of loc a lor int_of loc b))
+  | "bitwise_xor" -> f2 (fun a b -> float_of_int (int_of loc a lxor int_of loc b))
   | "min" | "max" ->
       if args = [] then Diag.error loc "%s needs at least one argument" name;
       let xs = List.map (to_float loc) args in
@@ -202,17 +231,17 @@ let call loc name args =
   | "vaxis_rotate" ->
       arity 3; vec3_value (Transform.vector (Transform.axis_rotate (v 1) (f 2)) (v 0))
   | "concat" -> String (String.concat "" (List.map (to_string_value loc) args))
-  | "str" -> arity 3; String (format_float (int_of_float (f 1)) (int_of_float (f 2)) (f 0))
+  | "str" -> arity 3; String (format_float (small 1) (small 2) (f 0))
   | "vstr" ->
       arity 5;
       (* vstr(N, V, separator, width, digits) *)
-      let n = int_of_float (f 0) in
+      let n = int_of loc (f 0) in
       if n < 2 || n > 5 then Diag.error loc "vstr: the component count must be 2 to 5, found %d" n;
       let a = to_vec5 (List.nth args 1) in
-      let w = int_of_float (f 3) and d = int_of_float (f 4) in
+      let w = small 3 and d = small 4 in
       String (String.concat (s 2) (List.init (max 0 (min 5 n)) (fun i -> format_float w d a.(i))))
   | "chr" -> arity 1;
-      let c = int_of_float (f 0) in
+      let c = int_of loc (f 0) in
       if c < 0 || c > 255 then Diag.error loc "chr(%d): code outside 0..255" c;
       String (String.make 1 (Char.chr c))
   | "asc" -> arity 1;
@@ -220,7 +249,7 @@ let call loc name args =
   | "strlen" -> arity 1; Float (float_of_int (String.length (s 0)))
   | "substr" ->
       arity 3;
-      let x = s 0 and p = int_of_float (f 1) and n = int_of_float (f 2) in
+      let x = s 0 and p = int_of loc (f 1) and n = int_of loc (f 2) in
       if p < 1 || n < 0 || p - 1 + n > String.length x then
         Diag.error loc "substr(%S, %d, %d): outside the string" x p n;
       String (String.sub x (p - 1) n)
@@ -230,7 +259,7 @@ let call loc name args =
       match float_of_string_opt (String.trim (s 0)) with
       | Some x -> Float x
       | None -> Float 0.)
-  | "seed" -> arity 1; Float (new_stream (int_of_float (f 0)))
+  | "seed" -> arity 1; Float (new_stream (f 0))
   | "rand" -> arity 1; Float (rand loc (f 0))
   | "strcmp" -> arity 2; Float (float_of_int (compare (s 0) (s 1)))
   | _ -> Diag.error loc "%s is not a function camlray knows" name

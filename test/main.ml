@@ -25,6 +25,9 @@ let () =
       Test_spline.tests;
       Test_parse.tests;
       Test_errors.tests;
+      Test_golden.tests;
+      Test_printer.tests;
+      Test_lang.tests;
       Test_sampler.tests;
       Test_bsdf.tests;
       Test_path.tests;

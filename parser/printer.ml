@@ -1,0 +1,166 @@
+open Camlray
+
+let float f = Printf.sprintf "%.17g" f
+let vec (v : Vec3.t) = Printf.sprintf "<%s, %s, %s>" (float v.x) (float v.y) (float v.z)
+let rgb (c : Color.t) = Printf.sprintf "rgb <%s, %s, %s>" (float c.r) (float c.g) (float c.b)
+
+let rgbft (c : Color.rgbft) =
+  Printf.sprintf "rgbft <%s, %s, %s, %s, %s>" (float c.c.r) (float c.c.g) (float c.c.b)
+    (float c.filter) (float c.transmit)
+
+let matrix t =
+  let o = Transform.point t Vec3.zero in
+  let a = Transform.vector t Vec3.unit_x
+  and b = Transform.vector t Vec3.unit_y
+  and c = Transform.vector t Vec3.unit_z in
+  Printf.sprintf "matrix <%s>"
+    (String.concat ", " (List.map float [ a.x; a.y; a.z; b.x; b.y; b.z; c.x; c.y; c.z; o.x; o.y; o.z ]))
+
+let pigment = function
+  | Pigment.Solid c -> Printf.sprintf "pigment { %s }" (rgbft c)
+  | Pigment.Map _ | Pigment.Blocks _ | Pigment.Image_map _ ->
+      invalid_arg "Printer: patterned pigments are not printed"
+
+let finish (f : Finish.t) =
+  let r = f.reflection in
+  Printf.sprintf
+    "finish { ambient %s emission %s diffuse %s, %s brilliance %s phong %s phong_size %s specular %s \
+     roughness %s metallic %s reflection { %s, %s fresnel %s falloff %s exponent %s metallic %s } \
+     conserve_energy %s }"
+    (rgb f.ambient) (rgb f.emission) (float f.diffuse) (float f.diffuse_back) (float f.brilliance)
+    (float f.phong) (float f.phong_size) (float f.specular) (float f.roughness) (float f.metallic)
+    (rgb r.rmin) (rgb r.rmax) (if r.fresnel then "on" else "off") (float r.falloff) (float r.exponent)
+    (float r.rmetallic) (if f.conserve_energy then "on" else "off")
+
+let layer (l : Texture.layer) = Printf.sprintf "texture { %s %s }" (pigment l.pigment) (finish l.finish)
+
+let interior (i : Interior.t) =
+  Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s }" (float i.ior)
+    (float i.fade_distance) (float i.fade_power) (rgb i.fade_color)
+
+let light_kind = function
+  | Light.Point -> ""
+  | Light.Spot s ->
+      Printf.sprintf " spotlight point_at %s radius %s falloff %s tightness %s" (vec s.point_at)
+        (float s.radius) (float s.falloff) (float s.tightness)
+  | Light.Parallel p -> Printf.sprintf " parallel point_at %s" (vec p.point_at)
+
+(* The text of an object: its head (the keyword, '{' and the shape's
+   parameters) and its modifiers, without the closing '}'. *)
+let rec parts (o : Sdl.obj) =
+  let tex =
+    match o.texture with
+    | None -> []
+    | Some layers -> List.rev_map layer layers (* bottom layer first *)
+  in
+  let mods =
+    tex
+    @ (match o.interior with Some i -> [ interior i ] | None -> [])
+    @ (if o.no_shadow then [ "no_shadow" ] else [])
+    @ (if o.hollow then [ "hollow on" ] else [])
+    @ if Transform.is_identity o.xform then [] else [ matrix o.xform ]
+  in
+  let simple head = (head, mods) in
+  match o.shape with
+  | Sdl.Light l ->
+      ( Printf.sprintf "light_source { %s, %s%s fade_distance %s fade_power %s%s" (vec l.position)
+          (rgb l.color) (light_kind l.kind) (float l.fade_distance) (float l.fade_power)
+          (if l.shadowless then " shadowless" else ""),
+        if Transform.is_identity o.xform then [] else [ matrix o.xform ] )
+  | Sdl.Sphere (c, r) -> simple (Printf.sprintf "sphere { %s, %s" (vec c) (float r))
+  | Sdl.Plane (n, d) -> simple (Printf.sprintf "plane { %s, %s" (vec n) (float d))
+  | Sdl.Box (a, b) -> simple (Printf.sprintf "box { %s, %s" (vec a) (vec b))
+  | Sdl.Cone c when c.cylinder ->
+      simple
+        (Printf.sprintf "cylinder { %s, %s, %s%s" (vec c.base) (vec c.top) (float c.base_r)
+           (if c.open_ then " open" else ""))
+  | Sdl.Cone c ->
+      simple
+        (Printf.sprintf "cone { %s, %s, %s, %s%s" (vec c.base) (float c.base_r) (vec c.top)
+           (float c.top_r) (if c.open_ then " open" else ""))
+  | Sdl.Torus (r1, r2) -> simple (Printf.sprintf "torus { %s, %s" (float r1) (float r2))
+  | Sdl.Disc d ->
+      simple
+        (Printf.sprintf "disc { %s, %s, %s, %s" (vec d.center) (vec d.normal) (float d.radius)
+           (float d.hole))
+  | Sdl.Triangle (a, b, c) -> simple (Printf.sprintf "triangle { %s, %s, %s" (vec a) (vec b) (vec c))
+  | Sdl.Smooth_triangle (a, b, c, na, nb, nc) ->
+      simple
+        (Printf.sprintf "smooth_triangle { %s, %s, %s, %s, %s, %s" (vec a) (vec na) (vec b) (vec nb)
+           (vec c) (vec nc))
+  | Sdl.Mesh m ->
+      if Array.length m.textures > 0 then invalid_arg "Printer: meshes with textures are not printed";
+      let vectors name (a : Float.Array.t) =
+        let n = Float.Array.length a / 3 in
+        Printf.sprintf "%s { %d%s }" name n
+          (String.concat ""
+             (List.init n (fun i ->
+                  ", " ^ vec (Vec3.make (Float.Array.get a (3 * i)) (Float.Array.get a ((3 * i) + 1))
+                               (Float.Array.get a ((3 * i) + 2))))))
+      in
+      let indices name (a : int array) =
+        let n = Array.length a / 3 in
+        Printf.sprintf "%s { %d%s }" name n
+          (String.concat ""
+             (List.init n (fun i -> Printf.sprintf ", <%d, %d, %d>" a.(3 * i) a.((3 * i) + 1) a.((3 * i) + 2))))
+      in
+      let blocks =
+        [ vectors "vertex_vectors" m.verts ]
+        @ (if Float.Array.length m.normals > 0 then [ vectors "normal_vectors" m.normals ] else [])
+        @ [ indices "face_indices" m.faces ]
+        @ (if Array.length m.normal_faces > 0 then [ indices "normal_indices" m.normal_faces ] else [])
+      in
+      ( "mesh2 { " ^ String.concat " " blocks,
+        (match m.inside_vector with Some v -> [ "inside_vector " ^ vec v ] | None -> []) @ mods )
+  | Sdl.Csg (k, children) ->
+      let kw =
+        match k with
+        | Sdl.Union -> "union" | Sdl.Intersection -> "intersection" | Sdl.Difference -> "difference"
+        | Sdl.Merge -> "merge"
+      in
+      (kw ^ " { " ^ String.concat " " (List.map obj children), mods)
+  | Sdl.Inverse inner ->
+      (* modifiers after 'inverse' apply to the wrapper *)
+      let head, inner_mods = parts inner in
+      (head, inner_mods @ [ "inverse" ] @ mods)
+  | Sdl.Clipped (inner, cs) ->
+      let head, inner_mods = parts inner in
+      (head, inner_mods @ [ "clipped_by { " ^ String.concat " " (List.map obj cs) ^ " }" ] @ mods)
+
+and obj o =
+  let head, mods = parts o in
+  String.concat " " ((head :: mods) @ [ "}" ])
+
+let camera_item = function
+  | Sdl.Perspective -> "perspective"
+  | Sdl.Orthographic -> "orthographic"
+  | Sdl.Location v -> "location " ^ vec v
+  | Sdl.Look_at v -> "look_at " ^ vec v
+  | Sdl.Angle a -> "angle " ^ float a
+  | Sdl.Right v -> "right " ^ vec v
+  | Sdl.Up v -> "up " ^ vec v
+  | Sdl.Direction v -> "direction " ^ vec v
+  | Sdl.Sky v -> "sky " ^ vec v
+  | Sdl.Aperture a -> "aperture " ^ float a
+  | Sdl.Focal_point v -> "focal_point " ^ vec v
+  | Sdl.Blur_samples n -> Printf.sprintf "blur_samples %d" n
+  | Sdl.Cam_transform t -> matrix t
+
+let global = function
+  | Sdl.Assumed_gamma g -> "assumed_gamma " ^ float g
+  | Sdl.Max_trace_level n -> Printf.sprintf "max_trace_level %d" n
+  | Sdl.Adc_bailout a -> "adc_bailout " ^ float a
+  | Sdl.Ambient_light c -> "ambient_light " ^ rgb c
+  | Sdl.Noise_generator n -> Printf.sprintf "noise_generator %d" n
+  | Sdl.Number_of_waves n -> Printf.sprintf "number_of_waves %d" n
+
+let item = function
+  | Sdl.Object o -> obj o
+  | Sdl.Camera (_, items) -> "camera { " ^ String.concat " " (List.map camera_item items) ^ " }"
+  | Sdl.Background c -> Printf.sprintf "background { %s }" (rgbft c)
+  | Sdl.Global_settings (_, gs) -> "global_settings { " ^ String.concat " " (List.map global gs) ^ " }"
+  | Sdl.Sky_sphere _ -> invalid_arg "Printer: sky_sphere is not printed"
+
+let scene (s : Sdl.scene) =
+  let version = match s.version with Some v -> Printf.sprintf "#version %s;\n" (float v) | None -> "" in
+  version ^ String.concat "\n" (List.map item s.items) ^ "\n"

@@ -1,0 +1,225 @@
+(* Scene language properties: the parser never raises on any input, and
+   expressions evaluate as an independent model of POV-Ray's rules says
+   (precedence, '&' and '|' sharing one level, '=' with tolerance, '?:'). *)
+open Camlray_lang
+
+(* ---------- robustness ---------- *)
+
+let corpus = lazy (Fuzz_gen.corpus ())
+
+let no_exception =
+  QCheck.Test.make ~name:"random token streams and mutated scenes: Ok or Error, never an exception"
+    ~count:2000
+    (QCheck.make ~print:(fun s -> s) (fun st -> Fuzz_gen.input st (Lazy.force corpus)))
+    (fun text ->
+      match Fuzz_gen.with_stderr_silenced (fun () -> Fuzz_gen.check ~timeout:10 text) with
+      | Fuzz_gen.Accepted | Fuzz_gen.Rejected -> true
+      | Fuzz_gen.Hung -> QCheck.Test.fail_reportf "still parsing after 10 s"
+      | Fuzz_gen.Crashed e -> QCheck.Test.fail_reportf "exception %s" e)
+
+(* ---------- expressions: a model and a printer ---------- *)
+
+type e =
+  | Num of float
+  | Neg of e
+  | Not of e
+  | Bin of string * e * e
+  | Cond of e * e * e
+  | Fn of string * e list
+  | Member of e list * e * string  (** (<a,b,c> * k).x *)
+
+let level = function
+  | Cond _ -> 0
+  | Bin (("&" | "|"), _, _) -> 1
+  | Bin (("<" | "<=" | "=" | "!=" | ">=" | ">"), _, _) -> 2
+  | Bin (("+" | "-"), _, _) -> 3
+  | Bin _ -> 4
+  | Neg _ | Not _ -> 5
+  | Num _ | Fn _ | Member _ -> 6
+
+let rec print e =
+  let wrap l x = if level x < l then "(" ^ print x ^ ")" else print x in
+  let wrap_right l x = if level x <= l then "(" ^ print x ^ ")" else print x in
+  match e with
+  | Num f -> Printf.sprintf "%.17g" f
+  | Neg x -> "-" ^ wrap 5 x
+  | Not x -> "!" ^ wrap 5 x
+  | Bin (op, a, b) ->
+      let l = level e in
+      Printf.sprintf "%s %s %s" (wrap l a) op (wrap_right l b)
+  | Cond (c, a, b) -> Printf.sprintf "%s ? %s : %s" (wrap 1 c) (print a) (print b)
+  | Fn (f, args) -> Printf.sprintf "%s(%s)" f (String.concat ", " (List.map print args))
+  | Member (v, k, m) ->
+      (* like povray, camlray reads vector components without comparisons
+         or logic operators: those need parentheses *)
+      Printf.sprintf "(<%s> * %s).%s" (String.concat ", " (List.map (wrap 3) v)) (wrap 5 k) m
+
+exception Undefined
+
+let b x = if x then 1. else 0.
+
+let rec eval = function
+  | Num f -> f
+  | Neg x -> -.eval x
+  | Not x -> b (eval x = 0.)
+  | Bin (op, x, y) -> (
+      let x = eval x and y = eval y in
+      match op with
+      | "+" -> x +. y
+      | "-" -> x -. y
+      | "*" -> x *. y
+      | "/" -> if Float.abs y < 1e-6 then raise Undefined else x /. y
+      | "<" -> b (x < y)
+      | "<=" -> b (x <= y)
+      | ">" -> b (x > y)
+      | ">=" -> b (x >= y)
+      | "=" -> b (Float.abs (x -. y) <= 1e-10)
+      | "!=" -> b (Float.abs (x -. y) > 1e-10)
+      | "&" -> b (x <> 0. && y <> 0.)
+      | "|" -> b (x <> 0. || y <> 0.)
+      | _ -> assert false)
+  | Cond (c, x, y) -> if eval c <> 0. then eval x else eval y
+  | Fn (f, args) -> (
+      let a = List.map eval args in
+      match (f, a) with
+      | "abs", [ x ] -> Float.abs x
+      | "floor", [ x ] -> Float.floor x
+      | "int", [ x ] -> Float.trunc x
+      | "mod", [ x; y ] -> if Float.abs y < 1e-6 then raise Undefined else Float.rem x y
+      | "min", x :: r -> List.fold_left Float.min x r
+      | "max", x :: r -> List.fold_left Float.max x r
+      | "sin", [ x ] -> Float.sin x
+      | _ -> assert false)
+  | Member (v, k, m) ->
+      let k = eval k in
+      let i = match m with "x" -> 0 | "y" -> 1 | _ -> 2 in
+      eval (List.nth v i) *. k
+
+let gen_e =
+  QCheck.Gen.(
+    sized_size (int_bound 6)
+    @@ fix (fun self n ->
+           let leaf = map (fun f -> Num f) (oneof_list [ 0.; 1.; 2.; 0.5; 3.25; 10.; 1e-3 ]) in
+           if n = 0 then leaf
+           else
+             let sub = self (n - 1) in
+             oneof_weighted
+               [
+                 (1, leaf);
+                 (1, map (fun x -> Neg x) sub);
+                 (1, map (fun x -> Not x) sub);
+                 ( 5,
+                   map3
+                     (fun op a b -> Bin (op, a, b))
+                     (oneof_list [ "+"; "-"; "*"; "/"; "<"; "<="; ">"; ">="; "="; "!="; "&"; "|" ])
+                     sub sub );
+                 (1, map3 (fun c a b -> Cond (c, a, b)) sub sub sub);
+                 ( 1,
+                   oneof
+                     [
+                       map (fun x -> Fn ("abs", [ x ])) sub;
+                       map (fun x -> Fn ("floor", [ x ])) sub;
+                       map (fun x -> Fn ("int", [ x ])) sub;
+                       map (fun x -> Fn ("sin", [ x ])) sub;
+                       map2 (fun x y -> Fn ("mod", [ x; y ])) sub sub;
+                       map3 (fun x y z -> Fn ("min", [ x; y; z ])) sub sub sub;
+                       map2 (fun x y -> Fn ("max", [ x; y ])) sub sub;
+                     ] );
+                 ( 1,
+                   map3
+                     (fun (a, b') (c, k) m -> Member ([ a; b'; c ], k, m))
+                     (pair sub sub) (pair sub sub) (oneof_list [ "x"; "y"; "z" ]) );
+               ]))
+
+let radius_of text =
+  match Parse.string text with
+  | Ok { Sdl.items = [ Sdl.Object { shape = Sdl.Sphere (_, r); _ } ]; _ } -> Ok r
+  | Ok _ -> Error "unexpected scene"
+  | Error d -> Error (Diag.to_string d)
+
+let close a b =
+  (Float.is_nan a && Float.is_nan b) || a = b
+  || Float.abs (a -. b) <= 1e-9 *. (1. +. Float.abs a +. Float.abs b)
+
+let round_trip =
+  QCheck.Test.make ~name:"expressions: printed, parsed by #declare, equal to the model" ~count:1000
+    (QCheck.make ~print:print gen_e) (fun e ->
+      match eval e with
+      | exception Undefined -> QCheck.assume_fail ()
+      | want -> (
+          let text = Printf.sprintf "#declare X = %s;\nsphere { 0, X }\n" (print e) in
+          match radius_of text with
+          | Ok got ->
+              close want got || QCheck.Test.fail_reportf "model %.17g, camlray %.17g" want got
+          | Error m -> QCheck.Test.fail_reportf "%s" m))
+
+(* ---------- units ---------- *)
+
+let expect_error text fragment () =
+  match Parse.string text with
+  | Ok _ -> Alcotest.failf "expected an error containing %S" fragment
+  | Error d ->
+      let m = Diag.to_string d in
+      let n = String.length fragment in
+      let rec has i = i + n <= String.length m && (String.sub m i n = fragment || has (i + 1)) in
+      if not (has 0) then Alcotest.failf "error %S does not contain %S" m fragment
+
+let rand_sequence () =
+  (* printed by povray 3.7: str(rand(seed(0)), 0, 12) four times *)
+  let text =
+    "#declare S = seed(0);\n#declare A = rand(S); #declare B = rand(S); #declare C = rand(S);\n\
+     sphere { <A, B, C>, rand(S) }\n"
+  in
+  match Parse.string text with
+  | Ok { Sdl.items = [ Sdl.Object { shape = Sdl.Sphere (c, r); _ } ]; _ } ->
+      let near a b = Alcotest.(check (float 5e-13)) "rand" a b in
+      near 0.000002874294 c.x;
+      near 0.466563684509 c.y;
+      near 0.249070228834 c.z;
+      near 0.965876042136 r
+  | Ok _ -> Alcotest.fail "unexpected scene"
+  | Error d -> Alcotest.fail (Diag.to_string d)
+
+let std_includes () =
+  List.iter
+    (fun inc ->
+      match Parse.string (Printf.sprintf "#include \"colors.inc\"\n#include %S\n" inc) with
+      | Ok _ -> ()
+      | Error d -> Alcotest.failf "%s: %s" inc (Diag.to_string d))
+    [ "colors.inc"; "textures.inc"; "finish.inc"; "metals.inc"; "glass.inc"; "woods.inc";
+      "stones.inc"; "golds.inc"; "transforms.inc"; "math.inc"; "shapes.inc" ]
+
+let declared_use () =
+  let text =
+    "#include \"colors.inc\"\n#include \"finish.inc\"\n#include \"metals.inc\"\n\
+     #declare P = pigment { Red }\n#declare T = texture { T_Chrome_1A }\n\
+     #declare O = sphere { 0, 1 texture { T } }\n\
+     object { O scale 2 }\nsphere { 0, 1 pigment { P } finish { Shiny reflection 0.2 } }\n"
+  in
+  match Parse.string text with
+  | Ok { Sdl.items = [ Sdl.Object a; Sdl.Object b ]; _ } ->
+      Alcotest.(check bool) "object keeps its texture" true (a.texture <> None);
+      (match b.texture with
+      | Some (l :: _) ->
+          Alcotest.(check (float 1e-12)) "Shiny's specular kept" 1. l.finish.specular;
+          Alcotest.(check (float 1e-12)) "reflection added" 0.2 l.finish.reflection.rmin.r
+      | _ -> Alcotest.fail "no texture")
+  | Ok _ -> Alcotest.fail "unexpected scene"
+  | Error d -> Alcotest.fail (Diag.to_string d)
+
+let tests =
+  ( "lang",
+    [
+      Alcotest.test_case "rand matches povray" `Quick rand_sequence;
+      Alcotest.test_case "standard includes parse" `Quick std_includes;
+      Alcotest.test_case "declared identifiers reused" `Quick declared_use;
+      Alcotest.test_case "unsupported use reported" `Quick
+        (expect_error
+           "#declare Swirl = pigment { spiral1 3 color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
+           "Swirl uses spiral1");
+      Alcotest.test_case "unsupported keyword named" `Quick
+        (expect_error "fog { distance 3 }\n" "fog is not supported by camlray");
+      Alcotest.test_case "include cycle" `Quick
+        (expect_error "#include \"/dev/null/x\"\n" "cannot find include file");
+    ]
+    @ List.map QCheck_alcotest.to_alcotest [ no_exception; round_trip ] )

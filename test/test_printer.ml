@@ -1,0 +1,121 @@
+(* parse (print sdl) = sdl: random shapes and lights printed by Printer
+   and read back by Parse (transforms compared by their action on points,
+   everything else exactly). *)
+open Camlray
+open Camlray_lang
+
+let gen_float = QCheck.Gen.(oneof [ float_range (-10.) 10.; oneof_list [ 0.; 1.; 0.1; 1e-7; 123456.789 ] ])
+let gen_pos = QCheck.Gen.(oneof [ float_range 0.01 10.; oneof_list [ 1.; 0.5; 1e-3 ] ])
+let gen_vec = QCheck.Gen.(map3 Vec3.make gen_float gen_float gen_float)
+let gen_col = QCheck.Gen.(map3 Color.make gen_pos gen_pos gen_pos)
+let gen_bool = QCheck.Gen.bool
+
+let gen_xform =
+  QCheck.Gen.(
+    list_size (int_bound 4)
+      (oneof
+         [
+           map Transform.translate gen_vec;
+           map Transform.rotate gen_vec;
+           map (fun (a, b, c) -> Transform.scale (Vec3.make a b c)) (triple gen_pos gen_pos gen_pos);
+         ])
+    |> map (List.fold_left Transform.then_ Transform.identity))
+
+let gen_finish =
+  QCheck.Gen.(
+    map
+      (fun ((amb, em, d, db), (br, ph, ps, sp), (ro, me, rmin, rmax), (fr, fo, ex, ce)) ->
+        { Finish.ambient = amb; emission = em; diffuse = d; diffuse_back = db; brilliance = br;
+          phong = ph; phong_size = ps; specular = sp; roughness = ro; metallic = me;
+          reflection = { rmin; rmax; falloff = fo; fresnel = fr; exponent = ex; rmetallic = me };
+          conserve_energy = ce })
+      (quad (quad gen_col gen_col gen_pos gen_pos) (quad gen_pos gen_pos gen_pos gen_pos)
+         (quad gen_pos gen_pos gen_col gen_col) (quad gen_bool gen_pos gen_pos gen_bool)))
+
+let gen_layer =
+  QCheck.Gen.(
+    map2
+      (fun (c, f, t) finish -> Texture.layer (Pigment.Solid { c; filter = f; transmit = t }) finish)
+      (triple gen_col gen_pos gen_pos) gen_finish)
+
+let gen_interior =
+  QCheck.Gen.(
+    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc })
+      (quad gen_pos gen_pos gen_pos gen_col))
+
+let gen_obj =
+  QCheck.Gen.(
+    map
+      (fun (shape, xform, texture, (interior, no_shadow, hollow)) ->
+        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow })
+      (quad
+         (oneof
+            [
+              map2 (fun c r -> Sdl.Sphere (c, r)) gen_vec gen_pos;
+              map2 (fun n d -> Sdl.Plane (Vec3.add n (Vec3.make 0. 20. 0.), d)) gen_vec gen_float;
+              map2 (fun a (dx, dy, dz) -> Sdl.Box (a, Vec3.add a (Vec3.make dx dy dz))) gen_vec
+                (triple gen_pos gen_pos gen_pos);
+              map2 (fun r1 r2 -> Sdl.Torus (r1 +. r2, r2)) gen_pos gen_pos;
+              map3 (fun a b c -> Sdl.Triangle (a, b, c)) gen_vec gen_vec gen_vec;
+              map3
+                (fun a d (r, o) ->
+                  Sdl.Cone { base = a; base_r = r; top = Vec3.add a (Vec3.add d (Vec3.make 0. 20. 0.));
+                             top_r = r; open_ = o; cylinder = true })
+                gen_vec gen_vec (pair gen_pos gen_bool);
+              map3
+                (fun p c (fd, fp, sh) ->
+                  Sdl.Light
+                    { Sdl.position = p; color = c; kind = Light.Point; fade_distance = fd;
+                      fade_power = fp; shadowless = sh; area = None; looks_like = None })
+                gen_vec gen_col (triple gen_pos gen_pos gen_bool);
+            ])
+         gen_xform
+         (option (list_size (int_range 1 3) gen_layer))
+         (triple (option gen_interior) gen_bool gen_bool)))
+
+let same_xform a b =
+  List.for_all
+    (fun p ->
+      let close (u : Vec3.t) (v : Vec3.t) = Vec3.length (Vec3.sub u v) <= 1e-9 *. (1. +. Vec3.length u) in
+      close (Transform.point a p) (Transform.point b p) && close (Transform.inv_point a p) (Transform.inv_point b p))
+    [ Vec3.zero; Vec3.unit_x; Vec3.unit_y; Vec3.unit_z; Vec3.make 3. (-2.) 5. ]
+
+let normalise (o : Sdl.obj) =
+  (* lights keep no texture or interior *)
+  match o.shape with
+  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false }
+  | _ -> o
+
+let round_trip =
+  QCheck.Test.make ~name:"Printer: parse (print obj) = obj" ~count:300
+    (QCheck.make ~print:(fun o -> Printer.obj (normalise o)) gen_obj)
+    (fun o ->
+      let o = normalise o in
+      let text = Printer.obj o in
+      match Parse.string text with
+      | Ok { Sdl.items = [ Sdl.Object o' ]; _ } ->
+          let strip (x : Sdl.obj) = { x with loc = Loc.none; xform = Transform.identity } in
+          if not (same_xform o.xform o'.xform) then QCheck.Test.fail_reportf "transforms differ"
+          else if strip o <> strip o' then QCheck.Test.fail_reportf "read back:\n%s" (Printer.obj o')
+          else true
+      | Ok _ -> QCheck.Test.fail_reportf "not one object"
+      | Error d -> QCheck.Test.fail_reportf "%s" (Diag.to_string d))
+
+(* CSG, inverse, clipped_by, meshes: print (parse (print s)) = print s *)
+let fixpoint () =
+  let text =
+    "union { sphere { 0, 1 } box { -1, 1 inverse translate x } pigment { rgb 1 } scale 2 }\n\
+     difference { cylinder { 0, y, 1 open } cone { 0, 1, y, 0.5 } rotate 30*z }\n\
+     sphere { 0, 1 clipped_by { plane { y, 0 } } translate 3*z }\n\
+     mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } }\n\
+     disc { 0, y, 2, 0.5 } smooth_triangle { 0, y, x, y, z, y } torus { 2, 0.5 }\n"
+  in
+  let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
+  let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
+  let once = print (parse text) in
+  Alcotest.(check string) "fixpoint" once (print (parse once))
+
+let tests =
+  ( "printer",
+    [ QCheck_alcotest.to_alcotest round_trip;
+      Alcotest.test_case "CSG, inverse, clipped_by, mesh2 print back to themselves" `Quick fixpoint ] )
