@@ -200,6 +200,9 @@ let build ?(leaf_size = 4) boxes =
 
 (* Slab test against box k within (t0, t1). *)
 let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
+  (* [+. 0.] unboxes the bounds: a branch choosing between a boxed and an
+     unboxed float would box the result *)
+  let t0 = t0 +. 0. and t1 = t1 +. 0. in
   let o = 8 * k in
   let fget = nget in
   let ax = (fget nodes o -. ox) *. ix and bx = (fget nodes (o + 3) -. ox) *. ix in
@@ -209,15 +212,37 @@ let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
   let hi = fmin (fmin (fmax ax bx) (fmax ay by)) (fmin (fmax az bz) t1) in
   lo <= hi
 
-let inv d = if d = 0. then 1e300 else 1. /. d
+let[@inline] inv d = if d = 0. then 1e300 else 1. /. d
 
-let nearest b (r : Ray.t) tmin (h : Hit.t) f =
-  if Bigarray.Array1.dim b.nodes > 0 then begin
-    let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
-    let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
-    let stack = Array.make b.depth 0 in
-    let sp = ref 0 and k = ref 0 and go = ref true in
-    let nodes = b.nodes in
+(* Traversal stacks: one growable int array per domain, shared by nested
+   traversals (a union's BVH inside the scene's, a mesh's inside a
+   union's), each using the slots above the one that called it. A
+   traversal keeps the array it started with: when a nested one grows the
+   stack, the outer one's slots stay valid in the old array. *)
+type stack = { mutable slots : int array; mutable top : int }
+
+let stack_key = Domain.DLS.new_key (fun () -> { slots = Array.make 256 0; top = 0 })
+
+let[@inline] reserve st n =
+  let base = st.top in
+  if base + n > Array.length st.slots then begin
+    let a = Array.make (2 * (base + n)) 0 in
+    Array.blit st.slots 0 a 0 base;
+    st.slots <- a
+  end;
+  st.top <- base + n;
+  base
+
+let nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
+  let nodes = b.nodes in
+  if Bigarray.Array1.dim nodes = 0 then false
+  else begin
+    let ox = r.ox and oy = r.oy and oz = r.oz in
+    let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let st = Domain.DLS.get stack_key in
+    let base = reserve st b.depth in
+    let stack = st.slots in
+    let sp = ref base and k = ref 0 and go = ref true and found = ref false in
     while !go do
       let kk = !k in
       if box_hit nodes kk ox oy oz ix iy iz tmin h.t then begin
@@ -225,30 +250,34 @@ let nearest b (r : Ray.t) tmin (h : Hit.t) f =
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           for j = first to first + c - 1 do
-            f (Array.unsafe_get b.prims j)
+            if f c1 c2 r tmin h (Array.unsafe_get b.prims j) then found := true
           done;
-          if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+          if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
           let right = int_of_float (nget nodes ((8 * kk) + 6)) in
           let neg = match c with -1 -> ix < 0. | -2 -> iy < 0. | _ -> iz < 0. in
-          if neg then (stack.(!sp) <- kk + 1; k := right)
-          else (stack.(!sp) <- right; k := kk + 1);
+          if neg then (Array.unsafe_set stack !sp (kk + 1); k := right)
+          else (Array.unsafe_set stack !sp right; k := kk + 1);
           incr sp
         end
       end
-      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
-    done
+      else if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+    done;
+    st.top <- base;
+    !found
   end
 
-let iter b (r : Ray.t) tmin tmax f =
-  if Bigarray.Array1.dim b.nodes = 0 then true
+let iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
+  let nodes = b.nodes in
+  if Bigarray.Array1.dim nodes = 0 then true
   else begin
-    let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
-    let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
-    let stack = Array.make b.depth 0 in
-    let sp = ref 0 and k = ref 0 and go = ref true and ok = ref true in
-    let nodes = b.nodes in
+    let ox = r.ox and oy = r.oy and oz = r.oz in
+    let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let st = Domain.DLS.get stack_key in
+    let base = reserve st b.depth in
+    let stack = st.slots in
+    let sp = ref base and k = ref 0 and go = ref true and ok = ref true in
     while !go do
       let kk = !k in
       if box_hit nodes kk ox oy oz ix iy iz tmin tmax then begin
@@ -256,19 +285,27 @@ let iter b (r : Ray.t) tmin tmax f =
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
-          while !j < first + c && f (Array.unsafe_get b.prims !j) do incr j done;
-          if !j < first + c then (ok := false; go := false) else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+          while !j < first + c && f c1 c2 r tmin tmax (Array.unsafe_get b.prims !j) do incr j done;
+          if !j < first + c then (ok := false; go := false)
+          else if !sp = base then go := false
+          else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          stack.(!sp) <- int_of_float (nget nodes ((8 * kk) + 6));
+          Array.unsafe_set stack !sp (int_of_float (nget nodes ((8 * kk) + 6)));
           incr sp;
           k := kk + 1
         end
       end
-      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+      else if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
     done;
+    st.top <- base;
     !ok
   end
+
+let nearest b r tmin h f =
+  ignore (nearest_s b (Ray.of_ray r) tmin h f () (fun f () _ _ _ i -> f i; false))
+
+let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
 
 let renumber b = ({ b with prims = Array.init (Array.length b.prims) Fun.id }, Array.copy b.prims)
 
