@@ -198,18 +198,20 @@ let build ?(leaf_size = 4) boxes =
     depth = !max_depth + 1;
   }
 
-(* Slab test against box k within (t0, t1). *)
-let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
+(* Slab test against box k within (t0, t1). [sx] is 0 when the ray goes
+   towards +x (it enters through the low plane, stored first) and 3 when it
+   goes towards -x, likewise [sy], [sz]: no min/max per axis, which OCaml
+   compiles to branches. *)
+let[@inline] box_hit (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
   (* [+. 0.] unboxes the bounds: a branch choosing between a boxed and an
      unboxed float would box the result *)
   let t0 = t0 +. 0. and t1 = t1 +. 0. in
   let o = 8 * k in
-  let fget = nget in
-  let ax = (fget nodes o -. ox) *. ix and bx = (fget nodes (o + 3) -. ox) *. ix in
-  let ay = (fget nodes (o + 1) -. oy) *. iy and by = (fget nodes (o + 4) -. oy) *. iy in
-  let az = (fget nodes (o + 2) -. oz) *. iz and bz = (fget nodes (o + 5) -. oz) *. iz in
-  let lo = fmax (fmax (fmin ax bx) (fmin ay by)) (fmax (fmin az bz) t0) in
-  let hi = fmin (fmin (fmax ax bx) (fmax ay by)) (fmin (fmax az bz) t1) in
+  let nx = (nget nodes (o + sx) -. ox) *. ix and fx = (nget nodes (o + 3 - sx) -. ox) *. ix in
+  let ny = (nget nodes (o + 1 + sy) -. oy) *. iy and fy = (nget nodes (o + 4 - sy) -. oy) *. iy in
+  let nz = (nget nodes (o + 2 + sz) -. oz) *. iz and fz = (nget nodes (o + 5 - sz) -. oz) *. iz in
+  let lo = fmax (fmax nx ny) (fmax nz t0) in
+  let hi = fmin (fmin fx fy) (fmin fz t1) in
   lo <= hi
 
 let[@inline] inv d = if d = 0. then 1e300 else 1. /. d
@@ -239,13 +241,14 @@ let nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
   else begin
     let ox = r.ox and oy = r.oy and oz = r.oz in
     let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
     let st = Domain.DLS.get stack_key in
     let base = reserve st b.depth in
     let stack = st.slots in
     let sp = ref base and k = ref 0 and go = ref true and found = ref false in
     while !go do
       let kk = !k in
-      if box_hit nodes kk ox oy oz ix iy iz tmin h.t then begin
+      if box_hit nodes kk sx sy sz ox oy oz ix iy iz tmin h.t then begin
         let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
@@ -274,13 +277,14 @@ let iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
   else begin
     let ox = r.ox and oy = r.oy and oz = r.oz in
     let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
     let st = Domain.DLS.get stack_key in
     let base = reserve st b.depth in
     let stack = st.slots in
     let sp = ref base and k = ref 0 and go = ref true and ok = ref true in
     while !go do
       let kk = !k in
-      if box_hit nodes kk ox oy oz ix iy iz tmin tmax then begin
+      if box_hit nodes kk sx sy sz ox oy oz ix iy iz tmin tmax then begin
         let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
