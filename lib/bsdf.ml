@@ -14,12 +14,21 @@ let basis (n : Vec3.t) =
   ( Vec3.make (1. +. (sign *. n.x *. n.x *. a)) (sign *. b) (-.sign *. n.x),
     Vec3.make b (sign +. (n.y *. n.y *. a)) (-.n.y) )
 
-let around n cos_t phi =
+(* [around n cos_t phi] is [sin_t cos phi t + sin_t sin phi b + cos_t n]
+   with [t, b = basis n], computed in floats (same operations, one
+   vector allocated). *)
+let around (n : Vec3.t) cos_t phi =
   let sin_t = Float.sqrt (fmax 0. (1. -. (cos_t *. cos_t))) in
-  let t, b = basis n in
-  Vec3.add
-    (Vec3.add (Vec3.scale (sin_t *. Float.cos phi) t) (Vec3.scale (sin_t *. Float.sin phi) b))
-    (Vec3.scale cos_t n)
+  let sign = if n.z > 0. || (n.z = 0. && 1. /. n.z > 0.) then 1. else -1. in
+  let a = -1. /. (sign +. n.z) in
+  let b = n.x *. n.y *. a in
+  let tx = 1. +. (sign *. n.x *. n.x *. a) and ty = sign *. b and tz = -.sign *. n.x in
+  let bx = b and by = sign +. (n.y *. n.y *. a) and bz = -.n.y in
+  let kt = sin_t *. Float.cos phi and kb = sin_t *. Float.sin phi in
+  Vec3.make
+    ((kt *. tx) +. (kb *. bx) +. (cos_t *. n.x))
+    ((kt *. ty) +. (kb *. by) +. (cos_t *. n.y))
+    ((kt *. tz) +. (kb *. bz) +. (cos_t *. n.z))
 
 let cosine_hemisphere n u1 u2 = around n (Float.sqrt (1. -. u1)) (2. *. Float.pi *. u2)
 let reflect wo n = Vec3.madd (Vec3.neg wo) (2. *. Vec3.dot wo n) n

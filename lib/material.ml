@@ -59,6 +59,16 @@ let reflectivity (r : Finish.reflection) ior c =
 
 let clamp01 x = fmin 1. (fmax 0. x)
 
+(* At most five lobes: literal arrays are allocated inline, where
+   Array.of_list calls the runtime. *)
+let of_rev_list = function
+  | [] -> [||]
+  | [ a ] -> [| a |]
+  | [ b; a ] -> [| a; b |]
+  | [ c; b; a ] -> [| a; b; c |]
+  | [ d; c; b; a ] -> [| a; b; c; d |]
+  | l -> Array.of_list (List.rev l)
+
 let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
   match tex with
   | [] -> black
@@ -70,12 +80,8 @@ let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
       let alpha = 1. -. tr in
       let refracts = tr > 0. && inter.ior <> 1. in
       (* at most five lobes, kept in order when their weight is positive *)
-      let buf = Array.make 5 (Lambert Color.black) and n = ref 0 in
-      let push l =
-        if weight l > 0. then (
-          Array.unsafe_set buf !n l;
-          incr n)
-      in
+      let lobes = ref [] in
+      let push l = if weight l > 0. then lobes := l :: !lobes in
       (* the opaque part *)
       push (Lambert (scale (alpha *. f.diffuse) pig));
       let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
@@ -100,4 +106,4 @@ let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
         let eta = if refracts then (if entering then 1. /. inter.ior else inter.ior) else 1. in
         push (Glass { eta; reflect = gray tr; transmit })
       end;
-      { lobes = Array.sub buf 0 !n; emission = scale alpha (mul pig f.emission) }
+      { lobes = of_rev_list !lobes; emission = scale alpha (mul pig f.emission) }
