@@ -29,7 +29,8 @@ let shuffle seed a =
    frequent, and with more domains than cores a descheduled domain holds
    the others at each one. A larger minor heap in every rendering domain
    (Gc.set acts on the calling domain only) makes them rare; the calling
-   domain gets its own size back afterwards. *)
+   domain gets its own size back afterwards. One domain never waits for
+   another: it keeps its heap (a smaller one stays in cache). *)
 let minor_words = 4 * 1024 * 1024 (* 32 MB per domain *)
 
 let big_minor = Domain.DLS.new_key (fun () -> false)
@@ -50,7 +51,7 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
   let report = Mutex.create () in
   let stop = Atomic.make false in
   let body i =
-    ensure_minor_heap ();
+    if domains > 1 then ensure_minor_heap ();
     if Atomic.get stop || cancelled () then Atomic.set stop true
     else begin
       f ts.(i);
