@@ -249,10 +249,12 @@ let[@inline] box_entry (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
   let hi = fmin (fmin fx fy) (fmin fz t1) in
   if lo <= hi then lo else infinity
 
-(* Children are tested when their parent is reached: the nearer one hit is
+(* Never inlined (nor [iter_s]): a caller passing a constant [tmin] would
+   have it unboxed by the inliner and boxed again at every leaf call.
+   Children are tested when their parent is reached: the nearer one hit is
    visited next, the farther one pushed with its entry distance, and popped
    only if still in front of the nearest hit found meanwhile. *)
-let nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
+let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
   let nodes = b.nodes in
   if Bigarray.Array1.dim nodes = 0 then false
   else begin
@@ -321,7 +323,7 @@ let nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
     end
   end
 
-let iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
+let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
   let nodes = b.nodes in
   if Bigarray.Array1.dim nodes = 0 then true
   else begin

@@ -10,7 +10,7 @@ type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool }
 let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
   { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee }
 
-let power a b =
+let[@inline] power a b =
   let a2 = a *. a and b2 = b *. b in
   if a2 +. b2 = 0. then 0. else a2 /. (a2 +. b2)
 

@@ -129,7 +129,7 @@ let nearest_leaf a (f : Object.found) r tmin (h : Hit.t) i =
   end
   else Object.hit_s (Array.unsafe_get a.finite i) r tmin h f
 
-let nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
+let[@inline never] nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
   let a = s.accel in
   let any = ref false in
   for i = 0 to Array.length a.infinite - 1 do
