@@ -198,77 +198,170 @@ let build ?(leaf_size = 4) boxes =
     depth = !max_depth + 1;
   }
 
-(* Slab test against box k within (t0, t1). *)
-let[@inline] box_hit (nodes : f32) k ox oy oz ix iy iz t0 t1 =
+(* Slab test against box k within (t0, t1). [sx] is 0 when the ray goes
+   towards +x (it enters through the low plane, stored first) and 3 when it
+   goes towards -x, likewise [sy], [sz]: no min/max per axis, which OCaml
+   compiles to branches. *)
+let[@inline] box_hit (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
+  (* [+. 0.] unboxes the bounds: a branch choosing between a boxed and an
+     unboxed float would box the result *)
+  let t0 = t0 +. 0. and t1 = t1 +. 0. in
   let o = 8 * k in
-  let fget = nget in
-  let ax = (fget nodes o -. ox) *. ix and bx = (fget nodes (o + 3) -. ox) *. ix in
-  let ay = (fget nodes (o + 1) -. oy) *. iy and by = (fget nodes (o + 4) -. oy) *. iy in
-  let az = (fget nodes (o + 2) -. oz) *. iz and bz = (fget nodes (o + 5) -. oz) *. iz in
-  let lo = fmax (fmax (fmin ax bx) (fmin ay by)) (fmax (fmin az bz) t0) in
-  let hi = fmin (fmin (fmax ax bx) (fmax ay by)) (fmin (fmax az bz) t1) in
+  let nx = (nget nodes (o + sx) -. ox) *. ix and fx = (nget nodes (o + 3 - sx) -. ox) *. ix in
+  let ny = (nget nodes (o + 1 + sy) -. oy) *. iy and fy = (nget nodes (o + 4 - sy) -. oy) *. iy in
+  let nz = (nget nodes (o + 2 + sz) -. oz) *. iz and fz = (nget nodes (o + 5 - sz) -. oz) *. iz in
+  let lo = fmax (fmax nx ny) (fmax nz t0) in
+  let hi = fmin (fmin fx fy) (fmin fz t1) in
   lo <= hi
 
-let inv d = if d = 0. then 1e300 else 1. /. d
+let[@inline] inv d = if d = 0. then 1e300 else 1. /. d
 
-let nearest b (r : Ray.t) tmin (h : Hit.t) f =
-  if Bigarray.Array1.dim b.nodes > 0 then begin
-    let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
-    let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
-    let stack = Array.make b.depth 0 in
-    let sp = ref 0 and k = ref 0 and go = ref true in
-    let nodes = b.nodes in
-    while !go do
-      let kk = !k in
-      if box_hit nodes kk ox oy oz ix iy iz tmin h.t then begin
+(* Traversal stacks: one growable int array per domain, shared by nested
+   traversals (a union's BVH inside the scene's, a mesh's inside a
+   union's), each using the slots above the one that called it. A
+   traversal keeps the array it started with: when a nested one grows the
+   stack, the outer one's slots stay valid in the old array. *)
+type stack = { mutable slots : int array; mutable dist : Float.Array.t; mutable top : int }
+
+let stack_key =
+  Domain.DLS.new_key (fun () -> { slots = Array.make 256 0; dist = Float.Array.make 256 0.; top = 0 })
+
+let[@inline] reserve st n =
+  let base = st.top in
+  if base + n > Array.length st.slots then begin
+    let a = Array.make (2 * (base + n)) 0 and d = Float.Array.make (2 * (base + n)) 0. in
+    Array.blit st.slots 0 a 0 base;
+    Float.Array.blit st.dist 0 d 0 base;
+    st.slots <- a;
+    st.dist <- d
+  end;
+  st.top <- base + n;
+  base
+
+(* Entry distance of the ray into box k within (t0, t1), or infinity. *)
+let[@inline] box_entry (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
+  let t0 = t0 +. 0. and t1 = t1 +. 0. in
+  let o = 8 * k in
+  let nx = (nget nodes (o + sx) -. ox) *. ix and fx = (nget nodes (o + 3 - sx) -. ox) *. ix in
+  let ny = (nget nodes (o + 1 + sy) -. oy) *. iy and fy = (nget nodes (o + 4 - sy) -. oy) *. iy in
+  let nz = (nget nodes (o + 2 + sz) -. oz) *. iz and fz = (nget nodes (o + 5 - sz) -. oz) *. iz in
+  let lo = fmax (fmax nx ny) (fmax nz t0) in
+  let hi = fmin (fmin fx fy) (fmin fz t1) in
+  if lo <= hi then lo else infinity
+
+(* Never inlined (nor [iter_s]): a caller passing a constant [tmin] would
+   have it unboxed by the inliner and boxed again at every leaf call.
+   Children are tested when their parent is reached: the nearer one hit is
+   visited next, the farther one pushed with its entry distance, and popped
+   only if still in front of the nearest hit found meanwhile. *)
+let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
+  let nodes = b.nodes in
+  if Bigarray.Array1.dim nodes = 0 then false
+  else begin
+    let ox = r.ox and oy = r.oy and oz = r.oz in
+    let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
+    if box_entry nodes 0 sx sy sz ox oy oz ix iy iz tmin h.t = infinity then false
+    else begin
+      let st = Domain.DLS.get stack_key in
+      let base = reserve st b.depth in
+      let stack = st.slots and dist = st.dist in
+      let sp = ref base and k = ref 0 and go = ref true and found = ref false in
+      while !go do
+        let kk = !k in
         let c = int_of_float (nget nodes ((8 * kk) + 7)) in
-        if c > 0 then begin
-          let first = int_of_float (nget nodes ((8 * kk) + 6)) in
-          for j = first to first + c - 1 do
-            f (Array.unsafe_get b.prims j)
-          done;
-          if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+        let pop =
+          if c > 0 then begin
+            let first = int_of_float (nget nodes ((8 * kk) + 6)) in
+            for j = first to first + c - 1 do
+              if f c1 c2 r tmin h (Array.unsafe_get b.prims j) then found := true
+            done;
+            true
+          end
+          else begin
+            let left = kk + 1 and right = int_of_float (nget nodes ((8 * kk) + 6)) in
+            let tl = box_entry nodes left sx sy sz ox oy oz ix iy iz tmin h.t
+            and tr = box_entry nodes right sx sy sz ox oy oz ix iy iz tmin h.t in
+            if tl < infinity then begin
+              if tr < infinity then begin
+                if tl <= tr then (
+                  Array.unsafe_set stack !sp right;
+                  Float.Array.unsafe_set dist !sp tr;
+                  k := left)
+                else (
+                  Array.unsafe_set stack !sp left;
+                  Float.Array.unsafe_set dist !sp tl;
+                  k := right);
+                incr sp
+              end
+              else k := left;
+              false
+            end
+            else if tr < infinity then (
+              k := right;
+              false)
+            else true
+          end
+        in
+        if pop then begin
+          let searching = ref true in
+          while !searching do
+            if !sp = base then (
+              searching := false;
+              go := false)
+            else begin
+              decr sp;
+              if Float.Array.unsafe_get dist !sp <= h.t then (
+                k := Array.unsafe_get stack !sp;
+                searching := false)
+            end
+          done
         end
-        else begin
-          let right = int_of_float (nget nodes ((8 * kk) + 6)) in
-          let neg = match c with -1 -> ix < 0. | -2 -> iy < 0. | _ -> iz < 0. in
-          if neg then (stack.(!sp) <- kk + 1; k := right)
-          else (stack.(!sp) <- right; k := kk + 1);
-          incr sp
-        end
-      end
-      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
-    done
+      done;
+      st.top <- base;
+      !found
+    end
   end
 
-let iter b (r : Ray.t) tmin tmax f =
-  if Bigarray.Array1.dim b.nodes = 0 then true
+let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
+  let nodes = b.nodes in
+  if Bigarray.Array1.dim nodes = 0 then true
   else begin
-    let ox = r.origin.x and oy = r.origin.y and oz = r.origin.z in
-    let ix = inv r.dir.x and iy = inv r.dir.y and iz = inv r.dir.z in
-    let stack = Array.make b.depth 0 in
-    let sp = ref 0 and k = ref 0 and go = ref true and ok = ref true in
-    let nodes = b.nodes in
+    let ox = r.ox and oy = r.oy and oz = r.oz in
+    let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
+    let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
+    let st = Domain.DLS.get stack_key in
+    let base = reserve st b.depth in
+    let stack = st.slots in
+    let sp = ref base and k = ref 0 and go = ref true and ok = ref true in
     while !go do
       let kk = !k in
-      if box_hit nodes kk ox oy oz ix iy iz tmin tmax then begin
+      if box_hit nodes kk sx sy sz ox oy oz ix iy iz tmin tmax then begin
         let c = int_of_float (nget nodes ((8 * kk) + 7)) in
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
-          while !j < first + c && f (Array.unsafe_get b.prims !j) do incr j done;
-          if !j < first + c then (ok := false; go := false) else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+          while !j < first + c && f c1 c2 r tmin tmax (Array.unsafe_get b.prims !j) do incr j done;
+          if !j < first + c then (ok := false; go := false)
+          else if !sp = base then go := false
+          else (decr sp; k := Array.unsafe_get stack !sp)
         end
         else begin
-          stack.(!sp) <- int_of_float (nget nodes ((8 * kk) + 6));
+          Array.unsafe_set stack !sp (int_of_float (nget nodes ((8 * kk) + 6)));
           incr sp;
           k := kk + 1
         end
       end
-      else if !sp = 0 then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+      else if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
     done;
+    st.top <- base;
     !ok
   end
+
+let nearest b r tmin h f =
+  ignore (nearest_s b (Ray.of_ray r) tmin h f () (fun f () _ _ _ i -> f i; false))
+
+let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
 
 let renumber b = ({ b with prims = Array.init (Array.length b.prims) Fun.id }, Array.copy b.prims)
 

@@ -31,12 +31,27 @@ val nearest : t -> Ray.t -> float -> Hit.t -> (int -> unit) -> unit
 (** [nearest b ray tmin h f] calls [f i] for each primitive [i] whose leaf
     box meets the ray within [(tmin, h.t)], nearer boxes first; [f] is
     expected to lower [h.t] when it finds a closer hit, which prunes the
-    rest of the walk. Allocates one small stack per call. *)
+    rest of the walk. Allocates (a closure, a ray copy): {!nearest_s} is
+    the allocation-free form. *)
 
 val iter : t -> Ray.t -> float -> float -> (int -> bool) -> bool
 (** [iter b ray tmin tmax f] calls [f i] for primitives whose leaf box meets
     the ray within [(tmin, tmax)], in no particular order, until [f]
     returns [false]; then returns [false]. *)
+
+val nearest_s :
+  t -> Ray.scratch -> float -> Hit.t -> 'a -> 'b -> ('a -> 'b -> Ray.scratch -> float -> Hit.t -> int -> bool) -> bool
+(** [nearest_s b ray tmin h c1 c2 f]: as {!nearest}, calling [f c1 c2 ray
+    tmin h i], which says whether it found a hit; true when some call did.
+    With [f] a closed (top-level) function and the contexts [c1], [c2]
+    already built, the walk allocates nothing: its stack is a per-domain
+    array shared with nested walks started from [f]. *)
+
+val iter_s :
+  t -> Ray.scratch -> float -> float -> 'a -> 'b ->
+  ('a -> 'b -> Ray.scratch -> float -> float -> int -> bool) -> bool
+(** [iter_s b ray tmin tmax c1 c2 f]: as {!iter}, calling [f c1 c2 ray tmin
+    tmax i]; allocation-free like {!nearest_s}. *)
 
 val renumber : t -> t * int array
 (** [renumber b] is [(b', order)]: the same tree calling back with

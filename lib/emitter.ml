@@ -1,3 +1,6 @@
+(* if-based min/max: Float.min/max order NaN and -0 through a C call *)
+let[@inline] fmax (a : float) b = if a >= b then a else b
+
 type t =
   | Delta of Light.t
   | Area of { light : Light.t; axis1 : Vec3.t; axis2 : Vec3.t }
@@ -8,7 +11,7 @@ let emission (o : Object.t) p =
   | [] -> Color.black
   | (layer : Texture.layer) :: _ ->
       let pc = Pigment.eval layer.pigment p in
-      let alpha = Float.max 0. (1. -. pc.filter -. pc.transmit) in
+      let alpha = fmax 0. (1. -. pc.filter -. pc.transmit) in
       Color.scale alpha (Color.mul pc.c layer.finish.emission)
 
 let emissive (o : Object.t) =
@@ -24,7 +27,7 @@ let world_sphere (o : Object.t) =
       and y = Transform.vector o.xform Vec3.unit_y
       and z = Transform.vector o.xform Vec3.unit_z in
       let lx = Vec3.length x in
-      let near a b = Float.abs (a -. b) <= 1e-9 *. Float.max 1. lx in
+      let near a b = Float.abs (a -. b) <= 1e-9 *. fmax 1. lx in
       if near (Vec3.length y) lx && near (Vec3.length z) lx
          && near (Vec3.dot x y) 0. && near (Vec3.dot y z) 0. && near (Vec3.dot x z) 0.
       then Some (Transform.point o.xform center, radius *. lx)
@@ -53,7 +56,7 @@ let point_light (l : Light.t) pos p =
   if att <= 0. || dist <= 0. then None
   else Some { wi; dist; value = Color.scale (Float.pi *. att) l.color; pdf = 0. }
 
-let cos_max r d = Float.sqrt (Float.max 0. (1. -. (r *. r /. (d *. d))))
+let cos_max r d = Float.sqrt (fmax 0. (1. -. (r *. r /. (d *. d))))
 
 let sample e p u v =
   match e with
@@ -69,7 +72,7 @@ let sample e p u v =
         let cm = cos_max radius d in
         let c = 1. -. (u *. (1. -. cm)) in
         let wi =
-          let s = Float.sqrt (Float.max 0. (1. -. (c *. c))) and phi = two_pi *. v in
+          let s = Float.sqrt (fmax 0. (1. -. (c *. c))) and phi = two_pi *. v in
           let t, b = Bsdf.basis (Vec3.scale (1. /. d) to_c) in
           Vec3.add
             (Vec3.add (Vec3.scale (s *. Float.cos phi) t) (Vec3.scale (s *. Float.sin phi) b))
@@ -79,7 +82,7 @@ let sample e p u v =
       else
         (* inside: uniform by area *)
         let z = 1. -. (2. *. u) in
-        let s = Float.sqrt (Float.max 0. (1. -. (z *. z))) and phi = two_pi *. v in
+        let s = Float.sqrt (fmax 0. (1. -. (z *. z))) and phi = two_pi *. v in
         let nq = Vec3.make (s *. Float.cos phi) (s *. Float.sin phi) z in
         let q = Vec3.madd center radius nq in
         let w = Vec3.sub q p in

@@ -1,5 +1,10 @@
 open Color
 
+(* if-based min/max: Float.min/max order NaN and -0 through a C call *)
+let[@inline] fmax (a : float) b = if a >= b then a else b
+let[@inline] fmin (a : float) b = if a <= b then a else b
+let[@inline] maxc (c : Color.t) = fmax c.r (fmax c.g c.b)
+
 type lobe =
   | Lambert of Color.t
   | Mirror of Color.t
@@ -17,12 +22,12 @@ let is_delta = function
   | Lambert _ | Phong _ | Blinn _ | Glossy _ -> false
 
 let weight = function
-  | Lambert a -> max_channel a
-  | Mirror c -> max_channel c
-  | Phong { k; exponent } -> 2. *. max_channel k /. (exponent +. 1.)
-  | Blinn { k; exponent } -> 8. *. max_channel k /. (exponent +. 1.)
-  | Glossy { color; _ } -> max_channel color
-  | Glass { reflect; transmit; _ } -> Float.max (max_channel reflect) (max_channel transmit)
+  | Lambert a -> maxc a
+  | Mirror c -> maxc c
+  | Phong { k; exponent } -> 2. *. maxc k /. (exponent +. 1.)
+  | Blinn { k; exponent } -> 8. *. maxc k /. (exponent +. 1.)
+  | Glossy { color; _ } -> maxc color
+  | Glass { reflect; transmit; _ } -> fmax (maxc reflect) (maxc transmit)
 
 (* Unpolarised Fresnel reflectance for a relative index n = n_t / n_i
    (POV-Ray's formula, pov-facts 5.5); 1 past the critical angle. *)
@@ -36,8 +41,8 @@ let fresnel_pov n c =
 
 (* POV-Ray's metallic factor F, x = angle / 90 degrees. *)
 let metallic_f c =
-  let x = Float.acos (Float.min 1. (Float.abs c)) /. (Float.pi /. 2.) in
-  Float.min 1. (Float.max 0. ((0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903))
+  let x = Float.acos (fmin 1. (Float.abs c)) /. (Float.pi /. 2.) in
+  fmin 1. (fmax 0. ((0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903))
 
 let tint m c (p : Color.t) =
   if m = 0. then white
@@ -48,11 +53,21 @@ let tint m c (p : Color.t) =
 (* POV-Ray's reflection amount Kr at the viewing cosine c. *)
 let reflectivity (r : Finish.reflection) ior c =
   let t =
-    if r.fresnel then fresnel_pov ior c else Float.pow (Float.max 0. (1. -. c)) r.falloff
+    if r.fresnel then fresnel_pov ior c else Float.pow (fmax 0. (1. -. c)) r.falloff
   in
   add r.rmin (scale t (add r.rmax (scale (-1.) r.rmin)))
 
-let clamp01 x = Float.min 1. (Float.max 0. x)
+let clamp01 x = fmin 1. (fmax 0. x)
+
+(* At most five lobes: literal arrays are allocated inline, where
+   Array.of_list calls the runtime. *)
+let of_rev_list = function
+  | [] -> [||]
+  | [ a ] -> [| a |]
+  | [ b; a ] -> [| a; b |]
+  | [ c; b; a ] -> [| a; b; c |]
+  | [ d; c; b; a ] -> [| a; b; c; d |]
+  | l -> Array.of_list (List.rev l)
 
 let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
   match tex with
@@ -64,6 +79,7 @@ let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
       let tr = clamp01 (pc.filter +. pc.transmit) in
       let alpha = 1. -. tr in
       let refracts = tr > 0. && inter.ior <> 1. in
+      (* at most five lobes, kept in order when their weight is positive *)
       let lobes = ref [] in
       let push l = if weight l > 0. then lobes := l :: !lobes in
       (* the opaque part *)
@@ -90,4 +106,4 @@ let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
         let eta = if refracts then (if entering then 1. /. inter.ior else inter.ior) else 1. in
         push (Glass { eta; reflect = gray tr; transmit })
       end;
-      { lobes = Array.of_list (List.rev !lobes); emission = scale alpha (mul pig f.emission) }
+      { lobes = of_rev_list !lobes; emission = scale alpha (mul pig f.emission) }

@@ -11,17 +11,17 @@ type t = {
 
 let fget = Float.Array.unsafe_get
 
-let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.t) tmin (h : Hit.t) =
+let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.t) =
   let e1x = bx -. ax and e1y = by -. ay and e1z = bz -. az in
   let e2x = cx -. ax and e2y = cy -. ay and e2z = cz -. az in
-  let dx = r.dir.x and dy = r.dir.y and dz = r.dir.z in
+  let dx = r.dx and dy = r.dy and dz = r.dz in
   let px = (dy *. e2z) -. (dz *. e2y) and py = (dz *. e2x) -. (dx *. e2z)
   and pz = (dx *. e2y) -. (dy *. e2x) in
   let det = (e1x *. px) +. (e1y *. py) +. (e1z *. pz) in
   if det = 0. then false
   else
     let inv = 1. /. det in
-    let sx = r.origin.x -. ax and sy = r.origin.y -. ay and sz = r.origin.z -. az in
+    let sx = r.ox -. ax and sy = r.oy -. ay and sz = r.oz -. az in
     let u = ((sx *. px) +. (sy *. py) +. (sz *. pz)) *. inv in
     if u < 0. || u > 1. then false
     else
@@ -111,13 +111,14 @@ let[@inline] tri m i r tmin h =
   tri_hit (fget p a) (fget p (a + 1)) (fget p (a + 2)) (fget p b) (fget p (b + 1)) (fget p (b + 2))
     (fget p c) (fget p (c + 1)) (fget p (c + 2)) r tmin h
 
-let hit m r tmin (h : Hit.t) =
-  let found = ref false in
-  Bvh.nearest m.bvh r tmin h (fun i ->
-      if tri m i r tmin h then (
-        h.id <- float i;
-        found := true));
-  !found
+let leaf m () r tmin (h : Hit.t) i =
+  if tri m i r tmin h then (
+    h.id <- float i;
+    true)
+  else false
+
+let hit_s m r tmin h = Bvh.nearest_s m.bvh r tmin h m () leaf
+let hit m r tmin h = hit_s m (Ray.of_ray r) tmin h
 
 let nrm m i = Vec3.make (fget m.normals (3 * i)) (fget m.normals ((3 * i) + 1)) (fget m.normals ((3 * i) + 2))
 
@@ -134,11 +135,11 @@ let inside m p =
   match m.inside_vector with
   | None -> false
   | Some d ->
-      let r = Ray.make p d in
+      let r = Ray.of_ray (Ray.make p d) in
       let count = ref 0 in
       let h = Hit.create infinity in
       ignore
-        (Bvh.iter m.bvh r 0. infinity (fun i ->
+        (Bvh.iter_s m.bvh r 0. infinity () () (fun () () _ _ _ i ->
              h.t <- infinity;
              if tri m i r 0. h then incr count;
              true));

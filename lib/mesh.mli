@@ -31,6 +31,9 @@ val hit : t -> Ray.t -> float -> Hit.t -> bool
 (** Nearest triangle in [(tmin, h.t)]: sets [h.t], the barycentric [h.u],
     [h.v] and the triangle index [h.id]. *)
 
+val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
+(** {!hit} on a scratch ray, allocation-free. *)
+
 val normal : t -> Hit.t -> Vec3.t
 (** Unit normal of the triangle recorded in the hit (interpolated for
     smooth triangles). *)
@@ -39,7 +42,7 @@ val inside : t -> Vec3.t -> bool
 
 val tri_hit :
   float -> float -> float -> float -> float -> float -> float -> float -> float ->
-  Ray.t -> float -> Hit.t -> bool
+  Ray.scratch -> float -> Hit.t -> bool
 (** [tri_hit ax ay az bx by bz cx cy cz ray tmin h]: Moller-Trumbore for one
     triangle; on a hit in [(tmin, h.t)] sets [h.t], [h.u] (weight of b),
     [h.v] (weight of c). *)

@@ -8,6 +8,7 @@ type t = {
   clip : t array;
   bounds : (Vec3.t * Vec3.t) option;
   index : index option;
+  inv : Float.Array.t;
 }
 
 and geom = Prim of Shape.t | Union of t array | Intersection of t array | Merge of t array
@@ -77,11 +78,21 @@ let fold xform shape =
       | None -> (xform, shape))
   | _ -> (xform, shape)
 
+(* The inverse of [xf] as a 3x4 row-major matrix, translation last (what
+   a per-ray transform reads without allocating). *)
+let inverse_matrix xf =
+  let c0 = Transform.inv_vector xf Vec3.unit_x and c1 = Transform.inv_vector xf Vec3.unit_y
+  and c2 = Transform.inv_vector xf Vec3.unit_z and t = Transform.inv_point xf Vec3.zero in
+  Float.Array.of_list [ c0.x; c1.x; c2.x; c0.y; c1.y; c2.y; c0.z; c1.z; c2.z; t.x; t.y; t.z ]
+
+let identity_matrix = inverse_matrix Transform.identity
+
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
   let xform, shape = fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
-  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b; index = None }
+  let inv = if Transform.is_identity xform then identity_matrix else inverse_matrix xform in
+  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b; index = None; inv }
 
 let node geom clip b =
   {
@@ -94,6 +105,7 @@ let node geom clip b =
     clip;
     bounds = clip_box clip b;
     index = None;
+    inv = identity_matrix;
   }
 
 (* A BVH over the children of a large union. *)
@@ -141,116 +153,206 @@ let rec invert o =
   | Union cs | Merge cs -> intersection ~clip:o.clip (Array.map invert cs)
   | Intersection cs -> merge ~clip:o.clip (Array.map invert cs)
 
-type found = { mutable leaf : t }
+type found = { mutable leaf : t; local : Ray.scratch; pt : Ray.scratch }
 
-let found o = { leaf = o }
+let found o = { leaf = o; local = Ray.scratch (); pt = Ray.scratch () }
 
 let next_tmin (r : Ray.t) t =
   let dl = Vec3.length r.dir in
   let step = 1e-9 *. (1. +. (Float.abs t *. dl)) /. dl in
   Float.max (t +. step) (Float.succ t)
 
-let rec inside o p =
+let[@inline] next_tmin_s (r : Ray.scratch) t =
+  let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
+  let step = 1e-9 *. (1. +. (Float.abs t *. dl)) /. dl in
+  Float.max (t +. step) (Float.succ t)
+
+(* [inside_s o f]: the inside test at the point held in [f.pt]; uses
+   [f.local] for the point in a leaf's own space. *)
+let rec inside_s o f =
   let raw =
     match o.geom with
     | Prim s ->
-        let q = if Transform.is_identity o.xform then p else Transform.inv_point o.xform p in
-        Shape.inside s q <> o.inverted
-    | Union cs | Merge cs -> Array.exists (fun c -> inside c p) cs
-    | Intersection cs -> Array.for_all (fun c -> inside c p) cs
+        let p = f.pt in
+        if Transform.is_identity o.xform then Shape.inside_s s p <> o.inverted
+        else begin
+          let m = o.inv and l = f.local in
+          let g = Float.Array.unsafe_get in
+          l.ox <- (g m 0 *. p.ox) +. (g m 1 *. p.oy) +. (g m 2 *. p.oz) +. g m 9;
+          l.oy <- (g m 3 *. p.ox) +. (g m 4 *. p.oy) +. (g m 5 *. p.oz) +. g m 10;
+          l.oz <- (g m 6 *. p.ox) +. (g m 7 *. p.oy) +. (g m 8 *. p.oz) +. g m 11;
+          Shape.inside_s s l <> o.inverted
+        end
+    | Union cs | Merge cs -> any_inside cs f 0
+    | Intersection cs -> all_inside cs f 0 (-1)
   in
-  raw && Array.for_all (fun c -> inside c p) o.clip
+  raw && all_inside o.clip f 0 (-1)
 
-let others_all cs i p pred =
-  let ok = ref true and j = ref 0 in
-  while !ok && !j < Array.length cs do
-    if !j <> i && not (pred cs.(!j) p) then ok := false;
-    incr j
-  done;
-  !ok
+and any_inside cs f i = i < Array.length cs && (inside_s (Array.unsafe_get cs i) f || any_inside cs f (i + 1))
+
+(* every child but [skip] *)
+and all_inside cs f i skip =
+  i >= Array.length cs || ((i = skip || inside_s (Array.unsafe_get cs i) f) && all_inside cs f (i + 1) skip)
+
+and none_inside cs f i skip =
+  i >= Array.length cs || ((i = skip || not (inside_s (Array.unsafe_get cs i) f)) && none_inside cs f (i + 1) skip)
+
+let inside o (p : Vec3.t) =
+  let f = found o in
+  f.pt.ox <- p.x;
+  f.pt.oy <- p.y;
+  f.pt.oz <- p.z;
+  inside_s o f
 
 (* Whether the ray misses the object's box within (tmin, tmax). *)
-let box_missed o (r : Ray.t) tmin tmax =
+let box_missed o (r : Ray.scratch) tmin tmax =
   match o.bounds with
   | None -> false
   | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
-      let t0 = ref tmin and t1 = ref tmax in
-      let slab o d l u =
-        if d = 0. then (if o < l || o > u then t1 := neg_infinity)
-        else
-          let a = (l -. o) /. d and b = (u -. o) /. d in
-          if a < b then (if a > !t0 then t0 := a; if b < !t1 then t1 := b)
-          else (if b > !t0 then t0 := b; if a < !t1 then t1 := a)
+      let ax = (lo.x -. r.ox) /. r.dx and bx = (hi.x -. r.ox) /. r.dx in
+      let ay = (lo.y -. r.oy) /. r.dy and by = (hi.y -. r.oy) /. r.dy in
+      let az = (lo.z -. r.oz) /. r.dz and bz = (hi.z -. r.oz) /. r.dz in
+      let out o l u = o < l || o > u in
+      (r.dx = 0. && out r.ox lo.x hi.x)
+      || (r.dy = 0. && out r.oy lo.y hi.y)
+      || (r.dz = 0. && out r.oz lo.z hi.z)
+      ||
+      let t0 =
+        Float.max tmin
+          (Float.max
+             (if r.dx = 0. then neg_infinity else Float.min ax bx)
+             (Float.max (if r.dy = 0. then neg_infinity else Float.min ay by)
+                (if r.dz = 0. then neg_infinity else Float.min az bz)))
+      and t1 =
+        Float.min tmax
+          (Float.min
+             (if r.dx = 0. then infinity else Float.max ax bx)
+             (Float.min (if r.dy = 0. then infinity else Float.max ay by)
+                (if r.dz = 0. then infinity else Float.max az bz)))
       in
-      slab r.origin.x r.dir.x lo.x hi.x;
-      slab r.origin.y r.dir.y lo.y hi.y;
-      slab r.origin.z r.dir.z lo.z hi.z;
-      !t0 > !t1
+      t0 > t1
 
-let rec hit o (r : Ray.t) tmin (h : Hit.t) f =
-  if Array.length o.clip = 0 then raw_hit o r tmin h f
-  else first_accepted raw_hit o r tmin h f (fun p -> Array.for_all (fun c -> inside c p) o.clip)
+(* Kinds of acceptance for [first_accepted]. *)
+let by_clip = 0 and by_intersection = 1 and by_merge = 2
+
+let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
+  if Array.length o.clip = 0 then raw_hit o r tmin h f else first_accepted true o r tmin h f by_clip [||] 0
 
 and raw_hit o r tmin h f =
   match o.geom with
   | Prim s ->
-      let r = if Transform.is_identity o.xform then r else
-          Ray.make (Transform.inv_point o.xform r.origin) (Transform.inv_vector o.xform r.dir) in
-      if Shape.hit s r tmin h then (
-        f.leaf <- o;
-        true)
-      else false
+      let got =
+        if Transform.is_identity o.xform then Shape.hit_s s r tmin h
+        else begin
+          let m = o.inv and l = f.local in
+          let g = Float.Array.unsafe_get in
+          l.ox <- (g m 0 *. r.ox) +. (g m 1 *. r.oy) +. (g m 2 *. r.oz) +. g m 9;
+          l.oy <- (g m 3 *. r.ox) +. (g m 4 *. r.oy) +. (g m 5 *. r.oz) +. g m 10;
+          l.oz <- (g m 6 *. r.ox) +. (g m 7 *. r.oy) +. (g m 8 *. r.oz) +. g m 11;
+          l.dx <- (g m 0 *. r.dx) +. (g m 1 *. r.dy) +. (g m 2 *. r.dz);
+          l.dy <- (g m 3 *. r.dx) +. (g m 4 *. r.dy) +. (g m 5 *. r.dz);
+          l.dz <- (g m 6 *. r.dx) +. (g m 7 *. r.dy) +. (g m 8 *. r.dz);
+          Shape.hit_s s l tmin h
+        end
+      in
+      if got then f.leaf <- o;
+      got
   | Union cs -> (
-      let any = ref false in
       match o.index with
       | None ->
+          let any = ref false in
           for i = 0 to Array.length cs - 1 do
-            if (not (box_missed cs.(i) r tmin h.t)) && hit cs.(i) r tmin h f then any := true
+            let c = Array.unsafe_get cs i in
+            if (not (box_missed c r tmin h.t)) && hit_s c r tmin h f then any := true
           done;
           !any
       | Some x ->
-          Array.iter (fun c -> if hit c r tmin h f then any := true) x.unbounded;
-          Bvh.nearest x.bvh r tmin h (fun i -> if hit (Array.unsafe_get x.bounded i) r tmin h f then any := true);
-          !any)
-  | Intersection cs -> csg cs r tmin h f (fun i p -> others_all cs i p inside)
-  | Merge cs -> csg cs r tmin h f (fun i p -> others_all cs i p (fun c p -> not (inside c p)))
+          let any = ref false in
+          for i = 0 to Array.length x.unbounded - 1 do
+            if hit_s (Array.unsafe_get x.unbounded i) r tmin h f then any := true
+          done;
+          let b = Bvh.nearest_s x.bvh r tmin h x.bounded f union_leaf in
+          b || !any)
+  | Intersection cs -> csg cs r tmin h f by_intersection
+  | Merge cs -> csg cs r tmin h f by_merge
 
-(* Nearest crossing of child i kept by [keep i] (each child's surface
-   crossings are walked nearest first until one is kept). *)
-and csg cs r tmin h f keep =
+and union_leaf bounded f r tmin h i = hit_s (Array.unsafe_get bounded i) r tmin h f
+
+(* Nearest crossing of child i kept by the rule [kind] (each child's
+   surface crossings are walked nearest first until one is kept). *)
+and csg cs r tmin h f kind =
   let any = ref false in
   for i = 0 to Array.length cs - 1 do
-    if (not (box_missed cs.(i) r tmin h.t)) && first_accepted hit cs.(i) r tmin h f (keep i) then any := true
+    let c = Array.unsafe_get cs i in
+    if (not (box_missed c r tmin h.t)) && first_accepted false c r tmin h f kind cs i then any := true
   done;
   !any
 
-and first_accepted query o r tmin h f accept =
-  let tmp = Hit.create h.t and tf = found o in
-  let t0 = ref tmin and result = ref false and go = ref true in
+(* The walk works in [h] itself, restoring it (and [f.leaf]) when no
+   crossing is kept. [raw]: query [o] without its clip (the clip is the
+   rule); otherwise [o] is child [i] of [cs]. *)
+and first_accepted raw o r tmin h f kind cs i =
+  let t0 = h.t and u0 = h.u and v0 = h.v and id0 = h.id and leaf0 = f.leaf in
+  let result = ref false and go = ref true and first = ref true and tm = ref 0. in
   while !go do
-    tmp.t <- h.t;
-    if query o r !t0 tmp tf then
-      if accept (Ray.at r tmp.t) then (
-        Hit.copy_into tmp h;
-        f.leaf <- tf.leaf;
+    (* the first query passes [tmin] as it came: no float to box *)
+    let got = if !first then query raw o r tmin h f else query raw o r !tm h f in
+    first := false;
+    if got then begin
+      let t = h.t in
+      let p = f.pt in
+      p.ox <- r.ox +. (t *. r.dx);
+      p.oy <- r.oy +. (t *. r.dy);
+      p.oz <- r.oz +. (t *. r.dz);
+      let ok =
+        if kind = by_clip then all_inside o.clip f 0 (-1)
+        else if kind = by_intersection then all_inside cs f 0 i
+        else none_inside cs f 0 i
+      in
+      if ok then (
         result := true;
         go := false)
-      else t0 := next_tmin r tmp.t
+      else begin
+        h.t <- t0;
+        h.u <- u0;
+        h.v <- v0;
+        h.id <- id0;
+        f.leaf <- leaf0;
+        tm := next_tmin_s r t
+      end
+    end
     else go := false
   done;
   !result
+
+and query raw o r tm h f = if raw then raw_hit o r tm h f else hit_s o r tm h f
+
+let hit o r tmin h f = hit_s o (Ray.of_ray r) tmin h f
 
 let intersect o r tmin tmax =
   let h = Hit.create tmax in
   if hit o r tmin h (found o) then h.t else infinity
 
-let crossings o r tmin tmax f =
-  let h = Hit.create tmax and fd = found o in
-  let rec go t0 =
+(* [crossings_s o ray tmin tmax h f shadow g]: with [h] and [f] as scratch. *)
+let crossings_s o r tmin tmax (h : Hit.t) fd shadow g =
+  let ok = ref true and go = ref true and first = ref true and tm = ref 0. in
+  while !go do
     h.t <- tmax;
-    if hit o r t0 h fd then f fd.leaf h.t && go (next_tmin r h.t) else true
-  in
-  go tmin
+    let got = if !first then hit_s o r tmin h fd else hit_s o r !tm h fd in
+    first := false;
+    if got then begin
+      let leaf = fd.leaf and t = h.t in
+      if (shadow && leaf.no_shadow) || g leaf t then tm := next_tmin_s r t
+      else (
+        ok := false;
+        go := false)
+    end
+    else go := false
+  done;
+  !ok
+
+let crossings o r tmin tmax f =
+  crossings_s o (Ray.of_ray r) tmin tmax (Hit.create tmax) (found o) false f
 
 let normal o p h =
   match o.geom with

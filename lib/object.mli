@@ -18,6 +18,7 @@ type t = private {
   clip : t array;  (** [clipped_by]: surfaces outside any of these are removed *)
   bounds : (Vec3.t * Vec3.t) option;  (** world box; [None] when infinite *)
   index : index option;  (** a BVH over the children of a large union *)
+  inv : Float.Array.t;  (** leaves: the inverse of [xform], 3x4 row-major, translation last *)
 }
 
 and geom =
@@ -52,8 +53,10 @@ val invert : t -> t
     merge becomes an intersection of inverted children, an intersection a
     merge of inverted children). *)
 
-type found = { mutable leaf : t }
-(** Where a query writes the leaf it hit. *)
+type found = { mutable leaf : t; local : Ray.scratch; pt : Ray.scratch }
+(** Where a query writes the leaf it hit, with its scratch space: the ray
+    in a leaf's own space, a point for inside tests. One per domain and
+    query kind: a query allocates nothing. *)
 
 val found : t -> found
 
@@ -62,6 +65,11 @@ val hit : t -> Ray.t -> float -> Hit.t -> found -> bool
     [(tmin, h.t)] (world space; distances in units of [ray.dir]). On
     success sets [h] and [f.leaf]. *)
 
+val hit_s : t -> Ray.scratch -> float -> Hit.t -> found -> bool
+(** {!hit} on a scratch ray (which must not be [f.local] or [f.pt]);
+    allocates nothing, except a boxed float per crossing that a CSG or a
+    clip rejects. *)
+
 val intersect : t -> Ray.t -> float -> float -> float
 (** Nearest distance in [(tmin, tmax)], or [infinity]. *)
 
@@ -69,6 +77,12 @@ val crossings : t -> Ray.t -> float -> float -> (t -> float -> bool) -> bool
 (** [crossings o ray tmin tmax f] calls [f leaf t] on the crossings of
     [o]'s surface in [(tmin, tmax)], nearest first, until [f] returns
     [false] (then returns [false]). *)
+
+val crossings_s :
+  t -> Ray.scratch -> float -> float -> Hit.t -> found -> bool -> (t -> float -> bool) -> bool
+(** [crossings_s o ray tmin tmax h f shadow g]: {!crossings} on a scratch
+    ray with [h] and [f] as scratch; with [shadow], leaves marked
+    [no_shadow] are skipped. *)
 
 val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 (** [normal leaf p h]: outward unit world normal of a leaf at the world
@@ -83,3 +97,6 @@ val bounds : t -> (Vec3.t * Vec3.t) option
 val next_tmin : Ray.t -> float -> float
 (** [next_tmin ray t]: a distance just beyond [t], to look for the next
     crossing without finding the same one again. *)
+
+val next_tmin_s : Ray.scratch -> float -> float
+(** {!next_tmin} on a scratch ray. *)

@@ -1,11 +1,16 @@
 open Color
 
+(* if-based min/max: Float.min/max order NaN and -0 through a C call *)
+let[@inline] fmax (a : float) b = if a >= b then a else b
+let[@inline] fmin (a : float) b = if a <= b then a else b
+let[@inline] maxc (c : Color.t) = fmax c.r (fmax c.g c.b)
+
 type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool }
 
 let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
   { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee }
 
-let power a b =
+let[@inline] power a b =
   let a2 = a *. a and b2 = b *. b in
   if a2 +. b2 = 0. then 0. else a2 /. (a2 +. b2)
 
@@ -39,31 +44,31 @@ let d_lobe = 0 and d_dir = 1 and d_rr = 3 and d_env = 4 and d_light = 6
 let direct t sampler base (m : Material.t) p n wo =
   let s = t.scene in
   let acc = ref black in
-  Array.iteri
-    (fun i (e : Emitter.t) ->
-      let u = Sampler.get sampler (base + d_light + (2 * i))
-      and v = Sampler.get sampler (base + d_light + (2 * i) + 1) in
-      match Emitter.sample e p u v with
-      | None -> ()
-      | Some ls ->
-          let ci = Vec3.dot n ls.wi in
-          if ci > 0. then begin
-            let f = Bsdf.eval m ~n ~wo ~wi:ls.wi in
-            if not (is_black f) then
-              match e with
-              | Delta l | Area { light = l; _ } ->
-                  let tr = if l.shadowless then white else transmittance s p ls.wi ls.dist in
-                  acc := add !acc (scale ci (mul f (mul tr ls.value)))
-              | Sphere { obj; _ } -> (
-                  match Scene.intersect s (Ray.make p ls.wi) Ray.epsilon infinity with
-                  | Some h when h.obj == obj ->
-                      let le = Emitter.emission obj h.point in
-                      let pb = Bsdf.pdf m ~n ~wo ~wi:ls.wi in
-                      let w = power ls.pdf pb in
-                      acc := add !acc (scale (ci *. w /. ls.pdf) (mul f le))
-                  | _ -> ())
-          end)
-    t.emitters;
+  for i = 0 to Array.length t.emitters - 1 do
+    let e = Array.unsafe_get t.emitters i in
+    let u = Sampler.get sampler (base + d_light + (2 * i))
+    and v = Sampler.get sampler (base + d_light + (2 * i) + 1) in
+    match Emitter.sample e p u v with
+    | None -> ()
+    | Some ls ->
+        let ci = Vec3.dot n ls.wi in
+        if ci > 0. then begin
+          let f = Bsdf.eval m ~n ~wo ~wi:ls.wi in
+          if not (is_black f) then
+            match e with
+            | Delta l | Area { light = l; _ } ->
+                let tr = if l.shadowless then white else transmittance s p ls.wi ls.dist in
+                acc := add !acc (scale ci (mul f (mul tr ls.value)))
+            | Sphere { obj; _ } -> (
+                match Scene.intersect s (Ray.make p ls.wi) Ray.epsilon infinity with
+                | Some h when h.obj == obj ->
+                    let le = Emitter.emission obj h.point in
+                    let pb = Bsdf.pdf m ~n ~wo ~wi:ls.wi in
+                    let w = power ls.pdf pb in
+                    acc := add !acc (scale (ci *. w /. ls.pdf) (mul f le))
+                | _ -> ())
+        end
+  done;
   (* a uniform environment is sampled cosine-weighted about the normal *)
   let bg = s.background in
   if not (is_black bg) then begin
@@ -96,7 +101,7 @@ let li t sampler ~max_depth (ray : Ray.t) =
         let w =
           match prev with
           | Smooth { n; pdf; _ } when t.nee ->
-              power pdf (Float.max 0. (Vec3.dot n ray.dir) /. Float.pi)
+              power pdf (fmax 0. (Vec3.dot n ray.dir) /. Float.pi)
           | _ -> 1.
         in
         madd acc w (mul thr s.background)
@@ -138,7 +143,7 @@ let li t sampler ~max_depth (ray : Ray.t) =
           | None -> acc
           | Some bs ->
               let thr = mul thr bs.weight in
-              let q = if depth >= 3 then Float.min 0.95 (max_channel thr) else 1. in
+              let q = if depth >= 3 then fmin 0.95 (maxc thr) else 1. in
               if q <= 0. || Sampler.get sampler (base + d_rr) >= q then acc
               else
                 let prev =

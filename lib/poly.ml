@@ -1,4 +1,4 @@
-let newton3 a b c d t =
+let[@inline] newton3 a b c d t =
   let t = ref t in
   for _ = 1 to 3 do
     let f = (((a *. !t) +. b) *. !t +. c) *. !t +. d in
@@ -34,13 +34,13 @@ let cubic_roots a b c d =
   Array.sort Float.compare roots;
   roots
 
-let eval a b c d e t = ((((((a *. t) +. b) *. t) +. c) *. t) +. d) *. t +. e
-let deriv a b c d t = ((((4. *. a *. t) +. (3. *. b)) *. t) +. (2. *. c)) *. t +. d
+let[@inline] eval a b c d e t = ((((((a *. t) +. b) *. t) +. c) *. t) +. d) *. t +. e
+let[@inline] deriv a b c d t = ((((4. *. a *. t) +. (3. *. b)) *. t) +. (2. *. c)) *. t +. d
 
 (* A root of the polynomial in [lo, hi] where fl and fh have opposite
    signs: Newton steps kept inside the shrinking bracket, bisection when a
    step leaves it. *)
-let bracketed a b c d e lo hi fl =
+let[@inline] bracketed a b c d e lo hi fl =
   let lo = ref lo and hi = ref hi and fl = ref fl in
   let t = ref (0.5 *. (!lo +. !hi)) in
   let n = ref 0 in
@@ -57,22 +57,53 @@ let bracketed a b c d e lo hi fl =
   done;
   !t
 
+(* The critical points (roots of the derivative) split [lo, hi] into
+   monotone pieces; the first piece whose ends differ in sign holds the
+   first root. Written without arrays or lists: it runs per ray. *)
 let first_quartic_root a b c d e lo hi =
   if not (hi > lo) then infinity
-  else
-    let crit = cubic_roots (4. *. a) (3. *. b) (2. *. c) d in
-    let pts = Array.append [| lo |] (Array.append (Array.of_list (List.filter (fun x -> x > lo && x < hi) (Array.to_list crit))) [| hi |]) in
-    let result = ref infinity in
-    let i = ref 0 in
-    let n = Array.length pts in
-    while !result = infinity && !i < n - 1 do
-      let p = pts.(!i) and q = pts.(!i + 1) in
-      let fp = eval a b c d e p and fq = eval a b c d e q in
-      if fq = 0. && q < hi then result := q
-      else if (fp < 0.) <> (fq < 0.) && fp <> 0. then begin
-        let t = bracketed a b c d e p q fp in
-        if t > lo && t < hi then result := t
+  else begin
+    (* roots of 4a t^3 + 3b t^2 + 2c t + d, as in [cubic_roots]; absent
+       ones are infinity *)
+    let ca = 4. *. a and cb = 3. *. b and cc = 2. *. c in
+    let p = cb /. ca and q = cc /. ca and r = d /. ca in
+    let p3 = p /. 3. in
+    let qq = (q -. (p *. p3)) /. 3. in
+    let rr = ((((2. *. p3 *. p3) -. q) *. p3) +. r) /. 2. in
+    let disc = (rr *. rr) +. (qq *. qq *. qq) in
+    let r0, r1, r2 =
+      if disc > 0. then
+        let sd = Float.sqrt disc in
+        (Float.cbrt (-.rr +. sd) +. Float.cbrt (-.rr -. sd) -. p3, infinity, infinity)
+      else if qq = 0. then (-.p3, infinity, infinity)
+      else
+        let m = 2. *. Float.sqrt (-.qq) in
+        let cosv = Float.max (-1.) (Float.min 1. (-.rr /. Float.sqrt (-.(qq *. qq *. qq)))) in
+        let th = Float.acos cosv /. 3. in
+        let k = 2. *. Float.pi /. 3. in
+        ((m *. Float.cos th) -. p3, (m *. Float.cos (th +. k)) -. p3, (m *. Float.cos (th -. k)) -. p3)
+    in
+    let r0 = newton3 ca cb cc d r0 in
+    let r1 = if r1 = infinity then r1 else newton3 ca cb cc d r1 in
+    let r2 = if r2 = infinity then r2 else newton3 ca cb cc d r2 in
+    (* sort the three *)
+    let x0 = if r0 < r1 then r0 else r1 and x1 = if r0 < r1 then r1 else r0 in
+    let y1 = if x1 < r2 then x1 else r2 and s2 = if x1 < r2 then r2 else x1 in
+    let s0 = if x0 < y1 then x0 else y1 and s1 = if x0 < y1 then y1 else x0 in
+    let result = ref infinity and prev = ref lo and k = ref 0 in
+    while !result = infinity && !k < 4 do
+      let q = match !k with 0 -> s0 | 1 -> s1 | 2 -> s2 | _ -> hi in
+      if !k = 3 || (q > lo && q < hi) then begin
+        let p = !prev in
+        let fp = eval a b c d e p and fq = eval a b c d e q in
+        if fq = 0. && q < hi then result := q
+        else if (fp < 0.) <> (fq < 0.) && fp <> 0. then begin
+          let t = bracketed a b c d e p q fp in
+          if t > lo && t < hi then result := t
+        end;
+        prev := q
       end;
-      incr i
+      incr k
     done;
     !result
+  end

@@ -4,3 +4,27 @@ let make origin dir = { origin; dir }
 let[@inline] at r t = Vec3.madd r.origin t r.dir
 let epsilon = 1e-6
 let shadow_epsilon = 1e-3
+
+type scratch = {
+  mutable ox : float;
+  mutable oy : float;
+  mutable oz : float;
+  mutable dx : float;
+  mutable dy : float;
+  mutable dz : float;
+}
+
+let scratch () = { ox = 0.; oy = 0.; oz = 0.; dx = 0.; dy = 0.; dz = 1. }
+
+let[@inline] load s r =
+  s.ox <- r.origin.x;
+  s.oy <- r.origin.y;
+  s.oz <- r.origin.z;
+  s.dx <- r.dir.x;
+  s.dy <- r.dir.y;
+  s.dz <- r.dir.z
+
+let of_ray r =
+  let s = scratch () in
+  load s r;
+  s

@@ -13,3 +13,23 @@ val epsilon : float
 
 val shadow_epsilon : float
 (** POV-Ray ignores shadow-ray hits closer than this (1e-3). *)
+
+(** A ray as six mutable floats, stored flat: what the intersection code
+    reads. One per domain is loaded from a {!t} per query (or written by a
+    transform into object space), so queries allocate nothing per ray.
+    Also used to hold a point (origin fields) for inside tests. *)
+type scratch = {
+  mutable ox : float;
+  mutable oy : float;
+  mutable oz : float;
+  mutable dx : float;
+  mutable dy : float;
+  mutable dz : float;
+}
+
+val scratch : unit -> scratch
+val load : scratch -> t -> unit
+(** [load s r] copies [r] into [s]. *)
+
+val of_ray : t -> scratch
+(** A fresh scratch holding [r] (allocates: for tests and cold paths). *)

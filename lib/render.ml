@@ -24,6 +24,24 @@ let shuffle seed a =
     a.(j) <- x
   done
 
+(* Every minor collection stops all domains at once: with each domain
+   allocating into the default 256k-word minor heap, the stops are
+   frequent, and with more domains than cores a descheduled domain holds
+   the others at each one. A larger minor heap in every rendering domain
+   (Gc.set acts on the calling domain only) makes them rare; the calling
+   domain gets its own size back afterwards. One domain never waits for
+   another: it keeps its heap (a smaller one stays in cache). *)
+let minor_words = 4 * 1024 * 1024 (* 32 MB per domain *)
+
+let big_minor = Domain.DLS.new_key (fun () -> false)
+
+let ensure_minor_heap () =
+  if not (Domain.DLS.get big_minor) then begin
+    Domain.DLS.set big_minor true;
+    let g = Gc.get () in
+    if g.minor_heap_size < minor_words then Gc.set { g with minor_heap_size = minor_words }
+  end
+
 let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
     ?(cancelled = fun () -> false) ?order_seed ~width ~height ~size f =
   let ts = tiles ~width ~height ~size in
@@ -33,6 +51,7 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
   let report = Mutex.create () in
   let stop = Atomic.make false in
   let body i =
+    if domains > 1 then ensure_minor_heap ();
     if Atomic.get stop || cancelled () then Atomic.set stop true
     else begin
       f ts.(i);
@@ -42,6 +61,15 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
             progress ~done_:d ~total)
     end
   in
+  let own = (Gc.get ()).minor_heap_size and was_big = Domain.DLS.get big_minor in
+  let restore () =
+    if not was_big then begin
+      Domain.DLS.set big_minor false;
+      let g = Gc.get () in
+      if g.minor_heap_size <> own then Gc.set { g with minor_heap_size = own }
+    end
+  in
+  Fun.protect ~finally:restore @@ fun () ->
   (if domains <= 1 then
      for i = 0 to total - 1 do
        body i

@@ -81,11 +81,11 @@ let make ?(sky = Sky.none) ~objects ~lights ~camera ~background ~settings () =
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 
 (* Nearest root in (tmin, tmax) of the sphere stored at [i], or infinity. *)
-let[@inline] sphere_root sp i rad (r : Ray.t) tmin tmax =
-  let ox = r.origin.x -. Float.Array.unsafe_get sp (4 * i)
-  and oy = r.origin.y -. Float.Array.unsafe_get sp ((4 * i) + 1)
-  and oz = r.origin.z -. Float.Array.unsafe_get sp ((4 * i) + 2) in
-  let dx = r.dir.x and dy = r.dir.y and dz = r.dir.z in
+let[@inline] sphere_root sp i rad (r : Ray.scratch) tmin tmax =
+  let ox = r.ox -. Float.Array.unsafe_get sp (4 * i)
+  and oy = r.oy -. Float.Array.unsafe_get sp ((4 * i) + 1)
+  and oz = r.oz -. Float.Array.unsafe_get sp ((4 * i) + 2) in
+  let dx = r.dx and dy = r.dy and dz = r.dz in
   let a = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
   let hb = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
   let c = (ox *. ox) +. (oy *. oy) +. (oz *. oz) -. (rad *. rad) in
@@ -98,37 +98,70 @@ let[@inline] sphere_root sp i rad (r : Ray.t) tmin tmax =
     let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
     if lo > tmin && lo < tmax then lo else if hi > tmin && hi < tmax then hi else infinity
 
+(* Per-domain scratch for queries: the ray, the hit, where the leaf goes,
+   and the callback of [occluders]. [busy] guards against a query started
+   from inside another one's callback (it then gets fresh scratch). *)
+type scratch = {
+  ray : Ray.scratch;
+  h : Hit.t;
+  f : Object.found;
+  mutable occ : Object.t -> float -> bool;
+  mutable busy : bool;
+}
+
+let dummy = Object.make (Shape.sphere Vec3.zero 1.)
+let new_scratch () = { ray = Ray.scratch (); h = Hit.create 0.; f = Object.found dummy; occ = (fun _ _ -> false); busy = false }
+let scratch_key = Domain.DLS.new_key new_scratch
+
+let[@inline] take () =
+  let sc = Domain.DLS.get scratch_key in
+  if sc.busy then new_scratch () else (sc.busy <- true; sc)
+
+let nearest_leaf a (f : Object.found) r tmin (h : Hit.t) i =
+  let rad = Float.Array.unsafe_get a.spheres ((4 * i) + 3) in
+  if rad >= 0. then begin
+    let t = sphere_root a.spheres i rad r tmin h.t in
+    if t < h.t then (
+      h.t <- t;
+      h.id <- -.float i -. 1.;
+      f.leaf <- Array.unsafe_get a.finite i;
+      true)
+    else false
+  end
+  else Object.hit_s (Array.unsafe_get a.finite i) r tmin h f
+
+let[@inline never] nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
+  let a = s.accel in
+  let any = ref false in
+  for i = 0 to Array.length a.infinite - 1 do
+    if Object.hit_s (Array.unsafe_get a.infinite i) r tmin h f then any := true
+  done;
+  Bvh.nearest_s a.bvh r tmin h a f nearest_leaf || !any
+
+let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
+
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
-let intersect s r tmin tmax =
+let intersect s (r : Ray.t) tmin tmax =
   if Array.length s.objects = 0 then None
-  else
-    let a = s.accel in
-    let h = Hit.create tmax and f = Object.found s.objects.(0) in
-    let any = ref false in
-    for i = 0 to Array.length a.infinite - 1 do
-      if Object.hit a.infinite.(i) r tmin h f then any := true
-    done;
-    let sp = a.spheres in
-    Bvh.nearest a.bvh r tmin h (fun i ->
-        let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
-        if rad >= 0. then begin
-          let t = sphere_root sp i rad r tmin h.t in
-          if t < h.t then (
-            h.t <- t;
-            h.id <- -.float i -. 1.;
-            f.leaf <- Array.unsafe_get a.finite i;
-            any := true)
-        end
-        else if Object.hit (Array.unsafe_get a.finite i) r tmin h f then any := true);
-    if not !any then None
+  else begin
+    let sc = take () in
+    Ray.load sc.ray r;
+    let h = sc.h and f = sc.f in
+    h.t <- tmax;
+    h.u <- 0.;
+    h.v <- 0.;
+    h.id <- 0.;
+    let found = nearest_in s sc.ray tmin h f in
+    sc.busy <- false;
+    if not found then None
     else
       let point = Ray.at r h.t in
       let normal =
         if h.id >= 0. then Object.normal f.leaf point h
         else
           (* a flat-array sphere: its normal without touching the object *)
-          let i = 4 * int_of_float (-.h.id -. 1.) and sp = a.spheres in
+          let i = 4 * int_of_float (-.h.id -. 1.) and sp = s.accel.spheres in
           let k = 1. /. Float.Array.get sp (i + 3) in
           Vec3.make
             ((point.x -. Float.Array.get sp i) *. k)
@@ -136,27 +169,38 @@ let intersect s r tmin tmax =
             ((point.z -. Float.Array.get sp (i + 2)) *. k)
       in
       Some { t = h.t; obj = f.leaf; point; normal }
+  end
 
 (* Every crossing matters for coloured shadows: each object crossed walks
    all its surface crossings; the BVH skips objects whose box is missed. *)
-let occluders s r tmin tmax f =
-  let a = s.accel in
-  let each (o : Object.t) =
-    Object.crossings o r tmin tmax (fun (leaf : Object.t) t -> leaf.no_shadow || f leaf t)
-  in
+let occluder_leaf a sc r tmin tmax i =
   let sp = a.spheres in
-  Array.for_all each a.infinite
-  && Bvh.iter a.bvh r tmin tmax (fun i ->
-         let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
-         if rad < 0. then each a.finite.(i)
-         else
-           let t = sphere_root sp i rad r tmin tmax in
-           t = infinity
-           ||
-           let o = a.finite.(i) in
-           f o t
-              &&
-              let t' = sphere_root sp i rad r (Object.next_tmin r t) tmax in
-              t' = infinity || f o t')
+  let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
+  if rad < 0. then Object.crossings_s (Array.unsafe_get a.finite i) r tmin tmax sc.h sc.f true sc.occ
+  else
+    let t = sphere_root sp i rad r tmin tmax in
+    t = infinity
+    ||
+    let o = Array.unsafe_get a.finite i in
+    sc.occ o t
+    &&
+    let t' = sphere_root sp i rad r (Object.next_tmin_s r t) tmax in
+    t' = infinity || sc.occ o t'
 
-let occluded s r tmin tmax = not (occluders s r tmin tmax (fun _ _ -> false))
+let occluders s r tmin tmax g =
+  let a = s.accel in
+  let sc = take () in
+  Ray.load sc.ray r;
+  sc.occ <- g;
+  let ok = ref true and i = ref 0 in
+  while !ok && !i < Array.length a.infinite do
+    ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin tmax sc.h sc.f true g;
+    incr i
+  done;
+  let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin tmax a sc occluder_leaf in
+  sc.occ <- (fun _ _ -> false);
+  sc.busy <- false;
+  ok
+
+let block _ _ = false
+let occluded s r tmin tmax = not (occluders s r tmin tmax block)

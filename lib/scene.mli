@@ -43,6 +43,12 @@ type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 (** [normal] is the object's outward unit normal (not yet flipped toward
     the ray). *)
 
+val nearest : t -> Ray.scratch -> float -> Hit.t -> Object.found -> bool
+(** [nearest s ray tmin h f]: the nearest hit in [(tmin, h.t)], into [h]
+    and [f.leaf] ([h.id < 0] marks a sphere tested from the flat array:
+    {!intersect} knows its normal). The allocation-free query that
+    {!intersect} wraps (for kernels and benchmarks). *)
+
 val intersect : t -> Ray.t -> float -> float -> hit option
 (** Nearest hit in [(tmin, tmax)]. *)
 

@@ -48,9 +48,9 @@ let[@inline] accept (h : Hit.t) tmin t id =
     true)
   else false
 
-let hit_sphere (center : Vec3.t) radius (r : Ray.t) tmin (h : Hit.t) =
-  let ox = r.origin.x -. center.x and oy = r.origin.y -. center.y and oz = r.origin.z -. center.z in
-  let dx = r.dir.x and dy = r.dir.y and dz = r.dir.z in
+let[@inline] hit_sphere (center : Vec3.t) radius (r : Ray.scratch) tmin (h : Hit.t) =
+  let ox = r.ox -. center.x and oy = r.oy -. center.y and oz = r.oz -. center.z in
+  let dx = r.dx and dy = r.dy and dz = r.dz in
   let a = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
   let hb = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
   let c = (ox *. ox) +. (oy *. oy) +. (oz *. oz) -. (radius *. radius) in
@@ -61,35 +61,50 @@ let hit_sphere (center : Vec3.t) radius (r : Ray.t) tmin (h : Hit.t) =
     (* the numerically stable pair of roots *)
     let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
     let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
-    let lo = Float.min t0 t1 and hi = Float.max t0 t1 in
+    let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
     accept h tmin lo 0. || accept h tmin hi 0.
 
-(* Slab test along one axis, updating the entry (tn, face fn) and exit (tf,
-   face ff) of the running interval; allocation-free. Returns false on a
-   miss (ray parallel to the slab and outside it). *)
-let[@inline] slab o d l u axis (a : Hit.t) =
-  if d = 0. then o >= l && o <= u
-  else begin
+(* Entry and exit of the ray in one slab (a parallel ray outside it gets an
+   empty interval), and the face crossed at each: 2 axis for the low
+   plane, 2 axis + 1 for the high one. *)
+let[@inline] slab_near o d l u =
+  if d = 0. then if o >= l && o <= u then neg_infinity else infinity
+  else
     let p = (l -. o) /. d and q = (u -. o) /. d in
-    let near = if p < q then p else q and far = if p < q then q else p in
-    let lo_face = 2. *. axis in
-    if near > a.t then (
-      a.t <- near;
-      a.u <- (if p < q then lo_face else lo_face +. 1.));
-    if far < a.v then (
-      a.v <- far;
-      a.id <- (if p < q then lo_face +. 1. else lo_face));
-    true
-  end
+    if p < q then p else q
 
-let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.t) tmin (h : Hit.t) =
-  (* the scratch holds entry distance and face (t, u), exit (v, id) *)
-  let a = { Hit.t = neg_infinity; u = 0.; v = infinity; id = 0. } in
-  slab r.origin.x r.dir.x lo.x hi.x 0. a
-  && slab r.origin.y r.dir.y lo.y hi.y 1. a
-  && slab r.origin.z r.dir.z lo.z hi.z 2. a
-  && a.t <= a.v
-  && (accept h tmin a.t a.u || accept h tmin a.v a.id)
+let[@inline] slab_far o d l u =
+  if d = 0. then if o >= l && o <= u then infinity else neg_infinity
+  else
+    let p = (l -. o) /. d and q = (u -. o) /. d in
+    if p < q then q else p
+
+let[@inline] near_face o d l u axis = if (l -. o) /. d < (u -. o) /. d then 2. *. axis else (2. *. axis) +. 1.
+let[@inline] far_face o d l u axis = if (l -. o) /. d < (u -. o) /. d then (2. *. axis) +. 1. else 2. *. axis
+
+let hit_box (lo : Vec3.t) (hi : Vec3.t) (r : Ray.scratch) tmin (h : Hit.t) =
+  let nx = slab_near r.ox r.dx lo.x hi.x and fx = slab_far r.ox r.dx lo.x hi.x in
+  let ny = slab_near r.oy r.dy lo.y hi.y and fy = slab_far r.oy r.dy lo.y hi.y in
+  let nz = slab_near r.oz r.dz lo.z hi.z and fz = slab_far r.oz r.dz lo.z hi.z in
+  (* entry: the last plane entered (first axis on ties); exit: the first left *)
+  let n1 = if ny > nx then ny else nx and f1 = if fy < fx then fy else fx in
+  let tn = if nz > n1 then nz else n1 and tf = if fz < f1 then fz else f1 in
+  tn <= tf
+  && (let fn =
+        if nz > n1 then near_face r.oz r.dz lo.z hi.z 2.
+        else if ny > nx then near_face r.oy r.dy lo.y hi.y 1.
+        else if nx > neg_infinity then near_face r.ox r.dx lo.x hi.x 0.
+        else 0.
+      in
+      accept h tmin tn fn)
+  ||
+  let ff =
+    if fz < f1 then far_face r.oz r.dz lo.z hi.z 2.
+    else if fy < fx then far_face r.oy r.dy lo.y hi.y 1.
+    else if fx < infinity then far_face r.ox r.dx lo.x hi.x 0.
+    else 0.
+  in
+  tn <= tf && accept h tmin tf ff
 
 let[@inline] cone_side oz dz length tmin (h : Hit.t) t =
   let z = oz +. (t *. dz) in
@@ -102,10 +117,15 @@ let[@inline] cone_cap ox oy oz dx dy dz tmin (h : Hit.t) zc rc id =
 
 (* In the cone's frame (u, v, axis) the side is x^2 + y^2 = (r0 + k z)^2,
    0 <= z <= length; the caps are discs at z = 0 and z = length. *)
-let hit_cone ~(base : Vec3.t) ~axis ~u ~v ~length ~r0 ~r1 ~open_ (r : Ray.t) tmin (h : Hit.t) =
-  let o = Vec3.sub r.origin base in
-  let ox = Vec3.dot o u and oy = Vec3.dot o v and oz = Vec3.dot o axis in
-  let dx = Vec3.dot r.dir u and dy = Vec3.dot r.dir v and dz = Vec3.dot r.dir axis in
+let hit_cone ~(base : Vec3.t) ~(axis : Vec3.t) ~(u : Vec3.t) ~(v : Vec3.t) ~length ~r0 ~r1 ~open_
+    (r : Ray.scratch) tmin (h : Hit.t) =
+  let px = r.ox -. base.x and py = r.oy -. base.y and pz = r.oz -. base.z in
+  let ox = (px *. u.x) +. (py *. u.y) +. (pz *. u.z)
+  and oy = (px *. v.x) +. (py *. v.y) +. (pz *. v.z)
+  and oz = (px *. axis.x) +. (py *. axis.y) +. (pz *. axis.z) in
+  let dx = (r.dx *. u.x) +. (r.dy *. u.y) +. (r.dz *. u.z)
+  and dy = (r.dx *. v.x) +. (r.dy *. v.y) +. (r.dz *. v.z)
+  and dz = (r.dx *. axis.x) +. (r.dy *. axis.y) +. (r.dz *. axis.z) in
   let k = (r1 -. r0) /. length in
   let rz0 = r0 +. (k *. oz) in
   let a = (dx *. dx) +. (dy *. dy) -. (k *. k *. dz *. dz) in
@@ -132,28 +152,29 @@ let hit_cone ~(base : Vec3.t) ~axis ~u ~v ~length ~r0 ~r1 ~open_ (r : Ray.t) tmi
     side || c0 || c1
   else side
 
-let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
-  let dl = Vec3.length r.dir in
-  let dn = Vec3.scale (1. /. dl) r.dir in
+let hit_torus major minor (r : Ray.scratch) tmin (h : Hit.t) =
+  let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
+  let nx = r.dx /. dl and ny = r.dy /. dl and nz = r.dz /. dl in
   (* restart from the point of the ray nearest the centre: small, well
      scaled coefficients; the bounding sphere bounds the search *)
-  let t0 = -.Vec3.dot r.origin dn in
-  let q = Vec3.madd r.origin t0 dn in
+  let t0 = -.((r.ox *. nx) +. (r.oy *. ny) +. (r.oz *. nz)) in
+  let qx = r.ox +. (t0 *. nx) and qy = r.oy +. (t0 *. ny) and qz = r.oz +. (t0 *. nz) in
   let rr = major +. minor in
-  let q2 = Vec3.length2 q in
+  let q2 = (qx *. qx) +. (qy *. qy) +. (qz *. qz) in
   if q2 > rr *. rr then false
   else
     let hh = Float.sqrt ((rr *. rr) -. q2) *. (1. +. 1e-9) in
     (* the upper end does not depend on [h.t], so that the root found never
        depends on the order objects are tried in *)
-    let lo = Float.max (-.hh) ((tmin *. dl) -. t0) and hi = hh in
+    let lo = (tmin *. dl) -. t0 in
+    let lo = if lo > -.hh then lo else -.hh and hi = hh in
     if not (lo < hi) then false
     else
-      let b = 2. *. Vec3.dot q dn in
+      let b = 2. *. ((qx *. nx) +. (qy *. ny) +. (qz *. nz)) in
       let c = q2 +. (major *. major) -. (minor *. minor) in
-      let qa = (dn.x *. dn.x) +. (dn.z *. dn.z) in
-      let qb = 2. *. ((q.x *. dn.x) +. (q.z *. dn.z)) in
-      let qc = (q.x *. q.x) +. (q.z *. q.z) in
+      let qa = (nx *. nx) +. (nz *. nz) in
+      let qb = 2. *. ((qx *. nx) +. (qz *. nz)) in
+      let qc = (qx *. qx) +. (qz *. qz) in
       let r4 = 4. *. major *. major in
       let s =
         Poly.first_quartic_root 1. (2. *. b)
@@ -164,28 +185,34 @@ let hit_torus major minor (r : Ray.t) tmin (h : Hit.t) =
       in
       s < infinity && accept h tmin ((s +. t0) /. dl) 0.
 
-let hit s (r : Ray.t) tmin (h : Hit.t) =
+let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   match s with
   | Sphere { center; radius } -> hit_sphere center radius r tmin h
-  | Plane { normal; offset } ->
-      let dn = Vec3.dot r.dir normal in
-      dn <> 0. && accept h tmin ((offset -. Vec3.dot r.origin normal) /. dn) 0.
+  | Plane { normal = n; offset } ->
+      let dn = (r.dx *. n.x) +. (r.dy *. n.y) +. (r.dz *. n.z) in
+      dn <> 0. && accept h tmin ((offset -. ((r.ox *. n.x) +. (r.oy *. n.y) +. (r.oz *. n.z))) /. dn) 0.
   | Box { lo; hi } -> hit_box lo hi r tmin h
   | Cone { base; axis; u; v; length; r0; r1; open_ } ->
       hit_cone ~base ~axis ~u ~v ~length ~r0 ~r1 ~open_ r tmin h
   | Torus { major; minor } -> hit_torus major minor r tmin h
-  | Disc { center; normal; radius; hole } ->
-      let dn = Vec3.dot r.dir normal in
+  | Disc { center = c; normal = n; radius; hole } ->
+      let dn = (r.dx *. n.x) +. (r.dy *. n.y) +. (r.dz *. n.z) in
       dn <> 0.
       &&
-      let t = Vec3.dot (Vec3.sub center r.origin) normal /. dn in
+      let t = (((c.x -. r.ox) *. n.x) +. ((c.y -. r.oy) *. n.y) +. ((c.z -. r.oz) *. n.z)) /. dn in
       t > tmin && t < h.t
       &&
-      let d2 = Vec3.length2 (Vec3.sub (Ray.at r t) center) in
+      let px = r.ox +. (t *. r.dx) -. c.x and py = r.oy +. (t *. r.dy) -. c.y
+      and pz = r.oz +. (t *. r.dz) -. c.z in
+      let d2 = (px *. px) +. (py *. py) +. (pz *. pz) in
       d2 <= radius *. radius && d2 >= hole *. hole && accept h tmin t 0.
   | Triangle { a; b; c; _ } | Smooth_triangle { a; b; c; _ } ->
       Mesh.tri_hit a.x a.y a.z b.x b.y b.z c.x c.y c.z r tmin h
-  | Mesh m -> Mesh.hit m r tmin h
+      && (h.id <- 0.;
+          true)
+  | Mesh m -> Mesh.hit_s m r tmin h
+
+let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
 let intersect s r tmin tmax =
   let h = Hit.create tmax in
@@ -223,25 +250,30 @@ let normal s (p : Vec3.t) (h : Hit.t) =
   | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal na nb nc h.u h.v
   | Mesh m -> Mesh.normal m h
 
-let inside s (p : Vec3.t) =
+let[@inline] inside_xyz s x y z =
   match s with
-  | Sphere { center; radius } -> Vec3.length2 (Vec3.sub p center) < radius *. radius
-  | Plane { normal; offset } -> Vec3.dot normal p < offset
-  | Box { lo; hi } -> p.x > lo.x && p.x < hi.x && p.y > lo.y && p.y < hi.y && p.z > lo.z && p.z < hi.z
+  | Sphere { center = c; radius } ->
+      let px = x -. c.x and py = y -. c.y and pz = z -. c.z in
+      (px *. px) +. (py *. py) +. (pz *. pz) < radius *. radius
+  | Plane { normal = n; offset } -> (n.x *. x) +. (n.y *. y) +. (n.z *. z) < offset
+  | Box { lo; hi } -> x > lo.x && x < hi.x && y > lo.y && y < hi.y && z > lo.z && z < hi.z
   | Cone { base; axis; u; v; length; r0; r1; _ } ->
-      let o = Vec3.sub p base in
-      let z = Vec3.dot o axis in
-      z > 0. && z < length
+      let px = x -. base.x and py = y -. base.y and pz = z -. base.z in
+      let oz = (px *. axis.x) +. (py *. axis.y) +. (pz *. axis.z) in
+      oz > 0. && oz < length
       &&
-      let x = Vec3.dot o u and y = Vec3.dot o v in
-      let rz = r0 +. ((r1 -. r0) *. z /. length) in
-      (x *. x) +. (y *. y) < rz *. rz
+      let ox = (px *. u.x) +. (py *. u.y) +. (pz *. u.z) and oy = (px *. v.x) +. (py *. v.y) +. (pz *. v.z) in
+      let rz = r0 +. ((r1 -. r0) *. oz /. length) in
+      (ox *. ox) +. (oy *. oy) < rz *. rz
   | Torus { major; minor } ->
-      let rho = Float.sqrt ((p.x *. p.x) +. (p.z *. p.z)) -. major in
-      (rho *. rho) +. (p.y *. p.y) < minor *. minor
-  | Disc { center; normal; _ } -> Vec3.dot (Vec3.sub p center) normal < 0.
+      let rho = Float.sqrt ((x *. x) +. (z *. z)) -. major in
+      (rho *. rho) +. (y *. y) < minor *. minor
+  | Disc { center = c; normal = n; _ } -> ((x -. c.x) *. n.x) +. ((y -. c.y) *. n.y) +. ((z -. c.z) *. n.z) < 0.
   | Triangle _ | Smooth_triangle _ -> false
-  | Mesh m -> Mesh.inside m p
+  | Mesh m -> Mesh.inside m (Vec3.make x y z)
+
+let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
+let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
 
 (* Bounds of a disc of radius r around c with unit normal n. *)
 let disc_bounds (c : Vec3.t) (n : Vec3.t) r =

@@ -53,6 +53,9 @@ val hit : t -> Ray.t -> float -> Hit.t -> bool
 (** [hit s ray tmin h]: nearest crossing in [(tmin, h.t)]; on success sets
     [h] (distance and which part was hit) and returns [true]. *)
 
+val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
+(** {!hit} on a scratch ray: allocates nothing (a torus's solver aside). *)
+
 val intersect : t -> Ray.t -> float -> float -> float
 (** [intersect s ray tmin tmax]: the nearest distance in [(tmin, tmax)], or
     [infinity] (allocates a scratch; for tests and tools). *)
@@ -64,6 +67,10 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test (CSG and the [inside] function); triangles have
     no inside; meshes only with an [inside_vector]. *)
+
+val inside_s : t -> Ray.scratch -> bool
+(** {!inside} at the point held in the scratch's origin fields; allocates
+    nothing (meshes aside). *)
 
 val bounds : t -> (Vec3.t * Vec3.t) option
 (** Axis-aligned bounds in object space; [None] for infinite shapes. *)

@@ -104,4 +104,50 @@ let units =
         Alcotest.(check (list int)) "only box 10" [ 10 ] !seen);
   ]
 
-let tests = ("bvh", units @ List.map QCheck_alcotest.to_alcotest (union_prop :: props))
+(* The traversal and intersection kernel allocates nothing: every leaf
+   kind, transforms, a union with its own BVH, a mesh, CSG and a clip
+   (whose rejected crossings alone may box a float). *)
+let no_alloc =
+  Alcotest.test_case "Scene.nearest allocates nothing" `Quick (fun () ->
+      let s =
+        Helpers.compile_string
+          {|camera { location <0, 3, -12> look_at <0, 0, 0> }
+plane { y, -1 pigment { rgb 1 } }
+#for (I, 0, 11)
+  sphere { <I - 6, 0, 0>, 0.4 pigment { rgb 1 } }
+  sphere { 0, 0.4 scale <1, 2, 1> translate <I - 6, 0, 2> pigment { rgb 1 } }
+#end
+box { -0.5, 0.5 rotate <10, 20, 30> translate <-3, 0, -2> pigment { rgb 1 } }
+cone { 0, 0.5, y, 0.1 scale <1, 1.5, 1> translate <-1, 0, -2> pigment { rgb 1 } }
+torus { 0.6, 0.2 rotate x*40 translate <1, 0, -2> pigment { rgb 1 } }
+disc { <3, 0, -2>, <0, 0, -1>, 0.5 pigment { rgb 1 } }
+triangle { <4, 0, -2>, <5, 0, -2>, <4.5, 1, -2> pigment { rgb 1 } }
+mesh { triangle { <-5, 1, -3>, <-4, 1, -3>, <-4.5, 2, -3> } triangle { <-4, 1, -3>, <-3, 1, -3>, <-3.5, 2, -3> } pigment { rgb 1 } }
+union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigment { rgb 1 } }
+|}
+      in
+      let rays =
+        Array.init 4000 (fun i ->
+            let sx, sy = Camera.pixel_coords ~width:80 ~height:50 (float (i mod 80) +. 0.5) (float (i / 80) +. 0.5) in
+            Camera.ray s.camera sx sy)
+      in
+      let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
+      let hits = ref 0 in
+      let pass () =
+        Array.iter
+          (fun ray ->
+            Ray.load r ray;
+            h.t <- infinity;
+            if Scene.nearest s r 0. h f then incr hits)
+          rays
+      in
+      pass ();
+      hits := 0;
+      let before = Gc.minor_words () in
+      pass ();
+      let words = Gc.minor_words () -. before in
+      Alcotest.(check bool) "some rays hit" true (!hits > 1000);
+      (* the pass's own closure aside (a few words), nothing per ray *)
+      if words > 16. then Alcotest.failf "%.0f minor words for %d rays" words (Array.length rays))
+
+let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest (union_prop :: props))

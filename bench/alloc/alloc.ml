@@ -1,5 +1,7 @@
-(* Minor words allocated per camera ray, measured with Gc.quick_stat
-   around a one-domain render (whitted: one ray per pixel; mc: per sample).
+(* Minor words allocated per camera ray, measured with Gc.minor_words
+   around a one-domain render (whitted: one ray per pixel; mc: per sample),
+   and for the traversal and intersection kernel alone: Scene.nearest on
+   precomputed camera rays (no shading), with its speed.
    Usage: alloc.exe SCENE... [-W n] [-H n] [--mc SPP] *)
 open Camlray
 
@@ -30,5 +32,37 @@ let () =
               ignore (Render.image ~domains:1 ~width ~height pixel);
               let words = Gc.minor_words () -. before in
               Printf.printf "| %s | %s | %d | %.1f |\n%!" (Filename.basename file) mode rays
-                (words /. float rays)))
+                (words /. float rays);
+              (* the kernel: nearest hit of every camera ray, nothing else *)
+              let rays =
+                Array.init (width * height) (fun i ->
+                    let sx, sy = Camera.pixel_coords ~width ~height (float (i mod width) +. 0.5) (float (i / width) +. 0.5) in
+                    Camera.ray s.camera sx sy)
+              in
+              let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
+              let hits = ref 0 in
+              let pass () =
+                Array.iter
+                  (fun ray ->
+                    Ray.load r ray;
+                    h.t <- infinity;
+                    if Scene.nearest s r 0. h f then incr hits)
+                  rays
+              in
+              pass ();
+              let reps = 20 in
+              let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
+              for _ = 1 to reps do pass () done;
+              let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
+              let n = float (reps * Array.length rays) in
+              Printf.printf "| %s | kernel: Scene.nearest only | %d | %.2f (%.2f M rays/s) |\n%!"
+                (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6);
+              (* the same through the public query, which builds the hit record *)
+              let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
+              for _ = 1 to reps do
+                Array.iter (fun ray -> ignore (Sys.opaque_identity (Scene.intersect s ray 0. infinity))) rays
+              done;
+              let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
+              Printf.printf "| %s | kernel: Scene.intersect | %d | %.2f (%.2f M rays/s) |\n%!"
+                (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6)))
     (List.rev !files)
