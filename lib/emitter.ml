@@ -3,7 +3,7 @@ let[@inline] fmax (a : float) b = if a >= b then a else b
 
 type t =
   | Delta of Light.t
-  | Area of { light : Light.t; axis1 : Vec3.t; axis2 : Vec3.t }
+  | Area of { light : Light.t; area : Light.area }
   | Sphere of { obj : Object.t; center : Vec3.t; radius : float }
 
 let emission (o : Object.t) p =
@@ -35,7 +35,13 @@ let world_sphere (o : Object.t) =
   | _ -> None
 
 let of_scene (s : Scene.t) =
-  let lights = Array.to_list (Array.map (fun l -> Delta l) s.lights) in
+  let lights =
+    Array.to_list
+      (Array.map
+         (fun (l : Light.t) ->
+           match l.area with Some area -> Area { light = l; area } | None -> Delta l)
+         s.lights)
+  in
   let objs =
     Array.to_list s.objects
     |> List.filter_map (fun o ->
@@ -61,9 +67,7 @@ let cos_max r d = Float.sqrt (fmax 0. (1. -. (r *. r /. (d *. d))))
 let sample e p u v =
   match e with
   | Delta l -> point_light l l.position p
-  | Area { light; axis1; axis2 } ->
-      let q = Vec3.madd (Vec3.madd light.position (u -. 0.5) axis1) (v -. 0.5) axis2 in
-      point_light light q p
+  | Area { light; area } -> point_light light (Light.position_at light area p (u -. 0.5) (v -. 0.5)) p
   | Sphere { center; radius; _ } ->
       let to_c = Vec3.sub center p in
       let d = Vec3.length to_c in

@@ -9,10 +9,14 @@
 
 type t =
   | Delta of Light.t  (** point, spot or parallel light *)
-  | Area of { light : Light.t; axis1 : Vec3.t; axis2 : Vec3.t }
+  | Area of { light : Light.t; area : Light.area }
       (** POV's [area_light]: the rectangle [position + s axis1 + t axis2],
-          [s, t] in [[-1/2, 1/2]], of fall-off-free point lights sharing the
-          colour (a continuous version of POV's grid of samples). Invisible,
+          [s, t] in [[-1/2, 1/2]] (the inscribed disc when [circular],
+          turned to face the lit point when [orient]), a continuous version
+          of POV's grid of samples: every point of it shines like a
+          fall-off-free point light of the light's colour, to both sides,
+          and the rectangle's total equals one such point light, so far
+          away it lights as the point light at its centre does. Invisible,
           like POV's, so sampled only directly. *)
   | Sphere of { obj : Object.t; center : Vec3.t; radius : float }
       (** an emissive sphere (possibly moved, rotated, uniformly scaled),

@@ -73,8 +73,7 @@ let attenuation l p =
 
 let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
 
-let sample_position l a p i j =
-  let u = offset a.n1 i and v = offset a.n2 j in
+let position_at l a p u v =
   let u, v =
     if a.circular && (u <> 0. || v <> 0.) then
       (* square [-0.5,0.5]^2 to the disc of diameter 1 (concentric map) *)
@@ -97,6 +96,8 @@ let sample_position l a p i j =
       (Vec3.scale (Vec3.length a.axis1) e1, Vec3.scale (Vec3.length a.axis2) e2)
   in
   Vec3.add l.position (Vec3.add (Vec3.scale u a1) (Vec3.scale v a2))
+
+let sample_position l a p i j = position_at l a p (offset a.n1 i) (offset a.n2 j)
 
 let differ (a : Color.t) (b : Color.t) =
   Float.abs (a.r -. b.r) +. Float.abs (a.g -. b.g) +. Float.abs (a.b -. b.b) > 0.1

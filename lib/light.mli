@@ -49,6 +49,12 @@ val direction_to : t -> Vec3.t -> Vec3.t * float
     which shadow rays must look (for parallel lights: to the plane through
     the light perpendicular to its direction). *)
 
+val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
+(** [position_at l a p u v], [u, v] in [[-1/2, 1/2]]: the point
+    [position + u axis1 + v axis2] of the light's rectangle as seen from
+    [p] (moved onto the disc when [circular], the axes turned to face [p]
+    when [orient]). *)
+
 val sample_position : t -> area -> Vec3.t -> int -> int -> Vec3.t
 (** [sample_position l a p i j]: where sample [(i, j)] of an area light
     is, as seen from the lit point [p] ([orient] and [circular] applied). *)

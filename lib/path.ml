@@ -5,10 +5,15 @@ let[@inline] fmax (a : float) b = if a >= b then a else b
 let[@inline] fmin (a : float) b = if a <= b then a else b
 let[@inline] maxc (c : Color.t) = fmax c.r (fmax c.g c.b)
 
-type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool }
+type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool; has_env : bool }
 
 let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
-  { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee }
+  { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee;
+    has_env = not (Sky.is_empty scene.sky && is_black scene.background) }
+
+(* The environment light: the sky_sphere, or the uniform background. *)
+let env (s : Scene.t) dir =
+  if Sky.is_empty s.sky then s.background else Sky.eval s.sky ~background:s.background dir
 
 let[@inline] power a b =
   let a2 = a *. a and b2 = b *. b in
@@ -69,9 +74,8 @@ let direct t sampler base (m : Material.t) p n wo =
                 | _ -> ())
         end
   done;
-  (* a uniform environment is sampled cosine-weighted about the normal *)
-  let bg = s.background in
-  if not (is_black bg) then begin
+  (* the environment is sampled cosine-weighted about the normal *)
+  if t.has_env then begin
     let wi =
       Bsdf.cosine_hemisphere n (Sampler.get sampler (base + d_env))
         (Sampler.get sampler (base + d_env + 1))
@@ -82,7 +86,8 @@ let direct t sampler base (m : Material.t) p n wo =
       if not (is_black f) then begin
         let pl = ci /. Float.pi and pb = Bsdf.pdf m ~n ~wo ~wi in
         let tr = transmittance s p wi infinity in
-        acc := add !acc (scale (ci *. power pl pb /. pl) (mul f (mul tr bg)))
+        if not (is_black tr) then
+          acc := add !acc (scale (ci *. power pl pb /. pl) (mul f (mul tr (env s wi))))
       end
     end
   end;
@@ -104,7 +109,7 @@ let li t sampler ~max_depth (ray : Ray.t) =
               power pdf (fmax 0. (Vec3.dot n ray.dir) /. Float.pi)
           | _ -> 1.
         in
-        madd acc w (mul thr s.background)
+        if t.has_env then madd acc w (mul thr (env s ray.dir)) else acc
     | Some hit ->
         let obj = hit.obj in
         let wo = Vec3.neg ray.dir in

@@ -240,7 +240,7 @@ let area_light () =
   let h = 1. and side = 2. in
   let light = Light.point (Vec3.make 0. h 0.) (Color.gray 1.) in
   let area =
-    Emitter.Area { light; axis1 = Vec3.make side 0. 0.; axis2 = Vec3.make 0. 0. side }
+    Emitter.Area { light; area = Light.area (Vec3.make side 0. 0.) (Vec3.make 0. 0. side) 2 2 }
   in
   let t = Path.prepare ~extra:[ area ] s in
   let n = 20000 in
@@ -261,6 +261,72 @@ let area_light () =
   done;
   let expected = 0.5 *. !mean_cos /. float (q * q) in
   Alcotest.(check (float (0.01 *. expected))) "radiance" expected (!sum /. float n)
+
+(* An area_light read from a scene becomes an emitting rectangle whose
+   far-field irradiance is that of the point light of the same colour at
+   its centre: far above a Lambertian plane (albedo a = 0.5) the radiance
+   is a c cos theta = 0.5 c, as in the whitted mode; at 2 units the
+   rectangle (4 x 4) gives less (the mean of cos over it), and a circular
+   one of the same axes sits between the two. *)
+let area_light_from_scene () =
+  let radiance ?(circular = "") h =
+    let s =
+      Helpers.compile_string
+        (Printf.sprintf
+           "#version 3.7;\nplane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.5 } }\n\
+            light_source { <0,%g,0> rgb <1,0.5,0.25> area_light <4,0,0>, <0,0,4>, 5, 5 %s }\n"
+           h circular)
+    in
+    (match s.lights with
+     | [| { area = Some _; _ } |] -> ()
+     | _ -> Alcotest.fail "expected one area light");
+    let t = Path.prepare s in
+    let n = 4000 in
+    let sum = ref Color.black in
+    for k = 0 to n - 1 do
+      let sampler = Sampler.create ~seed:5 ~pixel:0 ~sample:k in
+      let c =
+        Path.li t sampler ~max_depth:1 (Ray.make (Vec3.make 0.5 0.5 0.) (Vec3.neg Vec3.unit_y))
+      in
+      sum := Color.add !sum c
+    done;
+    Color.scale (1. /. float n) !sum
+  in
+  let far = radiance 1000. in
+  Alcotest.(check (float 1e-4)) "far: red" 0.5 far.r;
+  Alcotest.(check (float 1e-4)) "far: green" 0.25 far.g;
+  Alcotest.(check (float 1e-4)) "far: blue" 0.125 far.b;
+  let near = radiance 2. and disc = radiance ~circular:"circular" 2. in
+  if not (near.r < 0.47 && near.r < disc.r && disc.r < 0.5) then
+    Alcotest.failf "near field: square %g, disc %g, point 0.5" near.r disc.r
+
+(* A sky_sphere is the environment light: a Lambertian plane (albedo a)
+   under a sky whose radiance rises as cos theta (gradient y from 0 at
+   the horizon to 1 at the zenith) receives E = 2 pi / 3, so its radiance
+   is a E / pi = 2a/3; a ray that escapes sees the sky itself. *)
+let sky_environment () =
+  let s =
+    Helpers.compile_string
+      "#version 3.7;\nbackground { rgb <5,0,0> }\n\
+       sky_sphere { pigment { gradient y color_map { [0 rgb 0] [1 rgb 1] } } }\n\
+       plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.5 } }\n"
+  in
+  let t = Path.prepare s in
+  let mean ~nee ray =
+    let t = if nee then t else Path.prepare ~nee:false s in
+    let n = 20000 in
+    let sum = ref 0. in
+    for k = 0 to n - 1 do
+      let sampler = Sampler.create ~seed:9 ~pixel:1 ~sample:k in
+      sum := !sum +. (Path.li t sampler ~max_depth:4 ray).r
+    done;
+    !sum /. float n
+  in
+  let down = Ray.make (Vec3.make 0. 1. 0.) (Vec3.neg Vec3.unit_y) in
+  Alcotest.(check (float 0.01)) "plane, light sampling" (1. /. 3.) (mean ~nee:true down);
+  Alcotest.(check (float 0.01)) "plane, material sampling" (1. /. 3.) (mean ~nee:false down);
+  let up = Ray.make (Vec3.make 0. 1. 0.) (Vec3.normalize (Vec3.make 0. 1. 1.)) in
+  Alcotest.(check (float 1e-9)) "escaping ray sees the sky" (Float.sqrt 0.5) (mean ~nee:true up)
 
 (* The Monte Carlo scenes of test/mc render (tiny, 2 spp) to finite,
    non-negative pixels, and not all black. *)
@@ -295,6 +361,8 @@ let tests =
       Alcotest.test_case "RMSE falls as spp^-1/2" `Quick convergence;
       Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
       Alcotest.test_case "depth of field: focal plane and lens radius" `Quick lens;
-      Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
+    Alcotest.test_case "sky_sphere as the environment light" `Quick sky_environment;
+    Alcotest.test_case "area light from a scene: far field = point light" `Quick area_light_from_scene;
+    Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
     ] )
