@@ -22,9 +22,19 @@ let limits =
     Arg.(value & opt int d.max_macro_depth & info [ "max-macro-depth" ] ~docv:"N"
            ~doc:"Stop with an error when macro calls nest deeper than $(docv).")
   in
-  Term.(const (fun l m ->
-      { d with Camlray_lang.Supplier.max_loop_iterations = max 1 l; max_macro_depth = max 1 m })
-        $ max_loop $ max_macro)
+  let max_array =
+    Arg.(value & opt int d.max_array_size & info [ "max-array" ] ~docv:"N"
+           ~doc:"Refuse arrays of more than $(docv) elements.")
+  in
+  let max_objects =
+    Arg.(value & opt int d.max_objects & info [ "max-objects" ] ~docv:"N"
+           ~doc:"Stop with an error when the scene makes more than $(docv) objects (every \
+                 shape and CSG read, and every node of the objects placed in the scene).")
+  in
+  Term.(const (fun l m a o ->
+      { d with Camlray_lang.Supplier.max_loop_iterations = max 1 l; max_macro_depth = max 1 m;
+               max_array_size = max 1 a; max_objects = max 1 o })
+        $ max_loop $ max_macro $ max_array $ max_objects)
 
 let allow_read =
   Arg.(value & opt_all dir [] & info [ "allow-read" ] ~docv:"DIR"

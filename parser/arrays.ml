@@ -85,7 +85,8 @@ and make t loc =
   if ds = [] then fail t loc "expected [size] after array";
   let total = List.fold_left ( * ) 1 ds in
   if total > t.config.limits.max_array_size then
-    fail t loc "array of %d elements exceeds the limit %d" total t.config.limits.max_array_size;
+    fail t loc "array of %d elements exceeds the limit %d (raise it with --max-array)" total
+      t.config.limits.max_array_size;
   let rec make = function
     | [] -> assert false
     | [ n ] -> Array.make n None

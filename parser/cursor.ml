@@ -9,11 +9,12 @@ type limits = {
   max_include_depth : int;
   max_array_size : int;
   max_tokens : int;  (** raw tokens read in all, loops and macros included *)
+  max_objects : int;  (** objects read or placed, see {!Budget} *)
 }
 
 let default_limits =
   { max_loop_iterations = 1_000_000; max_macro_depth = 200; max_include_depth = 64;
-    max_array_size = 10_000_000; max_tokens = 1_000_000_000 }
+    max_array_size = 10_000_000; max_tokens = 1_000_000_000; max_objects = 10_000_000 }
 
 type config = {
   include_dirs : string list;

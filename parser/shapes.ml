@@ -1,6 +1,7 @@
 open Camlray
 
 let obj loc shape ms =
+  Budget.parsed loc;
   let o =
     { Sdl.loc; shape; xform = Transform.identity; texture = None; interior = None; no_shadow = false;
       hollow = false }

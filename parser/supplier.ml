@@ -8,6 +8,7 @@ type limits = Cursor.limits = {
   max_include_depth : int;
   max_array_size : int;
   max_tokens : int;  (** raw tokens read in all, loops and macros included *)
+  max_objects : int;  (** objects read or placed, see {!Budget} *)
 }
 
 let default_limits = Cursor.default_limits

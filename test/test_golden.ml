@@ -21,7 +21,9 @@ let read path = In_channel.with_open_bin path In_channel.input_all
 let run name =
   let err = Filename.temp_file "golden" ".err" in
   let cmd =
-    Printf.sprintf "cd %s && %s check %s --include-path inc --max-loop 1000 --max-macro-depth 50 >/dev/null 2>%s"
+    Printf.sprintf
+      "cd %s && %s check %s --include-path inc --max-loop 1000 --max-macro-depth 50 \
+       --max-objects 5000 --max-array 100000 >/dev/null 2>%s"
       (Filename.quote dir) (Filename.quote (exe ())) (Filename.quote (name ^ ".scn"))
       (Filename.quote err)
   in

@@ -170,6 +170,35 @@ let tests =
           match Parse.string ~options "#while (1) #end" with
           | Ok _ -> Alcotest.fail "expected an error"
           | Error d -> if not (Scn.contains d.msg "iterations") then Alcotest.failf "message %S" d.msg);
+      Alcotest.test_case "the object limit: loops, shared declarations, exponential trees" `Quick
+        (fun () ->
+          let options n =
+            { Parse.default_options with
+              limits = { Supplier.default_limits with max_objects = n } }
+          in
+          let expect n text where =
+            match Parse.string ~options:(options n) text with
+            | Ok _ -> Alcotest.failf "expected the object limit on %S" text
+            | Error d ->
+                if not (Scn.contains d.msg (Printf.sprintf "more than %d objects" n)) then
+                  Alcotest.failf "message %S" d.msg;
+                Alcotest.(check int) "line" where d.loc.start.pos_lnum
+          in
+          (* a loop inside one union stops at the object that passes the limit *)
+          expect 50 "union {\n#for (i, 0, 1000) sphere { <i,0,0>, 1 } #end }" 2;
+          (* declared once, placed many times: 11 nodes each *)
+          let placed = "#declare U = union { #for (i, 0, 9) sphere { 0, 1 } #end }\n" in
+          expect 100 (placed ^ "#for (k, 0, 9) object { U } #end") 2;
+          (match Parse.string ~options:(options 110) (placed ^ "#for (k, 0, 9) object { U } #end") with
+           | Ok _ -> ()
+           | Error d -> Alcotest.failf "110 nodes are allowed: %s" d.msg);
+          (* doubling 60 times stands for 2^60 objects: refused, not walked *)
+          let doubling =
+            "#declare U = sphere { 0, 1 }\n\
+             #for (i, 1, 60) #declare U = union { object { U } object { U } } #end\n\
+             object { U }"
+          in
+          expect 1000 doubling 3);
       Alcotest.test_case "unbounded macro recursion stops at the depth limit" `Quick (fun () ->
           Scn.check_message "#macro R() R() #end R()" "nested deeper");
       Alcotest.test_case "standard include files load" `Quick (fun () ->
