@@ -171,9 +171,12 @@ and shade s ray hit level weight media fade =
       (inner.ior /. beyond, rest)
   in
   (* shade the layers top down; [w] is what the layers above let through;
-     returns the colour and what the whole texture lets through *)
+     returns the colour and what the whole texture lets through. [refl]:
+     add the finishes' reflection (POV-Ray leaves it out where the light
+     passing through is totally reflected inside: the TIR ray stands for
+     it) *)
   let top_normal = ref None in
-  let rec layers acc w = function
+  let rec layers refl acc w = function
     | [] -> (acc, w)
     | (layer : Texture.layer) :: rest -> (
         match layer.tmap with
@@ -182,12 +185,12 @@ and shade s ray hit level weight media fade =
             let c, f =
               List.fold_left
                 (fun (c, f) (k, t) ->
-                  let c', f' = layers black white t in
+                  let c', f' = layers refl black white t in
                   (madd c k c', madd f k f'))
                 (black, black) (Texture.blend m p)
             in
             let acc = add acc (mul w c) and w = mul w f in
-            if is_black w then (acc, w) else layers acc w rest
+            if is_black w then (acc, w) else layers refl acc w rest
         | None ->
             let n =
               match layer.normal with
@@ -211,16 +214,29 @@ and shade s ray hit level weight media fade =
                 (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
             in
             let local =
-              add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
+              if refl then add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
+              else local
             in
             let acc = add acc (mul w local) in
             let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
-            if is_black w then (acc, w) else layers acc w rest)
+            if is_black w then (acc, w) else layers refl acc w rest)
   in
-  let c, tr = layers black white hit.obj.texture in
-  if Color.luminance tr <= s.settings.adc_bailout then c
+  let refracts tr = Color.luminance tr > s.settings.adc_bailout in
+  let tir n = eta > 1. && 1. +. (eta *. eta *. ((cos_of n *. cos_of n) -. 1.)) < 0. in
+  (* guessed from the unperturbed normal; shaded again in the rare case
+     the top layer's normal or an opaque texture says otherwise *)
+  let guess = tir n0 in
+  let c, tr = layers (not guess) black white hit.obj.texture in
+  let n = Option.value ~default:n0 !top_normal in
+  let c, tr =
+    if guess = (refracts tr && tir n) then (c, tr)
+    else begin
+      top_normal := None;
+      layers guess black white hit.obj.texture
+    end
+  in
+  if not (refracts tr) then c
   else
-    let n = Option.value ~default:n0 !top_normal in
     let w = weight *. Color.max_channel tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)
@@ -277,9 +293,32 @@ let start_media (s : Scene.t) (o : Vec3.t) =
 
 let trace s (ray : Ray.t) = trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
 
+(* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
+   through points of the lens, stratified by a Hammersley set turned by
+   a per-pixel offset (POV-Ray picks its lens points at random and stops
+   early by a confidence test, so blurred parts agree in the mean, not
+   pixel for pixel). *)
+let radical_inverse k =
+  let rec go k f acc = if k = 0 then acc else go (k lsr 1) (f *. 0.5) (if k land 1 = 1 then acc +. f else acc) in
+  go k 0.5 0.
+
+let focal_blur (s : Scene.t) sx sy px py =
+  let cam = s.camera in
+  let n = max 1 cam.blur_samples in
+  let key = (int_of_float (Float.floor py) * 65599) + int_of_float (Float.floor px) in
+  let sampler = Sampler.create ~seed:0 ~pixel:key ~sample:0 in
+  let du = Sampler.get sampler 0 and dv = Sampler.get sampler 1 in
+  let acc = ref black in
+  for k = 0 to n - 1 do
+    let u = Float.rem (((float_of_int k +. 0.5) /. float_of_int n) +. du) 1. in
+    let v = Float.rem (radical_inverse k +. dv) 1. in
+    acc := add !acc (trace s (Camera.ray_lens cam sx sy u v))
+  done;
+  scale (1. /. float_of_int n) !acc
+
 let sample (s : Scene.t) ~width ~height px py =
   let sx, sy = Camera.pixel_coords ~width ~height px py in
-  trace s (Camera.ray s.camera sx sy)
+  if s.camera.aperture > 0. then focal_blur s sx sy px py else trace s (Camera.ray s.camera sx sy)
 
 let pixel s ~width ~height x y =
   sample s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)

@@ -121,7 +121,42 @@ let transparency () =
          ("light_source { <0,0,-10>, rgb 1 }\nplane { z, 1 pigment { rgbf <.5,.25,0,.5> } }\n"))
       ~width:1 ~height:1 0 0
   in
-  close "legacy alpha" 0.2625 legacy.r
+  close "legacy alpha" 0.2625 legacy.r;
+  (* seen from inside glass (a half-space, background 0.25): on total
+     internal reflection POV-Ray adds the reflected ray alone, whatever
+     the finish's reflection says; at normal incidence the finish's
+     reflection is added to the transmitted light (values measured with
+     povray 3.7: 0.25 in every TIR case, 0.2602 and 0.375 head-on) *)
+  let inside look_at refl =
+    pixel
+      (Printf.sprintf
+         "camera { location <0,-1,0> look_at %s angle 10 }\nbackground { rgb 0.25 }\n\
+          plane { y, 0 pigment { rgbf 1 } finish { ambient 0 diffuse 0 %s } interior { ior 1.5 } }\n"
+         look_at refl)
+  in
+  List.iter
+    (fun refl -> gray ("TIR with " ^ refl) 0.25 (inside "<0,0,1.732>" refl))
+    [ ""; "reflection { 0, 1 fresnel on }"; "reflection 0.5"; "reflection { 0.5 exponent 0.5 }";
+      "reflection { rgb <1,0,0> }" ];
+  gray ~eps:2e-4 "head-on, fresnel" 0.2602 (inside "<0,0,0.3>" "reflection { 0, 1 fresnel on }");
+  gray "head-on, reflection 0.5" 0.375 (inside "<0,0,0.3>" "reflection 0.5")
+
+(* Focal blur: a plane in the focal plane stays sharp (every lens ray
+   meets the same point), an edge far behind it is spread over the lens's
+   image: the pixel on the edge becomes the mean of both sides. *)
+let focal_blur () =
+  let cam focal = Printf.sprintf
+      "camera { location 0 look_at z angle 5 aperture 0.4 blur_samples 64 focal_point <0,0,%g> }\n"
+      focal in
+  let edge z = Printf.sprintf
+      "plane { z, %g pigment { checker rgb 0, rgb 1 scale 100 translate <0,0,-1e-3> } \
+       finish { ambient 1 diffuse 0 } }\n" z in
+  let sharp = pixel ~w:2 ~h:1 ~x:0 (cam 10. ^ edge 10.) and pin = pixel ~w:2 ~h:1 ~x:0 (edge 10.) in
+  if pin.r > 0.01 && pin.r < 0.99 then Alcotest.failf "the pinhole pixel is on the edge: %g" pin.r;
+  color "in focus = pinhole" (pin.r, pin.g, pin.b) sharp;
+  let blurred = pixel ~w:2 ~h:1 ~x:0 (cam 1. ^ edge 10.) in
+  if not (blurred.r > 0.2 && blurred.r < 0.8) then
+    Alcotest.failf "out of focus edge: %g (pinhole %g)" blurred.r pin.r
 
 let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
                plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
@@ -193,6 +228,7 @@ let tests =
       Alcotest.test_case "shadows" `Quick shadows;
       Alcotest.test_case "reflection" `Quick reflection;
       Alcotest.test_case "transparency" `Quick transparency;
+      Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
