@@ -5,7 +5,7 @@ CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
 .PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance \
-  conformance-parse messages-coverage
+  conformance-parse messages-coverage gallery
 
 all: build
 
@@ -48,6 +48,10 @@ FUZZ_N ?= 100000
 fuzz: build
 	@dune build test/fuzz/fuzz.exe 2>&1 | grep -v '^Read ' | head -50
 	./_build/default/test/fuzz/fuzz.exe $(FUZZ_N)
+
+# the seed scenes in both modes -> docs/gallery.jpg (needs ImageMagick)
+gallery: build
+	@bash scripts/gallery.sh
 
 # `camlray check` over POV-Ray's example scenes -> docs/conformance-parse.md
 conformance-parse: build
