@@ -49,7 +49,7 @@ fuzz: build
 	@dune build test/fuzz/fuzz.exe 2>&1 | grep -v '^Read ' | head -50
 	./_build/default/test/fuzz/fuzz.exe $(FUZZ_N)
 
-# the seed scenes in both modes -> docs/gallery.jpg (needs ImageMagick)
+# the seed scenes in both modes -> docs/gallery.png (needs ImageMagick)
 gallery: build
 	@bash scripts/gallery.sh
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders every seed scene in both modes (240x180; whitted with +A0.3,
-# mc with 64 samples per pixel) and assembles docs/gallery.jpg.
+# mc with 64 samples per pixel) and assembles docs/gallery.png.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 command -v montage >/dev/null || { echo "gallery: needs ImageMagick (apt-get install imagemagick)" >&2; exit 1; }
@@ -15,5 +15,5 @@ for f in scenes/seeds/*.scn; do
   args+=(-label "$n whitted" "$work/$n-whitted.png" -label "$n mc" "$work/$n-mc.png")
 done
 montage "${args[@]}" -tile 6x -geometry 200x150+2+2 -pointsize 11 "$work/sheet.png"
-convert "$work/sheet.png" -depth 8 -quality 85 docs/gallery.jpg
-echo "wrote docs/gallery.jpg"
+convert "$work/sheet.png" -depth 8 -colors 256 PNG8:docs/gallery.png
+echo "wrote docs/gallery.png"
