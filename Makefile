@@ -5,7 +5,7 @@ CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
 .PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance \
-  conformance-parse messages-coverage gallery
+  conformance-parse messages-coverage gallery radiosity
 
 all: build
 
@@ -52,6 +52,10 @@ fuzz: build
 # the seed scenes in both modes -> docs/gallery.png (needs ImageMagick)
 gallery: build
 	@bash scripts/gallery.sh
+
+# seeds by POV-Ray with radiosity beside camlray's mc mode -> docs/radiosity.png
+radiosity: build
+	@bash scripts/radiosity.sh
 
 # `camlray check` over POV-Ray's example scenes -> docs/conformance-parse.md
 conformance-parse: build
