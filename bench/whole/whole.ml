@@ -1,6 +1,7 @@
 (* Whole-render benchmarks, measured side by side in one run:
 
-   1. domain scaling: each scene rendered with 1, 2, 4 (and more) domains,
+   1. domain scaling (the RTIOW final scene in mc mode, the snowman and
+      the default scene in whitted mode, a 10^5-triangle mesh): each scene rendered with 1, 2, 4 (and more) domains,
       several runs, median; speed-up and parallel efficiency on the trace
       time that camlray reports, and on the whole wall time;
    2. camlray against POV-Ray 3.7 on the same whitted scenes, same size,
@@ -199,13 +200,14 @@ let () =
   let rtiow = s ("RTIOW final (mc, 16 spp)" ^ variant rtiow_file) rtiow_file [ "--mode"; "mc"; "--spp"; "16" ] in
   let snowman = s ("snowman (whitted)" ^ variant snowman_file) snowman_file [] in
   let default = s "default (whitted)" "scenes/default.scn" [] in
+  let mesh = s "10^5-triangle mesh (whitted)" "bench/scenes/mesh-100k.scn" [] in
   let available sc = Sys.file_exists sc.file in
   let ncores = Domain.recommended_domain_count () in
   let domain_counts = List.sort_uniq compare [ 1; 2; ncores; 2 * ncores ] in
   let scaling_scenes =
     List.filter (fun (sc, _, _) -> available sc)
       [ (let w, h = sz 400 225 in (rtiow, w, h)); (let w, h = sz 1600 1200 in (snowman, w, h));
-        (let w, h = sz 1600 1200 in (default, w, h)) ]
+        (let w, h = sz 1600 1200 in (default, w, h)); (let w, h = sz 1600 1200 in (mesh, w, h)) ]
   in
   let working =
     List.filter
@@ -224,7 +226,8 @@ let () =
         [ (let w, h = sz 800 600 in (snowman, w, h, false)); (let w, h = sz 800 600 in (default, w, h, false));
           (* trace-only comparison on a larger image (POV-Ray's 0.7 s start-up
              weighs less) *)
-          (let w, h = sz 1600 1200 in (snowman, w, h, false)); (let w, h = sz 1600 1200 in (default, w, h, false)) ]
+          (let w, h = sz 1600 1200 in (snowman, w, h, false)); (let w, h = sz 1600 1200 in (default, w, h, false));
+          (let w, h = sz 1600 1200 in (mesh, w, h, false)) ]
     in
     let t = pov_table pov_scenes in
     print_string t;
