@@ -163,8 +163,12 @@ and shade s ray hit level weight media fade =
   (* relative index of refraction across this surface *)
   let inner = hit.obj.interior in
   let outer_ior = match media with i :: _ -> i.Interior.ior | [] -> 1. in
+  (* entering or leaving is decided as POV-Ray does, by whether the ray is
+     already inside this interior, not by the side of the surface: the
+     children of a CSG share their parent's interior, so in the overlap of
+     a union of glass spheres the inner walls bend light as glass/air *)
   let eta, next_media =
-    if entering then (outer_ior /. inner.ior, inner :: media)
+    if not (List.memq inner media) then (outer_ior /. inner.ior, inner :: media)
     else
       let rest = match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m in
       let beyond = match rest with i :: _ -> i.Interior.ior | [] -> 1. in

@@ -7,13 +7,16 @@ let exe () =
   | None -> "../install/default/bin/camlray"
 
 let scenes_dir = "../../../scenes/whitted-extra"
+let scene_folders = [ "../../../scenes/whitted-extra"; "../../../scenes/whitted"; "../../../scenes/seeds" ]
 
-(* scene, minimum SSIM, minimum PSNR (dB), with anti-aliasing +A0.3 +R3 -J
-   (noise.pov is left out: camlray's noise is not POV-Ray's) *)
-let expectations =
-  [ ("checker", 0.98, 50.); ("area", 0.98, 50.); ("layered", 0.98, 50.); ("sky", 0.98, 50.);
-    ("backdiffuse", 0.98, 50.); ("fadeshadow", 0.98, 50.); ("glass", 0.98, 50.);
-    ("lights", 0.98, 50.); ("patterns", 0.98, 50.); ("normals", 0.98, 50.); ("texmap", 0.98, 50.) ]
+(* Every scene of the harness folders, at 160x120 with anti-aliasing +A0.3
+   +R3 -J. Scenes that do not depend on noise or random sampling must
+   agree with POV-Ray: SSIM at least [min_ssim] and PSNR at least
+   [min_psnr] dB (lowest measured at this size: SSIM 0.9999, 57.6 dB, in
+   refraction.scn; most are identical or above 85 dB). The others are
+   reported, not held to a number (camlray's noise is its own). *)
+let min_ssim = 0.999
+let min_psnr = 50.
 
 let read_tsv file =
   let ic = open_in file in
@@ -23,11 +26,11 @@ let read_tsv file =
         match input_line ic with
         | l -> (
             match String.split_on_char '\t' l with
-            | name :: psnr :: ssim :: _ ->
+            | [ name; psnr; ssim; _; _; _; noise ] ->
                 let psnr = if psnr = "inf" then infinity else float_of_string psnr in
-                go ((name, (psnr, float_of_string ssim)) :: acc)
-            | _ -> go acc)
-        | exception End_of_file -> acc
+                go ((name, (psnr, float_of_string ssim, bool_of_string noise)) :: acc)
+            | _ -> Alcotest.failf "bad report line %S" l)
+        | exception End_of_file -> List.rev acc
       in
       go [])
 
@@ -36,21 +39,27 @@ let cross_render () =
     print_endline "povray not installed: cross-render test skipped"
   else begin
     let out = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "camlray-compare-%d" (Unix.getpid ())) in
-    let files = List.map (fun (n, _, _) -> Filename.quote (Filename.concat scenes_dir (n ^ ".pov"))) expectations in
     let cmd =
       Printf.sprintf "%s compare -W 160 -H 120 --aa 0.3 -o %s %s >/dev/null 2>&1" (Filename.quote (exe ()))
-        (Filename.quote out) (String.concat " " files)
+        (Filename.quote out) (String.concat " " (List.map Filename.quote scene_folders))
     in
     Alcotest.(check int) "compare exit code" 0 (Sys.command cmd);
     let rows = read_tsv (Filename.concat out "report.tsv") in
+    let expected =
+      List.concat_map
+        (fun d ->
+          Sys.readdir d |> Array.to_list
+          |> List.filter (fun f -> Filename.check_suffix f ".pov" || Filename.check_suffix f ".scn"))
+        scene_folders
+    in
+    Alcotest.(check int) "every scene is in the report" (List.length expected) (List.length rows);
+    let exact = List.filter (fun (_, (_, _, noise)) -> not noise) rows in
+    if List.length exact < 40 then Alcotest.failf "only %d noise-free scenes" (List.length exact);
     List.iter
-      (fun (name, min_ssim, min_psnr) ->
-        match List.assoc_opt name rows with
-        | None -> Alcotest.failf "%s missing from the report" name
-        | Some (psnr, ssim) ->
-            if not (ssim >= min_ssim) then Alcotest.failf "%s: SSIM %.4f below %.2f" name ssim min_ssim;
-            if not (psnr >= min_psnr) then Alcotest.failf "%s: PSNR %.2f dB below %.0f" name psnr min_psnr)
-      expectations;
+      (fun (name, (psnr, ssim, _)) ->
+        if not (ssim >= min_ssim) then Alcotest.failf "%s: SSIM %.4f below %.3f" name ssim min_ssim;
+        if not (psnr >= min_psnr) then Alcotest.failf "%s: PSNR %.2f dB below %.0f" name psnr min_psnr)
+      exact;
     ignore (Sys.command ("rm -rf " ^ Filename.quote out))
   end
 
