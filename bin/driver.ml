@@ -291,8 +291,10 @@ let merge parts out =
       prerr_endline ("camlray: " ^ e);
       1
 
-let check path include_dirs allow_read limits =
-  let options = { Parse.default_options with include_dirs; allow_read; limits } in
+let check path include_dirs allow_read limits frame_number clock =
+  let options =
+    { Parse.default_options with include_dirs; allow_read; limits; frame_number; clock }
+  in
   try
     match compile ~options (Some path) with
     | Error d ->

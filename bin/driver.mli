@@ -30,8 +30,9 @@ type render_opts = {
 }
 
 val render : render_opts -> int
-val check : string -> string list -> string list -> Camlray_lang.Supplier.limits -> int
-(** [check scene include_dirs allow_read limits] *)
+val check :
+  string -> string list -> string list -> Camlray_lang.Supplier.limits -> int -> float -> int
+(** [check scene include_dirs allow_read limits frame_number clock] *)
 
 val merge : string list -> string -> int
 (** [merge parts out]: assemble partial renders. *)

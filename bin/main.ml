@@ -171,9 +171,16 @@ let render_cmd =
 
 let check_cmd =
   let scene = Arg.(required & pos 0 (some string) None & info [] ~docv:"SCENE" ~doc:"The scene file.") in
+  let frame =
+    Arg.(value & opt int 0 & info [ "frame" ] ~docv:"N"
+           ~doc:"Read the scene as frame $(docv) of an animation ($(b,frame_number)).")
+  in
+  let clock =
+    Arg.(value & opt float 0. & info [ "clock" ] ~docv:"T" ~doc:"The value of $(b,clock).")
+  in
   Cmd.v
     (Cmd.info "check" ~doc:"Parse and compile a scene, report errors, render nothing.")
-    Term.(const Driver.check $ scene $ include_path $ allow_read $ limits)
+    Term.(const Driver.check $ scene $ include_path $ allow_read $ limits $ frame $ clock)
 
 let merge_cmd =
   let parts = Arg.(non_empty & pos_all file [] & info [] ~docv:"PART" ~doc:"Partial renders (PNG).") in

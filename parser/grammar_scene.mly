@@ -36,6 +36,9 @@
   | FOCAL_POINT e = param { Sdl.Focal_point (v3 $loc(e) e) }
   | BLUR_SAMPLES e = param { Sdl.Blur_samples (Value.to_int (loc $loc(e)) e) }
   | t = transformation { Sdl.Cam_transform t }
+  (* camera words camlray knows elsewhere, named when met here *)
+  | CYLINDER { Diag.error (loc $loc) "cylinder (a camera type) is not supported by camlray" }
+  | NORMAL { Diag.error (loc $loc) "normal in a camera is not supported by camlray" }
 
 %public global_item:
   | ASSUMED_GAMMA e = param { Sdl.Assumed_gamma (fl $loc(e) e) }

@@ -299,7 +299,7 @@
   | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
 
 %public normal_body:
-  | k = block_kind a = ioption(param) ms = list(normal_mod)
+  | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
       { let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
@@ -308,11 +308,14 @@
           let p = Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern;
                                      xform = n.xform; amount = n.amount } in
           Texdesc.normal p) n }
-  | k = pattern_kind a = ioption(param) ms = list(normal_mod)
+  | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
       { let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | ms = list(normal_mod) { ignore ms; None }
+
+(* normal { PATTERN [,] BUMP_SIZE ... } *)
+bump_size: COMMA? a = param { a }
 
 %public normal_mod:
   | t = transformation { Texdesc.transform t }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # make conformance-parse: run `camlray check` over every POV-Ray example
-# scene (.pov, or .pov.gz decompressed to a temporary folder), two at a
+# scene (.pov, or .pov.gz decompressed to a temporary folder; a scene with
+# an INI file of the same name read as its first frame), two at a
 # time, in a scratch copy of the examples, classify the outcome (accepted / unsupported feature / error) and
 # write the table to docs/conformance-parse.md.
 set -uo pipefail
@@ -35,7 +36,17 @@ done < <(find "$EXAMPLES" -type f \( -name '*.pov' -o -name '*.pov.gz' \) | sort
 check_one() {
   f=$1
   name=${f#"$EXAMPLES"/}
-  err=$(cd "$(dirname "$f")" && timeout 60 "$EXE" check "$(basename "$f")" 2>&1 >/dev/null)
+  # a scene made to run from its INI file (same name) as an animation is
+  # read as POV-Ray reads its first frame
+  extra=()
+  ini=${f%.pov}.ini
+  if [ -f "$ini" ]; then
+    fr=$(sed -n 's/^[[:space:]]*Initial_Frame[[:space:]]*=[[:space:]]*\([0-9]*\).*/\1/Ip' "$ini" | head -1)
+    ck=$(sed -n 's/^[[:space:]]*Initial_Clock[[:space:]]*=[[:space:]]*\([-0-9.]*\).*/\1/Ip' "$ini" | head -1)
+    [ -n "$fr" ] && extra+=(--frame "$fr")
+    [ -n "$ck" ] && extra+=(--clock "$ck")
+  fi
+  err=$(cd "$(dirname "$f")" && timeout 60 "$EXE" check "$(basename "$f")" "${extra[@]}" 2>&1 >/dev/null)
   rc=$?
   first=$(printf '%s\n' "$err" | grep -m1 ': error: ' | sed 's/^.*: error: //')
   if [ $rc -eq 0 ]; then printf '%s\taccepted\t\n' "$name"

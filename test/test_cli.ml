@@ -28,6 +28,13 @@ let units =
             let code, out, _ = Helpers.run [ "check"; p ] in
             Alcotest.(check int) "exit" 0 code;
             Alcotest.(check bool) out true (contains out "1 objects, 1 lights")));
+    Alcotest.test_case "check reads a frame of an animation (--frame, --clock)" `Quick (fun () ->
+        with_scene "#if (frame_number != 3 | clock != 0.5) #error \"not frame 3\" #end\nsphere { 0, 1 }"
+          (fun _ p ->
+            let code, _, err = Helpers.run [ "check"; p ] in
+            Alcotest.(check int) ("frame 0: " ^ err) 1 code;
+            let code, _, err = Helpers.run [ "check"; p; "--frame"; "3"; "--clock"; "0.5" ] in
+            Alcotest.(check int) ("frame 3: " ^ err) 0 code));
     Alcotest.test_case "a missing scene file: one line, exit 1" `Quick (fun () ->
         let code, _, err = Helpers.run [ "render"; "/nonexistent/x.scn" ] in
         Alcotest.(check int) "exit" 1 code;

@@ -104,6 +104,19 @@ let image_map () =
   Scn.color "right texel, repeated" (0., 1., 0.) (px "<-1.75, -0.5, 0>");
   Sys.remove file
 
+(* normal { PATTERN, BUMP_SIZE }: the comma is optional (POV-Ray reads
+   both forms; textures/patterns/gradient.pov uses it) *)
+let normal_comma () =
+  let amount src =
+    let s = Scn.compile (Printf.sprintf "sphere { 0, 1 normal { %s } }" src) in
+    match s.objects.(0).texture with
+    | { normal = Some n; _ } :: _ -> n.amount
+    | _ -> Alcotest.failf "no normal in %S" src
+  in
+  Scn.close "bumps, 0.5" 0.5 (amount "bumps, 0.5");
+  Scn.close "bumps 0.5" 0.5 (amount "bumps 0.5");
+  Scn.close "gradient x, 5.6" 5.6 (amount "gradient x, 5.6 scale 0.24")
+
 let tests =
   ( "pattern",
     [
@@ -112,5 +125,6 @@ let tests =
       Alcotest.test_case "gradient and waves" `Quick gradient;
       Alcotest.test_case "maps" `Quick maps;
       Alcotest.test_case "transforms" `Quick transforms;
+      Alcotest.test_case "normal bump size after a comma" `Quick normal_comma;
       Alcotest.test_case "image_map" `Quick image_map;
     ] )
