@@ -188,8 +188,8 @@ open Gram
   | s = STRING { Value.String s }
   | s = STRING_ID { Value.String s }
   | LPAREN e = expr RPAREN { e }
-  | LT c = add cs = list(vector_more) GT
-      { let cs = c :: cs in
+  | LT cs = vector_items ioption(COMMA) GT
+      { let cs = List.rev cs in
         let n = List.length cs in
         (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
         if (n < 2 || n > 5) && n <> 12 then
@@ -210,6 +210,12 @@ open Gram
 %public vector_more:
   | COMMA e = add { e }
   | e = add_nosign { e }
+
+(* the components, last first (left-recursive, so that a trailing comma,
+   which POV-Ray accepts, needs no lookahead) *)
+vector_items:
+  | c = add { [ c ] }
+  | cs = vector_items c = vector_more { c :: cs }
 
 (* a component written without a comma cannot start with a sign: <1 -2>
    is one component, 1 - 2 *)

@@ -149,6 +149,8 @@
 %public cell_color:
   | e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
   | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
+  | COLOR ms = nonempty_list(channel)
+      { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
 
 (* a colour that starts with a keyword (color ..., rgb ...) *)
 %public kw_color:
@@ -387,3 +389,14 @@ bump_size: COMMA? a = param { a }
   | FADE_POWER e = param { let x = fl $loc(e) e in fun (i : Interior.t) -> { i with fade_power = x } }
   | FADE_COLOR c = color_value
       { let c = Value.to_rgb (loc $loc(c)) c in fun (i : Interior.t) -> { i with fade_color = c } }
+
+(* arrays of declared maps, normals and materials:
+   #declare A = array[2] { M_Glass, M_Glass2 } *)
+%public array_elem:
+  | d = texture_decl_id COMMA { (d, false) }
+  | d = texture_decl_id RBRACE { (d, true) }
+
+texture_decl_id:
+  | m = COLOR_MAP_ID { Decl.Color_map m }
+  | n = NORMAL_ID { Decl.Normal n }
+  | m = MATERIAL_ID { Decl.Material m }
