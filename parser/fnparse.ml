@@ -296,6 +296,9 @@ let compile ~resolve ~params toks =
   let body = expr st in
   (match peek st with
   | Eof -> ()
+  | Tok (Parser.MEMBER m) ->
+      (* a pigment function's colour channel: F(x,y,z).gray *)
+      err st "in a function: .%s of a function's value is not supported by camlray" m
   | r -> err st "in a function: expected an operator or '}', found %s" (describe r));
   Fn.make ~params:(Array.of_list params) ~nslots:st.nslots ~unsupported:st.unsupported (run body)
 

@@ -132,6 +132,7 @@
   | k = pattern_kind ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pattern k))) }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
       { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
+  | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
   | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         Texdesc.(pigment (apply ms (of_pigment p))) }
@@ -315,6 +316,7 @@
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | ms = list(normal_mod) { ignore ms; None }
+  | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
 
 (* normal { PATTERN [,] BUMP_SIZE ... } *)
 bump_size: COMMA? a = param { a }
