@@ -5,13 +5,15 @@ let given = ref false
 let first = ref None
 let items_seen = ref false
 let tex = ref (Texture.layer Pigment.black Finish.default)
+let tex_set = ref false
 
 let reset () =
   version_ := 3.62;
   given := false;
   first := None;
   items_seen := false;
-  tex := Texture.layer Pigment.black Finish.default
+  tex := Texture.layer Pigment.black Finish.default;
+  tex_set := false
 
 let version () = !version_
 
@@ -25,6 +27,7 @@ let version_given () = !given
 let first_version () = !first
 let mark_item () = items_seen := true
 let texture () = !tex
-let set_finish f = tex := { !tex with finish = f }
-let set_pigment p = tex := { !tex with pigment = p }
-let set_normal n = tex := { !tex with normal = n }
+let texture_set () = !tex_set
+let set_finish f = tex_set := true; tex := { !tex with finish = f }
+let set_pigment p = tex_set := true; tex := { !tex with pigment = p }
+let set_normal n = tex_set := true; tex := { !tex with normal = n }

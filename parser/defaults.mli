@@ -20,6 +20,9 @@ val mark_item : unit -> unit
     the gamma rules). *)
 
 val texture : unit -> Camlray.Texture.layer
+
+val texture_set : unit -> bool
+(** Whether a [#default] has changed the texture since {!reset}. *)
 val set_finish : Camlray.Finish.t -> unit
 val set_pigment : Camlray.Pigment.t -> unit
 val set_normal : Camlray.Normal.t option -> unit

@@ -12,7 +12,7 @@
 %public scene: items = list(item) EOF { items }
 
 %public item:
-  | o = object_ { Defaults.mark_item (); Budget.place o; Sdl.Object o }
+  | o = object_ { Defaults.mark_item (); Budget.place o; Sdl.Object (Shapes.default_texture o) }
   | CAMERA LBRACE c = camera_body RBRACE { Defaults.mark_item (); Sdl.Camera (loc $loc, c) }
   | BACKGROUND LBRACE c = color_value RBRACE
       { Sdl.Background (Value.to_color (loc $loc(c)) c) }

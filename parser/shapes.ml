@@ -168,3 +168,8 @@ let csg l op items =
   let children = List.filter_map (function `Child o -> Some o | `Mod _ -> None) items in
   let mods = List.filter_map (function `Mod m -> Some m | `Child _ -> None) items in
   obj l (Sdl.Csg (op, children)) mods
+
+let default_texture (o : Sdl.obj) =
+  match (o.texture, o.shape) with
+  | None, Sdl.Light _ | Some _, _ -> o
+  | None, _ -> if Defaults.texture_set () then { o with texture = Some [ Defaults.texture () ] } else o

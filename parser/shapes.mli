@@ -45,3 +45,9 @@ val inside_vector : Loc.t -> Camlray.Vec3.t -> Sdl.obj -> Sdl.obj
 val csg : Loc.t -> Sdl.csg -> [ `Child of Sdl.obj | `Mod of Sdl.obj -> Sdl.obj ] list -> Sdl.obj
 (** A CSG object from its children and modifiers (modifiers apply to the
     whole, in order). *)
+
+val default_texture : Sdl.obj -> Sdl.obj
+(** An object placed in the scene without a texture gets the [#default]
+    texture in force there (its CSG children without one inherit it).
+    Known difference: "there" is after the parser's lookahead, so an
+    object followed directly by a [#default] gets that new default. *)

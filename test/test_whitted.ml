@@ -158,6 +158,19 @@ let focal_blur () =
   if not (blurred.r > 0.2 && blurred.r < 0.8) then
     Alcotest.failf "out of focus edge: %g (pinhole %g)" blurred.r pin.r
 
+(* An object without a texture takes the #default texture in force where
+   it is placed (povray 3.7 renders bwstripe.pov this way): 0.5 x ambient
+   0.55; a CSG child without one inherits its parent's; before any
+   #default, the built-in black (known difference: an object directly
+   followed by a #default takes the new one; here a sphere stands between). *)
+let default_texture () =
+  let d = "#default { texture { pigment { rgb 0.5 } finish { ambient 0.55 diffuse 0 } } }\n" in
+  gray "#default texture" 0.275 (pixel (d ^ "plane { z, 1 }"));
+  gray "inherited through a union" 0.275 (pixel (d ^ "union { plane { z, 1 } sphere { <0,0,5>, 1 } }"));
+  gray "a parent's texture wins" 1.
+    (pixel (d ^ "union { plane { z, 1 } pigment { rgb 1 } finish { ambient 1 } }"));
+  gray "before #default" 0. (pixel ("plane { z, 1 }\nsphere { <0,0,-10>, 1 }\n" ^ d))
+
 let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
                plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
 
@@ -229,6 +242,7 @@ let tests =
       Alcotest.test_case "reflection" `Quick reflection;
       Alcotest.test_case "transparency" `Quick transparency;
       Alcotest.test_case "focal blur" `Quick focal_blur;
+      Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
