@@ -39,7 +39,8 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
    samples), so they cannot match pixel for pixel: reported separately. *)
 let noise_words =
   [ "bozo"; "spotted"; "granite"; "agate"; "wrinkles"; "ripples"; "waves"; "bumps"; "dents";
-    "turbulence"; "crackle"; "textures.inc"; "stones"; "jitter"; "aperture" ]
+    "turbulence"; "crackle"; "textures.inc"; "stones"; "stones.inc"; "woods.inc"; "skies.inc";
+    "jitter"; "aperture" ]
 
 let uses_noise file =
   match In_channel.with_open_bin file In_channel.input_all with

@@ -35,7 +35,13 @@ let camera items =
         right := Vec3.scale rl r;
         up := Vec3.scale ul (Vec3.cross d (Vec3.normalize r))
       end
-      else direction := Vec3.scale dl d
+      else begin
+        (* looking along the sky vector: POV-Ray keeps the right vector
+           and turns up to be perpendicular (checked with povray 3.7: a
+           camera above the origin looking down has +x right, +z up) *)
+        direction := Vec3.scale dl d;
+        up := Vec3.scale ul (Vec3.cross d (Vec3.normalize !right))
+      end
   | None -> ());
   (if ortho && ((up0 = None && right0 = None) || angle <> None) then
      let dist =
