@@ -42,15 +42,26 @@ let noise_words =
     "turbulence"; "crackle"; "textures.inc"; "stones"; "stones.inc"; "woods.inc"; "skies.inc";
     "jitter"; "aperture" ]
 
-let uses_noise file =
-  match In_channel.with_open_bin file In_channel.input_all with
-  | exception Sys_error _ -> false
-  | text ->
-      let words =
-        String.split_on_char ' '
-          (String.map (fun c -> match c with 'a' .. 'z' | '0' .. '9' | '_' | '.' -> c | _ -> ' ') text)
-      in
-      List.exists (fun w -> List.mem w noise_words) words
+let has_noise_word text =
+  let words =
+    String.split_on_char ' '
+      (String.map (fun c -> match c with 'a' .. 'z' | '0' .. '9' | '_' | '.' -> c | _ -> ' ') text)
+  in
+  List.exists (fun w -> List.mem w noise_words) words
+
+(* the scene and every file it includes (as the parser reads them) *)
+let uses_noise ~include_dirs file =
+  let files =
+    match Camlray_lang.Parse.file ~options:{ Camlray_lang.Parse.default_options with include_dirs } file with
+    | Ok (_, files) -> files
+    | Error _ -> [ file ]
+  in
+  List.exists
+    (fun f ->
+      match In_channel.with_open_bin f In_channel.input_all with
+      | exception Sys_error _ -> false
+      | text -> has_noise_word text)
+    files
 
 type row = {
   name : string;
@@ -143,7 +154,7 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
                     frames = None; clock = None; clock_range = None; subset = None;
                     tile_order_seed = None; aa; aa_depth; limits = Camlray_lang.Supplier.default_limits })
           in
-          let noise = uses_noise scene in
+          let noise = uses_noise ~include_dirs scene in
           let row note = { name; noise; psnr = nan; ssim = nan; max_diff = -1; pov_s; cam_s; note } in
           let r =
             if not pov_ok then row (Printf.sprintf "POV-Ray failed (see %s.povray.log)" name)
