@@ -49,19 +49,22 @@ let has_noise_word text =
   in
   List.exists (fun w -> List.mem w noise_words) words
 
-(* the scene and every file it includes (as the parser reads them) *)
+(* the scene and the files of its own it includes (as the parser reads
+   them); POV-Ray's standard include files count by name (woods.inc, ...)
+   where they are included, not by everything they declare *)
 let uses_noise ~include_dirs file =
   let files =
     match Camlray_lang.Parse.file ~options:{ Camlray_lang.Parse.default_options with include_dirs } file with
     | Ok (_, files) -> files
     | Error _ -> [ file ]
   in
+  let standard f = String.starts_with ~prefix:Camlray_lang.Parse.pov_include_dir f in
   List.exists
     (fun f ->
       match In_channel.with_open_bin f In_channel.input_all with
       | exception Sys_error _ -> false
       | text -> has_noise_word text)
-    files
+    (List.filter (fun f -> not (standard f)) files)
 
 type row = {
   name : string;
