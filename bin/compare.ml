@@ -39,7 +39,7 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
    samples), so they cannot match pixel for pixel: reported separately. *)
 let noise_words =
   [ "bozo"; "spotted"; "granite"; "agate"; "wrinkles"; "ripples"; "waves"; "bumps"; "dents";
-    "turbulence"; "crackle"; "textures.inc"; "stones"; "stones.inc"; "woods.inc"; "skies.inc";
+    "turbulence"; "crackle"; "textures.inc"; "stones"; "stones.inc"; "woods.inc"; "skies.inc"; "stars.inc";
     "jitter"; "aperture" ]
 
 let has_noise_word text =
