@@ -139,6 +139,9 @@ let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
       add acc c)
     black s.lights
 
+(* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
+let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
+
 (* [media]: the interiors the ray is inside, innermost first. *)
 let rec trace_ray ?(tmin = Ray.epsilon) (s : Scene.t) (ray : Ray.t) level weight media =
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
@@ -225,21 +228,20 @@ and shade s ray hit level weight media fade =
             let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
             if is_black w then (acc, w) else layers refl acc w rest)
   in
-  let refracts tr = Color.luminance tr > s.settings.adc_bailout in
-  let tir n = eta > 1. && 1. +. (eta *. eta *. ((cos_of n *. cos_of n) -. 1.)) < 0. in
+  let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
-  let guess = tir n0 in
+  let guess = total_internal eta (cos_of n0) in
   let c, tr = layers (not guess) black white hit.obj.texture in
   let n = Option.value ~default:n0 !top_normal in
   let c, tr =
-    if guess = (refracts tr && tir n) then (c, tr)
+    if guess = (Color.luminance tr > bailout && total_internal eta (cos_of n)) then (c, tr)
     else begin
       top_normal := None;
       layers guess black white hit.obj.texture
     end
   in
-  if not (refracts tr) then c
+  if Color.luminance tr <= bailout then c
   else
     let w = weight *. Color.max_channel tr in
     if eta = 1. then
