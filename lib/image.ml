@@ -20,7 +20,7 @@ let get_g t x y = Float.Array.get t.px ((3 * ((y * t.w) + x)) + 1)
 let get_b t x y = Float.Array.get t.px ((3 * ((y * t.w) + x)) + 2)
 
 type rgb8 = { w : int; h : int; data : Bytes.t }
-type encoding = Srgb | Identity
+type encoding = Srgb | Gamma_srgb of float | Identity
 
 let srgb_encode c =
   if c <= 0.0031308 then 12.92 *. c
@@ -31,7 +31,12 @@ let to_rgb8 enc (img : t) =
   Float.Array.iteri
     (fun i v ->
       let v = if Float.is_nan v then 0. else Float.min 1. (Float.max 0. v) in
-      let v = match enc with Srgb -> srgb_encode v | Identity -> v in
+      let v =
+        match enc with
+        | Srgb -> srgb_encode v
+        | Gamma_srgb g -> srgb_encode (Float.pow v g)
+        | Identity -> v
+      in
       Bytes.set data i (Char.chr (int_of_float (Float.round (v *. 255.)))))
     img.px;
   { w = img.w; h = img.h; data }

@@ -25,6 +25,10 @@ type rgb8 = { w : int; h : int; data : Bytes.t }
 
 type encoding =
   | Srgb  (** the sRGB transfer curve (POV-Ray 3.7's default File_Gamma) *)
+  | Gamma_srgb of float
+      (** [assumed_gamma g], g <> 1: values are taken as gamma-[g] encoded,
+          decoded ([x^g]) and sRGB-encoded (checked with povray 3.7, any
+          #version: 0.7 with g = 2.2 is written as 0.70578) *)
   | Identity  (** values written as they are (POV-Ray without #version 3.7) *)
 
 val srgb_encode : float -> float

@@ -285,8 +285,9 @@ and scene_ (s : Sdl.scene) =
     let v37 = match s.version with Some v -> v >= 3.7 | None -> false in
     let encoding =
       match (v37, !gamma) with
+      | _, Some g when Float.abs (g -. 1.) < 1e-6 -> Image.Srgb
+      | _, Some g when g > 0. -> Image.Gamma_srgb g
       | true, _ -> Image.Srgb
-      | false, Some g when Float.abs (g -. 1.) < 1e-6 -> Image.Srgb
       | false, _ -> Image.Identity
     in
     let camera = match !cams with (_, c) :: _ -> camera c | [] -> Camera.default in

@@ -17,6 +17,12 @@ let rules () =
   check "3.7 + assumed_gamma 1" 218 "#version 3.7;\nglobal_settings { assumed_gamma 1.0 }";
   check "3.7 without assumed_gamma" 218 "#version 3.7;";
   check "no #version" 179 "";
-  check "no #version + assumed_gamma 1" 218 "global_settings { assumed_gamma 1.0 }"
+  check "no #version + assumed_gamma 1" 218 "global_settings { assumed_gamma 1.0 }";
+  (* assumed_gamma g <> 1, whatever the version: sRGB of x^g (povray 3.7
+     writes 0.7 as 0.705776 for g = 2.2 and 0.752377 for g = 1.8) *)
+  check "3.7 + assumed_gamma 2.2" 180 "#version 3.7;\nglobal_settings { assumed_gamma 2.2 }";
+  check "3.6 + assumed_gamma 2.2" 180 "#version 3.6;\nglobal_settings { assumed_gamma 2.2 }";
+  check "no #version + assumed_gamma 2.2" 180 "global_settings { assumed_gamma 2.2 }";
+  check "3.7 + assumed_gamma 1.8" 192 "#version 3.7;\nglobal_settings { assumed_gamma 1.8 }"
 
 let tests = ("gamma", [ Alcotest.test_case "header rules" `Quick rules ])
