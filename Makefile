@@ -5,7 +5,7 @@ CAMLRAY := _build/install/default/bin/camlray
 SCENE ?= scenes/default.scn
 
 .PHONY: all setup build render test bench fuzz stress clean mc-convergence conformance \
-  conformance-parse messages-coverage gallery radiosity
+  conformance-parse messages-coverage gallery radiosity afl
 
 all: build
 
@@ -48,6 +48,10 @@ FUZZ_N ?= 100000
 fuzz: build
 	@dune build test/fuzz/fuzz.exe 2>&1 | grep -v '^Read ' | head -50
 	./_build/default/test/fuzz/fuzz.exe $(FUZZ_N)
+
+# AFL++ on an instrumented parser (AFL_SECONDS, default 600)
+afl: setup
+	@bash scripts/afl.sh
 
 # the seed scenes in both modes -> docs/gallery.png (needs ImageMagick)
 gallery: build
