@@ -55,11 +55,11 @@ afl: setup
 
 # the seed scenes in both modes -> docs/gallery.png (needs ImageMagick)
 gallery: build
-	@bash scripts/gallery.sh
+	@bash scripts/sheets.sh gallery
 
 # seeds by POV-Ray with radiosity beside camlray's mc mode -> docs/radiosity.png
 radiosity: build
-	@bash scripts/radiosity.sh
+	@bash scripts/sheets.sh radiosity
 
 # `camlray check` over POV-Ray's example scenes -> docs/conformance-parse.md
 conformance-parse: build
