@@ -9,7 +9,7 @@ let default =
   { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black }
 
 let fade i d =
-  if i.fade_distance = 0. || i.fade_power = 0. then Color.white
+  if i.fade_distance = 0. then Color.white
   else
     let f c =
       if i.fade_power >= 1000. then Float.exp (-.(1. -. c) *. d /. i.fade_distance)

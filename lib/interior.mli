@@ -12,4 +12,6 @@ val default : t
 
 val fade : t -> float -> Color.t
 (** Attenuation after travelling a distance inside (pov-facts.md 5.6);
-    white when there is no fade. *)
+    white when [fade_distance] is 0. [fade_power 0] gives a constant
+    [fade_color + (1 - fade_color)/2] (povray 3.7 does so for what is seen
+    through; its shadow rays do not fade then, see {!Whitted}). *)

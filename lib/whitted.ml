@@ -17,6 +17,8 @@ let rec texture_filter (tex : Texture.t) q =
           mul acc (add (scale c.filter c.c) (gray c.transmit)))
     white tex
 
+(* shadow rays fade only with a fade_power (povray 3.7: fade_power 0 fades
+   what the eye sees through, by 1/2, but not the light) *)
 let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
 
 (* Light reaching [p] from [dist] along the unit direction [l]: the product

@@ -138,6 +138,24 @@ let transparency () =
     (fun refl -> gray ("TIR with " ^ refl) 0.25 (inside "<0,0,1.732>" refl))
     [ ""; "reflection { 0, 1 fresnel on }"; "reflection 0.5"; "reflection { 0.5 exponent 0.5 }";
       "reflection { rgb <1,0,0> }" ];
+  (* interior fade over 2 units of a transmit-1 slab (fade_distance 1):
+     fade_power 1 -> 1/3, fade_power 0 -> 1/2 for the eye; the light is
+     not faded by fade_power 0 (measured in povray 3.7) *)
+  let slab fp =
+    Printf.sprintf
+      "box { <-5,-5,-1>, <5,5,1> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } \
+       interior { fade_distance 1 fade_power %d } }\n" fp
+  in
+  let seen fp = pixel ("camera { orthographic location <0,0,-10> look_at 0 right x up y }\n\
+                        background { rgb 1 }\n" ^ slab fp) in
+  gray "fade_power 1 seen" (1. /. 3.) (seen 1);
+  gray "fade_power 0 seen" 0.5 (seen 0);
+  let lit fp =
+    pixel ("camera { location <0,0,-10> look_at <0,0,5> }\nlight_source { <0,0,-100>, rgb 1 }\n\
+            plane { z, 5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" ^ slab fp)
+  in
+  (* the eye sees the plane through the slab too: shadow x eye fade *)
+  gray "fade_power 0: light unfaded" 0.5 (lit 0);
   gray ~eps:2e-4 "head-on, fresnel" 0.2602 (inside "<0,0,0.3>" "reflection { 0, 1 fresnel on }");
   gray "head-on, reflection 0.5" 0.375 (inside "<0,0,0.3>" "reflection 0.5")
 
