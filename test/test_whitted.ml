@@ -189,6 +189,24 @@ let default_texture () =
     (pixel (d ^ "union { plane { z, 1 } pigment { rgb 1 } finish { ambient 1 } }"));
   gray "before #default" 0. (pixel ("plane { z, 1 }\nsphere { <0,0,-10>, 1 }\n" ^ d))
 
+(* The slope of a normal pattern, as povray 3.7 measures it: a plane lit
+   head-on with normal { gradient x, 1 }: 0.99124 on the ramps (tilt 2/15),
+   0.20097 just before each jump (x = 0.985) and 0.17383 just after
+   (x = 1.005), where its sampling tetrahedron of radius 0.02 straddles
+   the jump. *)
+let normal_slope () =
+  let at x =
+    pixel
+      (Printf.sprintf
+         "camera { orthographic location <%g,0,-10> look_at <%g,0,0> right 0.001*x up 0.001*y }\n\
+          light_source { <%g,0,-1000>, rgb 1 parallel point_at <%g,0,0> }\n\
+          plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { gradient x, 1 } }\n"
+         x x x x)
+  in
+  gray "ramp" 0.99124 (at 0.5);
+  gray "before the jump" 0.20097 (at 0.985);
+  gray "after the jump" 0.17383 (at 1.005)
+
 let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
                plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
 
@@ -261,6 +279,7 @@ let tests =
       Alcotest.test_case "transparency" `Quick transparency;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
+      Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
