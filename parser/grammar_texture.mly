@@ -303,7 +303,10 @@
 
 %public normal_body:
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
-      { let p = Texdesc.of_pattern k in
+      { if k = Pattern.Checker then
+          (* povray 3.7 shades alternate squares as facing away: not rebuilt *)
+          Diag.error (loc $loc(k)) "checker as a normal pattern is not supported by camlray";
+        let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | n = NORMAL_ID ms = list(normal_mod)
