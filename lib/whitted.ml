@@ -312,7 +312,7 @@ let radical_inverse k =
 
 let focal_blur (s : Scene.t) sx sy px py =
   let cam = s.camera in
-  let n = max 1 cam.blur_samples in
+  let n = if cam.blur_samples > 0 then cam.blur_samples else 10 (* camlray's default *) in
   let key = (int_of_float (Float.floor py) * 65599) + int_of_float (Float.floor px) in
   let sampler = Sampler.create ~seed:0 ~pixel:key ~sample:0 in
   let du = Sampler.get sampler 0 and dv = Sampler.get sampler 1 in
