@@ -92,8 +92,8 @@ let fresnel n c =
 (* Diffuse and highlights of every light for one texture layer. *)
 (* Diffuse and highlights of one light seen from [p] as if it were at
    [light.position]; [shadow l dist] is the light let through. *)
-let one_light ?at (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow =
-  let l, dist = Light.direction_to (match at with Some q -> { light with position = q } | None -> light) p in
+let one_light (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow =
+  let l, dist = Light.direction_to light p in
   let nl = Vec3.dot n l in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
@@ -126,20 +126,22 @@ let one_light ?at (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) sh
 
 (* Diffuse and highlights of every light for one texture layer. *)
 let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
-  Array.fold_left
-    (fun acc (light : Light.t) ->
-      let c =
-        match light.area with
-        | Some a when a.area_illumination ->
-            (* every sample shades as a point light; averaged like shadows *)
-            Light.average_area a (fun i j ->
-                let q = Light.sample_position light a p i j in
-                one_light f pc alpha p n d { light with position = q; area = None }
-                  (shadow_filter s p))
-        | _ -> one_light f pc alpha p n d light (light_shadow s light p)
-      in
-      add acc c)
-    black s.lights
+  let acc = ref black in
+  for k = 0 to Array.length s.lights - 1 do
+    let light = Array.unsafe_get s.lights k in
+    let c =
+      match light.area with
+      | Some a when a.area_illumination ->
+          (* every sample shades as a point light; averaged like shadows *)
+          Light.average_area a (fun i j ->
+              let q = Light.sample_position light a p i j in
+              one_light f pc alpha p n d { light with position = q; area = None }
+                (shadow_filter s p))
+      | _ -> one_light f pc alpha p n d light (light_shadow s light p)
+    in
+    acc := add !acc c
+  done;
+  !acc
 
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
