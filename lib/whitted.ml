@@ -25,16 +25,29 @@ let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
    of (f*P + t) of every surface crossed, with interior fade over the
    lengths travelled inside fading objects; black when something opaque
    blocks. *)
+(* The walk's state lives in a per-domain record, so that the callback is
+   a closed function (no closure and refs per shadow ray); texture_filter
+   traces nothing, so walks never nest on a domain. *)
+type shadow_walk = { mutable acc : Color.t; mutable faders : (Object.t * float) list; mutable ray : Ray.t }
+
+let shadow_key =
+  Domain.DLS.new_key (fun () -> { acc = white; faders = []; ray = Ray.make Vec3.zero Vec3.unit_z })
+
+let shadow_hit (o : Object.t) t =
+  let w = Domain.DLS.get shadow_key in
+  w.acc <- mul w.acc (texture_filter o.texture (Ray.at w.ray t));
+  if has_fade o.interior then w.faders <- (o, t) :: w.faders;
+  not (is_black w.acc)
+
 let shadow_filter (s : Scene.t) p l dist =
   let ray = Ray.make p l in
-  let acc = ref white in
-  let faders = ref [] in
-  let visible =
-    Scene.occluders s ray Ray.shadow_epsilon dist (fun (o : Object.t) t ->
-        acc := mul !acc (texture_filter o.texture (Ray.at ray t));
-        if has_fade o.interior then faders := (o, t) :: !faders;
-        not (is_black !acc))
-  in
+  let w = Domain.DLS.get shadow_key in
+  w.acc <- white;
+  w.faders <- [];
+  w.ray <- ray;
+  let visible = Scene.occluders s ray Ray.shadow_epsilon dist shadow_hit in
+  let acc = ref w.acc and faders = ref w.faders in
+  w.faders <- [];
   if not visible then black
   else if !faders = [] then !acc
   else begin
@@ -90,9 +103,9 @@ let fresnel n c =
     0.5 *. a *. a *. (1. +. (b *. b))
 
 (* Diffuse and highlights of every light for one texture layer. *)
-(* Diffuse and highlights of one light seen from [p] as if it were at
-   [light.position]; [shadow l dist] is the light let through. *)
-let one_light (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow =
+(* Diffuse and highlights of one light seen from [p]; the shadow is
+   [light_shadow] (an area light's samples come here as point lights). *)
+let one_light s (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) =
   let l, dist = Light.direction_to light p in
   let nl = Vec3.dot n l in
   let front = nl >= light_min_cos in
@@ -101,7 +114,7 @@ let one_light (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) shadow
   if att <= 0. then black
   else
     let lc = scale att light.color in
-    let lc = if light.shadowless then lc else mul lc (shadow l dist) in
+    let lc = if light.shadowless then lc else mul lc (light_shadow s light p l dist) in
     if is_black lc then black
     else if back then scale (alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance) (mul pc lc)
     else begin
@@ -135,9 +148,8 @@ let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
           (* every sample shades as a point light; averaged like shadows *)
           Light.average_area a (fun i j ->
               let q = Light.sample_position light a p i j in
-              one_light f pc alpha p n d { light with position = q; area = None }
-                (shadow_filter s p))
-      | _ -> one_light f pc alpha p n d light (light_shadow s light p)
+              one_light s f pc alpha p n d { light with position = q; area = None })
+      | _ -> one_light s f pc alpha p n d light
     in
     acc := add !acc c
   done;
