@@ -177,8 +177,6 @@ and shade s ray hit level weight media fade =
   let entering = Vec3.dot hit.normal d < 0. in
   let n0 = if entering then hit.normal else Vec3.neg hit.normal in
   let p = hit.point in
-  let cos_of n = -.Vec3.dot d n in
-  let reflect n = Vec3.madd d (2. *. cos_of n) n in
   (* relative index of refraction across this surface *)
   let inner = hit.obj.interior in
   let outer_ior = match media with i :: _ -> i.Interior.ior | [] -> 1. in
@@ -193,68 +191,20 @@ and shade s ray hit level weight media fade =
       let beyond = match rest with i :: _ -> i.Interior.ior | [] -> 1. in
       (inner.ior /. beyond, rest)
   in
-  (* shade the layers top down; [w] is what the layers above let through;
-     returns the colour and what the whole texture lets through. [refl]:
-     add the finishes' reflection (POV-Ray leaves it out where the light
-     passing through is totally reflected inside: the TIR ray stands for
-     it) *)
   let top_normal = ref None in
-  let rec layers refl acc w = function
-    | [] -> (acc, w)
-    | (layer : Texture.layer) :: rest -> (
-        match layer.tmap with
-        | Some m ->
-            (* a patterned layer: blend the textures around the value *)
-            let c, f =
-              List.fold_left
-                (fun (c, f) (k, t) ->
-                  let c', f' = layers refl black white t in
-                  (madd c k c', madd f k f'))
-                (black, black) (Texture.blend m p)
-            in
-            let acc = add acc (mul w c) and w = mul w f in
-            if is_black w then (acc, w) else layers refl acc w rest
-        | None ->
-            let n =
-              match layer.normal with
-              | None -> n0
-              | Some nm ->
-                  let m = Normal.perturb nm p n0 in
-                  if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
-                  else m
-            in
-            if !top_normal = None then top_normal := Some n;
-            let f = layer.finish in
-            let pig = Pigment.eval layer.pigment p in
-            let pc = pig.c in
-            let alpha =
-              if s.settings.legacy_alpha then
-                1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
-              else 1. -. pig.filter -. pig.transmit
-            in
-            let local =
-              madd (direct s f pc alpha p n d) alpha
-                (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
-            in
-            let local =
-              if refl then add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
-              else local
-            in
-            let acc = add acc (mul w local) in
-            let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
-            if is_black w then (acc, w) else layers refl acc w rest)
-  in
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
-  let guess = total_internal eta (cos_of n0) in
-  let c, tr = layers (not guess) black white hit.obj.texture in
+  let guess = total_internal eta (-.Vec3.dot d n0) in
+  let c, tr =
+    layers s d p n0 level weight media eta top_normal (not guess) black white hit.obj.texture
+  in
   let n = Option.value ~default:n0 !top_normal in
   let c, tr =
-    if guess = (Color.luminance tr > bailout && total_internal eta (cos_of n)) then (c, tr)
+    if guess = (Color.luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then (c, tr)
     else begin
       top_normal := None;
-      layers guess black white hit.obj.texture
+      layers s d p n0 level weight media eta top_normal guess black white hit.obj.texture
     end
   in
   if Color.luminance tr <= bailout then c
@@ -264,14 +214,69 @@ and shade s ray hit level weight media fade =
       (* same index on both sides: straight through, no trace level used *)
       add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w next_media))
     else
-      let cos_i = cos_of n in
+      let cos_i = -.Vec3.dot d n in
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
       if k < 0. then
         (* total internal reflection: not filtered by the surface colour *)
-        add c (mul fade (trace_ray s (Ray.make p (reflect n)) (level + 1) weight media))
+        add c (mul fade (trace_ray s (Ray.make p (Vec3.madd d (2. *. cos_i) n)) (level + 1) weight media))
       else
         let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
         add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w next_media))
+
+(* Shade the layers of a texture top down; [w] is what the layers above
+   let through; returns the colour and what the whole texture lets
+   through, and sets [top_normal] to the top layer's normal. [refl]: add
+   the finishes' reflection (POV-Ray leaves it out where the light passing
+   through is totally reflected inside: the TIR ray stands for it). A
+   function of its own, not a closure in [shade]: it runs for every hit. *)
+and layers s d p n0 level weight media eta top_normal refl acc w = function
+  | [] -> (acc, w)
+  | (layer : Texture.layer) :: rest -> (
+      match layer.tmap with
+      | Some m ->
+          (* a patterned layer: blend the textures around the value *)
+          let c, f =
+            List.fold_left
+              (fun (c, f) (k, t) ->
+                let c', f' =
+                  layers s d p n0 level weight media eta top_normal refl black white t
+                in
+                (madd c k c', madd f k f'))
+              (black, black) (Texture.blend m p)
+          in
+          let acc = add acc (mul w c) and w = mul w f in
+          if is_black w then (acc, w)
+          else layers s d p n0 level weight media eta top_normal refl acc w rest
+      | None ->
+          let n =
+            match layer.normal with
+            | None -> n0
+            | Some nm ->
+                let m = Normal.perturb nm p n0 in
+                if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
+                else m
+          in
+          if !top_normal = None then top_normal := Some n;
+          let f = layer.finish in
+          let pig = Pigment.eval layer.pigment p in
+          let pc = pig.c in
+          let alpha =
+            if s.Scene.settings.legacy_alpha then
+              1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
+            else 1. -. pig.filter -. pig.transmit
+          in
+          let local =
+            madd (direct s f pc alpha p n d) alpha
+              (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
+          in
+          let local =
+            if refl then add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
+            else local
+          in
+          let acc = add acc (mul w local) in
+          let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
+          if is_black w then (acc, w)
+          else layers s d p n0 level weight media eta top_normal refl acc w rest)
 
 and reflection s (f : Finish.t) pc n d p level weight media eta =
   if not (Finish.has_reflection f) then black
