@@ -21,10 +21,6 @@ let rec texture_filter (tex : Texture.t) q =
    what the eye sees through, by 1/2, but not the light) *)
 let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
 
-(* Light reaching [p] from [dist] along the unit direction [l]: the product
-   of (f*P + t) of every surface crossed, with interior fade over the
-   lengths travelled inside fading objects; black when something opaque
-   blocks. *)
 (* The walk's state lives in a per-domain record, so that the callback is
    a closed function (no closure and refs per shadow ray); texture_filter
    traces nothing, so walks never nest on a domain. *)
@@ -39,6 +35,10 @@ let shadow_hit (o : Object.t) t =
   if has_fade o.interior then w.faders <- (o, t) :: w.faders;
   not (is_black w.acc)
 
+(* Light reaching [p] from [dist] along the unit direction [l]: the product
+   of (f*P + t) of every surface crossed, with interior fade over the
+   lengths travelled inside fading objects; black when something opaque
+   blocks. *)
 let shadow_filter (s : Scene.t) p l dist =
   let ray = Ray.make p l in
   let w = Domain.DLS.get shadow_key in
@@ -46,10 +46,10 @@ let shadow_filter (s : Scene.t) p l dist =
   w.faders <- [];
   w.ray <- ray;
   let visible = Scene.occluders s ray Ray.shadow_epsilon dist shadow_hit in
-  let acc = ref w.acc and faders = ref w.faders in
+  let acc = ref w.acc and faders = w.faders in
   w.faders <- [];
   if not visible then black
-  else if !faders = [] then !acc
+  else if faders = [] then !acc
   else begin
     (* group crossings by object; inside segments between them get faded *)
     let seen = ref [] in
@@ -57,7 +57,7 @@ let shadow_filter (s : Scene.t) p l dist =
       (fun ((o : Object.t), _) ->
         if not (List.memq o !seen) then begin
           seen := o :: !seen;
-          let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) !faders in
+          let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) faders in
           let ts = List.sort Float.compare ts in
           let bounds = (0. :: ts) @ [ dist ] in
           let rec segs = function
@@ -69,7 +69,7 @@ let shadow_filter (s : Scene.t) p l dist =
           in
           segs bounds
         end)
-      !faders;
+      faders;
     !acc
   end
 
