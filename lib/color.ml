@@ -17,6 +17,17 @@ let is_black a = a.r = 0. && a.g = 0. && a.b = 0.
 let pow a e = { r = Float.pow a.r e; g = Float.pow a.g e; b = Float.pow a.b e }
 let to_string a = Printf.sprintf "rgb <%g, %g, %g>" a.r a.g a.b
 
+(* A sum being built up in place: mutable and flat, so an update allocates
+   nothing (the shading loops keep their running colours in these). *)
+type acc = { mutable ar : float; mutable ag : float; mutable ab : float }
+
+let acc v = { ar = v; ag = v; ab = v }
+let[@inline] acc_set (a : acc) r g b = a.ar <- r; a.ag <- g; a.ab <- b
+let of_acc (a : acc) = { r = a.ar; g = a.ag; b = a.ab }
+let acc_max (a : acc) = Float.max a.ar (Float.max a.ag a.ab)
+let acc_is_black (a : acc) = a.ar = 0. && a.ag = 0. && a.ab = 0.
+let acc_luminance (a : acc) = (0.297 *. a.ar) +. (0.589 *. a.ag) +. (0.114 *. a.ab)
+
 type rgbft = { c : t; filter : float; transmit : float }
 
 let opaque c = { c; filter = 0.; transmit = 0. }

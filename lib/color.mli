@@ -21,6 +21,19 @@ val is_black : t -> bool
 val pow : t -> float -> t
 val to_string : t -> string
 
+(** A colour summed in place: mutable and flat, so that updating it
+    allocates nothing (the shading loops keep running sums in these). *)
+type acc = { mutable ar : float; mutable ag : float; mutable ab : float }
+
+val acc : float -> acc
+(** [acc v]: a new sum holding grey [v]. *)
+
+val acc_set : acc -> float -> float -> float -> unit
+val of_acc : acc -> t
+val acc_max : acc -> float
+val acc_is_black : acc -> bool
+val acc_luminance : acc -> float
+
 (** POV-Ray colours: rgb with filter and transmit. *)
 type rgbft = { c : t; filter : float; transmit : float }
 

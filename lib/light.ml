@@ -43,6 +43,29 @@ let direction_to l p =
       let dist = Vec3.length v in
       (Vec3.scale (1. /. dist) v, dist)
 
+(* [direction_to] without the tuple and vectors: the unit direction and
+   the distance written into a caller's scratch record. *)
+type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable dist : float }
+
+let dir () = { lx = 0.; ly = 0.; lz = 1.; dist = 0. }
+
+let direction_into l (p : Vec3.t) o =
+  match l.kind with
+  | Parallel _ ->
+      let d, dist = direction_to l p in
+      o.lx <- d.x;
+      o.ly <- d.y;
+      o.lz <- d.z;
+      o.dist <- dist
+  | Point | Spot _ ->
+      let vx = l.position.x -. p.x and vy = l.position.y -. p.y and vz = l.position.z -. p.z in
+      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let k = 1. /. dist in
+      o.lx <- k *. vx;
+      o.ly <- k *. vy;
+      o.lz <- k *. vz;
+      o.dist <- dist
+
 let rad a = a *. Float.pi /. 180.
 
 let spot_factor ~axis ~radius ~falloff ~tightness to_point =

@@ -49,6 +49,15 @@ val direction_to : t -> Vec3.t -> Vec3.t * float
     which shadow rays must look (for parallel lights: to the plane through
     the light perpendicular to its direction). *)
 
+(** A direction to a light and its distance, in a reusable record. *)
+type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable dist : float }
+
+val dir : unit -> dir
+
+val direction_into : t -> Vec3.t -> dir -> unit
+(** [direction_to] written into a record: no allocation for point and
+    spot lights. *)
+
 val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
 (** [position_at l a p u v], [u, v] in [[-1/2, 1/2]]: the point
     [position + u axis1 + v axis2] of the light's rectangle as seen from

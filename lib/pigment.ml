@@ -73,6 +73,14 @@ let image_eval (im : image) (p : Vec3.t) =
       let a = x -. Float.floor x and b = y -. Float.floor y in
       lerp (lerp (get i j) (get (i + 1) j) a) (lerp (get i (j + 1)) (get (i + 1) (j + 1)) a) b
 
+(* Whether every point is opaque (filter and transmit 0): a shadow ray
+   through such a pigment is blocked without evaluating it. *)
+let rec opaque = function
+  | Solid c -> c.filter = 0. && c.transmit = 0.
+  | Map { entries; _ } -> Array.for_all (fun (_, p) -> opaque p) entries
+  | Blocks { cells; _ } -> Array.for_all opaque cells
+  | Image_map _ -> false
+
 let rec eval p point =
   match p with
   | Solid c -> c

@@ -36,6 +36,9 @@ val transform : Transform.t -> t -> t
 (** Move a pigment (and its sub-pigments) by a transform applied after
     its current one. Solid colours are unchanged. *)
 
+val opaque : t -> bool
+(** Filter and transmit are 0 everywhere. *)
+
 val eval : t -> Vec3.t -> Color.rgbft
 (** The colour at a point in world space. *)
 

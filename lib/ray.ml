@@ -24,6 +24,14 @@ let[@inline] load s r =
   s.dy <- r.dir.y;
   s.dz <- r.dir.z
 
+let[@inline] copy src dst =
+  dst.ox <- src.ox;
+  dst.oy <- src.oy;
+  dst.oz <- src.oz;
+  dst.dx <- src.dx;
+  dst.dy <- src.dy;
+  dst.dz <- src.dz
+
 let of_ray r =
   let s = scratch () in
   load s r;

@@ -31,5 +31,8 @@ val scratch : unit -> scratch
 val load : scratch -> t -> unit
 (** [load s r] copies [r] into [s]. *)
 
+val copy : scratch -> scratch -> unit
+(** [copy src dst] *)
+
 val of_ray : t -> scratch
 (** A fresh scratch holding [r] (allocates: for tests and cold paths). *)

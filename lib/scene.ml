@@ -187,10 +187,8 @@ let occluder_leaf a sc r tmin tmax i =
     let t' = sphere_root sp i rad r (Object.next_tmin_s r t) tmax in
     t' = infinity || sc.occ o t'
 
-let occluders s r tmin tmax g =
+let occluders_in s sc tmin tmax g =
   let a = s.accel in
-  let sc = take () in
-  Ray.load sc.ray r;
   sc.occ <- g;
   let ok = ref true and i = ref 0 in
   while !ok && !i < Array.length a.infinite do
@@ -201,6 +199,17 @@ let occluders s r tmin tmax g =
   sc.occ <- (fun _ _ -> false);
   sc.busy <- false;
   ok
+
+let occluders s r tmin tmax g =
+  let sc = take () in
+  Ray.load sc.ray r;
+  occluders_in s sc tmin tmax g
+
+(* the same from a ray in a scratch record of the caller's *)
+let occluders_s s (r : Ray.scratch) tmin tmax g =
+  let sc = take () in
+  Ray.copy r sc.ray;
+  occluders_in s sc tmin tmax g
 
 let block _ _ = false
 let occluded s r tmin tmax = not (occluders s r tmin tmax block)

@@ -59,3 +59,6 @@ val occluders : t -> Ray.t -> float -> float -> (Object.t -> float -> bool) -> b
 (** [occluders s ray tmin tmax f] calls [f obj t] on every shadow-casting
     object hit in [(tmin, tmax)] (in no particular order) until [f] returns
     [false]; returns [false] if some call did. *)
+
+val occluders_s : t -> Ray.scratch -> float -> float -> (Object.t -> float -> bool) -> bool
+(** [occluders] of a ray held in a scratch record. *)

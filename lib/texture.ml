@@ -40,6 +40,10 @@ let blend m point =
       in
       find 1
 
+(* A layer that lets no light through makes the whole texture block it. *)
+let blocks_light (t : t) =
+  List.exists (fun l -> match l.tmap with None -> Pigment.opaque l.pigment | Some _ -> false) t
+
 let rec transform_layer tr l =
   {
     l with

@@ -35,6 +35,9 @@ val blend : tmap -> Vec3.t -> (float * t) list
 (** The textures to shade at a world point with their weights (summing
     to 1): one, or the two around the pattern's value. *)
 
+val blocks_light : t -> bool
+(** Some unpatterned layer is opaque everywhere: no light passes. *)
+
 val transform_layer : Transform.t -> layer -> layer
 val transform : Transform.t -> t -> t
 (** Move the patterns of a texture (a texture written before an object

@@ -23,34 +23,47 @@ let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
 
 (* The walk's state lives in a per-domain record, so that the callback is
    a closed function (no closure and refs per shadow ray); texture_filter
-   traces nothing, so walks never nest on a domain. *)
-type shadow_walk = { mutable acc : Color.t; mutable faders : (Object.t * float) list; mutable ray : Ray.t }
+   traces nothing, so walks never nest on a domain. [ray] holds the
+   shadow ray, [l] the direction to the light being shaded. *)
+type shadow_walk = {
+  mutable acc : Color.t;
+  mutable faders : (Object.t * float) list;
+  ray : Ray.scratch;
+  l : Light.dir;
+}
 
 let shadow_key =
-  Domain.DLS.new_key (fun () -> { acc = white; faders = []; ray = Ray.make Vec3.zero Vec3.unit_z })
+  Domain.DLS.new_key (fun () -> { acc = white; faders = []; ray = Ray.scratch (); l = Light.dir () })
 
 let shadow_hit (o : Object.t) t =
   let w = Domain.DLS.get shadow_key in
-  w.acc <- mul w.acc (texture_filter o.texture (Ray.at w.ray t));
-  if has_fade o.interior then w.faders <- (o, t) :: w.faders;
-  not (is_black w.acc)
+  if Texture.blocks_light o.texture then begin
+    w.acc <- black;
+    false
+  end
+  else begin
+    let r = w.ray in
+    let q = Vec3.make (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz)) in
+    w.acc <- mul w.acc (texture_filter o.texture q);
+    if has_fade o.interior then w.faders <- (o, t) :: w.faders;
+    not (is_black w.acc)
+  end
 
-(* Light reaching [p] from [dist] along the unit direction [l]: the product
-   of (f*P + t) of every surface crossed, with interior fade over the
-   lengths travelled inside fading objects; black when something opaque
-   blocks. *)
-let shadow_filter (s : Scene.t) p l dist =
-  let ray = Ray.make p l in
-  let w = Domain.DLS.get shadow_key in
+(* Light reaching the origin of the walk's ray from [dist] along its unit
+   direction: the product of (f*P + t) of every surface crossed, with
+   interior fade over the lengths travelled inside fading objects; black
+   when something opaque blocks. *)
+let shadow_filter (s : Scene.t) (w : shadow_walk) dist =
   w.acc <- white;
   w.faders <- [];
-  w.ray <- ray;
-  let visible = Scene.occluders s ray Ray.shadow_epsilon dist shadow_hit in
+  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_hit in
   let acc = ref w.acc and faders = w.faders in
   w.faders <- [];
   if not visible then black
   else if faders = [] then !acc
   else begin
+    let r = w.ray in
+    let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
     (* group crossings by object; inside segments between them get faded *)
     let seen = ref [] in
     List.iter
@@ -73,16 +86,30 @@ let shadow_filter (s : Scene.t) p l dist =
     !acc
   end
 
-(* Shadow colour of one light at [p]: area lights average their samples. *)
-let light_shadow s (light : Light.t) p l dist =
+let[@inline] load_ray (r : Ray.scratch) (p : Vec3.t) x y z =
+  r.ox <- p.x;
+  r.oy <- p.y;
+  r.oz <- p.z;
+  r.dx <- x;
+  r.dy <- y;
+  r.dz <- z
+
+(* Shadow colour of one light at [p], whose direction is in [w.l]: area
+   lights average their samples. *)
+let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
   match light.area with
-  | None -> shadow_filter s p l dist
+  | None ->
+      let l = w.l in
+      load_ray w.ray p l.lx l.ly l.lz;
+      shadow_filter s w l.dist
   | Some a ->
       Light.average_area a (fun i j ->
           let q = Light.sample_position light a p i j in
           let v = Vec3.sub q p in
           let d = Vec3.length v in
-          shadow_filter s p (Vec3.scale (1. /. d) v) d)
+          let k = 1. /. d in
+          load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
+          shadow_filter s w d)
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
 let metallic_tint m cos_angle (pc : Color.t) =
@@ -102,58 +129,100 @@ let fresnel n c =
     let a = (g -. c) /. (g +. c) and b = ((c *. (g +. c)) -. 1.) /. ((c *. (g -. c)) +. 1.) in
     0.5 *. a *. a *. (1. +. (b *. b))
 
-(* Diffuse and highlights of every light for one texture layer. *)
-(* Diffuse and highlights of one light seen from [p]; the shadow is
-   [light_shadow] (an area light's samples come here as point lights). *)
-let one_light s (f : Finish.t) (pc : Color.t) alpha p n d (light : Light.t) =
-  let l, dist = Light.direction_to light p in
-  let nl = Vec3.dot n l in
+(* Diffuse and highlights of one light seen from [p], added into [out];
+   the shadow is [light_shadow] (an area light's samples come here as
+   point lights). Scalars throughout: nothing is allocated unless the
+   shadow ray crosses something transparent. *)
+let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d : Vec3.t)
+    (light : Light.t) (out : Color.acc) =
+  let w = Domain.DLS.get shadow_key in
+  let l = w.l in
+  Light.direction_into light p l;
+  let nl = (n.x *. l.lx) +. (n.y *. l.ly) +. (n.z *. l.lz) in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
   let att = if front || back then Light.attenuation light p else 0. in
-  if att <= 0. then black
-  else
-    let lc = scale att light.color in
-    let lc = if light.shadowless then lc else mul lc (light_shadow s light p l dist) in
-    if is_black lc then black
-    else if back then scale (alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance) (mul pc lc)
-    else begin
-      let acc = ref black in
-      if f.diffuse > 0. then
-        acc := madd !acc (alpha *. f.diffuse *. Float.pow nl f.brilliance) (mul pc lc);
-      if not light.shadowless then begin
-        let lm = mul lc (metallic_tint f.metallic nl pc) in
-        if f.phong > 0. then begin
-          let r = Vec3.madd d (-2. *. Vec3.dot d n) n in
-          let rl = Vec3.dot r l in
-          if rl > 0. then acc := madd !acc (f.phong *. Float.pow rl f.phong_size) lm
+  if att > 0. then begin
+    let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
+    let lr, lg, lb =
+      if light.shadowless then (lr, lg, lb)
+      else
+        let sh = light_shadow s w light p in
+        (lr *. sh.r, lg *. sh.g, lb *. sh.b)
+    in
+    if not (lr = 0. && lg = 0. && lb = 0.) then
+      if back then begin
+        let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
+        out.ar <- out.ar +. (k *. (pc.r *. lr));
+        out.ag <- out.ag +. (k *. (pc.g *. lg));
+        out.ab <- out.ab +. (k *. (pc.b *. lb))
+      end
+      else begin
+        let cr = ref 0. and cg = ref 0. and cb = ref 0. in
+        if f.diffuse > 0. then begin
+          let k = alpha *. f.diffuse *. Float.pow nl f.brilliance in
+          cr := !cr +. (k *. (pc.r *. lr));
+          cg := !cg +. (k *. (pc.g *. lg));
+          cb := !cb +. (k *. (pc.b *. lb))
         end;
-        if f.specular > 0. then begin
-          let h = Vec3.normalize (Vec3.sub l d) in
-          let nh = Vec3.dot n h in
-          if nh > 0. then acc := madd !acc (f.specular *. Float.pow nh (1. /. f.roughness)) lm
-        end
-      end;
-      !acc
-    end
+        if not light.shadowless then begin
+          let mt = metallic_tint f.metallic nl pc in
+          let mr = lr *. mt.r and mg = lg *. mt.g and mb = lb *. mt.b in
+          if f.phong > 0. then begin
+            (* r = d - 2 (d.n) n, the mirror direction *)
+            let k = -2. *. Vec3.dot d n in
+            let rx = d.x +. (k *. n.x) and ry = d.y +. (k *. n.y) and rz = d.z +. (k *. n.z) in
+            let rl = (rx *. l.lx) +. (ry *. l.ly) +. (rz *. l.lz) in
+            if rl > 0. then begin
+              let k = f.phong *. Float.pow rl f.phong_size in
+              cr := !cr +. (k *. mr);
+              cg := !cg +. (k *. mg);
+              cb := !cb +. (k *. mb)
+            end
+          end;
+          if f.specular > 0. then begin
+            (* h = (l - d) / |l - d|, the half vector *)
+            let hx = l.lx -. d.x and hy = l.ly -. d.y and hz = l.lz -. d.z in
+            let len = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+            let k = if len > 0. then 1. /. len else 1. in
+            let nh = (n.x *. (k *. hx)) +. (n.y *. (k *. hy)) +. (n.z *. (k *. hz)) in
+            if nh > 0. then begin
+              let k = f.specular *. Float.pow nh (1. /. f.roughness) in
+              cr := !cr +. (k *. mr);
+              cg := !cg +. (k *. mg);
+              cb := !cb +. (k *. mb)
+            end
+          end
+        end;
+        out.ar <- out.ar +. !cr;
+        out.ag <- out.ag +. !cg;
+        out.ab <- out.ab +. !cb
+      end
+  end
 
-(* Diffuse and highlights of every light for one texture layer. *)
-let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d =
-  let acc = ref black in
+(* Diffuse and highlights of every light for one texture layer, added
+   into [out]. *)
+(* the sum of [direct], per domain: nothing in it traces *)
+let direct_key = Domain.DLS.new_key (fun () -> Color.acc 0.)
+
+let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
   for k = 0 to Array.length s.lights - 1 do
     let light = Array.unsafe_get s.lights k in
-    let c =
-      match light.area with
-      | Some a when a.area_illumination ->
-          (* every sample shades as a point light; averaged like shadows *)
+    match light.area with
+    | Some a when a.area_illumination ->
+        (* every sample shades as a point light; averaged like shadows *)
+        let c =
           Light.average_area a (fun i j ->
               let q = Light.sample_position light a p i j in
-              one_light s f pc alpha p n d { light with position = q; area = None })
-      | _ -> one_light s f pc alpha p n d light
-    in
-    acc := add !acc c
-  done;
-  !acc
+              let one = Color.acc 0. in
+              one_light s f pc alpha p n d { light with position = q; area = None } one;
+              Color.of_acc one)
+        in
+        out.ar <- out.ar +. c.r;
+        out.ag <- out.ag +. c.g;
+        out.ab <- out.ab +. c.b
+    | _ -> one_light s f pc alpha p n d light out
+  done
 
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
@@ -196,20 +265,20 @@ and shade s ray hit level weight media fade =
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
   let guess = total_internal eta (-.Vec3.dot d n0) in
-  let c, tr =
-    layers s d p n0 level weight media eta top_normal (not guess) black white hit.obj.texture
-  in
+  let c = Color.acc 0. and tr = Color.acc 1. in
+  layers s d p n0 level weight media eta top_normal (not guess) c tr hit.obj.texture;
   let n = Option.value ~default:n0 !top_normal in
-  let c, tr =
-    if guess = (Color.luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then (c, tr)
-    else begin
-      top_normal := None;
-      layers s d p n0 level weight media eta top_normal guess black white hit.obj.texture
-    end
-  in
-  if Color.luminance tr <= bailout then c
+  if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then begin
+    top_normal := None;
+    Color.acc_set c 0. 0. 0.;
+    Color.acc_set tr 1. 1. 1.;
+    layers s d p n0 level weight media eta top_normal guess c tr hit.obj.texture
+  end;
+  let c = Color.of_acc c in
+  if Color.acc_luminance tr <= bailout then c
   else
-    let w = weight *. Color.max_channel tr in
+    let w = weight *. Color.acc_max tr in
+    let tr = Color.of_acc tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)
       add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w next_media))
@@ -223,30 +292,31 @@ and shade s ray hit level weight media fade =
         let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
         add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w next_media))
 
-(* Shade the layers of a texture top down; [w] is what the layers above
-   let through; returns the colour and what the whole texture lets
-   through, and sets [top_normal] to the top layer's normal. [refl]: add
-   the finishes' reflection (POV-Ray leaves it out where the light passing
-   through is totally reflected inside: the TIR ray stands for it). A
-   function of its own, not a closure in [shade]: it runs for every hit. *)
-and layers s d p n0 level weight media eta top_normal refl acc w = function
-  | [] -> (acc, w)
+(* Shade the layers of a texture top down, adding into [acc]; [w] is what
+   the layers above let through, and holds at the end what the whole
+   texture lets through; sets [top_normal] to the top layer's normal.
+   [refl]: add the finishes' reflection (POV-Ray leaves it out where the
+   light passing through is totally reflected inside: the TIR ray stands
+   for it). A function of its own, not a closure in [shade]: it runs for
+   every hit. *)
+and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w : Color.acc) = function
+  | [] -> ()
   | (layer : Texture.layer) :: rest -> (
       match layer.tmap with
       | Some m ->
           (* a patterned layer: blend the textures around the value *)
-          let c, f =
-            List.fold_left
-              (fun (c, f) (k, t) ->
-                let c', f' =
-                  layers s d p n0 level weight media eta top_normal refl black white t
-                in
-                (madd c k c', madd f k f'))
-              (black, black) (Texture.blend m p)
-          in
-          let acc = add acc (mul w c) and w = mul w f in
-          if is_black w then (acc, w)
-          else layers s d p n0 level weight media eta top_normal refl acc w rest
+          let c = Color.acc 0. and f = Color.acc 0. in
+          List.iter
+            (fun (k, t) ->
+              let c' = Color.acc 0. and f' = Color.acc 1. in
+              layers s d p n0 level weight media eta top_normal refl c' f' t;
+              Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
+              Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab)))
+            (Texture.blend m p);
+          Color.acc_set acc (acc.ar +. (w.ar *. c.ar)) (acc.ag +. (w.ag *. c.ag)) (acc.ab +. (w.ab *. c.ab));
+          Color.acc_set w (w.ar *. f.ar) (w.ag *. f.ag) (w.ab *. f.ab);
+          if not (Color.acc_is_black w) then
+            layers s d p n0 level weight media eta top_normal refl acc w rest
       | None ->
           let n =
             match layer.normal with
@@ -265,18 +335,27 @@ and layers s d p n0 level weight media eta top_normal refl acc w = function
               1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
             else 1. -. pig.filter -. pig.transmit
           in
-          let local =
-            madd (direct s f pc alpha p n d) alpha
-              (mul pc (add (mul f.ambient s.settings.ambient_light) f.emission))
+          (* this layer's own colour: lights, then ambient and emission *)
+          let dl = Domain.DLS.get direct_key in
+          Color.acc_set dl 0. 0. 0.;
+          direct s f pc alpha p n d dl;
+          let amb = s.settings.ambient_light in
+          let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
+          and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))
+          and lb = dl.ab +. (alpha *. (pc.b *. ((f.ambient.b *. amb.b) +. f.emission.b))) in
+          let lr, lg, lb =
+            if refl && Finish.has_reflection f then
+              let rc = reflection s f pc n d p level (weight *. Color.acc_max w) media eta in
+              (lr +. rc.r, lg +. rc.g, lb +. rc.b)
+            else (lr, lg, lb)
           in
-          let local =
-            if refl then add local (reflection s f pc n d p level (weight *. max_channel w) media eta)
-            else local
-          in
-          let acc = add acc (mul w local) in
-          let w = mul w (add (scale pig.filter pc) (gray pig.transmit)) in
-          if is_black w then (acc, w)
-          else layers s d p n0 level weight media eta top_normal refl acc w rest)
+          Color.acc_set acc (acc.ar +. (w.ar *. lr)) (acc.ag +. (w.ag *. lg)) (acc.ab +. (w.ab *. lb));
+          Color.acc_set w
+            (w.ar *. ((pig.filter *. pc.r) +. pig.transmit))
+            (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
+            (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
+          if not (Color.acc_is_black w) then
+            layers s d p n0 level weight media eta top_normal refl acc w rest)
 
 and reflection s (f : Finish.t) pc n d p level weight media eta =
   if not (Finish.has_reflection f) then black
