@@ -60,7 +60,7 @@ let shadow_filter (s : Scene.t) (w : shadow_walk) dist =
   let acc = ref w.acc and faders = w.faders in
   w.faders <- [];
   if not visible then black
-  else if faders = [] then !acc
+  else if (match faders with [] -> true | _ :: _ -> false) then !acc
   else begin
     let r = w.ray in
     let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
@@ -160,7 +160,7 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
       else begin
         let cr = ref 0. and cg = ref 0. and cb = ref 0. in
         if f.diffuse > 0. then begin
-          let k = alpha *. f.diffuse *. Float.pow nl f.brilliance in
+          let k = alpha *. f.diffuse *. (if f.brilliance = 1. then nl else Float.pow nl f.brilliance) in
           cr := !cr +. (k *. (pc.r *. lr));
           cg := !cg +. (k *. (pc.g *. lg));
           cb := !cb +. (k *. (pc.b *. lb))
@@ -326,7 +326,7 @@ and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w 
                 if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
                 else m
           in
-          if !top_normal = None then top_normal := Some n;
+          if Option.is_none !top_normal then top_normal := Some n;
           let f = layer.finish in
           let pig = Pigment.eval layer.pigment p in
           let pc = pig.c in
@@ -387,7 +387,7 @@ let start_cache : (Scene.t * Vec3.t * Interior.t list) option Atomic.t = Atomic.
 
 let start_media (s : Scene.t) (o : Vec3.t) =
   match Atomic.get start_cache with
-  | Some (s', o', m) when s' == s && o' = o -> m
+  | Some (s', o', m) when s' == s && o'.x = o.x && o'.y = o.y && o'.z = o.z -> m
   | _ ->
       let m =
         Array.fold_left
