@@ -100,11 +100,12 @@ let with_signals f =
       Sys.set_signal Sys.sigint old_int;
       Sys.set_signal Sys.sigterm old_term)
 
-let write_image path (scene : Scene.t) img =
+let write_image ~domains path (scene : Scene.t) img =
+  let par = Render.parallel ~domains in
   match String.lowercase_ascii (Filename.extension path) with
   | ".pfm" -> Image.write_pfm path img
-  | ".ppm" -> Image.write_ppm path (Image.to_rgb8 scene.settings.encoding img)
-  | _ -> Image.write_png path (Image.to_rgb8 scene.settings.encoding img)
+  | ".ppm" -> Image.write_ppm path (Image.to_rgb8 ~par scene.settings.encoding img)
+  | _ -> Image.write_png ~par path (Image.to_rgb8 ~par scene.settings.encoding img)
 
 let frame_name out ~first ~last f =
   ignore first;
@@ -219,13 +220,14 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let t2 = Unix.gettimeofday () in
       (try
          match region with
-         | None -> write_image out scene img
+         | None -> write_image ~domains out scene img
          | Some r ->
              let id = render_id o files ~clock in
-             Image.write_png
+             let par = Render.parallel ~domains in
+             Image.write_png ~par
                ~text:(Part.text { Part.region = r; width; height; id })
                out
-               (Image.to_rgb8 scene.settings.encoding img)
+               (Image.to_rgb8 ~par scene.settings.encoding img)
        with Sys_error e | Failure e -> fail "cannot write %s: %s" out e);
       let t3 = Unix.gettimeofday () in
       if not o.quiet then begin

@@ -26,19 +26,77 @@ let srgb_encode c =
   if c <= 0.0031308 then 12.92 *. c
   else (1.055 *. Float.pow c (1. /. 2.4)) -. 0.055
 
-let to_rgb8 enc (img : t) =
+(* [par n f] runs [f 0] ... [f (n-1)], in any order, perhaps at once on
+   several domains (Render.parallel gives one); the default runs them in
+   turn. Each [f i] writes its own part of the result. *)
+type par = int -> (int -> unit) -> unit
+
+let sequential n f =
+  for i = 0 to n - 1 do
+    f i
+  done
+
+(* The 8-bit value of a linear value [v], by the formula. *)
+let quantize enc v =
+  let v = if Float.is_nan v then 0. else Float.min 1. (Float.max 0. v) in
+  let v =
+    match enc with
+    | Srgb -> srgb_encode v
+    | Gamma_srgb g -> srgb_encode (Float.pow v g)
+    | Identity -> v
+  in
+  int_of_float (Float.round (v *. 255.))
+
+(* The same by table: [th.(k)] is the least float whose value is above
+   [k], found by bisecting on the bits of non-negative floats (whose order
+   is the order of their bits); the encodings are non-decreasing, so the
+   value of [v] is the number of thresholds at or below it: 8 comparisons
+   in place of a [pow]. *)
+let thresholds enc =
+  let q bits = quantize enc (Int64.float_of_bits bits) in
+  let one = Int64.bits_of_float 1. in
+  Array.init 255 (fun k ->
+      if q 0L > k then 0.
+      else begin
+        (* q lo <= k < q hi *)
+        let lo = ref 0L and hi = ref one in
+        while Int64.sub !hi !lo > 1L do
+          let mid = Int64.add !lo (Int64.div (Int64.sub !hi !lo) 2L) in
+          if q mid > k then hi := mid else lo := mid
+        done;
+        Int64.float_of_bits !hi
+      end)
+
+let[@inline] lookup (th : float array) v =
+  if Float.is_nan v then 0
+  else begin
+    (* how many thresholds are <= v: a binary search over 255 entries *)
+    let lo = ref 0 and n = ref 255 in
+    while !n > 0 do
+      let half = !n / 2 in
+      if Array.unsafe_get th (!lo + half) <= v then (
+        lo := !lo + half + 1;
+        n := !n - half - 1)
+      else n := half
+    done;
+    !lo
+  end
+
+(* Rows per band of the encoder's parallel parts: fixed, so that the file
+   does not depend on the number of domains. *)
+let band_rows = 64
+
+let bands h = (h + band_rows - 1) / band_rows
+
+let to_rgb8 ?(par = sequential) enc (img : t) =
   let data = Bytes.create (img.w * img.h * 3) in
-  Float.Array.iteri
-    (fun i v ->
-      let v = if Float.is_nan v then 0. else Float.min 1. (Float.max 0. v) in
-      let v =
-        match enc with
-        | Srgb -> srgb_encode v
-        | Gamma_srgb g -> srgb_encode (Float.pow v g)
-        | Identity -> v
-      in
-      Bytes.set data i (Char.chr (int_of_float (Float.round (v *. 255.)))))
-    img.px;
+  let th = thresholds enc in
+  let row = img.w * 3 in
+  par (bands img.h) (fun b ->
+      let i0 = b * band_rows * row and i1 = min img.h ((b + 1) * band_rows) * row in
+      for i = i0 to i1 - 1 do
+        Bytes.unsafe_set data i (Char.unsafe_chr (lookup th (Float.Array.unsafe_get img.px i)))
+      done);
   { w = img.w; h = img.h; data }
 
 (* Checks that [im] is well formed before it is written or compared. *)
@@ -125,22 +183,9 @@ let write_pfm path (img : t) =
 
 let png_signature = "\x89PNG\r\n\x1a\n"
 
-let crc_table =
-  Array.init 256 (fun n ->
-      let c = ref n in
-      for _ = 1 to 8 do
-        c := if !c land 1 = 1 then 0xEDB88320 lxor (!c lsr 1) else !c lsr 1
-      done;
-      !c)
-
-(* CRC-32 (ISO 3309, as PNG uses) of [s]; [crc] chains calls. *)
+(* CRC-32 (ISO 3309, as PNG uses) of [s]; [crc] chains calls. zlib's. *)
 let crc32 ?(crc = 0) s =
-  let c = ref (crc lxor 0xFFFFFFFF) in
-  String.iter
-    (fun ch ->
-      c := crc_table.((!c lxor Char.code ch) land 0xFF) lxor (!c lsr 8))
-    s;
-  !c lxor 0xFFFFFFFF
+  Int32.to_int (Zlib.update_crc_string (Int32.of_int crc) s 0 (String.length s)) land 0xFFFFFFFF
 
 let be32 n =
   let b = Bytes.create 4 in
@@ -155,64 +200,126 @@ let output_chunk oc typ data =
   output_string oc data;
   output_string oc (be32 (crc32 ~crc:(crc32 typ) data))
 
-(* The zlib stream (RFC 1950) of [s]. *)
-let deflate s =
-  let out = Buffer.create (String.length s / 2) and pos = ref 0 in
-  Zlib.compress ~level:6 ~header:true
-    (fun buf ->
-      let n = min (Bytes.length buf) (String.length s - !pos) in
-      Bytes.blit_string s !pos buf 0 n;
-      pos := !pos + n;
-      n)
-    (fun buf n -> Buffer.add_subbytes out buf 0 n);
+(* Adler-32 (RFC 1950) of [len] bytes of [s] from [pos]. *)
+let adler32 s pos len =
+  let base = 65521 in
+  let s1 = ref 1 and s2 = ref 0 in
+  let i = ref pos and stop = pos + len in
+  while !i < stop do
+    (* the sums are reduced every 5552 bytes, as zlib does *)
+    let n = min 5552 (stop - !i) in
+    for j = !i to !i + n - 1 do
+      s1 := !s1 + Char.code (String.unsafe_get s j);
+      s2 := !s2 + !s1
+    done;
+    s1 := !s1 mod base;
+    s2 := !s2 mod base;
+    i := !i + n
+  done;
+  (!s2 lsl 16) lor !s1
+
+(* The Adler-32 of a concatenation from its parts' sums: the second
+   part's first sum is shifted by the first part's (less the initial 1),
+   its second sum by [len2] times the first part's first sum. *)
+let adler32_combine a1 a2 len2 =
+  let base = 65521 in
+  let r = len2 mod base in
+  let a1lo = a1 land 0xFFFF and a1hi = (a1 lsr 16) land 0xFFFF in
+  let a2lo = a2 land 0xFFFF and a2hi = (a2 lsr 16) land 0xFFFF in
+  let s1 = (a1lo + a2lo + base - 1) mod base in
+  let s2 = ((r * a1lo) + a1hi + a2hi + base - r) mod base in
+  (s2 lsl 16) lor s1
+
+(* Raw deflate (level 6) of [len] bytes of [s] from [pos]; a part that is
+   not the last ends with a sync flush (byte-aligned, no final block), so
+   that independent parts concatenate into one stream. *)
+let deflate_part ~last s pos len =
+  let zs = Zlib.deflate_init 6 false in
+  let out = Buffer.create ((len / 2) + 64) and buf = Bytes.create 65536 in
+  let flush = if last then Zlib.Z_FINISH else Zlib.Z_SYNC_FLUSH in
+  let rec go pos len =
+    let fin, used_in, used_out = Zlib.deflate_string zs s pos len buf 0 (Bytes.length buf) flush in
+    Buffer.add_subbytes out buf 0 used_out;
+    (* finished, or all input taken and the flush fitted in the buffer *)
+    if not (fin || (used_in = len && used_out < Bytes.length buf)) then go (pos + used_in) (len - used_in)
+  in
+  go pos len;
+  (* zlib frees an unfinished stream but reports it (Z_DATA_ERROR) *)
+  (try Zlib.deflate_end zs with Zlib.Error _ when not last -> ());
   Buffer.contents out
+
+(* The zlib stream (RFC 1950) of [s], compressed in independent parts cut
+   at the offsets [cuts] (increasing, strictly inside [s]). *)
+let deflate ?(par = sequential) ?(cuts = [||]) s =
+  let bounds = Array.concat [ [| 0 |]; cuts; [| String.length s |] ] in
+  let n = Array.length bounds - 1 in
+  let parts = Array.make n "" and sums = Array.make n 1 in
+  par n (fun i ->
+      let pos = bounds.(i) and len = bounds.(i + 1) - bounds.(i) in
+      parts.(i) <- deflate_part ~last:(i = n - 1) s pos len;
+      sums.(i) <- adler32 s pos len);
+  let sum = ref sums.(0) in
+  for i = 1 to n - 1 do
+    sum := adler32_combine !sum sums.(i) (bounds.(i + 1) - bounds.(i))
+  done;
+  (* CMF 0x78: deflate with a 32K window; FLG 0x9C: the default level,
+     check bits making CMF*256+FLG a multiple of 31 *)
+  String.concat "" (("\x78\x9c" :: Array.to_list parts) @ [ be32 !sum ])
 
 let paeth a b c =
   let p = a + b - c in
   let pa = abs (p - a) and pb = abs (p - b) and pc = abs (p - c) in
   if pa <= pb && pa <= pc then a else if pb <= pc then b else c
 
-(* The filtered scanlines: each row gets the filter (None, Sub, Up, Average,
-   Paeth) with the smallest sum of absolute signed residuals, the usual
-   libpng heuristic. *)
-let filtered_scanlines (im : rgb8) =
+(* Filters one scanline into [out] at [y * (stride + 1)]: the filter (None,
+   Sub, Up, Average, Paeth) with the smallest sum of absolute signed
+   residuals (the first such, in that order), the usual libpng heuristic. *)
+let filter_row (im : rgb8) out y =
   let stride = im.w * 3 in
-  let out = Buffer.create ((stride + 1) * im.h) in
-  let cand = Bytes.create stride and best = Bytes.create stride in
-  for y = 0 to im.h - 1 do
-    let cur i = Bytes.get_uint8 im.data ((y * stride) + i) in
-    let up i =
-      if y = 0 then 0 else Bytes.get_uint8 im.data (((y - 1) * stride) + i)
-    in
-    let best_ft = ref 0 and best_cost = ref max_int in
-    for ft = 0 to 4 do
-      let cost = ref 0 in
-      for i = 0 to stride - 1 do
-        let a = if i >= 3 then cur (i - 3) else 0 in
-        let c = if i >= 3 then up (i - 3) else 0 in
-        let b = up i in
-        let pred =
-          match ft with
-          | 0 -> 0
-          | 1 -> a
-          | 2 -> b
-          | 3 -> (a + b) / 2
-          | _ -> paeth a b c
-        in
-        let v = (cur i - pred) land 0xFF in
-        Bytes.set_uint8 cand i v;
-        cost := !cost + if v < 128 then v else 256 - v
-      done;
-      if !cost < !best_cost then begin
-        best_cost := !cost;
-        best_ft := ft;
-        Bytes.blit cand 0 best 0 stride
-      end
-    done;
-    Buffer.add_uint8 out !best_ft;
-    Buffer.add_bytes out best
+  let d = im.data in
+  let row = y * stride and prev = (y - 1) * stride in
+  let[@inline] cur i = Char.code (Bytes.unsafe_get d (row + i)) in
+  let[@inline] up i = if y = 0 then 0 else Char.code (Bytes.unsafe_get d (prev + i)) in
+  let[@inline] cost v =
+    let v = v land 0xFF in
+    if v < 128 then v else 256 - v
+  in
+  let c0 = ref 0 and c1 = ref 0 and c2 = ref 0 and c3 = ref 0 and c4 = ref 0 in
+  for i = 0 to stride - 1 do
+    let x = cur i and b = up i in
+    let a = if i >= 3 then cur (i - 3) else 0 and c = if i >= 3 then up (i - 3) else 0 in
+    c0 := !c0 + cost x;
+    c1 := !c1 + cost (x - a);
+    c2 := !c2 + cost (x - b);
+    c3 := !c3 + cost (x - ((a + b) / 2));
+    c4 := !c4 + cost (x - paeth a b c)
   done;
-  Buffer.contents out
+  let ft = ref 0 and best = ref !c0 in
+  let pick k c = if c < !best then (best := c; ft := k) in
+  pick 1 !c1;
+  pick 2 !c2;
+  pick 3 !c3;
+  pick 4 !c4;
+  let ft = !ft and o = y * (stride + 1) in
+  Bytes.unsafe_set out o (Char.unsafe_chr ft);
+  for i = 0 to stride - 1 do
+    let x = cur i and b = up i in
+    let a = if i >= 3 then cur (i - 3) else 0 and c = if i >= 3 then up (i - 3) else 0 in
+    let pred = match ft with 0 -> 0 | 1 -> a | 2 -> b | 3 -> (a + b) / 2 | _ -> paeth a b c in
+    Bytes.unsafe_set out (o + 1 + i) (Char.unsafe_chr ((x - pred) land 0xFF))
+  done
+
+(* The PNG image data: the filtered scanlines, compressed in bands of
+   [band_rows] rows (the bands filtered and compressed in parallel). *)
+let image_data ?(par = sequential) (im : rgb8) =
+  let stride = (im.w * 3) + 1 in
+  let out = Bytes.create (stride * im.h) in
+  let nb = bands im.h in
+  par nb (fun b ->
+      for y = b * band_rows to min im.h ((b + 1) * band_rows) - 1 do
+        filter_row im out y
+      done);
+  deflate ~par ~cuts:(Array.init (nb - 1) (fun b -> (b + 1) * band_rows * stride)) (Bytes.unsafe_to_string out)
 
 (* A tEXt keyword is 1-79 Latin-1 bytes without NUL; the text has no NUL. *)
 let check_text (k, v) =
@@ -221,10 +328,10 @@ let check_text (k, v) =
     || String.contains v '\000'
   then invalid_arg ("Image.write_png: invalid tEXt entry " ^ String.escaped k)
 
-let write_png ?(text = []) path (im : rgb8) =
+let write_png ?par ?(text = []) path (im : rgb8) =
   check_rgb8 "Image.write_png" im;
   List.iter check_text text;
-  let idat = deflate (filtered_scanlines im) in
+  let idat = image_data ?par im in
   write_atomic path (fun oc ->
       output_string oc png_signature;
       (* width, height, depth 8, colour type 2 (RGB), deflate, filter

@@ -34,9 +34,20 @@ type encoding =
 val srgb_encode : float -> float
 (** The sRGB opto-electronic transfer function on [0,1]. *)
 
-val to_rgb8 : encoding -> t -> rgb8
-(** Clip each channel to [0,1], encode, round to nearest 8-bit value.
-    NaN becomes 0. *)
+type par = int -> (int -> unit) -> unit
+(** [par n f] runs [f 0] ... [f (n-1)] in any order, perhaps at once on
+    several domains ([Render.parallel]); the encoders below cut their work
+    into parts of fixed size, so their output does not depend on it. *)
+
+val sequential : par
+
+val quantize : encoding -> float -> int
+(** The 8-bit value of one channel by the formula: clip to [0,1] (NaN
+    becomes 0), encode, round to nearest. *)
+
+val to_rgb8 : ?par:par -> encoding -> t -> rgb8
+(** [quantize] of every channel (by a table of the 255 thresholds between
+    8-bit values, equal to the formula for every float). *)
 
 (** {1 Files} *)
 
@@ -48,10 +59,20 @@ val write_atomic : string -> (out_channel -> unit) -> unit
     [.NAME.XXXXXX.tmp] beside [path], is removed); other exceptions raised
     by [f] pass through unchanged. *)
 
-val write_png : ?text:(string * string) list -> string -> rgb8 -> unit
+val write_png : ?par:par -> ?text:(string * string) list -> string -> rgb8 -> unit
 (** Non-interlaced 8-bit RGB PNG, written atomically; [text] becomes tEXt
     chunks (key, value). Raises [Invalid_argument] for a keyword that is
-    empty, longer than 79 bytes or contains NUL, or a value with NUL. *)
+    empty, longer than 79 bytes or contains NUL, or a value with NUL.
+    The scanlines are filtered and compressed in bands of 64 rows, each
+    band its own deflate run ending in a sync flush (bands in parallel
+    under [par]). *)
+
+val adler32 : string -> int -> int -> int
+(** [adler32 s pos len]: the Adler-32 checksum of RFC 1950. *)
+
+val adler32_combine : int -> int -> int -> int
+(** [adler32_combine a b len_b]: the checksum of a concatenation from the
+    checksums of its parts. *)
 
 val write_ppm : string -> rgb8 -> unit
 (** Binary PPM (P6), written atomically. *)

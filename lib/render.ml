@@ -99,3 +99,14 @@ let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
         done
       done);
   img
+
+let parallel ~domains n f =
+  if domains <= 1 || n <= 1 then
+    for i = 0 to n - 1 do
+      f i
+    done
+  else
+    let pool = T.setup_pool ~num_domains:(min n domains - 1) () in
+    Fun.protect
+      ~finally:(fun () -> T.teardown_pool pool)
+      (fun () -> T.run pool (fun () -> T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(n - 1) ~body:f))

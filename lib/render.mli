@@ -32,3 +32,8 @@ val image :
     rectangle is rendered, into an image of the region's size; the tiles
     stay aligned to the full image, so every pixel is computed exactly as
     in a full render. [cancelled] is also checked between pixels. *)
+
+val parallel : domains:int -> Image.par
+(** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
+    [domains] workers (in turn when [domains <= 1]): the image encoders'
+    parts. *)

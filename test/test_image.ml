@@ -159,6 +159,20 @@ let arb_rgb8 =
     ~print:(fun (im : Image.rgb8) -> Printf.sprintf "%dx%d" im.w im.h)
     gen_rgb8
 
+let arb_tall =
+  QCheck.make
+    ~print:(fun (im : Image.rgb8) -> Printf.sprintf "%dx%d" im.w im.h)
+    QCheck.Gen.(
+      let* w = int_range 1 9 in
+      let* h = int_range 65 200 in
+      (* smooth rows, as renders are, and noise *)
+      let* noisy = bool in
+      let* data = bytes_size (return (w * h * 3)) in
+      if not noisy then Bytes.iteri (fun i _ -> Bytes.set_uint8 data i (i / 7 land 255)) data;
+      return { Image.w; h; data })
+
+let read_all f = In_channel.with_open_bin f In_channel.input_all
+
 let round_trip write name (im : Image.rgb8) =
   with_tmpdir (fun dir ->
       let path = Filename.concat dir name in
@@ -176,6 +190,34 @@ let props =
     QCheck.Test.make ~count:50 arb_rgb8
       ~name:"PPM write -> read is byte-identical"
       (round_trip Image.write_ppm "im.ppm");
+    (* taller than one 64-row band: the bands' deflate runs are joined *)
+    QCheck.Test.make ~count:25 arb_tall
+      ~name:"PNG of several bands: read back identical, same file on 1 and 3 domains"
+      (fun im ->
+        with_tmpdir (fun dir ->
+            let a = Filename.concat dir "a.png" and b = Filename.concat dir "b.png" in
+            Image.write_png a im;
+            Image.write_png ~par:(Render.parallel ~domains:3) b im;
+            let back = Image.read a in
+            Bytes.equal back.data im.data && read_all a = read_all b));
+    QCheck.Test.make ~count:200
+      QCheck.(pair string string)
+      ~name:"adler32_combine of two parts = adler32 of the whole"
+      (fun (a, b) ->
+        let whole = a ^ b in
+        Image.adler32_combine (Image.adler32 a 0 (String.length a)) (Image.adler32 b 0 (String.length b))
+          (String.length b)
+        = Image.adler32 whole 0 (String.length whole));
+    QCheck.Test.make ~count:2000
+      QCheck.(pair (oneof_list [ Image.Srgb; Image.Identity; Image.Gamma_srgb 2.2; Image.Gamma_srgb 0.45 ])
+                (make ~print:string_of_float Gen.(oneof [ float_range (-0.1) 1.1; float; float_range 0. 0.01 ])))
+      ~name:"to_rgb8 (by table) = the formula, for any float"
+      (fun (enc, v) ->
+        let img = Image.create 1 1 in
+        Image.set img 0 0 v (Float.succ v) (Float.pred v);
+        let im = Image.to_rgb8 enc img in
+        List.for_all2 (fun i v -> Bytes.get_uint8 im.data i = Image.quantize enc v)
+          [ 0; 1; 2 ] [ v; Float.succ v; Float.pred v ]);
   ]
 
 let encoding_tests =
@@ -210,6 +252,14 @@ let encoding_tests =
           "srgb"
           [ 0; 255; 0; 188; 124; 168; 255; 0; 218 ]
           (reds (Image.to_rgb8 Srgb img)));
+    Alcotest.test_case "Adler-32 known values (RFC 1950)" `Quick (fun () ->
+        Alcotest.(check int) "Wikipedia" 0x11E60398 (Image.adler32 "Wikipedia" 0 9);
+        Alcotest.(check int) "empty" 1 (Image.adler32 "" 0 0);
+        (* past the 5552-byte reduction step: 10^5 bytes of 0xFF, by the
+           definition: s1 = 1 + 255 n, s2 = n + 255 n (n+1) / 2, mod 65521 *)
+        let n = 100_000 in
+        let s1 = (1 + (255 * n)) mod 65521 and s2 = (n + (255 * n * (n + 1) / 2)) mod 65521 in
+        Alcotest.(check int) "10^5 x 0xFF" ((s2 lsl 16) lor s1) (Image.adler32 (String.make n '\xff') 0 n));
     Alcotest.test_case "to_rgb8 layout: row-major, row 0 at the top" `Quick
       (fun () ->
         let img = Image.create 2 2 in
