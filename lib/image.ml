@@ -6,6 +6,12 @@ let create w h =
   if w <= 0 || h <= 0 then invalid_arg "Image.create";
   { w; h; px = Float.Array.make (w * h * 3) 0. }
 
+(* Every pixel to be written by the caller: the pages are first touched
+   by the rendering domains, in parallel, not all by one domain here. *)
+let create_unset w h =
+  if w <= 0 || h <= 0 then invalid_arg "Image.create_unset";
+  { w; h; px = Float.Array.create (w * h * 3) }
+
 let width t = t.w
 let height t = t.h
 

@@ -8,6 +8,10 @@ type t
 val create : int -> int -> t
 (** [create w h] is a black image. Requires [w > 0] and [h > 0]. *)
 
+val create_unset : int -> int -> t
+(** An image whose pixels are unspecified until set: for a caller that
+    sets every one (the frame buffer of a render). *)
+
 val width : t -> int
 val height : t -> int
 

@@ -31,7 +31,7 @@ let shuffle seed a =
    (Gc.set acts on the calling domain only) makes them rare; the calling
    domain gets its own size back afterwards. One domain never waits for
    another: it keeps its heap (a smaller one stays in cache). *)
-let minor_words = 4 * 1024 * 1024 (* 32 MB per domain *)
+let minor_words = 2 * 1024 * 1024 (* 16 MB per domain *)
 
 let big_minor = Domain.DLS.new_key (fun () -> false)
 
@@ -87,7 +87,7 @@ let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
   let r = match region with Some r -> r | None -> { x0 = 0; y0 = 0; x1 = width; y1 = height } in
   if r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.x0 >= r.x1 || r.y0 >= r.y1 then
     invalid_arg "Render.image: region outside the image";
-  let img = Image.create (r.x1 - r.x0) (r.y1 - r.y0) in
+  let img = Image.create_unset (r.x1 - r.x0) (r.y1 - r.y0) in
   let cancelled = Option.value cancelled ~default:(fun () -> false) in
   run_tiles ~domains ?progress ~cancelled ?order_seed ~width ~height ~size:16 (fun t ->
       for y = max t.y0 r.y0 to min t.y1 r.y1 - 1 do
