@@ -23,17 +23,25 @@ let default =
     blur_samples = 0;
   }
 
-let pixel_coords ~width ~height px py =
-  ((px /. float_of_int width) -. 0.5, 0.5 -. (py /. float_of_int height))
+let[@inline] pixel_x ~width px = (px /. float_of_int width) -. 0.5
+let[@inline] pixel_y ~height py = 0.5 -. (py /. float_of_int height)
+let pixel_coords ~width ~height px py = (pixel_x ~width px, pixel_y ~height py)
+
+(* [a + sx right + sy up], normalized when [unit]: in scalars, allocating
+   the result only *)
+let[@inline] span c (a : Vec3.t) sx sy unit =
+  let x = a.x +. (sx *. c.right.x) and y = a.y +. (sx *. c.right.y) and z = a.z +. (sx *. c.right.z) in
+  let x = x +. (sy *. c.up.x) and y = y +. (sy *. c.up.y) and z = z +. (sy *. c.up.z) in
+  let l = if unit then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 0. in
+  if l > 0. then
+    let k = 1. /. l in
+    Vec3.make (k *. x) (k *. y) (k *. z)
+  else Vec3.make x y z
 
 let ray c sx sy =
   match c.projection with
-  | Perspective ->
-      let d = Vec3.madd (Vec3.madd c.direction sx c.right) sy c.up in
-      Ray.make c.location (Vec3.normalize d)
-  | Orthographic ->
-      let o = Vec3.madd (Vec3.madd c.location sx c.right) sy c.up in
-      Ray.make o (Vec3.normalize c.direction)
+  | Perspective -> Ray.make c.location (span c c.direction sx sy true)
+  | Orthographic -> Ray.make (span c c.location sx sy false) (Vec3.normalize c.direction)
 
 let ray_lens c sx sy u v =
   let r = ray c sx sy in

@@ -33,3 +33,9 @@ val ray_lens : t -> float -> float -> float -> float -> Ray.t
 val pixel_coords : width:int -> height:int -> float -> float -> float * float
 (** [pixel_coords ~width ~height px py] maps image coordinates (pixel
     centres at [i + 0.5], row 0 at the top) to [(sx, sy)]. *)
+
+val pixel_x : width:int -> float -> float
+(** [fst (pixel_coords ...)], without the pair. *)
+
+val pixel_y : height:int -> float -> float
+(** [snd (pixel_coords ...)], without the pair. *)

@@ -25,15 +25,19 @@ let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
    a closed function (no closure and refs per shadow ray); texture_filter
    traces nothing, so walks never nest on a domain. [ray] holds the
    shadow ray, [l] the direction to the light being shaded. *)
+type length = { mutable len : float }
+
 type shadow_walk = {
   mutable acc : Color.t;
   mutable faders : (Object.t * float) list;
   ray : Ray.scratch;
   l : Light.dir;
+  seg : length;  (** how far the shadow ray goes *)
 }
 
 let shadow_key =
-  Domain.DLS.new_key (fun () -> { acc = white; faders = []; ray = Ray.scratch (); l = Light.dir () })
+  Domain.DLS.new_key (fun () ->
+      { acc = white; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. } })
 
 let shadow_hit (o : Object.t) t =
   let w = Domain.DLS.get shadow_key in
@@ -49,11 +53,12 @@ let shadow_hit (o : Object.t) t =
     not (is_black w.acc)
   end
 
-(* Light reaching the origin of the walk's ray from [dist] along its unit
-   direction: the product of (f*P + t) of every surface crossed, with
+(* Light reaching the origin of the walk's ray from [w.seg.len] along its
+   unit direction: the product of (f*P + t) of every surface crossed, with
    interior fade over the lengths travelled inside fading objects; black
    when something opaque blocks. *)
-let shadow_filter (s : Scene.t) (w : shadow_walk) dist =
+let shadow_filter (s : Scene.t) (w : shadow_walk) =
+  let dist = w.seg.len in
   w.acc <- white;
   w.faders <- [];
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_hit in
@@ -101,7 +106,8 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
   | None ->
       let l = w.l in
       load_ray w.ray p l.lx l.ly l.lz;
-      shadow_filter s w l.dist
+      w.seg.len <- l.dist;
+      shadow_filter s w
   | Some a ->
       Light.average_area a (fun i j ->
           let q = Light.sample_position light a p i j in
@@ -109,7 +115,8 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
           let d = Vec3.length v in
           let k = 1. /. d in
           load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
-          shadow_filter s w d)
+          w.seg.len <- d;
+          shadow_filter s w)
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
 let metallic_tint m cos_angle (pc : Color.t) =
@@ -227,6 +234,48 @@ let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
 
+(* The running sums of [shade]: one frame per nesting level, per domain,
+   reused from ray to ray ([trace] starts every camera ray at depth 0).
+   [top] is the top layer's normal, [unset] until it is known. *)
+type frame = { c : Color.acc; tr : Color.acc; mutable top : Vec3.t }
+
+let unset = Vec3.make nan nan nan
+let new_frame () = { c = Color.acc 0.; tr = Color.acc 1.; top = unset }
+
+type frames = { mutable depth : int; mutable stack : frame array }
+
+let frames_key = Domain.DLS.new_key (fun () -> { depth = 0; stack = Array.init 8 (fun _ -> new_frame ()) })
+
+let enter () =
+  let fs = Domain.DLS.get frames_key in
+  let k = fs.depth in
+  if k = Array.length fs.stack then
+    fs.stack <- Array.init (2 * k) (fun i -> if i < k then fs.stack.(i) else new_frame ());
+  fs.depth <- k + 1;
+  let f = Array.unsafe_get fs.stack k in
+  Color.acc_set f.c 0. 0. 0.;
+  Color.acc_set f.tr 1. 1. 1.;
+  f.top <- unset;
+  fs
+
+(* Relative index of refraction across a surface of [inner] for a ray
+   inside [media]: entering or leaving is decided as POV-Ray does, by
+   whether the ray is already inside this interior, not by the side of
+   the surface (the children of a CSG share their parent's interior, so in
+   the overlap of a union of glass spheres the inner walls bend light as
+   glass/air). [media] holds each interior once. *)
+let relative_ior (inner : Interior.t) media =
+  if not (List.memq inner media) then
+    (match media with (i : Interior.t) :: _ -> i.ior | [] -> 1.) /. inner.ior
+  else
+    let rec beyond = function (i : Interior.t) :: r -> if i == inner then beyond r else i.ior | [] -> 1. in
+    inner.ior /. beyond media
+
+(* the media beyond that surface *)
+let next_media (inner : Interior.t) media =
+  if not (List.memq inner media) then inner :: media
+  else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
+
 (* [media]: the interiors the ray is inside, innermost first. *)
 let rec trace_ray ?(tmin = Ray.epsilon) (s : Scene.t) (ray : Ray.t) level weight media =
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
@@ -246,34 +295,25 @@ and shade s ray hit level weight media fade =
   let entering = Vec3.dot hit.normal d < 0. in
   let n0 = if entering then hit.normal else Vec3.neg hit.normal in
   let p = hit.point in
-  (* relative index of refraction across this surface *)
   let inner = hit.obj.interior in
-  let outer_ior = match media with i :: _ -> i.Interior.ior | [] -> 1. in
-  (* entering or leaving is decided as POV-Ray does, by whether the ray is
-     already inside this interior, not by the side of the surface: the
-     children of a CSG share their parent's interior, so in the overlap of
-     a union of glass spheres the inner walls bend light as glass/air *)
-  let eta, next_media =
-    if not (List.memq inner media) then (outer_ior /. inner.ior, inner :: media)
-    else
-      let rest = match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m in
-      let beyond = match rest with i :: _ -> i.Interior.ior | [] -> 1. in
-      (inner.ior /. beyond, rest)
-  in
-  let top_normal = ref None in
+  let eta = relative_ior inner media in
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
   let guess = total_internal eta (-.Vec3.dot d n0) in
-  let c = Color.acc 0. and tr = Color.acc 1. in
-  layers s d p n0 level weight media eta top_normal (not guess) c tr hit.obj.texture;
-  let n = Option.value ~default:n0 !top_normal in
+  let fs = enter () in
+  let fr = fs.stack.(fs.depth - 1) in
+  let c = fr.c and tr = fr.tr in
+  layers s d p n0 level weight media eta fr (not guess) c tr hit.obj.texture;
+  let n = if fr.top == unset then n0 else fr.top in
   if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then begin
-    top_normal := None;
+    fr.top <- unset;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
-    layers s d p n0 level weight media eta top_normal guess c tr hit.obj.texture
+    layers s d p n0 level weight media eta fr guess c tr hit.obj.texture
   end;
+  (* the frame is free again before anything is traced through *)
+  fs.depth <- fs.depth - 1;
   let c = Color.of_acc c in
   if Color.acc_luminance tr <= bailout then c
   else
@@ -281,7 +321,7 @@ and shade s ray hit level weight media fade =
     let tr = Color.of_acc tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)
-      add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w next_media))
+      add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w (next_media inner media)))
     else
       let cos_i = -.Vec3.dot d n in
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
@@ -290,16 +330,16 @@ and shade s ray hit level weight media fade =
         add c (mul fade (trace_ray s (Ray.make p (Vec3.madd d (2. *. cos_i) n)) (level + 1) weight media))
       else
         let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
-        add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w next_media))
+        add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w (next_media inner media)))
 
 (* Shade the layers of a texture top down, adding into [acc]; [w] is what
    the layers above let through, and holds at the end what the whole
-   texture lets through; sets [top_normal] to the top layer's normal.
+   texture lets through; sets [top.top] to the top layer's normal.
    [refl]: add the finishes' reflection (POV-Ray leaves it out where the
    light passing through is totally reflected inside: the TIR ray stands
    for it). A function of its own, not a closure in [shade]: it runs for
    every hit. *)
-and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w : Color.acc) = function
+and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) (w : Color.acc) = function
   | [] -> ()
   | (layer : Texture.layer) :: rest -> (
       match layer.tmap with
@@ -309,14 +349,14 @@ and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w 
           List.iter
             (fun (k, t) ->
               let c' = Color.acc 0. and f' = Color.acc 1. in
-              layers s d p n0 level weight media eta top_normal refl c' f' t;
+              layers s d p n0 level weight media eta top refl c' f' t;
               Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
               Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab)))
             (Texture.blend m p);
           Color.acc_set acc (acc.ar +. (w.ar *. c.ar)) (acc.ag +. (w.ag *. c.ag)) (acc.ab +. (w.ab *. c.ab));
           Color.acc_set w (w.ar *. f.ar) (w.ag *. f.ag) (w.ab *. f.ab);
           if not (Color.acc_is_black w) then
-            layers s d p n0 level weight media eta top_normal refl acc w rest
+            layers s d p n0 level weight media eta top refl acc w rest
       | None ->
           let n =
             match layer.normal with
@@ -326,7 +366,7 @@ and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w 
                 if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
                 else m
           in
-          if Option.is_none !top_normal then top_normal := Some n;
+          if top.top == unset then top.top <- n;
           let f = layer.finish in
           let pig = Pigment.eval layer.pigment p in
           let pc = pig.c in
@@ -355,30 +395,34 @@ and layers s d p n0 level weight media eta top_normal refl (acc : Color.acc) (w 
             (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
             (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
           if not (Color.acc_is_black w) then
-            layers s d p n0 level weight media eta top_normal refl acc w rest)
+            layers s d p n0 level weight media eta top refl acc w rest)
 
 and reflection s (f : Finish.t) pc n d p level weight media eta =
   if not (Finish.has_reflection f) then black
   else
     let rf = f.reflection in
     let cos_i = -.Vec3.dot d n in
-    let kr, w =
-      let span = add rf.rmax (scale (-1.) rf.rmin) in
-      if rf.fresnel then
-        let k = if eta = 1. then 0. else fresnel (1. /. eta) cos_i in
-        let kr = add rf.rmin (scale k span) in
-        (kr, max_channel kr)
-      else
-        let k = Float.pow (1. -. cos_i) rf.falloff in
-        (add rf.rmin (scale k span), Float.max (max_channel rf.rmin) (max_channel rf.rmax))
+    (* kr = rmin + k (rmax - rmin), per channel, in scalars *)
+    let lo = rf.rmin and hi = rf.rmax in
+    let k =
+      if rf.fresnel then if eta = 1. then 0. else fresnel (1. /. eta) cos_i
+      else Float.pow (1. -. cos_i) rf.falloff
     in
-    let kr = mul kr (metallic_tint rf.rmetallic cos_i pc) in
-    if is_black kr then black
+    let kr = lo.r +. (k *. (hi.r +. (-1. *. lo.r)))
+    and kg = lo.g +. (k *. (hi.g +. (-1. *. lo.g)))
+    and kb = lo.b +. (k *. (hi.b +. (-1. *. lo.b))) in
+    let w =
+      if rf.fresnel then Float.max kr (Float.max kg kb)
+      else Float.max (max_channel lo) (max_channel hi)
+    in
+    let mt = metallic_tint rf.rmetallic cos_i pc in
+    let kr = kr *. mt.r and kg = kg *. mt.g and kb = kb *. mt.b in
+    if kr = 0. && kg = 0. && kb = 0. then black
     else
       let dir = Vec3.madd d (2. *. cos_i) n in
       let rc = trace_ray s (Ray.make p dir) (level + 1) (weight *. w) media in
       let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
-      mul kr rc
+      Color.make (kr *. rc.r) (kg *. rc.g) (kb *. rc.b)
 
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
@@ -397,7 +441,9 @@ let start_media (s : Scene.t) (o : Vec3.t) =
       Atomic.set start_cache (Some (s, o, m));
       m
 
-let trace s (ray : Ray.t) = trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
+let trace s (ray : Ray.t) =
+  (Domain.DLS.get frames_key).depth <- 0;
+  trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
    through points of the lens, stratified by a Hammersley set turned by
@@ -423,7 +469,7 @@ let focal_blur (s : Scene.t) sx sy px py =
   scale (1. /. float_of_int n) !acc
 
 let sample (s : Scene.t) ~width ~height px py =
-  let sx, sy = Camera.pixel_coords ~width ~height px py in
+  let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   if s.camera.aperture > 0. then focal_blur s sx sy px py else trace s (Camera.ray s.camera sx sy)
 
 let pixel s ~width ~height x y =
