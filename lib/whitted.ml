@@ -62,11 +62,12 @@ let shadow_filter (s : Scene.t) (w : shadow_walk) =
   w.acc <- white;
   w.faders <- [];
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_hit in
-  let acc = ref w.acc and faders = w.faders in
+  let faders = w.faders in
   w.faders <- [];
   if not visible then black
-  else if (match faders with [] -> true | _ :: _ -> false) then !acc
+  else if (match faders with [] -> true | _ :: _ -> false) then w.acc
   else begin
+    let acc = ref w.acc in
     let r = w.ray in
     let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
     (* group crossings by object; inside segments between them get faded *)
@@ -212,7 +213,7 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
 (* the sum of [direct], per domain: nothing in it traces *)
 let direct_key = Domain.DLS.new_key (fun () -> Color.acc 0.)
 
-let direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
+let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
   for k = 0 to Array.length s.lights - 1 do
     let light = Array.unsafe_get s.lights k in
     match light.area with
@@ -264,7 +265,7 @@ let enter () =
    the surface (the children of a CSG share their parent's interior, so in
    the overlap of a union of glass spheres the inner walls bend light as
    glass/air). [media] holds each interior once. *)
-let relative_ior (inner : Interior.t) media =
+let[@inline] relative_ior (inner : Interior.t) media =
   if not (List.memq inner media) then
     (match media with (i : Interior.t) :: _ -> i.ior | [] -> 1.) /. inner.ior
   else
