@@ -226,6 +226,8 @@ let main =
     [ render_cmd; check_cmd; merge_cmd; scenes_cmd; obj2pov_cmd; Compare.cmd ~aa_args ~include_path ]
 
 let () =
+  (* before any scene exists: see Scratch *)
+  Camlray.Scratch.set_apart ();
   let err_buf = Buffer.create 256 in
   let err = Format.formatter_of_buffer err_buf in
   let argv =

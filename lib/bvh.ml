@@ -224,7 +224,7 @@ let[@inline] inv d = if d = 0. then 1e300 else 1. /. d
 type stack = { mutable slots : int array; mutable dist : Float.Array.t; mutable top : int }
 
 let stack_key =
-  Domain.DLS.new_key (fun () -> { slots = Array.make 256 0; dist = Float.Array.make 256 0.; top = 0 })
+  Scratch.key (fun () -> { slots = Array.make 1024 0; dist = Float.Array.make 1024 0.; top = 0 })
 
 let[@inline] reserve st n =
   let base = st.top in
@@ -263,7 +263,7 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
     let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
     if box_entry nodes 0 sx sy sz ox oy oz ix iy iz tmin h.t = infinity then false
     else begin
-      let st = Domain.DLS.get stack_key in
+      let st = Scratch.get stack_key in
       let base = reserve st b.depth in
       let stack = st.slots and dist = st.dist in
       let sp = ref base and k = ref 0 and go = ref true and found = ref false in
@@ -330,7 +330,7 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
     let ox = r.ox and oy = r.oy and oz = r.oz in
     let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
     let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
-    let st = Domain.DLS.get stack_key in
+    let st = Scratch.get stack_key in
     let base = reserve st b.depth in
     let stack = st.slots in
     let sp = ref base and k = ref 0 and go = ref true and ok = ref true in

@@ -111,10 +111,10 @@ type scratch = {
 
 let dummy = Object.make (Shape.sphere Vec3.zero 1.)
 let new_scratch () = { ray = Ray.scratch (); h = Hit.create 0.; f = Object.found dummy; occ = (fun _ _ -> false); busy = false }
-let scratch_key = Domain.DLS.new_key new_scratch
+let scratch_key = Scratch.key new_scratch
 
 let[@inline] take () =
-  let sc = Domain.DLS.get scratch_key in
+  let sc = Scratch.get scratch_key in
   if sc.busy then new_scratch () else (sc.busy <- true; sc)
 
 let nearest_leaf a (f : Object.found) r tmin (h : Hit.t) i =

@@ -36,11 +36,11 @@ type shadow_walk = {
 }
 
 let shadow_key =
-  Domain.DLS.new_key (fun () ->
+  Scratch.key (fun () ->
       { acc = white; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. } })
 
 let shadow_hit (o : Object.t) t =
-  let w = Domain.DLS.get shadow_key in
+  let w = Scratch.get shadow_key in
   if Texture.blocks_light o.texture then begin
     w.acc <- black;
     false
@@ -143,7 +143,7 @@ let fresnel n c =
    shadow ray crosses something transparent. *)
 let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d : Vec3.t)
     (light : Light.t) (out : Color.acc) =
-  let w = Domain.DLS.get shadow_key in
+  let w = Scratch.get shadow_key in
   let l = w.l in
   Light.direction_into light p l;
   let nl = (n.x *. l.lx) +. (n.y *. l.ly) +. (n.z *. l.lz) in
@@ -211,7 +211,7 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
 (* Diffuse and highlights of every light for one texture layer, added
    into [out]. *)
 (* the sum of [direct], per domain: nothing in it traces *)
-let direct_key = Domain.DLS.new_key (fun () -> Color.acc 0.)
+let direct_key = Scratch.key (fun () -> Color.acc 0.)
 
 let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
   for k = 0 to Array.length s.lights - 1 do
@@ -245,10 +245,10 @@ let new_frame () = { c = Color.acc 0.; tr = Color.acc 1.; top = unset }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
-let frames_key = Domain.DLS.new_key (fun () -> { depth = 0; stack = Array.init 8 (fun _ -> new_frame ()) })
+let frames_key = Scratch.key (fun () -> { depth = 0; stack = Array.init 8 (fun _ -> new_frame ()) })
 
 let enter () =
-  let fs = Domain.DLS.get frames_key in
+  let fs = Scratch.get frames_key in
   let k = fs.depth in
   if k = Array.length fs.stack then
     fs.stack <- Array.init (2 * k) (fun i -> if i < k then fs.stack.(i) else new_frame ());
@@ -377,7 +377,7 @@ and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) 
             else 1. -. pig.filter -. pig.transmit
           in
           (* this layer's own colour: lights, then ambient and emission *)
-          let dl = Domain.DLS.get direct_key in
+          let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
           direct s f pc alpha p n d dl;
           let amb = s.settings.ambient_light in
@@ -428,10 +428,14 @@ and reflection s (f : Finish.t) pc n d p level weight media eta =
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
    the camera location is the same for every ray of a pinhole camera. *)
-let start_cache : (Scene.t * Vec3.t * Interior.t list) option Atomic.t = Atomic.make None
+let start_key : (Scene.t * Vec3.t * Interior.t list) option ref Scratch.key =
+  Scratch.key (fun () -> ref None)
 
+(* per domain: a cache shared by domains would be written from both when
+   the origin changes at every ray (orthographic camera, focal blur) *)
 let start_media (s : Scene.t) (o : Vec3.t) =
-  match Atomic.get start_cache with
+  let cache = Scratch.get start_key in
+  match !cache with
   | Some (s', o', m) when s' == s && o'.x = o.x && o'.y = o.y && o'.z = o.z -> m
   | _ ->
       let m =
@@ -439,11 +443,11 @@ let start_media (s : Scene.t) (o : Vec3.t) =
           (fun acc (obj : Object.t) -> if Object.inside obj o then obj.interior :: acc else acc)
           [] s.objects
       in
-      Atomic.set start_cache (Some (s, o, m));
+      cache := Some (s, o, m);
       m
 
 let trace s (ray : Ray.t) =
-  (Domain.DLS.get frames_key).depth <- 0;
+  (Scratch.get frames_key).depth <- 0;
   trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays

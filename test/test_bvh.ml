@@ -85,6 +85,17 @@ let boxes l = Float.Array.of_list (List.concat_map (fun (a, b) -> [ a; a; a; b; 
 
 let units =
   [
+    Alcotest.test_case "Scratch: one value per domain, kept" `Quick (fun () ->
+        let made = Atomic.make 0 in
+        let k = Scratch.key (fun () -> Atomic.incr made; ref 0) in
+        let v0 = Scratch.get k in
+        v0 := 7;
+        Alcotest.(check bool) "same value again" true (Scratch.get k == v0);
+        Alcotest.(check int) "kept" 7 !(Scratch.get k);
+        (* the main domain is alive meanwhile: the other one has its own *)
+        let v1 = Domain.join (Domain.spawn (fun () -> Scratch.get k)) in
+        Alcotest.(check bool) "another domain, another value" true (v1 != v0);
+        Alcotest.(check int) "made once per domain" 2 (Atomic.get made));
     Alcotest.test_case "empty BVH" `Quick (fun () ->
         let b = Bvh.build (Float.Array.create 0) in
         Alcotest.(check int) "no nodes" 0 (Bvh.nodes b);
