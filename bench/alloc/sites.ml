@@ -1,0 +1,48 @@
+(* Where a whitted render allocates: Gc.Memprof samples minor allocations
+   (1 word in 100) during a one-domain render and ranks the call sites
+   (the allocating function and its two callers) by words.
+   Usage: sites.exe SCENE [-W n] [-H n] [--top n] *)
+open Camlray
+
+let () =
+  let w = ref 160 and h = ref 120 and top = ref 20 and file = ref "" in
+  Arg.parse
+    [ ("-W", Arg.Set_int w, "width"); ("-H", Arg.Set_int h, "height");
+      ("--top", Arg.Set_int top, "N sites to show") ]
+    (fun f -> file := f)
+    "sites.exe SCENE";
+  let scene =
+    match Camlray_lang.Parse.file !file with
+    | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
+    | Ok (sdl, _) -> (
+        match Camlray_lang.Compile.scene sdl with
+        | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
+        | Ok s -> s)
+  in
+  let words = Hashtbl.create 64 in
+  let site (info : Gc.Memprof.allocation) =
+    Printexc.raw_backtrace_to_string info.callstack
+    |> String.split_on_char '\n'
+    |> List.filter (fun l -> l <> "")
+    |> List.filteri (fun i _ -> i < 3)
+    |> String.concat "\n    <- "
+  in
+  let alloc_minor (info : Gc.Memprof.allocation) =
+    let k = site info in
+    let n = (info.size + 1) * info.n_samples in
+    Hashtbl.replace words k (n + Option.value ~default:0 (Hashtbl.find_opt words k));
+    None
+  in
+  let width = !w and height = !h in
+  let pixel = Whitted.pixel scene ~width ~height in
+  let _ : Gc.Memprof.t =
+    Gc.Memprof.start ~sampling_rate:1e-2 ~callstack_size:8
+      { Gc.Memprof.null_tracker with alloc_minor }
+  in
+  ignore (Render.image ~domains:1 ~width ~height pixel);
+  Gc.Memprof.stop ();
+  let sites = Hashtbl.fold (fun k v acc -> (v, k) :: acc) words [] |> List.sort compare |> List.rev in
+  let total = List.fold_left (fun a (v, _) -> a + v) 0 sites in
+  List.iteri
+    (fun i (v, k) -> if i < !top then Printf.printf "%5.1f%%  %s\n" (100. *. float v /. float total) k)
+    sites
