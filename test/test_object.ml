@@ -104,6 +104,22 @@ let instancing =
           Alcotest.(check bool) "same mesh" true (a == b)
       | _ -> Alcotest.fail "expected two meshes")
 
+let shared_textures =
+  Alcotest.test_case "equal plain textures are one record, others are not" `Quick (fun () ->
+      match
+        objects
+          "sphere { 0, 1 pigment { rgb <0.9, 0.5, 0.2> } }\n\
+           sphere { x*3, 1 pigment { rgb <0.9, 0.5, 0.2> } translate y }\n\
+           sphere { x*6, 1 pigment { rgb <0.9, 0.5, 0.2> } finish { phong 1 } }\n\
+           sphere { x*9, 1 pigment { checker } }\n\
+           sphere { x*12, 1 pigment { checker } }"
+      with
+      | [| a; b; c; d; e |] ->
+          Alcotest.(check bool) "same colour, same finish: shared" true (a.texture == b.texture);
+          Alcotest.(check bool) "another finish: not shared" false (a.texture == c.texture);
+          Alcotest.(check bool) "patterns are left alone" false (d.texture == e.texture)
+      | _ -> Alcotest.fail "expected five objects")
+
 (* bad input: a located error, never an exception *)
 let error_case src line needle =
   Alcotest.test_case ("error: " ^ needle) `Quick (fun () ->
@@ -141,5 +157,5 @@ let degenerate =
 
 let tests =
   ( "object",
-    [ texturing; no_shadow; mesh_inside; degenerate; instancing ] @ errors
+    [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures ] @ errors
     @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props) )
