@@ -32,9 +32,9 @@ let shuffle seed a =
    domain gets its own size back afterwards. One domain never waits for
    another: it keeps its heap (a smaller one stays in cache). 8 MB: on the
    default scene at 1600x1200 on 2 domains, 2 MB took 0.42 s, 4 and 8 MB
-   0.38 s, 16 MB 0.39 s. With more domains than cores each stop also
-   waits for a descheduled domain: 16 MB then (RTIOW in mc mode on 4
-   domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB). *)
+   0.38 s, 16 MB 0.39 s. With more domains than cores, 16 MB (RTIOW in
+   mc mode on 4 domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB;
+   the snowman was slower with 64 or 256 MB). *)
 let minor_words domains =
   if domains > Domain.recommended_domain_count () then 2 * 1024 * 1024 (* 16 MB *)
   else 1024 * 1024 (* 8 MB per domain *)

@@ -208,11 +208,11 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
       end
   end
 
-(* Diffuse and highlights of every light for one texture layer, added
-   into [out]. *)
 (* the sum of [direct], per domain: nothing in it traces *)
 let direct_key = Scratch.key (fun () -> Color.acc 0.)
 
+(* Diffuse and highlights of every light for one texture layer, added
+   into [out]. *)
 let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
   for k = 0 to Array.length s.lights - 1 do
     let light = Array.unsafe_get s.lights k in
