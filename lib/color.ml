@@ -12,7 +12,9 @@ let[@inline] madd a k b =
   { r = a.r +. (k *. b.r); g = a.g +. (k *. b.g); b = a.b +. (k *. b.b) }
 
 let max_channel a = Float.max a.r (Float.max a.g a.b)
-let luminance a = (0.297 *. a.r) +. (0.589 *. a.g) +. (0.114 *. a.b)
+(* POV-Ray's grey value *)
+let[@inline] grey r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
+let luminance a = grey a.r a.g a.b
 let is_black a = a.r = 0. && a.g = 0. && a.b = 0.
 let pow a e = { r = Float.pow a.r e; g = Float.pow a.g e; b = Float.pow a.b e }
 let to_string a = Printf.sprintf "rgb <%g, %g, %g>" a.r a.g a.b
@@ -26,7 +28,7 @@ let[@inline] acc_set (a : acc) r g b = a.ar <- r; a.ag <- g; a.ab <- b
 let of_acc (a : acc) = { r = a.ar; g = a.ag; b = a.ab }
 let acc_max (a : acc) = Float.max a.ar (Float.max a.ag a.ab)
 let acc_is_black (a : acc) = a.ar = 0. && a.ag = 0. && a.ab = 0.
-let acc_luminance (a : acc) = (0.297 *. a.ar) +. (0.589 *. a.ag) +. (0.114 *. a.ab)
+let acc_luminance (a : acc) = grey a.ar a.ag a.ab
 
 type rgbft = { c : t; filter : float; transmit : float }
 

@@ -48,6 +48,17 @@ let ensure_minor_heap words =
     if g.minor_heap_size < words then Gc.set { g with minor_heap_size = words }
   end
 
+let parallel ~domains n f =
+  if domains <= 1 || n <= 1 then
+    for i = 0 to n - 1 do
+      f i
+    done
+  else
+    let pool = T.setup_pool ~num_domains:(min n domains - 1) () in
+    Fun.protect
+      ~finally:(fun () -> T.teardown_pool pool)
+      (fun () -> T.run pool (fun () -> T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(n - 1) ~body:f))
+
 let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
     ?(cancelled = fun () -> false) ?order_seed ~width ~height ~size f =
   let ts = tiles ~width ~height ~size in
@@ -75,18 +86,7 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
       if g.minor_heap_size <> own then Gc.set { g with minor_heap_size = own }
     end
   in
-  Fun.protect ~finally:restore @@ fun () ->
-  (if domains <= 1 then
-     for i = 0 to total - 1 do
-       body i
-     done
-   else
-     let pool = T.setup_pool ~num_domains:(domains - 1) () in
-     Fun.protect
-       ~finally:(fun () -> T.teardown_pool pool)
-       (fun () ->
-         T.run pool (fun () ->
-             T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(total - 1) ~body)));
+  Fun.protect ~finally:restore (fun () -> parallel ~domains total body);
   if Atomic.get stop then raise Cancelled
 
 let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
@@ -105,14 +105,3 @@ let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
         done
       done);
   img
-
-let parallel ~domains n f =
-  if domains <= 1 || n <= 1 then
-    for i = 0 to n - 1 do
-      f i
-    done
-  else
-    let pool = T.setup_pool ~num_domains:(min n domains - 1) () in
-    Fun.protect
-      ~finally:(fun () -> T.teardown_pool pool)
-      (fun () -> T.run pool (fun () -> T.parallel_for pool ~chunk_size:1 ~start:0 ~finish:(n - 1) ~body:f))
