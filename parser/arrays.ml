@@ -22,7 +22,7 @@ let rec query t what loc =
   let b = match Env.find t.env name with
     | Some b -> Some b
     | None ->
-        if List.mem_assoc name t.config.builtins || Hashtbl.mem t.handles name then
+        if Cursor.builtin t name <> None || Hashtbl.mem t.handles name then
           Some (Env.Decl (Decl.Value (Value.Float 0.)))
         else None
   in

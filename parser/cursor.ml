@@ -91,6 +91,15 @@ type t = {
 }
 
 let files_read t = List.rev t.files
+
+(* The value of a built-in identifier (clock, image_width, ...): compared
+   as strings, not with the polymorphic compare of List.assoc *)
+let builtin t name =
+  let rec go = function
+    | [] -> None
+    | (k, v) :: rest -> if String.equal k name then Some v else go rest
+  in
+  go t.config.builtins
 let parse t entry = t.runner.run entry
 
 let create config env ~file toks =

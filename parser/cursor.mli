@@ -94,6 +94,9 @@ val create : config -> Env.t -> file:string -> token array -> t
     {!Supplier.create}. *)
 
 val files_read : t -> string list
+
+val builtin : t -> string -> float option
+(** The value of a built-in identifier ([clock], [image_width], ...). *)
 val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a
 (** A sub-parse from an entry point, through [t.runner]. *)
 

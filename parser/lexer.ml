@@ -81,12 +81,21 @@ let texture_keywords =
     ("texture_map", TEXTURE_MAP);
   ]
 
-let keywords : (string, Parser.token) Hashtbl.t =
-  let t = Hashtbl.create 256 in
+(* Keywords to their tokens, each token made once and shared by every
+   occurrence (a large scene has millions) *)
+module Words = Hashtbl.Make (struct
+  type t = string
+
+  let equal = String.equal
+  let hash (s : string) = Hashtbl.hash s
+end)
+
+let keywords : raw Words.t =
+  let t = Words.create 256 in
   List.iter
     (fun (k, v) ->
-      if Hashtbl.mem t k then invalid_arg ("Lexer: keyword listed twice: " ^ k);
-      Hashtbl.replace t k v)
+      if Words.mem t k then invalid_arg ("Lexer: keyword listed twice: " ^ k);
+      Words.replace t k (Tok v))
     (lang_keywords @ scene_keywords @ object_keywords @ texture_keywords);
   t
 
@@ -152,9 +161,9 @@ let reserved =
     (String.split_on_char ' ' pov_words);
   t
 
-let keyword_names () = Hashtbl.fold (fun k _ acc -> k :: acc) keywords [] |> List.sort compare
+let keyword_names () = Words.fold (fun k _ acc -> k :: acc) keywords [] |> List.sort compare
 
-let pov_reserved w = Hashtbl.mem reserved w || Hashtbl.mem keywords w
+let pov_reserved w = Hashtbl.mem reserved w || Words.mem keywords w
 
 let describe = function
   | Eof -> "end of file"
@@ -183,7 +192,7 @@ let describe = function
       | CHANNEL k -> "keyword " ^ k
       | _ -> (
           let found = ref None in
-          Hashtbl.iter (fun k v -> if v = t then found := Some k) keywords;
+          Words.iter (fun k v -> if v = Tok t then found := Some k) keywords;
           match !found with Some k -> "keyword " ^ k | None -> "a declared identifier"))
 
 exception Lex_error of string
@@ -251,7 +260,7 @@ let rec next buf : raw =
       Directive (String.sub s !i (String.length s - !i))
   | ident -> (
       let s = Sedlexing.Utf8.lexeme buf in
-      match Hashtbl.find_opt keywords s with Some t -> Tok t | None -> Ident s)
+      match Words.find_opt keywords s with Some t -> t | None -> Ident s)
   | '#' -> next buf (* a '#' not followed by a word: POV-Ray ignores it *)
   | '{' -> Tok LBRACE | '}' -> Tok RBRACE | '(' -> Tok LPAREN | ')' -> Tok RPAREN
   | '[' -> Tok LBRACKET | ']' -> Tok RBRACKET

@@ -102,11 +102,11 @@ let rec next t : Parser.token * Loc.t =
       | Ident name -> ident t name tok.loc)
 
 and ident t name loc =
-  match List.assoc_opt name t.config.builtins with
+  match Cursor.builtin t name with
   | Some v -> (Parser.FLOAT v, loc)
   | None when name = "version" -> (Parser.FLOAT (Defaults.version ()), loc)
   | None -> (
-      (match Hashtbl.find_opt t.deprecated name with
+      (match if Hashtbl.length t.deprecated = 0 then None else Hashtbl.find_opt t.deprecated name with
       | Some (msg, once, warned) when not (once && !warned) ->
           warned := true;
           Diag.warning loc (Printf.sprintf "%s is deprecated: %s" name msg)
@@ -195,7 +195,7 @@ and function_lit t loc =
   let toks = Array.of_list (body 0 []) in
   if Array.length toks = 1 then fail t loc "a function's body cannot be empty";
   let resolve name =
-    match List.assoc_opt name t.config.builtins with
+    match Cursor.builtin t name with
     | Some v -> Fnparse.Const v
     | None -> (
         match Env.find t.env name with

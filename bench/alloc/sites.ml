@@ -1,24 +1,18 @@
 (* Where a whitted render allocates: Gc.Memprof samples minor allocations
    (1 word in 100) during a one-domain render and ranks the call sites
-   (the allocating function and its two callers) by words.
-   Usage: sites.exe SCENE [-W n] [-H n] [--top n] *)
+   (the allocating function and its two callers) by words. With --parse,
+   where parsing and compiling the scene allocate instead.
+   Usage: sites.exe SCENE [-W n] [-H n] [--top n] [--parse] *)
 open Camlray
 
 let () =
-  let w = ref 160 and h = ref 120 and top = ref 20 and file = ref "" in
+  let w = ref 160 and h = ref 120 and top = ref 20 and file = ref "" and parse = ref false in
   Arg.parse
     [ ("-W", Arg.Set_int w, "width"); ("-H", Arg.Set_int h, "height");
-      ("--top", Arg.Set_int top, "N sites to show") ]
+      ("--top", Arg.Set_int top, "N sites to show");
+      ("--parse", Arg.Set parse, "rank the sites of parsing and compiling, not rendering") ]
     (fun f -> file := f)
     "sites.exe SCENE";
-  let scene =
-    match Camlray_lang.Parse.file !file with
-    | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
-    | Ok (sdl, _) -> (
-        match Camlray_lang.Compile.scene sdl with
-        | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
-        | Ok s -> s)
-  in
   let words = Hashtbl.create 64 in
   let site (info : Gc.Memprof.allocation) =
     Printexc.raw_backtrace_to_string info.callstack
@@ -33,16 +27,31 @@ let () =
     Hashtbl.replace words k (n + Option.value ~default:0 (Hashtbl.find_opt words k));
     None
   in
+  let start () =
+    ignore
+      (Gc.Memprof.start ~sampling_rate:1e-2 ~callstack_size:8
+         { Gc.Memprof.null_tracker with alloc_minor } : Gc.Memprof.t)
+  in
+  let report () =
+    Gc.Memprof.stop ();
+    let sites = Hashtbl.fold (fun k v acc -> (v, k) :: acc) words [] |> List.sort compare |> List.rev in
+    let total = List.fold_left (fun a (v, _) -> a + v) 0 sites in
+    List.iteri
+      (fun i (v, k) -> if i < !top then Printf.printf "%5.1f%%  %s\n" (100. *. float v /. float total) k)
+      sites
+  in
+  if !parse then start ();
+  let scene =
+    match Camlray_lang.Parse.file !file with
+    | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
+    | Ok (sdl, _) -> (
+        match Camlray_lang.Compile.scene sdl with
+        | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
+        | Ok s -> s)
+  in
+  if !parse then (report (); exit 0);
   let width = !w and height = !h in
   let pixel = Whitted.pixel scene ~width ~height in
-  let _ : Gc.Memprof.t =
-    Gc.Memprof.start ~sampling_rate:1e-2 ~callstack_size:8
-      { Gc.Memprof.null_tracker with alloc_minor }
-  in
+  start ();
   ignore (Render.image ~domains:1 ~width ~height pixel);
-  Gc.Memprof.stop ();
-  let sites = Hashtbl.fold (fun k v acc -> (v, k) :: acc) words [] |> List.sort compare |> List.rev in
-  let total = List.fold_left (fun a (v, _) -> a + v) 0 sites in
-  List.iteri
-    (fun i (v, k) -> if i < !top then Printf.printf "%5.1f%%  %s\n" (100. *. float v /. float total) k)
-    sites
+  report ()
