@@ -47,7 +47,7 @@ type target = Name of string | Element of Env.binding option array * int
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
 type frame = {
-  toks : token array;
+  toks : Toks.t;
   mutable pos : int;
   kind : kind;
   file : string;
@@ -79,6 +79,7 @@ type t = {
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
   mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable depth : int;  (** parses in progress: 1 while the scene's own parse reads *)
   mutable optional_sep : Parser.token option;
       (** for the next sub-parse only: a separator that may be left out
           (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
@@ -108,7 +109,7 @@ let create config env ~file toks =
                  byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;
-    handles = Hashtbl.create 4; supplied = 0; optional_sep = None;
+    handles = Hashtbl.create 4; supplied = 0; depth = 0; optional_sep = None;
     semi_probe = None }
 
 let chain t =
@@ -178,7 +179,7 @@ let leave t f =
 
 let rec raw_next t =
   let f = top t in
-  let tok = f.toks.(f.pos) in
+  let tok = (Toks.get f.toks (f.pos)) in
   match tok.raw with
   | Eof when f.ctrl <> [] ->
       let d, l = opener (List.hd f.ctrl) in
@@ -197,11 +198,11 @@ let rec raw_next t =
 
 let raw_peek t =
   let f = top t in
-  f.toks.(f.pos)
+  (Toks.get f.toks (f.pos))
 
 let rec peek_past_ends t ~from =
   let f = top t in
-  if f != from && f.kind <> Main && f.ctrl = [] && f.toks.(f.pos).raw = Eof then begin
+  if f != from && f.kind <> Main && f.ctrl = [] && (Toks.get f.toks (f.pos)).raw = Eof then begin
     leave t f;
     peek_past_ends t ~from
   end
@@ -226,9 +227,9 @@ let opens = [ "if"; "ifdef"; "ifndef"; "while"; "for"; "switch"; "macro" ]
 
 let skip_block t ~stop =
   let f = top t in
-  let start = if f.pos > 0 then f.toks.(f.pos - 1).loc else Loc.none in
+  let start = if f.pos > 0 then (Toks.get f.toks (f.pos - 1)).loc else Loc.none in
   let rec go depth =
-    let tok = f.toks.(f.pos) in
+    let tok = (Toks.get f.toks (f.pos)) in
     match tok.raw with
     | Eof -> fail t start "this directive has no matching #end"
     | Directive d ->
@@ -250,9 +251,9 @@ let skip_block t ~stop =
    texture (texture {...} texture {...}) is skipped whole. *)
 let skip_phrase t =
   let f = top t in
-  let first = f.toks.(f.pos).raw in
+  let first = (Toks.get f.toks (f.pos)).raw in
   let rec go depth =
-    let tok = f.toks.(f.pos) in
+    let tok = (Toks.get f.toks (f.pos)) in
     let step () = f.pos <- f.pos + 1 in
     match tok.raw with
     | Eof -> ()
@@ -262,7 +263,7 @@ let skip_phrase t =
     | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) when depth = 0 -> ()
     | Tok Parser.RBRACE when depth = 1 ->
         step ();
-        if f.toks.(f.pos).raw = first && first = Tok Parser.TEXTURE then go 0
+        if (Toks.get f.toks (f.pos)).raw = first && first = Tok Parser.TEXTURE then go 0
     | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) -> step (); go (depth - 1)
     | _ -> step (); go depth
   in

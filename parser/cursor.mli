@@ -46,7 +46,7 @@ type target = Name of string | Element of Env.binding option array * int
 type kind = Main | Include of Loc.t | Macro_call of string * Loc.t
 
 type frame = {
-  toks : token array;
+  toks : Toks.t;
   mutable pos : int;
   kind : kind;
   file : string;
@@ -78,6 +78,7 @@ type t = {
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
   mutable supplied : int;  (** raw tokens read so far, for [max_tokens] *)
+  mutable depth : int;  (** parses in progress: 1 while the scene's own parse reads *)
   mutable optional_sep : Parser.token option;
       (** for the next sub-parse only: a separator that may be left out
           (array initialisers: [{ <1,2> <3,4> }]); the parser gets it
@@ -89,7 +90,7 @@ type t = {
           recorded here (POV-Ray: a #declare missing its ';') *)
 }
 
-val create : config -> Env.t -> file:string -> token array -> t
+val create : config -> Env.t -> file:string -> Toks.t -> t
 (** A supplier state on a file's tokens; its [runner] is set by
     {!Supplier.create}. *)
 

@@ -273,26 +273,34 @@ let rec next buf : raw =
   | any -> raise (Lex_error (Printf.sprintf "unexpected character %S" (Sedlexing.Utf8.lexeme buf)))
   | _ -> raise (Lex_error "invalid UTF-8 input")
 
-let tokenize ~file text =
+let stream ~file text =
   Diag.register_source file text;
   let buf = Sedlexing.Utf8.from_string text in
   Sedlexing.set_filename buf file;
-  let acc = ref [] in
-  let rec loop () =
-    let raw =
-      try next buf
-      with
-      | Unclosed (msg, s, e) -> Diag.error (Loc.make s e) "%s" msg
-      | Lex_error msg ->
+  let last = ref None in
+  fun () ->
+    match !last with
+    | Some eof -> eof
+    | None ->
+        let raw =
+          try next buf with
+          | Unclosed (msg, s, e) -> Diag.error (Loc.make s e) "%s" msg
+          | Lex_error msg ->
+              let s, e = Sedlexing.lexing_positions buf in
+              Diag.error (Loc.make s e) "%s" msg
+          | Sedlexing.MalFormed ->
+              let s, e = Sedlexing.lexing_positions buf in
+              Diag.error (Loc.make s e) "invalid UTF-8 input"
+        in
         let s, e = Sedlexing.lexing_positions buf in
-        Diag.error (Loc.make s e) "%s" msg
-    in
-    let s, e = Sedlexing.lexing_positions buf in
-    acc := { raw; loc = Loc.make s e } :: !acc;
-    if raw <> Eof then loop ()
+        let tok = { raw; loc = Loc.make s e } in
+        if raw = Eof then last := Some tok;
+        tok
+
+let tokenize ~file text =
+  let next = stream ~file text in
+  let rec loop acc =
+    let tok = next () in
+    if tok.raw = Eof then Array.of_list (List.rev (tok :: acc)) else loop (tok :: acc)
   in
-  (try loop ()
-   with Sedlexing.MalFormed ->
-     let s, e = Sedlexing.lexing_positions buf in
-     Diag.error (Loc.make s e) "invalid UTF-8 input");
-  Array.of_list (List.rev !acc)
+  loop []

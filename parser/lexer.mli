@@ -14,6 +14,11 @@ val tokenize : file:string -> string -> token array
 (** Raises {!Diag.Error} on a lexical error (unterminated string or
     comment, stray character). The last token is [Eof]. *)
 
+val stream : file:string -> string -> unit -> token
+(** The same tokens one at a time, lexed as they are asked for; after the
+    [Eof] token, [Eof] again. Raises {!Diag.Error} when a lexical error is
+    reached. *)
+
 val describe : raw -> string
 (** How a token is named in messages: ["'{'"], ["keyword sphere"],
     ["identifier Foo"], ["end of file"]. *)

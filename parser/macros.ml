@@ -23,8 +23,8 @@ let define t loc =
   let body_start = f.pos in
   ignore (skip_block t ~stop:[]);
   let body_end = f.pos - 1 in
-  let eof = { raw = Eof; loc = f.toks.(body_end).loc } in
-  let body = Array.append (Array.sub f.toks body_start (body_end - body_start)) [| eof |] in
+  let eof = { raw = Eof; loc = (Toks.get f.toks (body_end)).loc } in
+  let body = Array.append (Toks.sub f.toks body_start (body_end - body_start)) [| eof |] in
   Env.declare t.env name (Env.Macro { name; params = ps; body; file = f.file; mloc = loc })
 
 let rec call t (m : Env.macro) loc =
@@ -59,7 +59,7 @@ let rec call t (m : Env.macro) loc =
   List.iter (fun (p, (b, _)) -> Env.local t.env p b) args;
   let byref = List.filter_map (fun (p, (_, n)) -> Option.map (fun n -> (p, n)) n) args in
   t.frames <-
-    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
+    { toks = Toks.of_array m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
       scoped = true; byref }
     :: t.frames
 
@@ -68,7 +68,7 @@ let rec call t (m : Env.macro) loc =
    POV-Ray: arrays as themselves, other values copied back at the end. *)
 (* NAME[i]... followed by ',' or ')': an element passed by reference. *)
 and element_ref t f name a =
-  let at i = if i < Array.length f.toks then f.toks.(i).raw else Eof in
+  let at i = if Toks.mem f.toks i then (Toks.get f.toks (i)).raw else Eof in
   let rec close i depth =
     match at i with
     | Tok Parser.LBRACKET -> close (i + 1) (depth + 1)
@@ -81,7 +81,7 @@ and element_ref t f name a =
   in
   match close (f.pos + 1) 0 with
   | Some e when (match at e with Tok (Parser.COMMA | Parser.RPAREN) -> true | _ -> false) ->
-      let nloc = f.toks.(f.pos).loc in
+      let nloc = (Toks.get f.toks (f.pos)).loc in
       f.pos <- f.pos + 1;
       let rec go a =
         ignore (raw_next t);
@@ -102,9 +102,9 @@ and element_ref t f name a =
 and argument t =
   let f = top t in
   let bare =
-    match f.toks.(f.pos).raw with
-    | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
-        match (f.toks.(f.pos + 1).raw, Env.find t.env n) with
+    match (Toks.get f.toks (f.pos)).raw with
+    | Ident n when t.pending = [] && Toks.mem f.toks (f.pos + 1) -> (
+        match ((Toks.get f.toks (f.pos + 1)).raw, Env.find t.env n) with
         | Tok ((Parser.COMMA | Parser.RPAREN) as sep), Some ((Env.Array _ | Env.Decl _) as b) ->
             f.pos <- f.pos + 2;
             Some ((b, Some (Name n)), sep = Parser.RPAREN)
@@ -144,7 +144,7 @@ let include_file t loc =
         try In_channel.with_open_bin path In_channel.input_all
         with Sys_error e -> fail t tok.loc "cannot read %s: %s" path e
       in
-      let toks = Lexer.tokenize ~file:path text in
+      let toks = Toks.of_text ~file:path text in
       if not (List.mem abs t.files) then t.files <- abs :: t.files;
       Env.push_scope t.env;
       t.frames <-

@@ -21,8 +21,8 @@ let run options ~name text =
   Value.reset_streams ();
   let last_loc = ref Loc.none in
   try
-    let toks = Lexer.tokenize ~file:name text in
-    if Array.length toks > 0 then last_loc := toks.(0).loc;
+    let toks = Toks.of_text ~file:name text in
+    last_loc := (Toks.get toks 0).loc;
     let include_dirs =
       options.include_dirs
       @ if Sys.file_exists pov_include_dir then [ pov_include_dir ] else []

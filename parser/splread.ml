@@ -9,13 +9,13 @@ open Cursor
 let value_end t =
   let f = top t in
   let rec go i depth prev =
-    if i >= Array.length f.toks then None
+    if not (Toks.mem f.toks i) then None
     else
       let starts = function
         | Tok (Parser.FLOAT _ | Parser.LT | Parser.VECTOR _ | Parser.FUNC _ | Parser.STRING _) | Ident _ -> true
         | _ -> false
       in
-      match f.toks.(i).raw with
+      match (Toks.get f.toks (i)).raw with
       | Eof | Directive _ -> None
       | (Tok Parser.COMMA | Tok Parser.RBRACE) as r when depth = 0 -> Some (i, r)
       | r when depth = 0 && prev && starts r -> Some (i, r)

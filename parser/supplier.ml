@@ -84,7 +84,7 @@ let rec next t : Parser.token * Loc.t =
       x
   | [] when (match t.stop_at with Some (f, p) -> top t == f && f.pos = p | None -> false) ->
       t.stop_at <- None;
-      let l = (top t).toks.((top t).pos).loc in
+      let l = (Toks.get (top t).toks (top t).pos).loc in
       (Parser.SEMI, { l with stop = l.start })
   | [] -> (
       let tok = raw_next t in
@@ -208,7 +208,7 @@ and function_lit t loc =
 
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->
-  let pos = (top t).toks.((top t).pos).loc.start in
+  let pos = (Toks.get (top t).toks (top t).pos).loc.start in
   let sep = t.optional_sep and probe = t.semi_probe in
   t.optional_sep <- None;
   t.semi_probe <- None;
@@ -218,6 +218,7 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
     match cp with
     | I.InputNeeded _ -> (
         let read () =
+          if t.depth = 1 then release_behind t;
           let tok, loc = next t in
           t.last <- loc;
           loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
@@ -260,7 +261,19 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
     | I.Rejected -> fail t t.last "syntax error"
   in
   let cp0 = start pos in
-  loop cp0 cp0 None true
+  t.depth <- t.depth + 1;
+  match loop cp0 cp0 None true with
+  | v -> t.depth <- t.depth - 1; v
+  | exception e -> t.depth <- t.depth - 1; raise e
+
+(* Between two tokens of the scene's own parse no directive is half
+   read: what the top frame has passed is not read again unless a loop
+   is open in it (it jumps back) or a declaration waits for a position. *)
+and release_behind t =
+  let f = top t in
+  match f.kind with
+  | Macro_call _ -> ()
+  | Main | Include _ -> if f.ctrl = [] && t.stop_at = None then Toks.release f.toks f.pos
 
 and syntax_error : 'a. t -> 'a I.env -> (Parser.token * Loc.t) option -> 'b =
  fun t env last ->
@@ -413,9 +426,9 @@ and declare t ~local loc =
           (* #declare A = B; for B a whole array or a function (not a call) *)
           let f = top t in
           let whole =
-            match f.toks.(f.pos).raw with
-            | Ident n when t.pending = [] && f.pos + 1 < Array.length f.toks -> (
-                match (Env.find t.env n, f.toks.(f.pos + 1).raw) with
+            match (Toks.get f.toks (f.pos)).raw with
+            | Ident n when t.pending = [] && Toks.mem f.toks (f.pos + 1) -> (
+                match (Env.find t.env n, (Toks.get f.toks (f.pos + 1)).raw) with
                 | Some (Env.Array a), r when r <> Tok Parser.LBRACKET -> Some (Env.Array (Arrays.copy a))
                 | Some (Env.Decl (Decl.Function _) as b), r when r <> Tok Parser.LPAREN -> Some b
                 | _ -> None)
@@ -465,7 +478,7 @@ and guarded t nloc f =
    a directive right after it runs only once the name is bound. *)
 and string_without_semi t =
   let f = top t in
-  let at i = if i < Array.length f.toks then f.toks.(i).raw else Eof in
+  let at i = if Toks.mem f.toks i then (Toks.get f.toks (i)).raw else Eof in
   let after_term =
     if t.pending <> [] then None
     else
@@ -536,14 +549,14 @@ and rhs t =
             | _ -> d)
         | `Bounded (f, i) -> (
             (* hand the parser the missing ';', then insist on a string *)
-            let l = f.toks.(i).loc in
+            let l = (Toks.get f.toks (i)).loc in
             t.stop_at <- Some (f, i);
             let d = Fun.protect ~finally:(fun () -> t.stop_at <- None) (fun () -> parse t Parser.Incremental.declare_rhs) in
             match d with
             | Decl.Value (Value.String _) -> d
             | _ ->
                 fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
-                  (describe f.toks.(i).raw)))
+                  (describe (Toks.get f.toks (i)).raw)))
   in
   (* layered textures: texture {...} texture {...}, the last on top *)
   let rec layers d =

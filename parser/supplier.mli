@@ -35,7 +35,7 @@ type config = {
 
 type t
 
-val create : config -> Env.t -> file:string -> Lexer.token array -> t
+val create : config -> Env.t -> file:string -> Toks.t -> t
 
 val parse : t -> (Lexing.position -> 'a Parser.MenhirInterpreter.checkpoint) -> 'a
 (** Run a (sub-)parse from an entry point of the grammar, pulling tokens

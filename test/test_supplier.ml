@@ -199,6 +199,44 @@ let tests =
              object { U }"
           in
           expect 1000 doubling 3);
+      Alcotest.test_case "tokens read on demand are those of the whole-file lexer; released ones are refused" `Quick
+        (fun () ->
+          let text = String.concat "\n" (List.init 4000 (fun i -> Printf.sprintf "sphere { <%d, 0, 0>, 0.5 }" i)) in
+          let all = Lexer.tokenize ~file:"<t>" text in
+          let toks = Toks.of_text ~file:"<t>" text in
+          let n = Array.length all in
+          Alcotest.(check bool) "more than four chunks" true (n > 5 * 4096);
+          Array.iteri
+            (fun i (tok : Lexer.token) ->
+              let got = Toks.get toks i in
+              if got.raw <> tok.raw || Loc.to_string got.loc <> Loc.to_string tok.loc then
+                Alcotest.failf "token %d differs" i)
+            all;
+          Alcotest.(check bool) "last is there" true (Toks.mem toks (n - 1));
+          Alcotest.(check bool) "none after it" false (Toks.mem toks n);
+          Alcotest.(check bool) "past the end: Eof" true ((Toks.get toks (n + 10)).raw = Lexer.Eof);
+          Toks.release toks 10000;
+          (* 10000 is in the third chunk of 4096: the second is kept too *)
+          Alcotest.(check bool) "kept" true ((Toks.get toks 4096).raw = all.(4096).raw);
+          match Toks.get toks 4095 with
+          | _ -> Alcotest.fail "a released token was returned"
+          | exception Invalid_argument _ -> ());
+      Alcotest.test_case "a long file: loops, macros and #if spanning thousands of tokens, tokens released" `Quick
+        (fun () ->
+          (* 6 tokens a line: each block below is more than two chunks *)
+          let block = String.concat "\n" (List.init 2000 (fun _ -> "#declare S = S + 1;")) in
+          let filler = String.concat "\n" (List.init 3000 (fun _ -> "sphere { 0, 1 }")) in
+          let text =
+            String.concat "\n"
+              [ "#declare S = 0;"; filler; "#macro Add() "; block; "#end"; filler;
+                "#declare I = 0; #while (I < 3)"; block; "#declare I = I + 1; #end";
+                "#for (K, 1, 2)"; block; "#end"; "Add() Add()"; "#if (S > 0)"; block; "#end";
+                filler; "sphere { 0, S }" ]
+          in
+          let radii = floats text in
+          Alcotest.(check int) "spheres" 9001 (List.length radii);
+          (* 3 + 2 + 2 runs of the block and the #if one: 8 x 2000 *)
+          check "S" [ 16000. ] [ List.nth radii 9000 ]);
       Alcotest.test_case "unbounded macro recursion stops at the depth limit" `Quick (fun () ->
           Scn.check_message "#macro R() R() #end R()" "nested deeper");
       Alcotest.test_case "standard include files load" `Quick (fun () ->

@@ -1,0 +1,69 @@
+(* Tokens in chunks of 4096: chunk c holds tokens c * 4096 to
+   c * 4096 + 4095. A released chunk is replaced by [||]. *)
+let bits = 12
+let size = 1 lsl bits
+
+type t = {
+  mutable chunks : Lexer.token array array;
+  mutable count : int;  (** tokens lexed so far *)
+  lex : (unit -> Lexer.token) option;  (** [None]: fixed, or finished *)
+  mutable finished : bool;
+  mutable released : int;  (** chunks below this one are released *)
+}
+
+let of_array a =
+  let n = Array.length a in
+  let chunks = Array.init ((n + size - 1) / size) (fun c -> Array.sub a (c * size) (min size (n - (c * size)))) in
+  { chunks; count = n; lex = None; finished = true; released = 0 }
+
+let of_text ~file text =
+  { chunks = [||]; count = 0; lex = Some (Lexer.stream ~file text); finished = false; released = 0 }
+
+(* lex one more chunk (or up to the end) *)
+let fill t =
+  match t.lex with
+  | None -> t.finished <- true
+  | Some next ->
+      let c = t.count lsr bits in
+      if c >= Array.length t.chunks then begin
+        let grown = Array.make (max 16 (2 * Array.length t.chunks)) [||] in
+        Array.blit t.chunks 0 grown 0 (Array.length t.chunks);
+        t.chunks <- grown
+      end;
+      let first = next () in
+      let chunk = Array.make size first in
+      let k = ref 1 and eof = ref (first.raw = Lexer.Eof) in
+      while (not !eof) && !k < size do
+        let tok = next () in
+        chunk.(!k) <- tok;
+        incr k;
+        if tok.raw = Lexer.Eof then eof := true
+      done;
+      t.chunks.(c) <- (if !k = size then chunk else Array.sub chunk 0 !k);
+      t.count <- t.count + !k;
+      if !eof then t.finished <- true
+
+let rec mem t i = i >= 0 && (i < t.count || ((not t.finished) && (fill t; mem t i)))
+
+let get t i =
+  if mem t i then begin
+    let c = i lsr bits in
+    if c < t.released then invalid_arg "Toks.get: a released token";
+    Array.unsafe_get (Array.unsafe_get t.chunks c) (i land (size - 1))
+  end
+  else if i < 0 then invalid_arg "Toks.get: negative index"
+  else
+    (* past the end: the final Eof *)
+    let c = (t.count - 1) lsr bits in
+    let chunk = t.chunks.(c) in
+    chunk.(Array.length chunk - 1)
+
+let sub t pos len = Array.init len (fun k -> get t (pos + k))
+
+let release t i =
+  (* keep the chunk of i and the one before it *)
+  let upto = (i lsr bits) - 1 in
+  while t.released < upto do
+    t.chunks.(t.released) <- [||];
+    t.released <- t.released + 1
+  done
