@@ -1,7 +1,11 @@
-(* Tokens in chunks of 4096: chunk c holds tokens c * 4096 to
-   c * 4096 + 4095. A released chunk is replaced by [||]. *)
-let bits = 12
+(* Tokens in chunks of 64: chunk c holds tokens 64c to 64c + 63. A
+   released chunk is replaced by [||]. Small chunks are lexed just before
+   they are parsed and die young: with chunks of 4096 every token outlived
+   a minor collection, and 10^6 spheres took 15.8 s and 1.9 GB to check,
+   against 11.4 s and 1.3 GB with 64 (256: 11.9 s, 1.5 GB). *)
+let bits = 6
 let size = 1 lsl bits
+let margin = size
 
 type t = {
   mutable chunks : Lexer.token array array;

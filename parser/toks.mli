@@ -23,5 +23,7 @@ val sub : t -> int -> int -> Lexer.token array
 (** [sub t pos len]: tokens [pos .. pos + len - 1]. *)
 
 val release : t -> int -> unit
-(** [release t i]: the tokens before [i] will not be read again. They are
-    freed some thousands of tokens later (a margin behind [i] is kept). *)
+(** [release t i]: the tokens before [i] will not be read again. The
+    [margin] tokens before [i] are kept; earlier ones may be freed. *)
+
+val margin : int
