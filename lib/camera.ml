@@ -38,10 +38,15 @@ let[@inline] span c (a : Vec3.t) sx sy unit =
     Vec3.make (k *. x) (k *. y) (k *. z)
   else Vec3.make x y z
 
-let ray c sx sy =
+let[@inline] origin c sx sy =
+  match c.projection with Perspective -> c.location | Orthographic -> span c c.location sx sy false
+
+let[@inline] dir c sx sy =
   match c.projection with
-  | Perspective -> Ray.make c.location (span c c.direction sx sy true)
-  | Orthographic -> Ray.make (span c c.location sx sy false) (Vec3.normalize c.direction)
+  | Perspective -> span c c.direction sx sy true
+  | Orthographic -> Vec3.normalize c.direction
+
+let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
 let ray_lens c sx sy u v =
   let r = ray c sx sy in

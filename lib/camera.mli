@@ -22,6 +22,10 @@ val ray : t -> float -> float -> Ray.t
 (** [ray cam sx sy]: the pinhole ray through the screen point. Directions
     are normalised. *)
 
+val origin : t -> float -> float -> Vec3.t
+val dir : t -> float -> float -> Vec3.t
+(** [origin] and [dir] of [ray], without the record. *)
+
 val ray_lens : t -> float -> float -> float -> float -> Ray.t
 (** [ray_lens cam sx sy u v]: as [ray], with the origin moved to the point
     [(u, v)] in [[0,1)^2] of the lens and aimed at the same point of the

@@ -142,34 +142,46 @@ let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
+let intersect_into s (o : Vec3.t) (d : Vec3.t) tmin tmax (h : Hit.t) (f : Object.found) =
+  Array.length s.objects > 0
+  && begin
+       let sc = take () in
+       let r = sc.ray in
+       r.ox <- o.x;
+       r.oy <- o.y;
+       r.oz <- o.z;
+       r.dx <- d.x;
+       r.dy <- d.y;
+       r.dz <- d.z;
+       h.t <- tmax;
+       h.u <- 0.;
+       h.v <- 0.;
+       h.id <- 0.;
+       let found = nearest_in s r tmin h f in
+       sc.busy <- false;
+       found
+     end
+
+let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
+  if h.id >= 0. then Object.normal f.leaf point h
+  else
+    (* a flat-array sphere: its normal without touching the object *)
+    let i = 4 * int_of_float (-.h.id -. 1.) and sp = s.accel.spheres in
+    let k = 1. /. Float.Array.get sp (i + 3) in
+    Vec3.make
+      ((point.x -. Float.Array.get sp i) *. k)
+      ((point.y -. Float.Array.get sp (i + 1)) *. k)
+      ((point.z -. Float.Array.get sp (i + 2)) *. k)
+
+(* per domain: read before the next query *)
+let result_key = Scratch.key (fun () -> (Hit.create 0., Object.found dummy))
+
 let intersect s (r : Ray.t) tmin tmax =
-  if Array.length s.objects = 0 then None
-  else begin
-    let sc = take () in
-    Ray.load sc.ray r;
-    let h = sc.h and f = sc.f in
-    h.t <- tmax;
-    h.u <- 0.;
-    h.v <- 0.;
-    h.id <- 0.;
-    let found = nearest_in s sc.ray tmin h f in
-    sc.busy <- false;
-    if not found then None
-    else
-      let point = Ray.at r h.t in
-      let normal =
-        if h.id >= 0. then Object.normal f.leaf point h
-        else
-          (* a flat-array sphere: its normal without touching the object *)
-          let i = 4 * int_of_float (-.h.id -. 1.) and sp = s.accel.spheres in
-          let k = 1. /. Float.Array.get sp (i + 3) in
-          Vec3.make
-            ((point.x -. Float.Array.get sp i) *. k)
-            ((point.y -. Float.Array.get sp (i + 1)) *. k)
-            ((point.z -. Float.Array.get sp (i + 2)) *. k)
-      in
-      Some { t = h.t; obj = f.leaf; point; normal }
-  end
+  let h, f = Scratch.get result_key in
+  if not (intersect_into s r.origin r.dir tmin tmax h f) then None
+  else
+    let point = Ray.at r h.t in
+    Some { t = h.t; obj = f.leaf; point; normal = hit_normal s f h point }
 
 (* Every crossing matters for coloured shadows: each object crossed walks
    all its surface crossings; the BVH skips objects whose box is missed. *)

@@ -52,6 +52,15 @@ val nearest : t -> Ray.scratch -> float -> Hit.t -> Object.found -> bool
 val intersect : t -> Ray.t -> float -> float -> hit option
 (** Nearest hit in [(tmin, tmax)]. *)
 
+val intersect_into : t -> Vec3.t -> Vec3.t -> float -> float -> Hit.t -> Object.found -> bool
+(** [intersect_into s origin dir tmin tmax h f]: {!intersect} without
+    allocating: the distance and part into [h], the object into [f.leaf]
+    (records the caller owns; read them before the next query). *)
+
+val hit_normal : t -> Object.found -> Hit.t -> Vec3.t -> Vec3.t
+(** The outward unit normal at the point of a hit found by
+    {!intersect_into}. *)
+
 val occluded : t -> Ray.t -> float -> float -> bool
 (** Any-hit query: some shadow-casting surface in [(tmin, tmax)]. *)
 

@@ -265,12 +265,15 @@ let enter () =
    the surface (the children of a CSG share their parent's interior, so in
    the overlap of a union of glass spheres the inner walls bend light as
    glass/air). [media] holds each interior once. *)
+let rec ior_beyond (inner : Interior.t) = function
+  | (i : Interior.t) :: r -> if i == inner then ior_beyond inner r else i.ior
+  | [] -> 1.
+
+(* no local function: so that it inlines, and its result is not boxed *)
 let[@inline] relative_ior (inner : Interior.t) media =
   if not (List.memq inner media) then
     (match media with (i : Interior.t) :: _ -> i.ior | [] -> 1.) /. inner.ior
-  else
-    let rec beyond = function (i : Interior.t) :: r -> if i == inner then beyond r else i.ior | [] -> 1. in
-    inner.ior /. beyond media
+  else inner.ior /. ior_beyond inner media
 
 (* the media beyond that surface *)
 let next_media (inner : Interior.t) media =
@@ -278,25 +281,32 @@ let next_media (inner : Interior.t) media =
   else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
 
 (* [media]: the interiors the ray is inside, innermost first. *)
-let rec trace_ray ?(tmin = Ray.epsilon) (s : Scene.t) (ray : Ray.t) level weight media =
+(* The records a domain's queries write the nearest hit into: read at
+   once, before shading traces anything else. *)
+let hit_key = Scratch.key (fun () -> (Hit.create 0., Object.found (Object.make (Shape.sphere Vec3.zero 1.))))
+
+(* The ray from [o] along [d], hits beyond [tmin]. *)
+let rec trace_ray (s : Scene.t) tmin (o : Vec3.t) (d : Vec3.t) level weight media =
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
   else
-    match Scene.intersect s ray tmin infinity with
-    | None ->
-        if Sky.is_empty s.sky then s.background
-        else Sky.eval s.sky ~background:s.background (Vec3.normalize ray.dir)
-    | Some hit ->
-        (* POV-Ray fades what comes through the far side of a medium, not
-           the far surface's own shading *)
-        let fade = match media with (i : Interior.t) :: _ -> Interior.fade i hit.t | [] -> white in
-        shade s ray hit level weight media fade
+    let h, f = Scratch.get hit_key in
+    if not (Scene.intersect_into s o d tmin infinity h f) then
+      if Sky.is_empty s.sky then s.background
+      else Sky.eval s.sky ~background:s.background (Vec3.normalize d)
+    else begin
+      let t = h.t and obj = f.leaf in
+      let p = Vec3.madd o t d in
+      let normal = Scene.hit_normal s f h p in
+      (* POV-Ray fades what comes through the far side of a medium, not
+         the far surface's own shading *)
+      let fade = match media with (i : Interior.t) :: _ -> Interior.fade i t | [] -> white in
+      shade s d obj p normal level weight media fade
+    end
 
-and shade s ray hit level weight media fade =
-  let d = ray.dir in
-  let entering = Vec3.dot hit.normal d < 0. in
-  let n0 = if entering then hit.normal else Vec3.neg hit.normal in
-  let p = hit.point in
-  let inner = hit.obj.interior in
+and shade s d (obj : Object.t) p normal level weight media fade =
+  let entering = Vec3.dot normal d < 0. in
+  let n0 = if entering then normal else Vec3.neg normal in
+  let inner = obj.interior in
   let eta = relative_ior inner media in
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
@@ -305,13 +315,13 @@ and shade s ray hit level weight media fade =
   let fs = enter () in
   let fr = fs.stack.(fs.depth - 1) in
   let c = fr.c and tr = fr.tr in
-  layers s d p n0 level weight media eta fr (not guess) c tr hit.obj.texture;
+  layers s d p n0 level weight media eta fr (not guess) c tr obj.texture;
   let n = if fr.top == unset then n0 else fr.top in
   if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then begin
     fr.top <- unset;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
-    layers s d p n0 level weight media eta fr guess c tr hit.obj.texture
+    layers s d p n0 level weight media eta fr guess c tr obj.texture
   end;
   (* the frame is free again before anything is traced through *)
   fs.depth <- fs.depth - 1;
@@ -322,16 +332,16 @@ and shade s ray hit level weight media fade =
     let tr = Color.of_acc tr in
     if eta = 1. then
       (* same index on both sides: straight through, no trace level used *)
-      add c (mul (mul tr fade) (trace_ray s (Ray.make p d) level w (next_media inner media)))
+      add c (mul (mul tr fade) (trace_ray s Ray.epsilon p d level w (next_media inner media)))
     else
       let cos_i = -.Vec3.dot d n in
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
       if k < 0. then
         (* total internal reflection: not filtered by the surface colour *)
-        add c (mul fade (trace_ray s (Ray.make p (Vec3.madd d (2. *. cos_i) n)) (level + 1) weight media))
+        add c (mul fade (trace_ray s Ray.epsilon p (Vec3.madd d (2. *. cos_i) n) (level + 1) weight media))
       else
         let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
-        add c (mul (mul tr fade) (trace_ray s (Ray.make p t) (level + 1) w (next_media inner media)))
+        add c (mul (mul tr fade) (trace_ray s Ray.epsilon p t (level + 1) w (next_media inner media)))
 
 (* Shade the layers of a texture top down, adding into [acc]; [w] is what
    the layers above let through, and holds at the end what the whole
@@ -421,7 +431,7 @@ and reflection s (f : Finish.t) pc n d p level weight media eta =
     if kr = 0. && kg = 0. && kb = 0. then black
     else
       let dir = Vec3.madd d (2. *. cos_i) n in
-      let rc = trace_ray s (Ray.make p dir) (level + 1) (weight *. w) media in
+      let rc = trace_ray s Ray.epsilon p dir (level + 1) (weight *. w) media in
       let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
       Color.make (kr *. rc.r) (kg *. rc.g) (kb *. rc.b)
 
@@ -446,9 +456,11 @@ let start_media (s : Scene.t) (o : Vec3.t) =
       cache := Some (s, o, m);
       m
 
-let trace s (ray : Ray.t) =
+let trace_from s o d =
   (Scratch.get frames_key).depth <- 0;
-  trace_ray ~tmin:0. s ray 1 1. (start_media s ray.origin)
+  trace_ray s 0. o d 1 1. (start_media s o)
+
+let trace s (ray : Ray.t) = trace_from s ray.origin ray.dir
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
    through points of the lens, stratified by a Hammersley set turned by
@@ -473,9 +485,12 @@ let focal_blur (s : Scene.t) sx sy px py =
   done;
   scale (1. /. float_of_int n) !acc
 
-let sample (s : Scene.t) ~width ~height px py =
+(* inlined into [pixel]: the coordinates stay unboxed *)
+let[@inline] sample (s : Scene.t) ~width ~height px py =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
-  if s.camera.aperture > 0. then focal_blur s sx sy px py else trace s (Camera.ray s.camera sx sy)
+  let cam = s.camera in
+  if cam.aperture > 0. then focal_blur s sx sy px py
+  else trace_from s (Camera.origin cam sx sy) (Camera.dir cam sx sy)
 
 let pixel s ~width ~height x y =
   sample s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)
