@@ -4,9 +4,11 @@
    for an interior node, the index of its second child (the first is k+1)
    and -(axis+1) for the axis it was split along. *)
 type f32 = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
-type t = { nodes : f32; prims : int array; depth : int }
+(* [prims] is empty when the tree calls back with the leaf positions
+   themselves (after [renumber]): no indirection to read at every leaf *)
+type t = { nodes : f32; prims : int array; n : int; depth : int }
 
-let size b = Array.length b.prims
+let size b = b.n
 let nodes b = Bigarray.Array1.dim b.nodes / 8
 let nget (a : f32) i = Bigarray.Array1.unsafe_get a i
 
@@ -195,6 +197,7 @@ let build ?(leaf_size = 4) boxes =
   {
     nodes = out;
     prims;
+    n;
     depth = !max_depth + 1;
   }
 
@@ -256,6 +259,7 @@ let[@inline] box_entry (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
    only if still in front of the nearest hit found meanwhile. *)
 let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
   let nodes = b.nodes in
+  let ident = Array.length b.prims = 0 in
   if Bigarray.Array1.dim nodes = 0 then false
   else begin
     let ox = r.ox and oy = r.oy and oz = r.oz in
@@ -274,7 +278,7 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
           if c > 0 then begin
             let first = int_of_float (nget nodes ((8 * kk) + 6)) in
             for j = first to first + c - 1 do
-              if f c1 c2 r tmin h (Array.unsafe_get b.prims j) then found := true
+              if f c1 c2 r tmin h (if ident then j else Array.unsafe_get b.prims j) then found := true
             done;
             true
           end
@@ -325,6 +329,7 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
 
 let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
   let nodes = b.nodes in
+  let ident = Array.length b.prims = 0 in
   if Bigarray.Array1.dim nodes = 0 then true
   else begin
     let ox = r.ox and oy = r.oy and oz = r.oz in
@@ -341,7 +346,9 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
-          while !j < first + c && f c1 c2 r tmin tmax (Array.unsafe_get b.prims !j) do incr j done;
+          while !j < first + c && f c1 c2 r tmin tmax (if ident then !j else Array.unsafe_get b.prims !j) do
+            incr j
+          done;
           if !j < first + c then (ok := false; go := false)
           else if !sp = base then go := false
           else (decr sp; k := Array.unsafe_get stack !sp)
@@ -363,6 +370,6 @@ let nearest b r tmin h f =
 
 let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
 
-let renumber b = ({ b with prims = Array.init (Array.length b.prims) Fun.id }, Array.copy b.prims)
+let renumber b = ({ b with prims = [||] }, if b.n > 0 && Array.length b.prims = 0 then Array.init b.n Fun.id else Array.copy b.prims)
 
 let bytes b = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)
