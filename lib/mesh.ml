@@ -1,8 +1,13 @@
 (* Triangles are stored in BVH leaf order, 9 floats each (the three
    corners), so a leaf's triangles are contiguous in memory; [nfaces] (3
-   normal indices per triangle, or empty) follows the same order. *)
+   normal indices per triangle, or empty) follows the same order. The
+   corners are single precision, as POV-Ray 3.7 stores mesh vertices
+   (MeshVector is a SnglVector3d): 36 bytes a triangle instead of 72, the
+   test itself in double. *)
+type f32 = (float, Bigarray.float32_elt, Bigarray.c_layout) Bigarray.Array1.t
+
 type t = {
-  tris : Float.Array.t;
+  tris : f32;
   normals : Float.Array.t;
   nfaces : int array;
   bvh : Bvh.t;
@@ -10,6 +15,10 @@ type t = {
 }
 
 let fget = Float.Array.unsafe_get
+let tget (a : f32) i = Bigarray.Array1.unsafe_get a i
+
+(* the nearest single-precision value *)
+let single x = Int32.float_of_bits (Int32.bits_of_float x)
 
 let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.t) =
   let e1x = bx -. ax and e1y = by -. ay and e1z = bz -. az in
@@ -45,6 +54,7 @@ let smooth_normal n1 n2 n3 u v =
 let vert verts i = Vec3.make (fget verts (3 * i)) (fget verts ((3 * i) + 1)) (fget verts ((3 * i) + 2))
 
 let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
+  let verts = Float.Array.map single verts in
   let normals = Float.Array.copy normals in
   for i = 0 to (Float.Array.length normals / 3) - 1 do
     let g k = Float.Array.get normals ((3 * i) + k) in
@@ -83,23 +93,23 @@ let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
       Float.Array.set boxes ((6 * j) + 5) hi.z)
     keep;
   let bvh, order = Bvh.renumber (Bvh.build boxes) in
-  let tris = Float.Array.create (9 * k) in
+  let tris = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (9 * k) in
   Array.iteri
     (fun j i ->
       for c = 0 to 2 do
         let p = vert v faces'.((3 * i) + c) in
-        Float.Array.set tris ((9 * j) + (3 * c)) p.x;
-        Float.Array.set tris ((9 * j) + (3 * c) + 1) p.y;
-        Float.Array.set tris ((9 * j) + (3 * c) + 2) p.z
+        tris.{(9 * j) + (3 * c)} <- p.x;
+        tris.{(9 * j) + (3 * c) + 1} <- p.y;
+        tris.{(9 * j) + (3 * c) + 2} <- p.z
       done)
     order;
   let nfaces = if smooth then Array.init (3 * k) (fun q -> nfaces'.((3 * order.(q / 3)) + (q mod 3))) else [||] in
   { tris; normals; nfaces; bvh; inside_vector }
 
-let triangles m = Float.Array.length m.tris / 9
+let triangles m = Bigarray.Array1.dim m.tris / 9
 
 let bytes m =
-  (8 * (Float.Array.length m.tris + Float.Array.length m.normals + Array.length m.nfaces)) + Bvh.bytes m.bvh
+  (4 * Bigarray.Array1.dim m.tris) + (8 * (Float.Array.length m.normals + Array.length m.nfaces)) + Bvh.bytes m.bvh
 
 let bounds m =
   match Bvh.bounds m.bvh with Some b -> b | None -> (Vec3.zero, Vec3.zero)
@@ -108,8 +118,8 @@ let[@inline] tri m i r tmin h =
   let p = m.tris in
   let a = 9 * i in
   let b = a + 3 and c = a + 6 in
-  tri_hit (fget p a) (fget p (a + 1)) (fget p (a + 2)) (fget p b) (fget p (b + 1)) (fget p (b + 2))
-    (fget p c) (fget p (c + 1)) (fget p (c + 2)) r tmin h
+  tri_hit (tget p a) (tget p (a + 1)) (tget p (a + 2)) (tget p b) (tget p (b + 1)) (tget p (b + 2))
+    (tget p c) (tget p (c + 1)) (tget p (c + 2)) r tmin h
 
 let leaf m () r tmin (h : Hit.t) i =
   if tri m i r tmin h then (
@@ -128,7 +138,8 @@ let normal m (h : Hit.t) =
   if na >= 0 then
     smooth_normal (nrm m na) (nrm m m.nfaces.((3 * i) + 1)) (nrm m m.nfaces.((3 * i) + 2)) h.u h.v
   else
-    let a = vert m.tris (3 * i) and b = vert m.tris ((3 * i) + 1) and c = vert m.tris ((3 * i) + 2) in
+    let corner k = Vec3.make (tget m.tris ((9 * i) + (3 * k))) (tget m.tris ((9 * i) + (3 * k) + 1)) (tget m.tris ((9 * i) + (3 * k) + 2)) in
+    let a = corner 0 and b = corner 1 and c = corner 2 in
     Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a))
 
 let inside m p =
