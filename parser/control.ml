@@ -24,7 +24,7 @@ and skip_condition t =
   let tok = expect_raw t "'('" (function Tok Parser.LPAREN -> true | _ -> false) in
   let f = top t in
   let rec go depth =
-    match (Toks.get f.toks (f.pos)).raw with
+    match (Toks.get f.toks f.pos).raw with
     | Eof -> fail t tok.loc "unclosed '('"
     | Tok Parser.LPAREN -> f.pos <- f.pos + 1; go (depth + 1)
     | Tok Parser.RPAREN -> f.pos <- f.pos + 1; if depth > 0 then go (depth - 1)

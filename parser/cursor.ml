@@ -179,7 +179,7 @@ let leave t f =
 
 let rec raw_next t =
   let f = top t in
-  let tok = (Toks.get f.toks (f.pos)) in
+  let tok = (Toks.get f.toks f.pos) in
   match tok.raw with
   | Eof when f.ctrl <> [] ->
       let d, l = opener (List.hd f.ctrl) in
@@ -198,11 +198,11 @@ let rec raw_next t =
 
 let raw_peek t =
   let f = top t in
-  (Toks.get f.toks (f.pos))
+  (Toks.get f.toks f.pos)
 
 let rec peek_past_ends t ~from =
   let f = top t in
-  if f != from && f.kind <> Main && f.ctrl = [] && (Toks.get f.toks (f.pos)).raw = Eof then begin
+  if f != from && f.kind <> Main && f.ctrl = [] && (Toks.get f.toks f.pos).raw = Eof then begin
     leave t f;
     peek_past_ends t ~from
   end
@@ -229,7 +229,7 @@ let skip_block t ~stop =
   let f = top t in
   let start = if f.pos > 0 then (Toks.get f.toks (f.pos - 1)).loc else Loc.none in
   let rec go depth =
-    let tok = (Toks.get f.toks (f.pos)) in
+    let tok = (Toks.get f.toks f.pos) in
     match tok.raw with
     | Eof -> fail t start "this directive has no matching #end"
     | Directive d ->
@@ -251,9 +251,9 @@ let skip_block t ~stop =
    texture (texture {...} texture {...}) is skipped whole. *)
 let skip_phrase t =
   let f = top t in
-  let first = (Toks.get f.toks (f.pos)).raw in
+  let first = (Toks.get f.toks f.pos).raw in
   let rec go depth =
-    let tok = (Toks.get f.toks (f.pos)) in
+    let tok = (Toks.get f.toks f.pos) in
     let step () = f.pos <- f.pos + 1 in
     match tok.raw with
     | Eof -> ()
@@ -263,7 +263,7 @@ let skip_phrase t =
     | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) when depth = 0 -> ()
     | Tok Parser.RBRACE when depth = 1 ->
         step ();
-        if (Toks.get f.toks (f.pos)).raw = first && first = Tok Parser.TEXTURE then go 0
+        if (Toks.get f.toks f.pos).raw = first && first = Tok Parser.TEXTURE then go 0
     | Tok (Parser.RBRACE | Parser.RPAREN | Parser.RBRACKET) -> step (); go (depth - 1)
     | _ -> step (); go depth
   in

@@ -23,7 +23,7 @@ let define t loc =
   let body_start = f.pos in
   ignore (skip_block t ~stop:[]);
   let body_end = f.pos - 1 in
-  let eof = { raw = Eof; loc = (Toks.get f.toks (body_end)).loc } in
+  let eof = { raw = Eof; loc = (Toks.get f.toks body_end).loc } in
   let body = Array.append (Toks.sub f.toks body_start (body_end - body_start)) [| eof |] in
   Env.declare t.env name (Env.Macro { name; params = ps; body; file = f.file; mloc = loc })
 
@@ -68,7 +68,7 @@ let rec call t (m : Env.macro) loc =
    POV-Ray: arrays as themselves, other values copied back at the end. *)
 (* NAME[i]... followed by ',' or ')': an element passed by reference. *)
 and element_ref t f name a =
-  let at i = if Toks.mem f.toks i then (Toks.get f.toks (i)).raw else Eof in
+  let at i = if Toks.mem f.toks i then (Toks.get f.toks i).raw else Eof in
   let rec close i depth =
     match at i with
     | Tok Parser.LBRACKET -> close (i + 1) (depth + 1)
@@ -81,7 +81,7 @@ and element_ref t f name a =
   in
   match close (f.pos + 1) 0 with
   | Some e when (match at e with Tok (Parser.COMMA | Parser.RPAREN) -> true | _ -> false) ->
-      let nloc = (Toks.get f.toks (f.pos)).loc in
+      let nloc = (Toks.get f.toks f.pos).loc in
       f.pos <- f.pos + 1;
       let rec go a =
         ignore (raw_next t);
@@ -102,7 +102,7 @@ and element_ref t f name a =
 and argument t =
   let f = top t in
   let bare =
-    match (Toks.get f.toks (f.pos)).raw with
+    match (Toks.get f.toks f.pos).raw with
     | Ident n when t.pending = [] && Toks.mem f.toks (f.pos + 1) -> (
         match ((Toks.get f.toks (f.pos + 1)).raw, Env.find t.env n) with
         | Tok ((Parser.COMMA | Parser.RPAREN) as sep), Some ((Env.Array _ | Env.Decl _) as b) ->

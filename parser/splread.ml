@@ -15,7 +15,7 @@ let value_end t =
         | Tok (Parser.FLOAT _ | Parser.LT | Parser.VECTOR _ | Parser.FUNC _ | Parser.STRING _) | Ident _ -> true
         | _ -> false
       in
-      match (Toks.get f.toks (i)).raw with
+      match (Toks.get f.toks i).raw with
       | Eof | Directive _ -> None
       | (Tok Parser.COMMA | Tok Parser.RBRACE) as r when depth = 0 -> Some (i, r)
       | r when depth = 0 && prev && starts r -> Some (i, r)

@@ -426,7 +426,7 @@ and declare t ~local loc =
           (* #declare A = B; for B a whole array or a function (not a call) *)
           let f = top t in
           let whole =
-            match (Toks.get f.toks (f.pos)).raw with
+            match (Toks.get f.toks f.pos).raw with
             | Ident n when t.pending = [] && Toks.mem f.toks (f.pos + 1) -> (
                 match (Env.find t.env n, (Toks.get f.toks (f.pos + 1)).raw) with
                 | Some (Env.Array a), r when r <> Tok Parser.LBRACKET -> Some (Env.Array (Arrays.copy a))
@@ -478,7 +478,7 @@ and guarded t nloc f =
    a directive right after it runs only once the name is bound. *)
 and string_without_semi t =
   let f = top t in
-  let at i = if Toks.mem f.toks i then (Toks.get f.toks (i)).raw else Eof in
+  let at i = if Toks.mem f.toks i then (Toks.get f.toks i).raw else Eof in
   let after_term =
     if t.pending <> [] then None
     else
@@ -549,14 +549,14 @@ and rhs t =
             | _ -> d)
         | `Bounded (f, i) -> (
             (* hand the parser the missing ';', then insist on a string *)
-            let l = (Toks.get f.toks (i)).loc in
+            let l = (Toks.get f.toks i).loc in
             t.stop_at <- Some (f, i);
             let d = Fun.protect ~finally:(fun () -> t.stop_at <- None) (fun () -> parse t Parser.Incremental.declare_rhs) in
             match d with
             | Decl.Value (Value.String _) -> d
             | _ ->
                 fail t l "expected an operator or ';', found %s (#declare of a float, vector or colour ends with ';')"
-                  (describe (Toks.get f.toks (i)).raw)))
+                  (describe (Toks.get f.toks i).raw)))
   in
   (* layered textures: texture {...} texture {...}, the last on top *)
   let rec layers d =

@@ -10,7 +10,7 @@ let margin = size
 type t = {
   mutable chunks : Lexer.token array array;
   mutable count : int;  (** tokens lexed so far *)
-  lex : (unit -> Lexer.token) option;  (** [None]: fixed, or finished *)
+  lex : (unit -> Lexer.token) option;  (** [None]: a fixed sequence *)
   mutable finished : bool;
   mutable released : int;  (** chunks below this one are released *)
 }
