@@ -174,10 +174,11 @@ let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
       ((point.z -. Float.Array.get sp (i + 2)) *. k)
 
 (* per domain: read before the next query *)
-let result_key = Scratch.key (fun () -> (Hit.create 0., Object.found dummy))
+let records_key = Scratch.key (fun () -> (Hit.create 0., Object.found dummy))
+let hit_records () = Scratch.get records_key
 
 let intersect s (r : Ray.t) tmin tmax =
-  let h, f = Scratch.get result_key in
+  let h, f = hit_records () in
   if not (intersect_into s r.origin r.dir tmin tmax h f) then None
   else
     let point = Ray.at r h.t in

@@ -57,6 +57,10 @@ val intersect_into : t -> Vec3.t -> Vec3.t -> float -> float -> Hit.t -> Object.
     allocating: the distance and part into [h], the object into [f.leaf]
     (records the caller owns; read them before the next query). *)
 
+val hit_records : unit -> Hit.t * Object.found
+(** The calling domain's records for {!intersect_into} (which {!intersect}
+    uses too): read them before the next query. *)
+
 val hit_normal : t -> Object.found -> Hit.t -> Vec3.t -> Vec3.t
 (** The outward unit normal at the point of a hit found by
     {!intersect_into}. *)

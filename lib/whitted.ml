@@ -280,16 +280,13 @@ let next_media (inner : Interior.t) media =
   if not (List.memq inner media) then inner :: media
   else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
 
-(* The records a domain's queries write the nearest hit into: read at
-   once, before shading traces anything else. *)
-let hit_key = Scratch.key (fun () -> (Hit.create 0., Object.found (Object.make (Shape.sphere Vec3.zero 1.))))
-
 (* The ray from [o] along [d], hits beyond [tmin]; [media]: the interiors
    the ray is inside, innermost first. *)
 let rec trace_ray (s : Scene.t) tmin (o : Vec3.t) (d : Vec3.t) level weight media =
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
   else
-    let h, f = Scratch.get hit_key in
+    (* read at once, before shading traces anything else *)
+    let h, f = Scene.hit_records () in
     if not (Scene.intersect_into s o d tmin infinity h f) then
       if Sky.is_empty s.sky then s.background
       else Sky.eval s.sky ~background:s.background (Vec3.normalize d)
