@@ -1,16 +1,18 @@
 (* Where a whitted render allocates: Gc.Memprof samples minor allocations
    (1 word in 100) during a one-domain render and ranks the call sites
    (the allocating function and its two callers) by words. With --parse,
-   where parsing and compiling the scene allocate instead.
-   Usage: sites.exe SCENE [-W n] [-H n] [--top n] [--parse] *)
+   where parsing and compiling the scene allocate instead; with --mc SPP,
+   a Monte Carlo render.
+   Usage: sites.exe SCENE [-W n] [-H n] [--top n] [--parse] [--mc SPP] *)
 open Camlray
 
 let () =
-  let w = ref 160 and h = ref 120 and top = ref 20 and file = ref "" and parse = ref false in
+  let w = ref 160 and h = ref 120 and top = ref 20 and file = ref "" and parse = ref false and mc = ref 0 in
   Arg.parse
     [ ("-W", Arg.Set_int w, "width"); ("-H", Arg.Set_int h, "height");
       ("--top", Arg.Set_int top, "N sites to show");
-      ("--parse", Arg.Set parse, "rank the sites of parsing and compiling, not rendering") ]
+      ("--parse", Arg.Set parse, "rank the sites of parsing and compiling, not rendering");
+      ("--mc", Arg.Set_int mc, "SPP rank the sites of a Monte Carlo render") ]
     (fun f -> file := f)
     "sites.exe SCENE";
   let words = Hashtbl.create 64 in
@@ -51,7 +53,10 @@ let () =
   in
   if !parse then (report (); exit 0);
   let width = !w and height = !h in
-  let pixel = Whitted.pixel scene ~width ~height in
+  let pixel =
+    if !mc > 0 then Path.pixel (Path.prepare scene) ~width ~height ~seed:0 ~spp:!mc ~max_depth:16
+    else Whitted.pixel scene ~width ~height
+  in
   start ();
   ignore (Render.image ~domains:1 ~width ~height pixel);
   report ()
