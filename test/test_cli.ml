@@ -73,6 +73,21 @@ let units =
             let code, _, _ = Helpers.run [ "render"; p; "-W"; "4"; "-H"; "4"; "-o"; p ] in
             Alcotest.(check int) "exit" 1 code;
             Alcotest.(check string) "untouched" before (In_channel.with_open_bin p In_channel.input_all)));
+    Alcotest.test_case "more domains than cores: a warning, none with -q or within the count" `Quick (fun () ->
+        with_scene "sphere { 0, 1 }" (fun d p ->
+            let cores = Domain.recommended_domain_count () in
+            let render extra j =
+              Helpers.run
+                ([ "render"; p; "-W"; "4"; "-H"; "4"; "-j"; string_of_int j; "-o"; Filename.concat d "o.png" ] @ extra)
+            in
+            let code, _, err = render [] (cores + 1) in
+            Alcotest.(check int) "exit" 0 code;
+            Alcotest.(check bool) err true
+              (contains err (Printf.sprintf "warning: %d domains on %d cores" (cores + 1) cores));
+            let _, _, err = render [ "-q" ] (cores + 1) in
+            Alcotest.(check bool) ("quiet: " ^ err) false (contains err "warning");
+            let _, _, err = render [] cores in
+            Alcotest.(check bool) ("within: " ^ err) false (contains err "warning")));
     Alcotest.test_case "--help is a man page" `Quick (fun () ->
         let code, out, _ = Helpers.run [ "render"; "--help=plain" ] in
         Alcotest.(check int) "exit" 0 code;

@@ -38,7 +38,8 @@ let timed cmd =
   if code <> 0 then failwith (Printf.sprintf "command failed (%d): %s\n%s" code cmd text);
   (dt, text)
 
-(* "render 1.23 s" in camlray's summary line *)
+(* "render 1.23 s" in camlray's summary line (the first [key] followed by
+   a number: a warning before it may use the word too) *)
 let find_float_after key text =
   let n = String.length key in
   let rec go i =
@@ -48,7 +49,9 @@ let find_float_after key text =
       while !j < String.length text && (text.[!j] = ' ' || text.[!j] = ':') do incr j done;
       let k = ref !j in
       while !k < String.length text && (match text.[!k] with '0' .. '9' | '.' -> true | _ -> false) do incr k done;
-      float_of_string_opt (String.sub text !j (!k - !j))
+      match float_of_string_opt (String.sub text !j (!k - !j)) with
+      | Some x -> Some x
+      | None -> go (i + 1)
     else go (i + 1)
   in
   go 0
