@@ -238,10 +238,10 @@ let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i
 (* The running sums of [shade]: one frame per nesting level, per domain,
    reused from ray to ray ([trace] starts every camera ray at depth 0).
    [top] is the top layer's normal, [unset] until it is known. *)
-type frame = { c : Color.acc; tr : Color.acc; mutable top : Vec3.t }
+type frame = { c : Color.acc; tr : Color.acc; rf : Color.acc; mutable top : Vec3.t }
 
 let unset = Vec3.make nan nan nan
-let new_frame () = { c = Color.acc 0.; tr = Color.acc 1.; top = unset }
+let new_frame () = { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; top = unset }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
@@ -392,9 +392,11 @@ and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) 
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))
           and lb = dl.ab +. (alpha *. (pc.b *. ((f.ambient.b *. amb.b) +. f.emission.b))) in
           let lr, lg, lb =
-            if refl && Finish.has_reflection f then
-              let rc = reflection s f pc n d p level (weight *. Color.acc_max w) media eta in
-              (lr +. rc.r, lg +. rc.g, lb +. rc.b)
+            if refl && Finish.has_reflection f then begin
+              let rc = top.rf in
+              reflection s f pc n d p level (weight *. Color.acc_max w) media eta rc;
+              (lr +. rc.ar, lg +. rc.ag, lb +. rc.ab)
+            end
             else (lr, lg, lb)
           in
           Color.acc_set acc (acc.ar +. (w.ar *. lr)) (acc.ag +. (w.ag *. lg)) (acc.ab +. (w.ab *. lb));
@@ -405,8 +407,10 @@ and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) 
           if not (Color.acc_is_black w) then
             layers s d p n0 level weight media eta top refl acc w rest)
 
-and reflection s (f : Finish.t) pc n d p level weight media eta =
-  if not (Finish.has_reflection f) then black
+(* the reflected light into [out] (the frame's [rf]: nested traces use
+   frames of their own) *)
+and reflection s (f : Finish.t) pc n d p level weight media eta (out : Color.acc) =
+  if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else
     let rf = f.reflection in
     let cos_i = -.Vec3.dot d n in
@@ -425,12 +429,12 @@ and reflection s (f : Finish.t) pc n d p level weight media eta =
     in
     let mt = metallic_tint rf.rmetallic cos_i pc in
     let kr = kr *. mt.r and kg = kg *. mt.g and kb = kb *. mt.b in
-    if kr = 0. && kg = 0. && kb = 0. then black
+    if kr = 0. && kg = 0. && kb = 0. then Color.acc_set out 0. 0. 0.
     else
       let dir = Vec3.madd d (2. *. cos_i) n in
       let rc = trace_ray s Ray.epsilon p dir (level + 1) (weight *. w) media in
       let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
-      Color.make (kr *. rc.r) (kg *. rc.g) (kb *. rc.b)
+      Color.acc_set out (kr *. rc.r) (kg *. rc.g) (kb *. rc.b)
 
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
