@@ -339,27 +339,36 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
     let base = reserve st b.depth in
     let stack = st.slots in
     let sp = ref base and k = ref 0 and go = ref true and ok = ref true in
+    (* children are tested at their parent, the left one visited first
+       (the order crossings are reported in is the same as testing each
+       node when it is reached), and only the ones hit are pushed *)
+    if not (box_hit nodes 0 sx sy sz ox oy oz ix iy iz tmin tmax) then go := false;
     while !go do
       let kk = !k in
-      if box_hit nodes kk sx sy sz ox oy oz ix iy iz tmin tmax then begin
-        let c = int_of_float (nget nodes ((8 * kk) + 7)) in
+      let c = int_of_float (nget nodes ((8 * kk) + 7)) in
+      let pop =
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
           while !j < first + c && f c1 c2 r tmin tmax (if ident then !j else Array.unsafe_get b.prims !j) do
             incr j
           done;
-          if !j < first + c then (ok := false; go := false)
-          else if !sp = base then go := false
-          else (decr sp; k := Array.unsafe_get stack !sp)
+          if !j < first + c then (ok := false; go := false; false) else true
         end
         else begin
-          Array.unsafe_set stack !sp (int_of_float (nget nodes ((8 * kk) + 6)));
-          incr sp;
-          k := kk + 1
+          let left = kk + 1 and right = int_of_float (nget nodes ((8 * kk) + 6)) in
+          let hl = box_hit nodes left sx sy sz ox oy oz ix iy iz tmin tmax
+          and hr = box_hit nodes right sx sy sz ox oy oz ix iy iz tmin tmax in
+          if hl then begin
+            if hr then (Array.unsafe_set stack !sp right; incr sp);
+            k := left;
+            false
+          end
+          else if hr then (k := right; false)
+          else true
         end
-      end
-      else if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
+      in
+      if pop then if !sp = base then go := false else (decr sp; k := Array.unsafe_get stack !sp)
     done;
     st.top <- base;
     !ok
