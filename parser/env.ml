@@ -21,12 +21,7 @@ and unsupported = {
 
 (* keyed by strings compared as strings (the generic table's polymorphic
    compare showed in profiles of parsing) *)
-module H = Hashtbl.Make (struct
-  type t = string
-
-  let equal = String.equal
-  let hash (s : string) = Hashtbl.hash s
-end)
+module H = Hashtbl.Make (String)
 
 type t = { globals : binding H.t; mutable scopes : binding H.t list }
 

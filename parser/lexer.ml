@@ -83,12 +83,7 @@ let texture_keywords =
 
 (* Keywords to their tokens, each token made once and shared by every
    occurrence (a large scene has millions) *)
-module Words = Hashtbl.Make (struct
-  type t = string
-
-  let equal = String.equal
-  let hash (s : string) = Hashtbl.hash s
-end)
+module Words = Hashtbl.Make (String)
 
 let keywords : raw Words.t =
   let t = Words.create 256 in
