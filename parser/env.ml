@@ -1,7 +1,7 @@
 type macro = {
   name : string;
   params : string list;
-  body : Lexer.token array;
+  body : Toks.t;
   file : string;
   mloc : Loc.t;
 }

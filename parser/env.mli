@@ -5,7 +5,7 @@
 type macro = {
   name : string;
   params : string list;
-  body : Lexer.token array;  (** the tokens between the header and [#end] *)
+  body : Toks.t;  (** the tokens between the header and [#end], made once: every call reads them *)
   file : string;  (** where the macro was defined, for [#include] lookups *)
   mloc : Loc.t;
 }

@@ -24,7 +24,7 @@ let define t loc =
   ignore (skip_block t ~stop:[]);
   let body_end = f.pos - 1 in
   let eof = { raw = Eof; loc = (Toks.get f.toks body_end).loc } in
-  let body = Array.append (Toks.sub f.toks body_start (body_end - body_start)) [| eof |] in
+  let body = Toks.of_array (Array.append (Toks.sub f.toks body_start (body_end - body_start)) [| eof |]) in
   Env.declare t.env name (Env.Macro { name; params = ps; body; file = f.file; mloc = loc })
 
 let rec call t (m : Env.macro) loc =
@@ -59,7 +59,7 @@ let rec call t (m : Env.macro) loc =
   List.iter (fun (p, (b, _)) -> Env.local t.env p b) args;
   let byref = List.filter_map (fun (p, (_, n)) -> Option.map (fun n -> (p, n)) n) args in
   t.frames <-
-    { toks = Toks.of_array m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
+    { toks = m.body; pos = 0; kind = Macro_call (m.name, loc); file = m.file; ctrl = [];
       scoped = true; byref }
     :: t.frames
 
