@@ -101,6 +101,7 @@ let builtin t name =
     | (k, v) :: rest -> if String.equal k name then Some v else go rest
   in
   go t.config.builtins
+
 let parse t entry = t.runner.run entry
 
 let create config env ~file toks =
@@ -179,7 +180,7 @@ let leave t f =
 
 let rec raw_next t =
   let f = top t in
-  let tok = (Toks.get f.toks f.pos) in
+  let tok = Toks.get f.toks f.pos in
   match tok.raw with
   | Eof when f.ctrl <> [] ->
       let d, l = opener (List.hd f.ctrl) in
@@ -198,7 +199,7 @@ let rec raw_next t =
 
 let raw_peek t =
   let f = top t in
-  (Toks.get f.toks f.pos)
+  Toks.get f.toks f.pos
 
 let rec peek_past_ends t ~from =
   let f = top t in
@@ -229,7 +230,7 @@ let skip_block t ~stop =
   let f = top t in
   let start = if f.pos > 0 then (Toks.get f.toks (f.pos - 1)).loc else Loc.none in
   let rec go depth =
-    let tok = (Toks.get f.toks f.pos) in
+    let tok = Toks.get f.toks f.pos in
     match tok.raw with
     | Eof -> fail t start "this directive has no matching #end"
     | Directive d ->
@@ -253,7 +254,7 @@ let skip_phrase t =
   let f = top t in
   let first = (Toks.get f.toks f.pos).raw in
   let rec go depth =
-    let tok = (Toks.get f.toks f.pos) in
+    let tok = Toks.get f.toks f.pos in
     let step () = f.pos <- f.pos + 1 in
     match tok.raw with
     | Eof -> ()
