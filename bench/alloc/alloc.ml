@@ -15,54 +15,50 @@ let () =
   Printf.printf "| scene | mode | camera rays | minor words per camera ray |\n|---|---|---|---|\n";
   List.iter
     (fun file ->
-      match Camlray_lang.Parse.file file with
-      | Error d -> prerr_string (Camlray_lang.Diag.to_string d)
-      | Ok (sdl, _) -> (
-          match Camlray_lang.Compile.scene sdl with
-          | Error d -> prerr_string (Camlray_lang.Diag.to_string d)
-          | Ok s ->
-              let width = !w and height = !h in
-              let pixel, rays, mode =
-                if !mc > 0 then
-                  ( Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:!mc ~max_depth:16,
-                    width * height * !mc, Printf.sprintf "mc %d spp" !mc )
-                else (Whitted.pixel s ~width ~height, width * height, "whitted")
-              in
-              let before = Gc.minor_words () in
-              ignore (Render.image ~domains:1 ~width ~height pixel);
-              let words = Gc.minor_words () -. before in
-              Printf.printf "| %s | %s | %d | %.1f |\n%!" (Filename.basename file) mode rays
-                (words /. float rays);
-              (* the kernel: nearest hit of every camera ray, nothing else *)
-              let rays =
-                Array.init (width * height) (fun i ->
-                    let sx, sy = Camera.pixel_coords ~width ~height (float (i mod width) +. 0.5) (float (i / width) +. 0.5) in
-                    Camera.ray s.camera sx sy)
-              in
-              let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
-              let hits = ref 0 in
-              let pass () =
-                Array.iter
-                  (fun ray ->
-                    Ray.load r ray;
-                    h.t <- infinity;
-                    if Scene.nearest s r 0. h f then incr hits)
-                  rays
-              in
-              pass ();
-              let reps = 20 in
-              let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
-              for _ = 1 to reps do pass () done;
-              let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
-              let n = float (reps * Array.length rays) in
-              Printf.printf "| %s | kernel: Scene.nearest only | %d | %.2f (%.2f M rays/s) |\n%!"
-                (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6);
-              (* the same through the public query, which builds the hit record *)
-              let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
-              for _ = 1 to reps do
-                Array.iter (fun ray -> ignore (Sys.opaque_identity (Scene.intersect s ray 0. infinity))) rays
-              done;
-              let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
-              Printf.printf "| %s | kernel: Scene.intersect | %d | %.2f (%.2f M rays/s) |\n%!"
-                (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6)))
+      match Measured.load file with
+      | Error msg -> prerr_string msg
+      | Ok s -> (
+          let width = !w and height = !h in
+          let pixel = Measured.pixel s ~width ~height ~mc:!mc in
+          let rays, mode =
+            if !mc > 0 then (width * height * !mc, Printf.sprintf "mc %d spp" !mc)
+            else (width * height, "whitted")
+          in
+          let before = Gc.minor_words () in
+          ignore (Render.image ~domains:1 ~width ~height pixel);
+          let words = Gc.minor_words () -. before in
+          Printf.printf "| %s | %s | %d | %.1f |\n%!" (Filename.basename file) mode rays
+            (words /. float rays);
+          (* the kernel: nearest hit of every camera ray, nothing else *)
+          let rays =
+            Array.init (width * height) (fun i ->
+                let sx, sy = Camera.pixel_coords ~width ~height (float (i mod width) +. 0.5) (float (i / width) +. 0.5) in
+                Camera.ray s.camera sx sy)
+          in
+          let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
+          let hits = ref 0 in
+          let pass () =
+            Array.iter
+              (fun ray ->
+                Ray.load r ray;
+                h.t <- infinity;
+                if Scene.nearest s r 0. h f then incr hits)
+              rays
+          in
+          pass ();
+          let reps = 20 in
+          let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
+          for _ = 1 to reps do pass () done;
+          let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
+          let n = float (reps * Array.length rays) in
+          Printf.printf "| %s | kernel: Scene.nearest only | %d | %.2f (%.2f M rays/s) |\n%!"
+            (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6);
+          (* the same through the public query, which builds the hit record *)
+          let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
+          for _ = 1 to reps do
+            Array.iter (fun ray -> ignore (Sys.opaque_identity (Scene.intersect s ray 0. infinity))) rays
+          done;
+          let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
+          Printf.printf "| %s | kernel: Scene.intersect | %d | %.2f (%.2f M rays/s) |\n%!"
+            (Filename.basename file) (reps * Array.length rays) (words /. n) (n /. dt /. 1e6)))
     (List.rev !files)

@@ -43,20 +43,10 @@ let () =
       sites
   in
   if !parse then start ();
-  let scene =
-    match Camlray_lang.Parse.file !file with
-    | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
-    | Ok (sdl, _) -> (
-        match Camlray_lang.Compile.scene sdl with
-        | Error d -> prerr_string (Camlray_lang.Diag.to_string d); exit 1
-        | Ok s -> s)
-  in
+  let scene = match Measured.load !file with Error msg -> prerr_string msg; exit 1 | Ok s -> s in
   if !parse then (report (); exit 0);
   let width = !w and height = !h in
-  let pixel =
-    if !mc > 0 then Path.pixel (Path.prepare scene) ~width ~height ~seed:0 ~spp:!mc ~max_depth:16
-    else Whitted.pixel scene ~width ~height
-  in
+  let pixel = Measured.pixel scene ~width ~height ~mc:!mc in
   start ();
   ignore (Render.image ~domains:1 ~width ~height pixel);
   report ()

@@ -1,0 +1,16 @@
+(* What alloc.exe and sites.exe both measure: a scene file compiled, and
+   its pixel function in whitted mode or, with [mc] samples per pixel, in
+   Monte Carlo mode. *)
+open Camlray
+
+let load file =
+  match Camlray_lang.Parse.file file with
+  | Error d -> Error (Camlray_lang.Diag.to_string d)
+  | Ok (sdl, _) -> (
+      match Camlray_lang.Compile.scene sdl with
+      | Error d -> Error (Camlray_lang.Diag.to_string d)
+      | Ok s -> Ok s)
+
+let pixel (s : Scene.t) ~width ~height ~mc =
+  if mc > 0 then Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16
+  else Whitted.pixel s ~width ~height
