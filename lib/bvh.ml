@@ -379,6 +379,10 @@ let nearest b r tmin h f =
 
 let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
 
-let renumber b = ({ b with prims = [||] }, if b.n > 0 && Array.length b.prims = 0 then Array.init b.n Fun.id else Array.copy b.prims)
+let renumber b =
+  (* a tree already renumbered calls back with positions: its order is
+     the identity *)
+  let order = if Array.length b.prims = b.n then Array.copy b.prims else Array.init b.n Fun.id in
+  ({ b with prims = [||] }, order)
 
 let bytes b = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)

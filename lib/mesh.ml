@@ -109,7 +109,9 @@ let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
 let triangles m = Bigarray.Array1.dim m.tris / 9
 
 let bytes m =
-  (4 * Bigarray.Array1.dim m.tris) + (8 * (Float.Array.length m.normals + Array.length m.nfaces)) + Bvh.bytes m.bvh
+  (4 * Bigarray.Array1.dim m.tris)
+  + (8 * (Float.Array.length m.normals + Array.length m.nfaces))
+  + Bvh.bytes m.bvh
 
 let bounds m =
   match Bvh.bounds m.bvh with Some b -> b | None -> (Vec3.zero, Vec3.zero)
@@ -138,7 +140,10 @@ let normal m (h : Hit.t) =
   if na >= 0 then
     smooth_normal (nrm m na) (nrm m m.nfaces.((3 * i) + 1)) (nrm m m.nfaces.((3 * i) + 2)) h.u h.v
   else
-    let corner k = Vec3.make (tget m.tris ((9 * i) + (3 * k))) (tget m.tris ((9 * i) + (3 * k) + 1)) (tget m.tris ((9 * i) + (3 * k) + 2)) in
+    let corner k =
+      let o = (9 * i) + (3 * k) in
+      Vec3.make (tget m.tris o) (tget m.tris (o + 1)) (tget m.tris (o + 2))
+    in
     let a = corner 0 and b = corner 1 and c = corner 2 in
     Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a))
 

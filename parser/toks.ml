@@ -17,7 +17,8 @@ type t = {
 
 let of_array a =
   let n = Array.length a in
-  let chunks = Array.init ((n + size - 1) / size) (fun c -> Array.sub a (c * size) (min size (n - (c * size)))) in
+  let chunk c = Array.sub a (c * size) (min size (n - (c * size))) in
+  let chunks = Array.init ((n + size - 1) / size) chunk in
   { chunks; count = n; lex = None; finished = true; released = 0 }
 
 let of_text ~file text =
