@@ -23,6 +23,9 @@ type config = {
   limits : limits;
   builtins : (string * float) list;
   access : Access.t;  (** what the scene may read and write *)
+  fold : bool;
+      (** fold arithmetic runs before the parser sees them ({!Fold}); the
+          scene reads the same either way (off to test that) *)
 }
 
 (* Open control structures of one frame, innermost first. *)

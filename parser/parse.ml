@@ -7,11 +7,13 @@ type options = {
   frame_number : int;
   allow_read : string list;
   confine_reads : bool;
+  fold_arithmetic : bool;
 }
 
 let default_options =
   { include_dirs = []; limits = Supplier.default_limits; clock = 0.; image_width = 800;
-    image_height = 600; frame_number = 0; allow_read = []; confine_reads = true }
+    image_height = 600; frame_number = 0; allow_read = []; confine_reads = true;
+    fold_arithmetic = true }
 
 let pov_include_dir = "/usr/share/povray-3.7/include"
 
@@ -37,6 +39,7 @@ let run options ~name text =
       {
         Supplier.include_dirs;
         access;
+        fold = options.fold_arithmetic;
         limits = options.limits;
         builtins =
           [ ("clock", options.clock); ("image_width", float_of_int options.image_width);

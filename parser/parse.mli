@@ -15,6 +15,9 @@ type options = {
       (** folders a scene may read besides the include search folders *)
   confine_reads : bool;
       (** confine reads to those folders (default [true]; see {!Access}) *)
+  fold_arithmetic : bool;
+      (** fold runs of float arithmetic before the parser (default [true];
+          see {!Fold}): the scene is the same either way, only read faster *)
 }
 
 val default_options : options

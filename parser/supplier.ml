@@ -18,6 +18,7 @@ type config = Cursor.config = {
   limits : limits;
   builtins : (string * float) list;
   access : Access.t;
+  fold : bool;
 }
 
 type t = Cursor.t
@@ -213,20 +214,29 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
   t.optional_sep <- None;
   t.semi_probe <- None;
   let frame = top t in
-  (* [prev]: the checkpoint the last token was offered to *)
-  let rec loop cp prev last shifted =
+  (* [prev]: the checkpoint the last token was offered to; [orig]: the
+     tokens of the folded run [last] stands for, if it is one *)
+  let rec loop cp prev last orig shifted =
     match cp with
     | I.InputNeeded _ -> (
         let read () =
           if t.depth = 1 then release_behind t;
-          let tok, loc = next t in
+          let from_raw = t.pending = [] in
+          let ((tok, first) as x) = next t in
+          (* a run is read only where the parser takes its first token:
+             nothing is read past where the parser would stop *)
+          let (tok, loc), orig =
+            if from_raw && t.config.fold && Fold.may_start t last tok && I.acceptable cp tok first.start
+            then Fold.run t ~next x
+            else (x, [])
+          in
           t.last <- loc;
-          loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) false
+          loop (I.offer cp (tok, loc.start, loc.stop)) cp (Some (tok, loc)) orig false
         in
         let ends what (loc : Loc.t) r =
           if I.acceptable cp Parser.SEMI loc.start then begin
             r := Some (what, loc);
-            loop (I.offer cp (Parser.SEMI, loc.start, loc.start)) cp None true
+            loop (I.offer cp (Parser.SEMI, loc.start, loc.start)) cp None [] true
           end
           else read ()
         in
@@ -239,11 +249,11 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
             | { raw = Eof; loc } -> ends "end of file" loc r
             | _ -> read ())
         | _ -> read ())
-    | I.Shifting _ -> loop (I.resume cp) prev last true
-    | I.AboutToReduce _ -> loop (I.resume cp) prev last shifted
+    | I.Shifting _ -> loop (I.resume cp) prev last orig true
+    | I.AboutToReduce _ -> loop (I.resume cp) prev last orig shifted
     | I.HandlingError env -> (
-        match (sep, last) with
-        | Some s, Some ((tok, loc) as x) when tok <> s && I.acceptable prev s loc.start ->
+        match (sep, last, orig) with
+        | Some s, Some ((tok, loc) as x), _ when tok <> s && I.acceptable prev s loc.start ->
             (* the optional separator was left out: supply it, and give
                the token again after it *)
             (match tok with
@@ -251,7 +261,13 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
             | Parser.RBRACE -> t.braces <- loc :: t.braces
             | _ -> ());
             t.pending <- x :: t.pending;
-            loop (I.offer prev (s, loc.start, loc.start)) prev None true
+            loop (I.offer prev (s, loc.start, loc.start)) prev None [] true
+        | _, _, ((tok, loc) as x) :: rest ->
+            (* a folded run the parser does not take: give it the run's
+               own tokens, so that it fails (or goes on) as it would have *)
+            t.pending <- rest @ t.pending;
+            t.last <- loc;
+            loop (I.offer prev (tok, loc.start, loc.stop)) prev (Some x) [] false
         | _ -> syntax_error t env last)
     | I.Accepted v ->
         (match last with
@@ -262,7 +278,7 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
   in
   let cp0 = start pos in
   t.depth <- t.depth + 1;
-  match loop cp0 cp0 None true with
+  match loop cp0 cp0 None [] true with
   | v -> t.depth <- t.depth - 1; v
   | exception e -> t.depth <- t.depth - 1; raise e
 

@@ -30,6 +30,7 @@ type config = {
   limits : limits;
   builtins : (string * float) list;
   access : Access.t;  (** what #include may read *)
+  fold : bool;  (** fold arithmetic runs first ({!Fold}); the same scene either way *)
       (** [clock], [image_width], [image_height], [frame_number], ... *)
 }
 

@@ -51,7 +51,12 @@ let fill t =
 let rec mem t i = i >= 0 && (i < t.count || ((not t.finished) && (fill t; mem t i)))
 
 let get t i =
-  if mem t i then begin
+  if i >= 0 && i < t.count then begin
+    let c = i lsr bits in
+    if c < t.released then invalid_arg "Toks.get: a released token";
+    Array.unsafe_get (Array.unsafe_get t.chunks c) (i land (size - 1))
+  end
+  else if mem t i then begin
     let c = i lsr bits in
     if c < t.released then invalid_arg "Toks.get: a released token";
     Array.unsafe_get (Array.unsafe_get t.chunks c) (i land (size - 1))

@@ -27,4 +27,76 @@ let prop =
       | Ok _ -> true
       | Error d -> d.Diag.msg <> "" && not (Scn.contains d.msg "internal error"))
 
-let tests = ("parse", [ QCheck_alcotest.to_alcotest prop ])
+
+(* Folding arithmetic runs (Fold) changes nothing the parser reads: the
+   same scene, or the same error message, with folding on and off. The
+   expressions mix what folds (numbers, float names, + - * /, signs,
+   parentheses, sin(...)) with what must not (members, macros that end
+   mid-expression, directives inside an expression, comparisons, vectors,
+   rand), in the places a run may start. *)
+let prelude =
+  "#declare A = 3; #declare B = -0.5; #declare V = <1, 2, 3>; #declare R = seed(7);\n\
+   #declare Arr = array[3] { 4, 5, 6 }\n\
+   #macro M() 3 #end #macro P() 2 * #end #macro Q() 1 + 2 #end #macro S(X) X * 2 #end\n"
+
+let expr_gen =
+  QCheck.Gen.(
+    sized_size (int_bound 12)
+    @@ fix (fun self n ->
+           let leaf =
+             oneof_list
+               [ "1"; "2.5"; "0"; "A"; "B"; "pi"; "V.x"; "V.z"; "Arr[1]"; "Arr[A - 2]"; "M()"; "-3";
+                 "clock"; "rand(R)"; "1e300"; "Q()"; "S(2)"; "S(A + 1)" ]
+           in
+           if n <= 0 then leaf
+           else
+             let sub = self (n / 2) in
+             oneof_weighted
+               [ (3, leaf);
+                 (5, map3 (fun a op b -> a ^ " " ^ op ^ " " ^ b) sub (oneof_list [ "+"; "-"; "*"; "/" ]) sub);
+                 (1, map (fun a -> "-" ^ a) sub); (1, map (fun a -> "+ " ^ a) sub);
+                 (2, map (fun a -> "(" ^ a ^ ")") sub);
+                 (2, map2 (fun f a -> f ^ "(" ^ a ^ ")") (oneof_list [ "sin"; "abs"; "sqrt"; "int"; "asin"; "ln" ]) sub);
+                 (1, map2 (fun a b -> "max(" ^ a ^ ", " ^ b ^ ")") sub sub);
+                 (1, map2 (fun a b -> "pow(" ^ a ^ ", " ^ b ^ ")") sub sub);
+                 (1, map3 (fun a b c -> "(" ^ a ^ " < " ^ b ^ " ? " ^ c ^ " : 2)") sub sub sub);
+                 (1, map (fun a -> "(" ^ a ^ ").y") sub); (1, map (fun a -> "P() " ^ a) sub);
+                 (1, map2 (fun a b -> a ^ " #if (A > 2) * " ^ b ^ " #end") sub sub);
+                 (1, map (fun a -> "(" ^ a ^ " + <" ^ a ^ ", 1, 2>).x") sub) ]))
+
+let context_gen =
+  QCheck.Gen.(
+    let e = expr_gen in
+    oneof
+      [ map2 (fun a b -> Printf.sprintf "sphere { <%s, 0, 1>, %s }" a b) e e;
+        map3 (fun a b c -> Printf.sprintf "sphere { <%s %s %s> 1 }" a b c) e e e;
+        map2 (fun a b -> Printf.sprintf "#declare X = %s; sphere { 0, X + %s }" a b) e e;
+        map (fun a -> Printf.sprintf "#declare X = %s\nsphere { 0, X }" a) e;
+        map2 (fun a b -> Printf.sprintf "#declare Y = array[2] { %s, %s } sphere { Y[0], Y[1] }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#for (I, 0, %s) sphere { <I * %s, 0, 0>, 1 } #end" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#if (%s < %s) sphere { 0, 1 } #end" a b) e e;
+        map2 (fun a b -> Printf.sprintf "sphere { 0, 1 scale %s translate <%s, 0, 0> }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "sphere { 0, S(%s) + %s }" a b) e e;
+        map (fun a -> Printf.sprintf "mesh2 { vertex_vectors { 3, <0,0,0>, <%s, 0, 0>, <0, 1, 0> } \
+                                      face_indices { 1, <0, 1, 2> } }" a) e ])
+
+let folding_changes_nothing gen name count =
+  let run fold text =
+    let options = { options with Parse.fold_arithmetic = fold } in
+    match Parse.string ~options text with
+    | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
+    | Error d -> Error (Diag.to_string d)
+  in
+  QCheck.Test.make ~name ~count (QCheck.make ~print:(fun s -> s) gen) (fun text ->
+      let a = run true text and b = run false text in
+      if a <> b then
+        QCheck.Test.fail_reportf "folded:\n%s\nnot folded:\n%s"
+          (match a with Ok s | Error s -> s) (match b with Ok s | Error s -> s);
+      true)
+
+let fold_props =
+  [ folding_changes_nothing (QCheck.Gen.map (fun c -> prelude ^ c) context_gen)
+      "folding arithmetic: the same scene or error as without" 5000;
+    folding_changes_nothing gen "folding arithmetic: token soup reads the same" 5000 ]
+
+let tests = ("parse", List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
