@@ -67,6 +67,7 @@ type runner = { run : 'a. (Lexing.position -> 'a Parser.MenhirInterpreter.checkp
 
 type t = {
   config : config;
+  builtins : float Words.t;  (** [config.builtins] as a table *)
   mutable runner : runner;
   env : Env.t;
   mutable frames : frame list;
@@ -96,20 +97,17 @@ type t = {
 
 let files_read t = List.rev t.files
 
-(* The value of a built-in identifier (clock, image_width, ...): compared
-   as strings, not with the polymorphic compare of List.assoc *)
-let builtin t name =
-  let rec go = function
-    | [] -> None
-    | (k, v) :: rest -> if String.equal k name then Some v else go rest
-  in
-  go t.config.builtins
+(* The value of a built-in identifier (clock, image_width, ...), looked up
+   before every name the scene uses *)
+let builtin t name = Words.find_opt t.builtins name
 
 let parse t entry = t.runner.run entry
 
 let create config env ~file toks =
   let abs = if Filename.is_relative file then Filename.concat (Sys.getcwd ()) file else file in
-  { config; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
+  let builtins = Words.create 16 in
+  List.iter (fun (k, v) -> Words.replace builtins k v) (List.rev (config : config).builtins);
+  { config; builtins; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
                  byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
     deprecated = Hashtbl.create 8; braces = []; context = None; stop_at = None;

@@ -66,6 +66,7 @@ type runner = { run : 'a. (Lexing.position -> 'a Parser.MenhirInterpreter.checkp
 
 type t = {
   config : config;
+  builtins : float Words.t;  (** [config.builtins] as a table *)
   mutable runner : runner;
   env : Env.t;
   mutable frames : frame list;

@@ -10,6 +10,9 @@ type raw =
 
 type token = { raw : raw; loc : Loc.t }
 
+module Words : Hashtbl.S with type key = string
+(** Tables keyed by names (keywords, built-in identifiers). *)
+
 val tokenize : file:string -> string -> token array
 (** Raises {!Diag.Error} on a lexical error (unterminated string or
     comment, stray character). The last token is [Eof]. *)
