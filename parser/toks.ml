@@ -50,13 +50,9 @@ let fill t =
 
 let rec mem t i = i >= 0 && (i < t.count || ((not t.finished) && (fill t; mem t i)))
 
-let get t i =
-  if i >= 0 && i < t.count then begin
-    let c = i lsr bits in
-    if c < t.released then invalid_arg "Toks.get: a released token";
-    Array.unsafe_get (Array.unsafe_get t.chunks c) (i land (size - 1))
-  end
-  else if mem t i then begin
+(* a token not lexed yet, released, or past the end *)
+let[@inline never] get_slow t i =
+  if mem t i then begin
     let c = i lsr bits in
     if c < t.released then invalid_arg "Toks.get: a released token";
     Array.unsafe_get (Array.unsafe_get t.chunks c) (i land (size - 1))
@@ -67,6 +63,11 @@ let get t i =
     let c = (t.count - 1) lsr bits in
     let chunk = t.chunks.(c) in
     chunk.(Array.length chunk - 1)
+
+let[@inline] get t i =
+  if i >= 0 && i < t.count && i lsr bits >= t.released then
+    Array.unsafe_get (Array.unsafe_get t.chunks (i lsr bits)) (i land (size - 1))
+  else get_slow t i
 
 let sub t pos len = Array.init len (fun k -> get t (pos + k))
 
