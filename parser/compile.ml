@@ -110,24 +110,6 @@ end)
 let built : Shape.t Phys.t = Phys.create 16
 let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16
 
-(* One record for equal plain textures (one layer, a plain colour, no
-   normal): 10^6 spheres each written with the same pigment and finish
-   share one texture instead of 10^6 copies that shading would read from
-   all over memory (10^6 spheres at 320x240: 0.248 s -> 0.132 s of
-   trace). The key is plain data (colours, floats, booleans). *)
-let shared : (Color.rgbft * Finish.t, Texture.t) Hashtbl.t = Hashtbl.create 16
-
-let share (t : Texture.t) =
-  match t with
-  | [ { pigment = Pigment.Solid c; normal = None; tmap = None; finish } ] -> (
-      let k = (c, finish) in
-      match Hashtbl.find_opt shared k with
-      | Some t' -> t'
-      | None ->
-          Hashtbl.add shared k t;
-          t)
-  | _ -> t
-
 let rec mesh (o : Sdl.obj) (m : Sdl.mesh) =
   match Phys.find_opt built m with
   | Some s -> s
@@ -255,7 +237,7 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   | _ -> Some (leaf ctx' o tex inter)
 
 and leaf ctx o tex inter =
-  let texture = match tex with Some t -> share t | None -> Texture.default in
+  let texture = match tex with Some t -> Shapes.share_texture t | None -> Texture.default in
   let interior = Option.value ~default:Interior.default inter in
   Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow (shape o)
 
@@ -272,7 +254,7 @@ let rec top ctx (o : Sdl.obj) acc =
   | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
 
 let rec scene (s : Sdl.scene) =
-  Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts; Hashtbl.reset shared) (fun () -> scene_ s)
+  Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts; Shapes.forget_textures ()) (fun () -> scene_ s)
 
 and scene_ (s : Sdl.scene) =
   try

@@ -19,6 +19,7 @@ let pov_include_dir = "/usr/share/povray-3.7/include"
 
 let run options ~name text =
   Defaults.reset ();
+  Shapes.forget_textures ();
   Budget.reset options.limits.max_objects;
   Value.reset_streams ();
   let last_loc = ref Loc.none in

@@ -4,7 +4,14 @@
 
 val obj : Loc.t -> Sdl.shape -> (Sdl.obj -> Sdl.obj) list -> Sdl.obj
 (** A fresh object (identity transform, no texture) with the modifiers
-    applied in order. *)
+    applied in order; a plain texture is shared ({!share_texture}). *)
+
+val share_texture : Camlray.Texture.t -> Camlray.Texture.t
+(** One record for equal plain textures (one layer, a plain colour, no
+    normal): the first one seen since {!forget_textures}. *)
+
+val forget_textures : unit -> unit
+(** Start sharing afresh (a new parse; the end of a compile). *)
 
 val set_open : Loc.t -> Sdl.obj -> Sdl.obj
 (** [open] on a cylinder or cone (a warning on anything else). *)
