@@ -130,6 +130,10 @@ let leaf m () r tmin (h : Hit.t) i =
   else false
 
 let hit_s m r tmin h = Bvh.nearest_s m.bvh r tmin h m () leaf
+
+(* the walk goes on while no triangle is hit *)
+let any_leaf m h r tmin _ i = not (leaf m () r tmin h i)
+let any_s m r tmin (h : Hit.t) = not (Bvh.iter_s m.bvh r tmin h.t m h any_leaf)
 let hit m r tmin h = hit_s m (Ray.of_ray r) tmin h
 
 let nrm m i = Vec3.make (fget m.normals (3 * i)) (fget m.normals ((3 * i) + 1)) (fget m.normals ((3 * i) + 2))

@@ -34,6 +34,11 @@ val hit : t -> Ray.t -> float -> Hit.t -> bool
 val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
 (** {!hit} on a scratch ray, allocation-free. *)
 
+val any_s : t -> Ray.scratch -> float -> Hit.t -> bool
+(** [any_s m ray tmin h]: some triangle crossed in [(tmin, h.t)], the
+    first one the BVH walk meets, not the nearest (a shadow ray through an
+    opaque mesh); on success sets [h] as {!hit_s} does. *)
+
 val normal : t -> Hit.t -> Vec3.t
 (** Unit normal of the triangle recorded in the hit (interpolated for
     smooth triangles). *)

@@ -235,26 +235,28 @@ let box_missed o (r : Ray.scratch) tmin tmax =
 (* Kinds of acceptance for [first_accepted]. *)
 let by_clip = 0 and by_intersection = 1 and by_merge = 2
 
+(* The ray in the primitive's own space: [r] itself, or [f.local] *)
+let[@inline] local o (r : Ray.scratch) (f : found) =
+  if Transform.is_identity o.xform then r
+  else begin
+    let m = o.inv and l = f.local in
+    let g = Float.Array.unsafe_get in
+    l.ox <- (g m 0 *. r.ox) +. (g m 1 *. r.oy) +. (g m 2 *. r.oz) +. g m 9;
+    l.oy <- (g m 3 *. r.ox) +. (g m 4 *. r.oy) +. (g m 5 *. r.oz) +. g m 10;
+    l.oz <- (g m 6 *. r.ox) +. (g m 7 *. r.oy) +. (g m 8 *. r.oz) +. g m 11;
+    l.dx <- (g m 0 *. r.dx) +. (g m 1 *. r.dy) +. (g m 2 *. r.dz);
+    l.dy <- (g m 3 *. r.dx) +. (g m 4 *. r.dy) +. (g m 5 *. r.dz);
+    l.dz <- (g m 6 *. r.dx) +. (g m 7 *. r.dy) +. (g m 8 *. r.dz);
+    l
+  end
+
 let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
   if Array.length o.clip = 0 then raw_hit o r tmin h f else first_accepted true o r tmin h f by_clip [||] 0
 
 and raw_hit o r tmin h f =
   match o.geom with
   | Prim s ->
-      let got =
-        if Transform.is_identity o.xform then Shape.hit_s s r tmin h
-        else begin
-          let m = o.inv and l = f.local in
-          let g = Float.Array.unsafe_get in
-          l.ox <- (g m 0 *. r.ox) +. (g m 1 *. r.oy) +. (g m 2 *. r.oz) +. g m 9;
-          l.oy <- (g m 3 *. r.ox) +. (g m 4 *. r.oy) +. (g m 5 *. r.oz) +. g m 10;
-          l.oz <- (g m 6 *. r.ox) +. (g m 7 *. r.oy) +. (g m 8 *. r.oz) +. g m 11;
-          l.dx <- (g m 0 *. r.dx) +. (g m 1 *. r.dy) +. (g m 2 *. r.dz);
-          l.dy <- (g m 3 *. r.dx) +. (g m 4 *. r.dy) +. (g m 5 *. r.dz);
-          l.dz <- (g m 6 *. r.dx) +. (g m 7 *. r.dy) +. (g m 8 *. r.dz);
-          Shape.hit_s s l tmin h
-        end
-      in
+      let got = Shape.hit_s s (local o r f) tmin h in
       if got then f.leaf <- o;
       got
   | Union cs -> (
@@ -333,8 +335,22 @@ let intersect o r tmin tmax =
   let h = Hit.create tmax in
   if hit o r tmin h (found o) then h.t else infinity
 
-(* [crossings_s o ray tmin tmax h f shadow g]: with [h] and [f] as scratch. *)
-let crossings_s o r tmin tmax (h : Hit.t) fd shadow g =
+(* A crossing of a mesh (no clip) in (tmin, tmax): the first one found *)
+let any_mesh o m r tmin tmax (h : Hit.t) (f : found) =
+  h.t <- tmax;
+  let got = Mesh.any_s m (local o r f) tmin h in
+  if got then f.leaf <- o;
+  got
+
+(* [crossings_s o ray tmin tmax h f shadow opaque g]: with [h] and [f] as
+   scratch. A shadow ray through a mesh that [g] stops at wherever it is
+   crossed ([opaque]) needs one crossing, not the nearest: an any-hit walk
+   of the mesh's BVH. *)
+let crossings_s o r tmin tmax (h : Hit.t) fd shadow opaque g =
+  match o.geom with
+  | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && (o.no_shadow || opaque o) ->
+      o.no_shadow || (not (any_mesh o m r tmin tmax h fd)) || g o h.t
+  | _ ->
   let ok = ref true and go = ref true and first = ref true and tm = ref 0. in
   while !go do
     h.t <- tmax;
@@ -351,8 +367,10 @@ let crossings_s o r tmin tmax (h : Hit.t) fd shadow g =
   done;
   !ok
 
+let never _ = false
+
 let crossings o r tmin tmax f =
-  crossings_s o (Ray.of_ray r) tmin tmax (Hit.create tmax) (found o) false f
+  crossings_s o (Ray.of_ray r) tmin tmax (Hit.create tmax) (found o) false never f
 
 let normal o p h =
   match o.geom with

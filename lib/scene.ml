@@ -106,11 +106,13 @@ type scratch = {
   h : Hit.t;
   f : Object.found;
   mutable occ : Object.t -> float -> bool;
+  mutable opaque : Object.t -> bool;  (** [occ] is false at every crossing *)
   mutable busy : bool;
 }
 
 let dummy = Object.make (Shape.sphere Vec3.zero 1.)
-let new_scratch () = { ray = Ray.scratch (); h = Hit.create 0.; f = Object.found dummy; occ = (fun _ _ -> false); busy = false }
+let new_scratch () = { ray = Ray.scratch (); h = Hit.create 0.; f = Object.found dummy; occ = (fun _ _ -> false);
+                       opaque = Object.never; busy = false }
 let scratch_key = Scratch.key new_scratch
 
 let[@inline] take () =
@@ -193,7 +195,8 @@ let intersect s (r : Ray.t) tmin tmax =
 let occluder_leaf a sc r tmin tmax i =
   let sp = a.spheres in
   let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
-  if rad < 0. then Object.crossings_s (Array.unsafe_get a.finite i) r tmin tmax sc.h sc.f true sc.occ
+  if rad < 0. then
+    Object.crossings_s (Array.unsafe_get a.finite i) r tmin tmax sc.h sc.f true sc.opaque sc.occ
   else
     let t = sphere_root sp i rad r tmin tmax in
     t = infinity
@@ -204,29 +207,31 @@ let occluder_leaf a sc r tmin tmax i =
     let t' = sphere_root sp i rad r (Object.next_tmin_s r t) tmax in
     t' = infinity || sc.occ o t'
 
-let occluders_in s sc tmin tmax g =
+let occluders_in s sc tmin tmax opaque g =
   let a = s.accel in
   sc.occ <- g;
+  sc.opaque <- opaque;
   let ok = ref true and i = ref 0 in
   while !ok && !i < Array.length a.infinite do
-    ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin tmax sc.h sc.f true g;
+    ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin tmax sc.h sc.f true opaque g;
     incr i
   done;
   let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin tmax a sc occluder_leaf in
   sc.occ <- (fun _ _ -> false);
+  sc.opaque <- Object.never;
   sc.busy <- false;
   ok
 
 let occluders s r tmin tmax g =
   let sc = take () in
   Ray.load sc.ray r;
-  occluders_in s sc tmin tmax g
+  occluders_in s sc tmin tmax Object.never g
 
 (* the same from a ray in a scratch record of the caller's *)
-let occluders_s s (r : Ray.scratch) tmin tmax g =
+let occluders_s s (r : Ray.scratch) tmin tmax opaque g =
   let sc = take () in
   Ray.copy r sc.ray;
-  occluders_in s sc tmin tmax g
+  occluders_in s sc tmin tmax opaque g
 
 let block _ _ = false
 let occluded s r tmin tmax = not (occluders s r tmin tmax block)

@@ -73,5 +73,9 @@ val occluders : t -> Ray.t -> float -> float -> (Object.t -> float -> bool) -> b
     object hit in [(tmin, tmax)] (in no particular order) until [f] returns
     [false]; returns [false] if some call did. *)
 
-val occluders_s : t -> Ray.scratch -> float -> float -> (Object.t -> float -> bool) -> bool
-(** [occluders] of a ray held in a scratch record. *)
+val occluders_s :
+  t -> Ray.scratch -> float -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
+(** [occluders_s s ray tmin tmax opaque f]: [occluders] of a ray held in a
+    scratch record, where [f obj t] is known to be [false] at every crossing
+    of an object for which [opaque obj] holds: such an object is asked for
+    one crossing, not all (see {!Object.crossings_s}). *)

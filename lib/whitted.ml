@@ -53,6 +53,9 @@ let shadow_hit (o : Object.t) t =
     not (is_black w.acc)
   end
 
+(* where [shadow_hit] is false whatever the crossing *)
+let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
+
 (* Light reaching the origin of the walk's ray from [w.seg.len] along its
    unit direction: the product of (f*P + t) of every surface crossed, with
    interior fade over the lengths travelled inside fading objects; black
@@ -61,7 +64,7 @@ let shadow_filter (s : Scene.t) (w : shadow_walk) =
   let dist = w.seg.len in
   w.acc <- white;
   w.faders <- [];
-  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_hit in
+  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_opaque shadow_hit in
   let faders = w.faders in
   w.faders <- [];
   if not visible then black

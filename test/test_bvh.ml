@@ -70,6 +70,59 @@ let props =
             (all && !n = 0) || ((not all) && !n = 1)) rays);
   ]
 
+(* A triangle soup of 1 to 60 triangles in a 3-unit cube, placed. *)
+let gmesh_obj =
+  let open QCheck.Gen in
+  map3
+    (fun n seed xf ->
+      let st = Random.State.make [| n; seed |] in
+      let c () = Random.State.float st 3. -. 1.5 in
+      let verts = Float.Array.init (9 * n) (fun _ -> c ()) in
+      let m =
+        Mesh.make ~verts ~normals:(Float.Array.create 0) ~faces:(Array.init (3 * n) Fun.id)
+          ~normal_faces:[||] ~inside_vector:None
+      in
+      Object.make ~xform:xf (Shape.Mesh m))
+    (int_range 1 60) int gxform
+
+let is_mesh (o : Object.t) = match o.geom with Object.Prim (Shape.Mesh _) -> true | _ -> false
+
+(* Shadow rays through opaque meshes ask for any crossing, not all: the
+   same rays are blocked, and a mesh's any-hit finds a crossing exactly
+   when its nearest hit does. *)
+let any_hit_props =
+  let arb =
+    QCheck.make ~print:(fun (l, _) -> Printf.sprintf "%d objects" (List.length l))
+      QCheck.Gen.(pair (list_size (int_range 1 20) (oneof_weighted [ (2, gmesh_obj); (1, gobj) ]))
+                    (list_size (return 30) gray))
+  in
+  [
+    QCheck.Test.make ~name:"opaque meshes: a shadow ray is blocked as when all crossings are walked"
+      ~count:200 arb (fun (objs, rays) ->
+        let s = scene (Array.of_list objs) in
+        List.for_all (fun r ->
+            let walked = Scene.occluders s r 1e-9 30. (fun _ _ -> false) in
+            let calls = ref 0 in
+            let any =
+              Scene.occluders_s s (Ray.of_ray r) 1e-9 30. is_mesh (fun _ t ->
+                  incr calls;
+                  if not (t > 1e-9 && t < 30.) then QCheck.Test.fail_reportf "crossing at t=%g" t;
+                  false)
+            in
+            walked = any && !calls <= 1) rays);
+    QCheck.Test.make ~name:"Mesh.any_s finds a crossing exactly when Mesh.hit_s does" ~count:300
+      (QCheck.make QCheck.Gen.(pair gmesh_obj (list_size (return 30) gray)))
+      (fun (o, rays) ->
+        match o.geom with
+        | Object.Prim (Shape.Mesh m) ->
+            List.for_all (fun r ->
+                let sr = Ray.of_ray r in
+                let h = Hit.create 20. and h' = Hit.create 20. in
+                let near = Mesh.hit_s m sr 1e-9 h and any = Mesh.any_s m sr 1e-9 h' in
+                near = any && ((not any) || (h'.t >= h.t && h'.t < 20.))) rays
+        | _ -> false);
+  ]
+
 let union_prop =
   QCheck.Test.make ~name:"a union's own BVH finds the nearest child hit" ~count:200
     (QCheck.make QCheck.Gen.(pair (list_size (int_range 8 40) gobj) (list_size (return 20) gray)))
@@ -161,4 +214,4 @@ union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigm
       (* the pass's own closure aside (a few words), nothing per ray *)
       if words > 16. then Alcotest.failf "%.0f minor words for %d rays" words (Array.length rays))
 
-let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest (union_prop :: props))
+let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest ((union_prop :: props) @ any_hit_props))
