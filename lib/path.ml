@@ -22,12 +22,17 @@ let[@inline] power a b =
 (* Light that passes straight through along a shadow ray: surfaces that
    neither refract (ior 1) nor are opaque let (f P + t) through, as a glass
    lobe with eta 1 would; anything else blocks (light bent by refraction
-   is found by the paths, not by shadow rays). *)
+   is found by the paths, not by shadow rays). [blocks o]: every crossing
+   of [o] blocks (one is enough to find). *)
+let blocks (o : Object.t) =
+  o.interior.ior <> 1.
+  || match o.texture with [] -> true | (layer : Texture.layer) :: _ -> Pigment.opaque layer.pigment
+
 let transmittance (s : Scene.t) p wi dist =
   let ray = Ray.make p wi in
   let acc = ref white in
   let open_ =
-    Scene.occluders s ray Ray.shadow_epsilon dist (fun (o : Object.t) t ->
+    Scene.occluders s ray Ray.shadow_epsilon dist blocks (fun (o : Object.t) t ->
         match o.texture with
         | [] -> false
         | (layer : Texture.layer) :: _ ->

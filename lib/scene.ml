@@ -222,10 +222,10 @@ let occluders_in s sc tmin tmax opaque g =
   sc.busy <- false;
   ok
 
-let occluders s r tmin tmax g =
+let occluders s r tmin tmax opaque g =
   let sc = take () in
   Ray.load sc.ray r;
-  occluders_in s sc tmin tmax Object.never g
+  occluders_in s sc tmin tmax opaque g
 
 (* the same from a ray in a scratch record of the caller's *)
 let occluders_s s (r : Ray.scratch) tmin tmax opaque g =
@@ -234,4 +234,5 @@ let occluders_s s (r : Ray.scratch) tmin tmax opaque g =
   occluders_in s sc tmin tmax opaque g
 
 let block _ _ = false
-let occluded s r tmin tmax = not (occluders s r tmin tmax block)
+let always _ = true
+let occluded s r tmin tmax = not (occluders s r tmin tmax always block)

@@ -68,14 +68,15 @@ val hit_normal : t -> Object.found -> Hit.t -> Vec3.t -> Vec3.t
 val occluded : t -> Ray.t -> float -> float -> bool
 (** Any-hit query: some shadow-casting surface in [(tmin, tmax)]. *)
 
-val occluders : t -> Ray.t -> float -> float -> (Object.t -> float -> bool) -> bool
-(** [occluders s ray tmin tmax f] calls [f obj t] on every shadow-casting
-    object hit in [(tmin, tmax)] (in no particular order) until [f] returns
-    [false]; returns [false] if some call did. *)
+val occluders :
+  t -> Ray.t -> float -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
+(** [occluders s ray tmin tmax opaque f] calls [f obj t] on every
+    shadow-casting object hit in [(tmin, tmax)] (in no particular order)
+    until [f] returns [false]; returns [false] if some call did. [f obj t]
+    must be [false] at every crossing of an object for which [opaque obj]
+    holds: such an object may be asked for one crossing, not all (see
+    {!Object.crossings_s}); {!Object.never} when nothing is known. *)
 
 val occluders_s :
   t -> Ray.scratch -> float -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
-(** [occluders_s s ray tmin tmax opaque f]: [occluders] of a ray held in a
-    scratch record, where [f obj t] is known to be [false] at every crossing
-    of an object for which [opaque obj] holds: such an object is asked for
-    one crossing, not all (see {!Object.crossings_s}). *)
+(** [occluders] of a ray held in a scratch record. *)

@@ -59,14 +59,14 @@ let props =
         let s = scene objects in
         List.for_all (fun r ->
             let a = ref [] and b = ref [] in
-            ignore (Scene.occluders s r 1e-9 30. (fun _ t -> a := t :: !a; true));
+            ignore (Scene.occluders s r 1e-9 30. Object.never (fun _ t -> a := t :: !a; true));
             Array.iter (fun o -> ignore (Object.crossings o r 1e-9 30. (fun (l : Object.t) t -> if not l.no_shadow then b := t :: !b; true))) objects;
             List.sort compare !a = List.sort compare !b) rays);
     QCheck.Test.make ~name:"occluders stops when told to" ~count:100 arb (fun (objs, rays) ->
         let s = scene (Array.of_list objs) in
         List.for_all (fun r ->
             let n = ref 0 in
-            let all = Scene.occluders s r 1e-9 30. (fun _ _ -> incr n; false) in
+            let all = Scene.occluders s r 1e-9 30. Object.never (fun _ _ -> incr n; false) in
             (all && !n = 0) || ((not all) && !n = 1)) rays);
   ]
 
@@ -101,7 +101,7 @@ let any_hit_props =
       ~count:200 arb (fun (objs, rays) ->
         let s = scene (Array.of_list objs) in
         List.for_all (fun r ->
-            let walked = Scene.occluders s r 1e-9 30. (fun _ _ -> false) in
+            let walked = Scene.occluders s r 1e-9 30. Object.never (fun _ _ -> false) in
             let calls = ref 0 in
             let any =
               Scene.occluders_s s (Ray.of_ray r) 1e-9 30. is_mesh (fun _ t ->
