@@ -220,6 +220,31 @@ let props =
           [ 0; 1; 2 ] [ v; Float.succ v; Float.pred v ]);
   ]
 
+(* The table starts each value's search at the level of its part of
+   [0, 1) (parts of 1/8192): every part's ends and their neighbours, and
+   a sweep of [0, 1] through every level, agree with the formula. *)
+let table_edges =
+  Alcotest.test_case "to_rgb8 = the formula at every part's ends and across [0, 1]" `Quick (fun () ->
+      let values =
+        List.concat
+          [ List.concat_map (fun b -> let x = float b /. 8192. in [ Float.pred x; x; Float.succ x ])
+              (List.init 8193 Fun.id);
+            List.init 200_001 (fun i -> float i /. 200_000.);
+            [ 0.; -0.; -1e-300; 1.; Float.pred 1.; Float.succ 1.; infinity; neg_infinity; nan ] ]
+      in
+      let n = List.length values in
+      let img = Image.create n 1 in
+      List.iteri (fun x v -> Image.set img x 0 v v v) values;
+      List.iter
+        (fun enc ->
+          let im = Image.to_rgb8 enc img in
+          List.iteri
+            (fun x v ->
+              let got = Bytes.get_uint8 im.data (3 * x) and want = Image.quantize enc v in
+              if got <> want then Alcotest.failf "%h: table %d, formula %d" v got want)
+            values)
+        [ Image.Srgb; Image.Identity; Image.Gamma_srgb 2.2; Image.Gamma_srgb 0.45 ])
+
 let encoding_tests =
   [
     Alcotest.test_case "srgb_encode known values" `Quick (fun () ->
@@ -587,6 +612,6 @@ let atomic_tests =
 
 let tests =
   ( "image",
-    encoding_tests @ png_tests @ ppm_tests @ pfm_tests @ metric_tests
+    (table_edges :: encoding_tests) @ png_tests @ ppm_tests @ pfm_tests @ metric_tests
     @ atomic_tests
     @ List.map QCheck_alcotest.to_alcotest props )
