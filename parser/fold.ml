@@ -49,12 +49,26 @@ let operator_next t =
   | (x, _) :: _ -> op x
   | [] -> ( match (raw_peek t).raw with Tok x -> op x | _ -> false)
 
+(* After these a '<' is a comparison, not the start of a vector *)
+let operand_end (tok : Parser.token) =
+  match tok with
+  | FLOAT _ | FLOAT_ID _ | VECTOR _ | VECTOR_ID _ | STRING _ | STRING_ID _ | RPAREN | RBRACKET | GT
+  | MEMBER _ | UNDEFINED_ID _ | FUNCTION_ID _ | FUNCTION_LIT _ ->
+      true
+  | _ -> false
+
 let may_start t last tok =
-  (match last with
-  | None -> (* #if (...) wants its parenthesis *) tok <> Parser.LPAREN
-  | Some ((COMMA | LT | LPAREN | LBRACKET | LBRACE : Parser.token), _) -> true
-  | Some _ -> false)
-  && match tok with FLOAT _ | FLOAT_ID _ -> operator_next t | _ -> starts tok
+  match tok with
+  | Parser.LT -> (
+      (* a vector is a whole primary: whatever comes before it (an
+         operator, a keyword, rgb) takes it as it would the literal *)
+      match last with None -> true | Some (l, _) -> not (operand_end l))
+  | _ -> (
+      (match last with
+      | None -> (* #if (...) wants its parenthesis *) tok <> Parser.LPAREN
+      | Some ((COMMA | LT | LPAREN | LBRACKET | LBRACE : Parser.token), _) -> true
+      | Some _ -> false)
+      && match tok with FLOAT _ | FLOAT_ID _ -> operator_next t | _ -> starts tok)
 
 let peek st =
   match st.ahead with
@@ -73,6 +87,20 @@ let peek st =
       st.ahead <- a;
       a
   | a -> a
+
+(* The name ahead is a float read without a side effect: a built-in or a
+   declared float, not deprecated (no warning). Anything else (a macro,
+   an array element, a spline) is read by the parser, so that its effects
+   and errors come where they would: everything the run reads is silent,
+   and its arithmetic is done once, when it is whole, in the parser's
+   order. *)
+let silent_float t =
+  match (raw_peek t).raw with
+  | Ident name ->
+      (Hashtbl.length t.deprecated = 0 || not (Hashtbl.mem t.deprecated name))
+      && (Cursor.builtin t name <> None || String.equal name "version"
+         || match Env.find t.env name with Some (Env.Decl (Decl.Value (Value.Float _))) -> true | _ -> false)
+  | _ -> false
 
 let take st =
   let x = st.next st.t in
@@ -112,10 +140,10 @@ and mul st =
   more (unary st)
 
 and unary st =
-  (* a name is read (typed) here, as the parser would read it now *)
   (match peek st with
-  | Plain (FLOAT _ | FLOAT_ID _ | LPAREN | MINUS | PLUS | FUNC _) | Name -> ()
-  | Plain _ | Other | Unknown -> raise Bail);
+  | Plain (FLOAT _ | FLOAT_ID _ | LPAREN | MINUS | PLUS | FUNC _) -> ()
+  | Name when silent_float st.t -> ()
+  | Plain _ | Name | Other | Unknown -> raise Bail);
   let tok, loc = take st in
   match tok with
   | MINUS ->
@@ -164,8 +192,42 @@ let rec eval e =
   | Paren a -> eval a
   | Call (f, args) -> Value.call e.loc f (List.map eval args)
 
+(* < run, run [, run [, run]] >: 2 to 5 components, each a run ending at
+   the comma or the '>' (no trailing comma, no components written without
+   commas: those go to the parser) *)
+let vector st =
+  let _, start = take st in
+  let rec items acc =
+    let e = add st in
+    match peek st with
+    | Plain COMMA -> ignore (take st); items (e :: acc)
+    | Plain GT ->
+        let _, stop = take st in
+        (List.rev (e :: acc), stop)
+    | _ -> raise Bail
+  in
+  let cs, stop = items [] in
+  let n = List.length cs in
+  if n < 2 || n > 5 then raise Bail;
+  (cs, span start stop)
+
+let give_back t st first =
+  match List.rev st.taken with
+  | [] -> t.pending <- List.tl t.pending; (first, [])
+  | x :: rest -> t.pending <- rest @ t.pending; (x, [])
+
+let run_vector t ~next first =
+  t.pending <- first :: t.pending;
+  let st = { t; next; taken = []; ahead = Unknown } in
+  match vector st with
+  | cs, loc ->
+      let v = Array.of_list (List.map (fun e -> Value.to_float e.loc (eval e)) cs) in
+      ((Parser.VECTOR v, loc), List.rev st.taken)
+  | exception Bail -> give_back t st first
+
 let run t ~next ((tok, loc) as first) =
   match tok with
+  | Parser.LT -> run_vector t ~next first
   | Parser.LPAREN | MINUS | PLUS | FUNC _ | FLOAT _ | FLOAT_ID _ -> (
       (* [first] is read: put it back for the descent to take again *)
       t.pending <- first :: t.pending;
@@ -183,8 +245,5 @@ let run t ~next ((tok, loc) as first) =
                 | Value.String s -> Parser.STRING s
               in
               ((tok, loc), List.rev taken)))
-      | exception Bail -> (
-          match List.rev st.taken with
-          | [] -> t.pending <- List.tl t.pending; (first, [])
-          | x :: rest -> t.pending <- rest @ t.pending; (x, [])))
+      | exception Bail -> give_back t st first)
   | _ -> (first, [])

@@ -9,16 +9,22 @@
     by [+ - * /] and unary signs is read here instead, evaluated with the
     same functions and spans the parser's actions use ({!Value.binop},
     {!Value.neg}, {!Value.call}), in the same order, and handed over as one
-    [FLOAT] token spanning the run.
+    [FLOAT] token spanning the run. A vector literal of 2 to 5 such runs,
+    [<a, b, c>], wherever a ['<'] cannot be a comparison, becomes one
+    [VECTOR] token: it is a whole primary, whatever stands around it.
 
     The grammar extends an expression only over [+ - * /] and a member
     ['.x'], and is greedy where POV-Ray is, so a run that ends before any
     other token is the expression the parser would have built. Where the
-    run cannot be known to end (a member, a name that may be a macro, a
-    directive, the end of a macro body or included file) or holds
-    anything else, every token read is given back, in order, and the
-    parser reads them as before. Tokens are read in the parser's order and
-    never further ahead than its one-token lookahead. *)
+    run cannot be known to end (a member, a directive, the end of a macro
+    body or included file) or holds anything else (a name that is not a
+    declared float: a macro, an array element, a deprecated name), every
+    token read is given back, in order, and the parser reads them as
+    before. What a run reads has no effect of its own (no macro call, no
+    warning, no error), so doing its arithmetic once it is whole gives the
+    same warnings and the same first error, in the same order, as the
+    parser's actions. Tokens are read in the parser's order and never
+    further ahead than its one-token lookahead. *)
 
 val may_start : Cursor.t -> (Parser.token * Loc.t) option -> Parser.token -> bool
 (** [may_start t last tok]: whether a run may start with [tok], just read,
