@@ -279,6 +279,14 @@ let lexbuf_of_utf8 text =
     if !malformed then raise Sedlexing.MalFormed;
     let n = String.length text and i = ref 0 in
     while !i < len && !at < n do
+      let c = Char.code (String.unsafe_get text !at) in
+      if c < 0x80 then begin
+        (* ASCII, nearly every byte of a scene: no decoding *)
+        Array.unsafe_set buf (pos + !i) (Uchar.unsafe_of_int c);
+        incr at;
+        incr i
+      end
+      else
       let d = String.get_utf_8_uchar text !at in
       if not (Uchar.utf_decode_is_valid d) then begin
         if !i = 0 then raise Sedlexing.MalFormed;
