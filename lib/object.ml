@@ -167,6 +167,14 @@ let[@inline] next_tmin_s (r : Ray.scratch) t =
   let step = 1e-9 *. (1. +. (Float.abs t *. dl)) /. dl in
   Float.max (t +. step) (Float.succ t)
 
+(* [r]'s origin taken into the primitive's own space, into [l] *)
+let[@inline] local_origin o (r : Ray.scratch) (l : Ray.scratch) =
+  let m = o.inv in
+  let g = Float.Array.unsafe_get in
+  l.ox <- (g m 0 *. r.ox) +. (g m 1 *. r.oy) +. (g m 2 *. r.oz) +. g m 9;
+  l.oy <- (g m 3 *. r.ox) +. (g m 4 *. r.oy) +. (g m 5 *. r.oz) +. g m 10;
+  l.oz <- (g m 6 *. r.ox) +. (g m 7 *. r.oy) +. (g m 8 *. r.oz) +. g m 11
+
 (* [inside_s o f]: the inside test at the point held in [f.pt]; uses
    [f.local] for the point in a leaf's own space. *)
 let rec inside_s o f =
@@ -176,12 +184,8 @@ let rec inside_s o f =
         let p = f.pt in
         if Transform.is_identity o.xform then Shape.inside_s s p <> o.inverted
         else begin
-          let m = o.inv and l = f.local in
-          let g = Float.Array.unsafe_get in
-          l.ox <- (g m 0 *. p.ox) +. (g m 1 *. p.oy) +. (g m 2 *. p.oz) +. g m 9;
-          l.oy <- (g m 3 *. p.ox) +. (g m 4 *. p.oy) +. (g m 5 *. p.oz) +. g m 10;
-          l.oz <- (g m 6 *. p.ox) +. (g m 7 *. p.oy) +. (g m 8 *. p.oz) +. g m 11;
-          Shape.inside_s s l <> o.inverted
+          local_origin o p f.local;
+          Shape.inside_s s f.local <> o.inverted
         end
     | Union cs | Merge cs -> any_inside cs f 0
     | Intersection cs -> all_inside cs f 0 (-1)
@@ -241,9 +245,7 @@ let[@inline] local o (r : Ray.scratch) (f : found) =
   else begin
     let m = o.inv and l = f.local in
     let g = Float.Array.unsafe_get in
-    l.ox <- (g m 0 *. r.ox) +. (g m 1 *. r.oy) +. (g m 2 *. r.oz) +. g m 9;
-    l.oy <- (g m 3 *. r.ox) +. (g m 4 *. r.oy) +. (g m 5 *. r.oz) +. g m 10;
-    l.oz <- (g m 6 *. r.ox) +. (g m 7 *. r.oy) +. (g m 8 *. r.oz) +. g m 11;
+    local_origin o r l;
     l.dx <- (g m 0 *. r.dx) +. (g m 1 *. r.dy) +. (g m 2 *. r.dz);
     l.dy <- (g m 3 *. r.dx) +. (g m 4 *. r.dy) +. (g m 5 *. r.dz);
     l.dz <- (g m 6 *. r.dx) +. (g m 7 *. r.dy) +. (g m 8 *. r.dz);

@@ -117,27 +117,26 @@ let expect st (tok : Parser.token) =
 
 (* The grammar's add / mul / unary / primary, greedy as it is: a run ends
    where the next token cannot continue it. *)
-let rec add st =
-  let rec more l =
-    match peek st with
-    | Plain ((PLUS | MINUS) as op) ->
-        ignore (take st);
-        let r = mul st in
-        more { node = Bin ((if op = PLUS then "+" else "-"), l, r); loc = span l.loc r.loc }
-    | _ -> l
-  in
-  more (mul st)
+let additive : Parser.token -> string option = function PLUS -> Some "+" | MINUS -> Some "-" | _ -> None
+let multiplicative : Parser.token -> string option = function STAR -> Some "*" | SLASH -> Some "/" | _ -> None
 
-and mul st =
+(* operands of [next] joined by the operators [op] names, left to right *)
+let rec binary op next st =
   let rec more l =
     match peek st with
-    | Plain ((STAR | SLASH) as op) ->
-        ignore (take st);
-        let r = unary st in
-        more { node = Bin ((if op = STAR then "*" else "/"), l, r); loc = span l.loc r.loc }
-    | _ -> l
+    | Plain tok -> (
+        match op tok with
+        | Some name ->
+            ignore (take st);
+            let r = next st in
+            more { node = Bin (name, l, r); loc = span l.loc r.loc }
+        | None -> l)
+    | Name | Other | Unknown -> l
   in
-  more (unary st)
+  more (next st)
+
+and add st = binary additive mul st
+and mul st = binary multiplicative unary st
 
 and unary st =
   (match peek st with
