@@ -59,6 +59,13 @@ let reflectivity (r : Finish.reflection) ior c =
 
 let clamp01 x = fmin 1. (fmax 0. x)
 
+(* No reflection, highlight or metal: a matte surface (most of a Monte
+   Carlo scene's hits) *)
+let plain_diffuse (f : Finish.t) =
+  let zero (c : Color.t) = c.r = 0. && c.g = 0. && c.b = 0. in
+  f.specular = 0. && f.phong = 0. && f.metallic = 0. && f.reflection.rmetallic = 0.
+  && zero f.reflection.rmin && zero f.reflection.rmax
+
 (* At most five lobes: literal arrays are allocated inline, where
    Array.of_list calls the runtime. *)
 let of_rev_list = function
@@ -79,6 +86,12 @@ let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
       let tr = clamp01 (pc.filter +. pc.transmit) in
       let alpha = 1. -. tr in
       let refracts = tr > 0. && inter.ior <> 1. in
+      if (not (tr > 0.)) && plain_diffuse f then
+        (* every lobe but the diffuse one has weight 0 here, whatever the
+           angle: the same material, without computing them *)
+        let l = Lambert (scale (alpha *. f.diffuse) pig) in
+        { lobes = (if weight l > 0. then [| l |] else [||]); emission = scale alpha (mul pig f.emission) }
+      else
       (* at most five lobes, kept in order when their weight is positive *)
       let lobes = ref [] in
       let push l = if weight l > 0. then lobes := l :: !lobes in
