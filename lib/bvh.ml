@@ -37,8 +37,9 @@ let half_area x0 y0 z0 x1 y1 z1 =
 let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 else x
 let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
 
-let build ?(leaf_size = 4) boxes =
+let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost boxes =
   let n = Float.Array.length boxes / 6 in
+  let cost = match cost with Some c -> c | None -> Float.Array.make n 1. in
   if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
   let prims = Array.init n Fun.id in
   let cent = Float.Array.create (3 * n) in
@@ -52,6 +53,7 @@ let build ?(leaf_size = 4) boxes =
   let count = ref 0 and max_depth = ref 1 in
   (* bin scratch: per bin box (6) and count *)
   let bbox = Float.Array.create (6 * bins) and bcount = Array.make bins 0 in
+  let bcost = Float.Array.create bins and rcost = Float.Array.create bins in
   let rarea = Float.Array.create bins and rcount = Array.make bins 0 in
   let rec node lo hi depth =
     let k = !count in
@@ -61,8 +63,10 @@ let build ?(leaf_size = 4) boxes =
     let bx1 = ref neg_infinity and by1 = ref neg_infinity and bz1 = ref neg_infinity in
     let cx0 = ref infinity and cy0 = ref infinity and cz0 = ref infinity in
     let cx1 = ref neg_infinity and cy1 = ref neg_infinity and cz1 = ref neg_infinity in
+    let total = ref 0. in
     for j = lo to hi - 1 do
       let i = prims.(j) in
+      total := !total +. fget cost i;
       let o = 6 * i in
       bx0 := fmin !bx0 (fget boxes o);
       by0 := fmin !by0 (fget boxes (o + 1));
@@ -101,6 +105,7 @@ let build ?(leaf_size = 4) boxes =
     else begin
       (* bin the centroids along the widest axis, then sweep for the SAH *)
       Array.fill bcount 0 bins 0;
+      Float.Array.fill bcost 0 bins 0.;
       for b = 0 to bins - 1 do
         for a = 0 to 2 do
           fset bbox ((6 * b) + a) infinity;
@@ -113,6 +118,7 @@ let build ?(leaf_size = 4) boxes =
         let i = prims.(j) in
         let b = bin_of i in
         bcount.(b) <- bcount.(b) + 1;
+        fset bcost b (fget bcost b +. fget cost i);
         for a = 0 to 2 do
           let q = (6 * b) + a in
           fset bbox q (fmin (fget bbox q) (fget boxes ((6 * i) + a)));
@@ -122,7 +128,7 @@ let build ?(leaf_size = 4) boxes =
       (* right-to-left sweep *)
       let x0 = ref infinity and y0 = ref infinity and z0 = ref infinity in
       let x1 = ref neg_infinity and y1 = ref neg_infinity and z1 = ref neg_infinity in
-      let acc = ref 0 in
+      let acc = ref 0 and acost = ref 0. in
       for b = bins - 1 downto 1 do
         let q = 6 * b in
         x0 := fmin !x0 (fget bbox q);
@@ -132,12 +138,14 @@ let build ?(leaf_size = 4) boxes =
         y1 := fmax !y1 (fget bbox (q + 4));
         z1 := fmax !z1 (fget bbox (q + 5));
         acc := !acc + bcount.(b);
+        acost := !acost +. fget bcost b;
         rcount.(b) <- !acc;
+        fset rcost b !acost;
         fset rarea b (if !acc = 0 then 0. else half_area !x0 !y0 !z0 !x1 !y1 !z1)
       done;
       x0 := infinity; y0 := infinity; z0 := infinity;
       x1 := neg_infinity; y1 := neg_infinity; z1 := neg_infinity;
-      let lc = ref 0 and best = ref infinity and best_b = ref 0 in
+      let lc = ref 0 and lcost = ref 0. and best = ref infinity and best_b = ref 0 in
       for b = 0 to bins - 2 do
         let q = 6 * b in
         x0 := fmin !x0 (fget bbox q);
@@ -147,17 +155,18 @@ let build ?(leaf_size = 4) boxes =
         y1 := fmax !y1 (fget bbox (q + 4));
         z1 := fmax !z1 (fget bbox (q + 5));
         lc := !lc + bcount.(b);
+        lcost := !lcost +. fget bcost b;
         if !lc > 0 && rcount.(b + 1) > 0 then begin
           let cost =
-            (float !lc *. half_area !x0 !y0 !z0 !x1 !y1 !z1)
-            +. (float rcount.(b + 1) *. fget rarea (b + 1))
+            (!lcost *. half_area !x0 !y0 !z0 !x1 !y1 !z1)
+            +. (fget rcost (b + 1) *. fget rarea (b + 1))
           in
           if cost < !best then (best := cost; best_b := b)
         end
       done;
-      let leaf_cost = float m *. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1 in
-      (* traversal cost ~ one primitive test on the node's area *)
-      let split_cost = !best +. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1 in
+      let leaf_cost = !total *. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1 in
+      (* a node's walk costs [node_cost] primitive tests of cost 1 *)
+      let split_cost = !best +. (node_cost *. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1) in
       if m <= leaf_size && split_cost >= leaf_cost then leaf ()
       else if !best = infinity then split k lo hi (lo + (m / 2)) axis depth
       else begin

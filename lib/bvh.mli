@@ -10,11 +10,13 @@
 
 type t
 
-val build : ?leaf_size:int -> Float.Array.t -> t
+val build : ?leaf_size:int -> ?node_cost:float -> ?cost:Float.Array.t -> Float.Array.t -> t
 (** [build boxes]: [boxes] holds 6 floats per primitive (min x, y, z, max
     x, y, z). Primitives with empty or non-finite boxes must not be given.
-    [leaf_size] (default 4) is the size under which a node is always a
-    leaf. *)
+    A node of at most [leaf_size] primitives (default 4) becomes a leaf
+    when the surface area heuristic finds that testing them all costs no
+    more than splitting it: [cost.(i)] is primitive i's test (default 1),
+    [node_cost] a node's walk in the same unit (default 1). *)
 
 val size : t -> int
 (** Number of primitives. *)

@@ -161,6 +161,27 @@ let units =
         let seen = ref 0 in
         ignore (Bvh.iter b (Ray.make (Vec3.make 0.5 0.5 (-1.)) Vec3.unit_z) 0. 10. (fun _ -> incr seen; true));
         Alcotest.(check int) "all visited" 1000 !seen);
+    Alcotest.test_case "the SAH weighs primitive and node costs" `Quick (fun () ->
+        (* 16 unit boxes in a row along x, 0.5 apart *)
+        let bs = boxes (List.init 16 (fun i -> (1.5 *. float i, (1.5 *. float i) +. 1.))) in
+        let seen b x =
+          let n = ref 0 in
+          ignore (Bvh.iter b (Ray.make (Vec3.make x x (-5.)) Vec3.unit_z) 0. 100. (fun _ -> incr n; true));
+          !n
+        in
+        (* a walk as dear as 1 test: split down to leaves of one or two *)
+        let b1 = Bvh.build ~leaf_size:16 bs in
+        Alcotest.(check bool) "node cost 1: several nodes" true (Bvh.nodes b1 > 8);
+        Alcotest.(check bool) "node cost 1: a ray meets one or two boxes' leaves" true (seen b1 0.5 <= 2);
+        (* a walk as dear as 64 tests: one leaf of all 16 *)
+        let b64 = Bvh.build ~leaf_size:16 ~node_cost:64. bs in
+        Alcotest.(check int) "node cost 64: one node" 1 (Bvh.nodes b64);
+        Alcotest.(check int) "node cost 64: every primitive tested" 16 (seen b64 0.5);
+        (* the same with box 0 a hundred times dearer: it keeps a leaf of its own *)
+        let cost = Float.Array.init 16 (fun i -> if i = 0 then 100. else 1.) in
+        let b = Bvh.build ~leaf_size:16 ~node_cost:64. ~cost bs in
+        Alcotest.(check int) "the dear primitive alone" 1 (seen b 0.5);
+        Alcotest.(check bool) "the cheap ones still packed" true (seen b 12.5 >= 8));
     Alcotest.test_case "boxes the ray misses are not visited" `Quick (fun () ->
         let b = Bvh.build (boxes (List.init 100 (fun i -> (float i, float i +. 0.5)))) in
         let seen = ref [] in
