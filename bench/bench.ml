@@ -146,3 +146,22 @@ let print rows =
           Printf.printf "%s: t(%d)/t(%d) = %.2f\n" k b.count a.count (b.trace_s /. a.trace_s)
       | _ -> ())
     kinds
+
+(* The traversal and intersection kernel alone (bench/alloc and the
+   allocation test): a camera ray through every pixel's centre, and a pass
+   of nearest hits over them with records made once. *)
+let camera_rays (s : Scene.t) ~width ~height =
+  Array.init (width * height) (fun i ->
+      let sx, sy = Camera.pixel_coords ~width ~height (float (i mod width) +. 0.5) (float (i / width) +. 0.5) in
+      Camera.ray s.camera sx sy)
+
+let nearest_pass (s : Scene.t) rays =
+  let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
+  fun () ->
+    let hits = ref 0 in
+    for i = 0 to Array.length rays - 1 do
+      Ray.load r (Array.unsafe_get rays i);
+      h.t <- infinity;
+      if Scene.nearest s r 0. h f then incr hits
+    done;
+    !hits

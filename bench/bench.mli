@@ -23,3 +23,11 @@ val direct_spheres : int -> Camlray.Scene.t
 
 val print : row list -> unit
 (** The table and the ratios t(10^6)/t(10^3). *)
+
+val camera_rays : Camlray.Scene.t -> width:int -> height:int -> Camlray.Ray.t array
+(** A camera ray through the centre of every pixel, row by row. *)
+
+val nearest_pass : Camlray.Scene.t -> Camlray.Ray.t array -> unit -> int
+(** [nearest_pass s rays] makes its records once and returns a pass: the
+    nearest hit ({!Camlray.Scene.nearest}) of every ray, the count of rays
+    that hit. A pass allocates nothing. *)

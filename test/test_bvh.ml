@@ -211,28 +211,14 @@ mesh { triangle { <-5, 1, -3>, <-4, 1, -3>, <-4.5, 2, -3> } triangle { <-4, 1, -
 union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigment { rgb 1 } }
 |}
       in
-      let rays =
-        Array.init 4000 (fun i ->
-            let sx, sy = Camera.pixel_coords ~width:80 ~height:50 (float (i mod 80) +. 0.5) (float (i / 80) +. 0.5) in
-            Camera.ray s.camera sx sy)
-      in
-      let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
-      let hits = ref 0 in
-      let pass () =
-        Array.iter
-          (fun ray ->
-            Ray.load r ray;
-            h.t <- infinity;
-            if Scene.nearest s r 0. h f then incr hits)
-          rays
-      in
-      pass ();
-      hits := 0;
+      let rays = Camlray_bench.Bench.camera_rays s ~width:80 ~height:50 in
+      let pass = Camlray_bench.Bench.nearest_pass s rays in
+      ignore (pass ());
       let before = Gc.minor_words () in
-      pass ();
+      let hits = pass () in
       let words = Gc.minor_words () -. before in
-      Alcotest.(check bool) "some rays hit" true (!hits > 1000);
-      (* the pass's own closure aside (a few words), nothing per ray *)
+      Alcotest.(check bool) "some rays hit" true (hits > 1000);
+      (* a few words of slack, nothing per ray *)
       if words > 16. then Alcotest.failf "%.0f minor words for %d rays" words (Array.length rays))
 
 let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest ((union_prop :: props) @ any_hit_props))

@@ -30,25 +30,12 @@ let () =
           Printf.printf "| %s | %s | %d | %.1f |\n%!" (Filename.basename file) mode rays
             (words /. float rays);
           (* the kernel: nearest hit of every camera ray, nothing else *)
-          let rays =
-            Array.init (width * height) (fun i ->
-                let sx, sy = Camera.pixel_coords ~width ~height (float (i mod width) +. 0.5) (float (i / width) +. 0.5) in
-                Camera.ray s.camera sx sy)
-          in
-          let r = Ray.scratch () and h = Hit.create infinity and f = Object.found s.objects.(0) in
-          let hits = ref 0 in
-          let pass () =
-            Array.iter
-              (fun ray ->
-                Ray.load r ray;
-                h.t <- infinity;
-                if Scene.nearest s r 0. h f then incr hits)
-              rays
-          in
-          pass ();
+          let rays = Camlray_bench.Bench.camera_rays s ~width ~height in
+          let pass = Camlray_bench.Bench.nearest_pass s rays in
+          ignore (pass ());
           let reps = 20 in
           let before = Gc.minor_words () and t0 = Unix.gettimeofday () in
-          for _ = 1 to reps do pass () done;
+          for _ = 1 to reps do ignore (pass ()) done;
           let dt = Unix.gettimeofday () -. t0 and words = Gc.minor_words () -. before in
           let n = float (reps * Array.length rays) in
           Printf.printf "| %s | kernel: Scene.nearest only | %d | %.2f (%.2f M rays/s) |\n%!"
