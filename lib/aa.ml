@@ -1,25 +1,52 @@
 let block = 32
 let gamma = 1. /. 2.5
 
-let encode (c : Color.t) =
-  let e x = Float.pow (Float.max 0. x) gamma in
-  Color.make (e c.r) (e c.g) (e c.b)
+let[@inline] encode1 x = Float.pow (Float.max 0. x) gamma
+let encode (c : Color.t) = Color.make (encode1 c.r) (encode1 c.g) (encode1 c.b)
 
-let differs threshold (a : Color.t) (b : Color.t) =
-  Float.abs (a.r -. b.r) +. Float.abs (a.g -. b.g) +. Float.abs (a.b -. b.b) >= threshold
+let[@inline] differs3 threshold ar ag ab br bg bb =
+  Float.abs (ar -. br) +. Float.abs (ag -. bg) +. Float.abs (ab -. bb) >= threshold
 
-let supersample ~depth sample x y (centre : Color.t) =
+let differs threshold (a : Color.t) (b : Color.t) = differs3 threshold a.r a.g a.b b.r b.g b.b
+
+(* The n x n samples added to the centre's [(cr, cg, cb)], channel by
+   channel in this order, into [out] at [3k]. *)
+let supersample_into ~depth sample x y cr cg cb out k =
   let n = depth in
-  let acc = ref centre in
+  let r = ref cr and g = ref cg and b = ref cb in
   for j = 0 to n - 1 do
     for i = 0 to n - 1 do
       let dx = ((float_of_int i +. 0.5) /. float_of_int n) -. 0.5
       and dy = ((float_of_int j +. 0.5) /. float_of_int n) -. 0.5 in
-      acc :=
-        Color.add !acc (sample (float_of_int x +. 0.5 +. dx) (float_of_int y +. 0.5 +. dy))
+      let c : Color.t = sample (float_of_int x +. 0.5 +. dx) (float_of_int y +. 0.5 +. dy) in
+      r := !r +. c.r;
+      g := !g +. c.g;
+      b := !b +. c.b
     done
   done;
-  Color.scale (1. /. float_of_int ((n * n) + 1)) !acc
+  let s = 1. /. float_of_int ((n * n) + 1) in
+  Float.Array.unsafe_set out (3 * k) (s *. !r);
+  Float.Array.unsafe_set out ((3 * k) + 1) (s *. !g);
+  Float.Array.unsafe_set out ((3 * k) + 2) (s *. !b)
+
+let supersample ~depth sample x y (centre : Color.t) =
+  let out = Float.Array.create 3 in
+  supersample_into ~depth sample x y centre.r centre.g centre.b out 0;
+  Color.make (Float.Array.get out 0) (Float.Array.get out 1) (Float.Array.get out 2)
+
+(* One block's samples, per domain, flat: colours stored in an array of
+   records would be promoted by every minor collection that finds the
+   block half done (the arrays, too large for the minor heap, live in
+   the major one), and the major collector would mark and sweep them. *)
+type buffers = { value : Float.Array.t; enc : Float.Array.t; done_ : Bytes.t }
+
+let cells = (block + 1) * (block + 1)
+
+let buffers_key =
+  Scratch.key (fun () ->
+      { value = Float.Array.create (3 * cells); enc = Float.Array.create (3 * cells); done_ = Bytes.create cells })
+
+let[@inline] get a k c = Float.Array.unsafe_get a ((3 * k) + c)
 
 (* One block: a (w+1) x (h+1) buffer whose row 0 and column 0 are the
    neighbours above and left of the block (outside the image at its
@@ -27,25 +54,34 @@ let supersample ~depth sample x y (centre : Color.t) =
 let render_block ~threshold ~depth sample img (t : Render.tile) =
   let w = t.x1 - t.x0 and h = t.y1 - t.y0 in
   let bw = w + 1 in
-  let value = Array.make (bw * (h + 1)) Color.black in
-  let enc = Array.make (bw * (h + 1)) Color.black in
-  let done_ = Array.make (bw * (h + 1)) false in
+  let { value; enc; done_ } = Scratch.get buffers_key in
+  Bytes.fill done_ 0 (bw * (h + 1)) '\000';
+  let set_encoded k =
+    Float.Array.unsafe_set enc (3 * k) (encode1 (get value k 0));
+    Float.Array.unsafe_set enc ((3 * k) + 1) (encode1 (get value k 1));
+    Float.Array.unsafe_set enc ((3 * k) + 2) (encode1 (get value k 2))
+  in
   let idx i j = (j * bw) + i in
   let trace i j =
     let x = t.x0 + i - 1 and y = t.y0 + j - 1 in
-    let c = sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) in
+    let c : Color.t = sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) in
     let k = idx i j in
-    value.(k) <- c;
-    enc.(k) <- encode c
+    Float.Array.unsafe_set value (3 * k) c.r;
+    Float.Array.unsafe_set value ((3 * k) + 1) c.g;
+    Float.Array.unsafe_set value ((3 * k) + 2) c.b;
+    set_encoded k
   in
   let super i j =
     let k = idx i j in
-    if not done_.(k) then begin
-      done_.(k) <- true;
-      let c = supersample ~depth sample (t.x0 + i - 1) (t.y0 + j - 1) value.(k) in
-      value.(k) <- c;
-      enc.(k) <- encode c
+    if Bytes.unsafe_get done_ k = '\000' then begin
+      Bytes.unsafe_set done_ k '\001';
+      supersample_into ~depth sample (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1)
+        (get value k 2) value k;
+      set_encoded k
     end
+  in
+  let differ k k' =
+    differs3 threshold (get enc k 0) (get enc k 1) (get enc k 2) (get enc k' 0) (get enc k' 1) (get enc k' 2)
   in
   for i = 1 to w do trace i 0 done;
   for j = 1 to h do
@@ -53,8 +89,8 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
     for i = 1 to w do
       trace i j;
       let k = idx i j in
-      let left = differs threshold enc.(idx (i - 1) j) enc.(k) in
-      let up = differs threshold enc.(idx i (j - 1)) enc.(k) in
+      let left = differ (idx (i - 1) j) k in
+      let up = differ (idx i (j - 1)) k in
       if left then super (i - 1) j;
       if up then super i (j - 1);
       if left || up then super i j
@@ -62,8 +98,8 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
   done;
   for j = 1 to h do
     for i = 1 to w do
-      let c = value.(idx i j) in
-      Image.set img (t.x0 + i - 1) (t.y0 + j - 1) c.r c.g c.b
+      let k = idx i j in
+      Image.set img (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1) (get value k 2)
     done
   done
 

@@ -40,10 +40,34 @@ let determinism () =
   Alcotest.(check bool) "1 and 2 domains give the same bits" true !same;
   Alcotest.(check bool) "some pixels were supersampled" true (!changed > 20)
 
+(* The block buffers hold samples flat: an anti-aliased render keeps no
+   young colour in an older block, so minor collections promote nothing
+   per pixel (colours kept in arrays of records were promoted: some 8
+   words per pixel, and the major collector then marked and swept them).
+   The sample function makes garbage, so that collections happen
+   mid-block. *)
+let promotion () =
+  let sample px py =
+    for i = 1 to 40 do
+      ignore (Sys.opaque_identity (ref i))
+    done;
+    Color.make (Float.rem px 7. /. 7.) (Float.rem py 5. /. 5.) 0.5
+  in
+  let width = 256 and height = 256 in
+  ignore (Aa.render ~domains:1 ~width ~height ~threshold:0.1 ~depth:2 sample);
+  let before = (Gc.quick_stat ()).promoted_words in
+  let collections = (Gc.quick_stat ()).minor_collections in
+  ignore (Aa.render ~domains:1 ~width ~height ~threshold:0.1 ~depth:2 sample);
+  let s = Gc.quick_stat () in
+  let per_pixel = (s.promoted_words -. before) /. float (width * height) in
+  Alcotest.(check bool) "minor collections ran during the render" true (s.minor_collections - collections > 5);
+  if per_pixel > 0.05 then Alcotest.failf "%.3f words promoted per pixel (at most 0.05; %d collections)" per_pixel (s.minor_collections - collections)
+
 let tests =
   ( "aa",
     [
       Alcotest.test_case "supersampling grid" `Quick supersample;
       Alcotest.test_case "encoded threshold" `Quick threshold;
       Alcotest.test_case "1 vs 2 domains" `Quick determinism;
+      Alcotest.test_case "nothing promoted per pixel" `Quick promotion;
     ] )
