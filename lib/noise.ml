@@ -57,7 +57,7 @@ let dnoise p =
 
 let turbulence ~octaves ~omega ~lambda p =
   let acc = ref Vec3.zero and amp = ref 1. and freq = ref 1. in
-  for _ = 1 to max 1 octaves do
+  for _ = 1 to Int.max 1 octaves do
     acc := Vec3.madd !acc !amp (dnoise (Vec3.scale !freq p));
     amp := !amp *. omega;
     freq := !freq *. lambda
@@ -66,7 +66,7 @@ let turbulence ~octaves ~omega ~lambda p =
 
 let fractal ~octaves p =
   let acc = ref 0. and f = ref 1. in
-  for _ = 1 to max 1 octaves do
+  for _ = 1 to Int.max 1 octaves do
     acc := !acc +. (Float.abs (snoise (Vec3.scale !f p)) /. !f);
     f := !f *. 2.
   done;

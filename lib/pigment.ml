@@ -106,5 +106,5 @@ let rec eval p point =
   | Blocks { pattern; cells; xform } ->
       let i = int_of_float (Pattern.value pattern (Transform.inv_point xform point)) in
       let n = Array.length cells in
-      if n = 0 then Color.opaque Color.black else eval cells.(min (n - 1) (max 0 i)) point
+      if n = 0 then Color.opaque Color.black else eval cells.(Int.min (n - 1) (Int.max 0 i)) point
   | Image_map { image; xform } -> image_eval image (Transform.inv_point xform point)

@@ -96,8 +96,8 @@ let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
   let img = Image.create_unset (r.x1 - r.x0) (r.y1 - r.y0) in
   let cancelled = Option.value cancelled ~default:(fun () -> false) in
   run_tiles ~domains ?progress ~cancelled ?order_seed ~width ~height ~size:16 (fun t ->
-      for y = max t.y0 r.y0 to min t.y1 r.y1 - 1 do
-        for x = max t.x0 r.x0 to min t.x1 r.x1 - 1 do
+      for y = Int.max t.y0 r.y0 to Int.min t.y1 r.y1 - 1 do
+        for x = Int.max t.x0 r.x0 to Int.min t.x1 r.x1 - 1 do
           (* a pixel can take long (mc, many samples): stop between pixels *)
           if cancelled () then raise Cancelled;
           let c : Color.t = f x y in

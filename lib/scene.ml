@@ -242,16 +242,17 @@ let occluder_leaf a sc r tmin tmax i =
 
 let occluders_in s sc tmin tmax opaque g =
   let a = s.accel in
-  sc.occ <- g;
-  sc.opaque <- opaque;
+  (* written only when they change (ray after ray they are the same
+     closed functions, and each write is a [caml_modify]); the last ones
+     stay until the next query *)
+  if sc.occ != g then sc.occ <- g;
+  if sc.opaque != opaque then sc.opaque <- opaque;
   let ok = ref true and i = ref 0 in
   while !ok && !i < Array.length a.infinite do
     ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin tmax sc.h sc.f true opaque g;
     incr i
   done;
   let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin tmax a sc occluder_leaf in
-  sc.occ <- (fun _ _ -> false);
-  sc.opaque <- Object.never;
   sc.busy <- false;
   ok
 

@@ -21,7 +21,7 @@ let blend m point =
   let n = Array.length m.entries in
   if n = 0 then [ (1., default) ]
   else if Pattern.is_block m.pattern.kind then
-    [ (1., snd m.entries.(max 0 (min (n - 1) (int_of_float v)))) ]
+    [ (1., snd m.entries.(Int.max 0 (Int.min (n - 1) (int_of_float v)))) ]
   else
     let v0, t0 = m.entries.(0) in
     if v <= v0 then [ (1., t0) ]

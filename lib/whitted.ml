@@ -28,7 +28,7 @@ let has_fade (i : Interior.t) = i.fade_distance <> 0. && i.fade_power <> 0.
 type length = { mutable len : float }
 
 type shadow_walk = {
-  mutable acc : Color.t;
+  acc : Color.acc;  (** the light let through so far *)
   mutable faders : (Object.t * float) list;
   ray : Ray.scratch;
   l : Light.dir;
@@ -37,20 +37,22 @@ type shadow_walk = {
 
 let shadow_key =
   Scratch.key (fun () ->
-      { acc = white; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. } })
+      { acc = Color.acc 1.; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. } })
 
 let shadow_hit (o : Object.t) t =
   let w = Scratch.get shadow_key in
+  let a = w.acc in
   if Texture.blocks_light o.texture then begin
-    w.acc <- black;
+    Color.acc_set a 0. 0. 0.;
     false
   end
   else begin
     let r = w.ray in
     let q = Vec3.make (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz)) in
-    w.acc <- mul w.acc (texture_filter o.texture q);
+    let f = texture_filter o.texture q in
+    Color.acc_set a (a.ar *. f.r) (a.ag *. f.g) (a.ab *. f.b);
     if has_fade o.interior then w.faders <- (o, t) :: w.faders;
-    not (is_black w.acc)
+    not (Color.acc_is_black a)
   end
 
 (* where [shadow_hit] is false whatever the crossing *)
@@ -59,41 +61,45 @@ let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
 (* Light reaching the origin of the walk's ray from [w.seg.len] along its
    unit direction: the product of (f*P + t) of every surface crossed, with
    interior fade over the lengths travelled inside fading objects; black
-   when something opaque blocks. *)
-let shadow_filter (s : Scene.t) (w : shadow_walk) =
+   when something opaque blocks. Left in [w.acc]: stored in the walk's
+   own fields, nothing is allocated or written through [caml_modify]
+   unless a crossing lets light through. *)
+let shadow_into (s : Scene.t) (w : shadow_walk) =
   let dist = w.seg.len in
-  w.acc <- white;
-  w.faders <- [];
+  Color.acc_set w.acc 1. 1. 1.;
+  if w.faders != [] then w.faders <- [];
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_opaque shadow_hit in
   let faders = w.faders in
-  w.faders <- [];
-  if not visible then black
-  else if (match faders with [] -> true | _ :: _ -> false) then w.acc
-  else begin
-    let acc = ref w.acc in
-    let r = w.ray in
-    let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
-    (* group crossings by object; inside segments between them get faded *)
-    let seen = ref [] in
-    List.iter
-      (fun ((o : Object.t), _) ->
-        if not (List.memq o !seen) then begin
-          seen := o :: !seen;
-          let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) faders in
-          let ts = List.sort Float.compare ts in
-          let bounds = (0. :: ts) @ [ dist ] in
-          let rec segs = function
-            | a :: (b :: _ as rest) ->
-                if b > a && Object.inside o (Ray.at ray (0.5 *. (a +. b))) then
-                  acc := mul !acc (Interior.fade o.interior (b -. a));
-                segs rest
-            | _ -> ()
-          in
-          segs bounds
-        end)
-      faders;
-    !acc
-  end
+  match faders with
+  | [] -> if not visible then Color.acc_set w.acc 0. 0. 0.
+  | _ :: _ when not visible ->
+      w.faders <- [];
+      Color.acc_set w.acc 0. 0. 0.
+  | _ :: _ ->
+      w.faders <- [];
+      let acc = ref (Color.of_acc w.acc) in
+      let r = w.ray in
+      let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
+      (* group crossings by object; inside segments between them get faded *)
+      let seen = ref [] in
+      List.iter
+        (fun ((o : Object.t), _) ->
+          if not (List.memq o !seen) then begin
+            seen := o :: !seen;
+            let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) faders in
+            let ts = List.sort Float.compare ts in
+            let bounds = (0. :: ts) @ [ dist ] in
+            let rec segs = function
+              | a :: (b :: _ as rest) ->
+                  if b > a && Object.inside o (Ray.at ray (0.5 *. (a +. b))) then
+                    acc := mul !acc (Interior.fade o.interior (b -. a));
+                  segs rest
+              | _ -> ()
+            in
+            segs bounds
+          end)
+        faders;
+      Color.acc_set w.acc !acc.r !acc.g !acc.b
 
 let[@inline] load_ray (r : Ray.scratch) (p : Vec3.t) x y z =
   r.ox <- p.x;
@@ -103,24 +109,28 @@ let[@inline] load_ray (r : Ray.scratch) (p : Vec3.t) x y z =
   r.dy <- y;
   r.dz <- z
 
-(* Shadow colour of one light at [p], whose direction is in [w.l]: area
-   lights average their samples. *)
+(* Shadow colour of one light at [p], whose direction is in [w.l], into
+   [w.acc]: area lights average their samples. *)
 let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
   match light.area with
   | None ->
       let l = w.l in
       load_ray w.ray p l.lx l.ly l.lz;
       w.seg.len <- l.dist;
-      shadow_filter s w
+      shadow_into s w
   | Some a ->
-      Light.average_area a (fun i j ->
-          let q = Light.sample_position light a p i j in
-          let v = Vec3.sub q p in
-          let d = Vec3.length v in
-          let k = 1. /. d in
-          load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
-          w.seg.len <- d;
-          shadow_filter s w)
+      let c =
+        Light.average_area a (fun i j ->
+            let q = Light.sample_position light a p i j in
+            let v = Vec3.sub q p in
+            let d = Vec3.length v in
+            let k = 1. /. d in
+            load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
+            w.seg.len <- d;
+            shadow_into s w;
+            Color.of_acc w.acc)
+      in
+      Color.acc_set w.acc c.r c.g c.b
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
 let metallic_tint m cos_angle (pc : Color.t) =
@@ -155,12 +165,12 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
   let att = if front || back then Light.attenuation light p else 0. in
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
-    let lr, lg, lb =
-      if light.shadowless then (lr, lg, lb)
-      else
-        let sh = light_shadow s w light p in
-        (lr *. sh.r, lg *. sh.g, lb *. sh.b)
-    in
+    (* no tuple: the channels stay unboxed *)
+    if not light.shadowless then light_shadow s w light p;
+    let sh = w.acc in
+    let lr = if light.shadowless then lr else lr *. sh.ar
+    and lg = if light.shadowless then lg else lg *. sh.ag
+    and lb = if light.shadowless then lb else lb *. sh.ab in
     if not (lr = 0. && lg = 0. && lb = 0.) then
       if back then begin
         let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
@@ -394,14 +404,13 @@ and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) 
           let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))
           and lb = dl.ab +. (alpha *. (pc.b *. ((f.ambient.b *. amb.b) +. f.emission.b))) in
-          let lr, lg, lb =
-            if refl && Finish.has_reflection f then begin
-              let rc = top.rf in
-              reflection s f pc n d p level (weight *. Color.acc_max w) media eta rc;
-              (lr +. rc.ar, lg +. rc.ag, lb +. rc.ab)
-            end
-            else (lr, lg, lb)
-          in
+          (* no tuple: the channels stay unboxed *)
+          let refl = refl && Finish.has_reflection f in
+          let rc = top.rf in
+          if refl then reflection s f pc n d p level (weight *. Color.acc_max w) media eta rc;
+          let lr = if refl then lr +. rc.ar else lr
+          and lg = if refl then lg +. rc.ag else lg
+          and lb = if refl then lb +. rc.ab else lb in
           Color.acc_set acc (acc.ar +. (w.ar *. lr)) (acc.ag +. (w.ag *. lg)) (acc.ab +. (w.ab *. lb));
           Color.acc_set w
             (w.ar *. ((pig.filter *. pc.r) +. pig.transmit))
