@@ -41,6 +41,19 @@ let default_scene () =
 let units =
   [
     Alcotest.test_case "8x8 whitted image equals the computed colours" `Quick computed_8x8;
+    Alcotest.test_case "the parallel loop runs every index once, whatever the chunks" `Quick (fun () ->
+        (* tasks take up to 4 indices: sizes around each chunk boundary *)
+        List.iter
+          (fun (domains, n) ->
+            let seen = Array.init n (fun _ -> Atomic.make 0) in
+            Render.parallel ~domains n (fun i -> Atomic.incr seen.(i));
+            Array.iteri
+              (fun i a ->
+                if Atomic.get a <> 1 then
+                  Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
+              seen)
+          [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (3, 383); (3, 385);
+            (2, 7500); (4, 1875); (4, 1999) ]);
     Alcotest.test_case "whitted: 1 and 2 domains give identical images" `Quick (fun () ->
         let text = default_scene () in
         let a = Helpers.render_whitted ~domains:1 ~width:48 ~height:36 text in
