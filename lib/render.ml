@@ -24,17 +24,24 @@ let shuffle seed a =
     a.(j) <- x
   done
 
-(* Every minor collection stops all domains at once: with each domain
-   allocating into the default 256k-word minor heap, the stops are
-   frequent, and with more domains than cores a descheduled domain holds
-   the others at each one. A larger minor heap in every rendering domain
-   (Gc.set acts on the calling domain only) makes them rare; the calling
-   domain gets its own size back afterwards. One domain never waits for
-   another: it keeps its heap (a smaller one stays in cache). 8 MB: on the
-   default scene at 1600x1200 on 2 domains, 2 MB took 0.42 s, 4 and 8 MB
-   0.38 s, 16 MB 0.39 s. With more domains than cores, 16 MB (RTIOW in
-   mc mode on 4 domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB;
-   the snowman was slower with 64 or 256 MB). *)
+(* Every minor collection stops all domains at once, and with more
+   domains than cores a descheduled domain holds the others at each one:
+   a larger minor heap in every rendering domain (Gc.set acts on the
+   calling domain only) makes the stops rare; the calling domain gets its
+   own size back afterwards. One domain never waits for another: it keeps
+   its heap. With more domains than cores, 16 MB (RTIOW in mc mode on 4
+   domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB; the snowman was
+   slower with 64 or 256 MB).
+   On as many domains as cores, what counts is that each domain's heap is
+   allocated again once the domain runs, more than its size: on 2 cores,
+   2 domains render the snowman (1600x1200) in 0.35-0.37 s on the heaps
+   they start with, 0.23-0.25 s on heaps regrown at the first tile,
+   whether by one page (median of 10 alternated runs 0.234 s) or to 8 MB
+   (0.239 s); RTIOW in mc mode, 650 collections of 2 MB heaps, 0.844 s
+   against 0.850 s with 8 MB. Why the heaps domains are created with are
+   slower is not known (the time goes to the rendering code, not to the
+   collector, and both domains are slowed). 8 MB is kept: where more
+   cores wait at each stop, fewer stops count more. *)
 let minor_words domains =
   if domains > Domain.recommended_domain_count () then 2 * 1024 * 1024 (* 16 MB *)
   else 1024 * 1024 (* 8 MB per domain *)
