@@ -34,11 +34,14 @@ let sphere_text n =
   done;
   Buffer.contents b
 
-let compile text =
+(* BVHs are built on as many domains as the render uses *)
+let par domains = if domains > 1 then Some (Render.parallel ~domains) else None
+
+let compile ?(domains = 1) text =
   match Camlray_lang.Parse.string text with
   | Error d -> failwith (Camlray_lang.Diag.to_string d)
   | Ok sdl -> (
-      match Camlray_lang.Compile.scene sdl with
+      match Camlray_lang.Compile.scene ?par:(par domains) sdl with
       | Ok s -> s
       | Error d -> failwith (Camlray_lang.Diag.to_string d))
 
@@ -50,7 +53,7 @@ let trace ~width ~height ~domains (s : Scene.t) =
   List.fold_left Float.min infinity
     (List.init 7 (fun _ -> snd (time (fun () -> Render.image ~domains ~width ~height (Whitted.pixel s ~width ~height)))))
 
-let direct_spheres n =
+let direct_spheres ?(domains = 1) n =
   let base = compile header in
   let rng = Random.State.make [| 1; n |] in
   let r = 0.5 *. (float n ** (-1. /. 3.)) in
@@ -61,17 +64,17 @@ let direct_spheres n =
       let c () = Random.State.float rng 2. -. 1. in
       let x = c () in let y = c () in let z = c () in
       Object.make ~texture (Shape.sphere (Vec3.make x y z) r)) in
-  { base with objects; accel = Scene.accelerate objects }
+  { base with objects; accel = Scene.accelerate ?par:(par domains) objects }
 
 let spheres ~width ~height ~domains n =
   let s, t_all =
-    if Sys.getenv_opt "CAMLRAY_BENCH_DIRECT" <> None then time (fun () -> direct_spheres n)
+    if Sys.getenv_opt "CAMLRAY_BENCH_DIRECT" <> None then time (fun () -> direct_spheres ~domains n)
     else
       let text = sphere_text n in
-      time (fun () -> compile text)
+      time (fun () -> compile ~domains text)
   in
   (* the compile step includes the scene BVH: time it alone and subtract *)
-  let _, t_bvh = time (fun () -> Scene.accelerate s.objects) in
+  let _, t_bvh = time (fun () -> Scene.accelerate ?par:(par domains) s.objects) in
   { kind = "spheres"; count = n; parse_s = Float.max 0. (t_all -. t_bvh); build_s = t_bvh;
     trace_s = trace ~width ~height ~domains s; bytes_per_prim = nan }
 
@@ -110,13 +113,13 @@ let mesh_data kind n =
 let mesh ~width ~height ~domains kind n =
   let verts, faces = mesh_data kind n in
   let m, t_build =
-    time (fun () -> Mesh.make ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None)
+    time (fun () -> Mesh.make ~par:(par domains) ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None)
   in
   let tris = Mesh.triangles m in
   let texture = Texture.plain (Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. }) Finish.default in
   let base = compile header in
   let objects = [| Object.make ~texture (Shape.Mesh m) |] in
-  let s = { base with objects; accel = Scene.accelerate objects } in
+  let s = { base with objects; accel = Scene.accelerate ?par:(par domains) objects } in
   { kind = (match kind with `Sphere -> "sphere mesh" | `Terrain -> "terrain mesh"); count = tris;
     parse_s = 0.; build_s = t_build; trace_s = trace ~width ~height ~domains s;
     bytes_per_prim = float (Mesh.bytes m) /. float tris }

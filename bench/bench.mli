@@ -17,7 +17,7 @@ val run : ?sizes:int list -> ?width:int -> ?height:int -> ?domains:int -> unit -
 (** Run every workload at every size (default 10, 10^3, 10^5, 10^6) at
     [width] x [height] (default 320x240) on [domains] domains (default 1). *)
 
-val direct_spheres : int -> Camlray.Scene.t
+val direct_spheres : ?domains:int -> int -> Camlray.Scene.t
 (** The spheres workload built in code, without parsing (used when
     CAMLRAY_BENCH_DIRECT is set, to skip the parse of 10^6 spheres). *)
 

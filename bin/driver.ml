@@ -62,10 +62,12 @@ let load ~options scene =
       if Sys.is_directory path then fail "cannot read scene %s: it is a folder" path;
       Parse.file ~options path
 
-let compile ~options scene =
+let compile ?domains ~options scene =
   match load ~options scene with
   | Error d -> Error d
-  | Ok (sdl, files) -> Result.map (fun s -> (s, files)) (Compile.scene sdl)
+  | Ok (sdl, files) ->
+      let par = Option.map (fun domains -> Render.parallel ~domains) domains in
+      Result.map (fun s -> (s, files)) (Compile.scene ?par sdl)
 
 let output_path o =
   match o.output with
@@ -158,7 +160,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
       limits = o.limits; image_width = o.width;
       image_height = o.height; clock; frame_number = frame }
   in
-  match compile ~options o.scene with
+  let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
+  match compile ~domains ~options o.scene with
   | Error d ->
       prerr_string (Diag.to_string d);
       1
@@ -177,7 +180,6 @@ let render_frame o ~clock ~frame ~out ~t0 =
           if String.lowercase_ascii (Filename.extension out) <> ".png" then
             fail "a partial render (--region) is written as PNG, which records its placement: %s" out)
         region;
-      let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
       let scene =
         match (o.mode, o.depth) with
         | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
@@ -308,7 +310,7 @@ let check path include_dirs allow_read limits frame_number clock =
     { Parse.default_options with include_dirs; allow_read; limits; frame_number; clock }
   in
   try
-    match compile ~options (Some path) with
+    match compile ~domains:(Domain.recommended_domain_count ()) ~options (Some path) with
     | Error d ->
         prerr_string (Diag.to_string d);
         1

@@ -29,6 +29,9 @@ let[@inline] fmin (a : float) b = if a < b then a else b
 let[@inline] fmax (a : float) b = if a > b then a else b
 let bins = 16
 
+(* fewer primitives are built on one domain *)
+let parallel_min = 1 lsl 14
+
 let half_area x0 y0 z0 x1 y1 z1 =
   let dx = x1 -. x0 and dy = y1 -. y0 and dz = z1 -. z0 in
   (dx *. dy) +. (dy *. dz) +. (dz *. dx)
@@ -37,28 +40,80 @@ let half_area x0 y0 z0 x1 y1 z1 =
 let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 else x
 let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
 
-let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost boxes =
-  let n = Float.Array.length boxes / 6 in
-  let cost = match cost with Some c -> c | None -> Float.Array.make n 1. in
-  if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
-  let prims = Array.init n Fun.id in
-  let cent = Float.Array.create (3 * n) in
-  for i = 0 to n - 1 do
-    for a = 0 to 2 do
-      fset cent ((3 * i) + a) (0.5 *. (fget boxes ((6 * i) + a) +. fget boxes ((6 * i) + 3 + a)))
-    done
-  done;
-  let cap = max 1 (2 * n) in
-  let nodes = Float.Array.create (8 * cap) in
-  let count = ref 0 and max_depth = ref 1 in
-  (* bin scratch: per bin box (6) and count *)
-  let bbox = Float.Array.create (6 * bins) and bcount = Array.make bins 0 in
-  let bcost = Float.Array.create bins and rcost = Float.Array.create bins in
-  let rarea = Float.Array.create bins and rcount = Array.make bins 0 in
-  let rec node lo hi depth =
-    let k = !count in
-    incr count;
-    if depth > !max_depth then max_depth := depth;
+(* What a build reads: the primitives' boxes, centroids and costs, and
+   the permutation it sorts in place (each subtree owns a range of it). *)
+type input = {
+  leaf_size : int;
+  node_cost : float;
+  cost : Float.Array.t;
+  boxes : Float.Array.t;
+  cent : Float.Array.t;
+  prims : int array;
+}
+
+(* One builder per task: bin scratch, and the nodes it has written,
+   numbered depth first from 0. A range of at most [defer] primitives is
+   not built but left as a placeholder node (slot 7 = 0, slot 6 = its
+   index in [pending]) for a task of its own. *)
+type builder = {
+  mutable buf : Float.Array.t;
+  mutable count : int;
+  mutable max_depth : int;
+  defer : int;
+  mutable pending : (int * int * int) list;  (** lo, hi, depth; last deferred first *)
+  mutable npending : int;
+  bbox : Float.Array.t;
+  bcount : int array;
+  bcost : Float.Array.t;
+  rcost : Float.Array.t;
+  rarea : Float.Array.t;
+  rcount : int array;
+}
+
+let builder ~defer cap =
+  {
+    buf = Float.Array.create (8 * max 1 cap);
+    count = 0;
+    max_depth = 1;
+    defer;
+    pending = [];
+    npending = 0;
+    bbox = Float.Array.create (6 * bins);
+    bcount = Array.make bins 0;
+    bcost = Float.Array.create bins;
+    rcost = Float.Array.create bins;
+    rarea = Float.Array.create bins;
+    rcount = Array.make bins 0;
+  }
+
+let placeholder = 0.
+
+(* the node [k] is about to be written *)
+let reserve_node bld =
+  let k = bld.count in
+  if 8 * (k + 1) > Float.Array.length bld.buf then begin
+    let a = Float.Array.create (2 * Float.Array.length bld.buf) in
+    Float.Array.blit bld.buf 0 a 0 (8 * k);
+    bld.buf <- a
+  end;
+  bld.count <- k + 1;
+  k
+
+let rec node inp bld lo hi depth =
+  if hi - lo <= bld.defer then begin
+    let k = reserve_node bld in
+    fset bld.buf ((8 * k) + 6) (float bld.npending);
+    fset bld.buf ((8 * k) + 7) placeholder;
+    bld.pending <- (lo, hi, depth) :: bld.pending;
+    bld.npending <- bld.npending + 1;
+    k
+  end
+  else begin
+    let { leaf_size; node_cost; cost; boxes; cent; prims } = inp in
+    let { bbox; bcount; bcost; rcost; rarea; rcount; _ } = bld in
+    let k = reserve_node bld in
+    let nodes = bld.buf in
+    if depth > bld.max_depth then bld.max_depth <- depth;
     let bx0 = ref infinity and by0 = ref infinity and bz0 = ref infinity in
     let bx1 = ref neg_infinity and by1 = ref neg_infinity and bz1 = ref neg_infinity in
     let cx0 = ref infinity and cy0 = ref infinity and cz0 = ref infinity in
@@ -101,7 +156,7 @@ let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost boxes =
     (if m <= 1 then leaf ()
     else if not (ext > 0.) then
       if m <= leaf_size then leaf ()
-      else split k lo hi (lo + (m / 2)) axis depth
+      else split inp bld k lo hi (lo + (m / 2)) axis depth
     else begin
       (* bin the centroids along the widest axis, then sweep for the SAH *)
       Array.fill bcount 0 bins 0;
@@ -168,7 +223,7 @@ let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost boxes =
       (* a node's walk costs [node_cost] primitive tests of cost 1 *)
       let split_cost = !best +. (node_cost *. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1) in
       if m <= leaf_size && split_cost >= leaf_cost then leaf ()
-      else if !best = infinity then split k lo hi (lo + (m / 2)) axis depth
+      else if !best = infinity then split inp bld k lo hi (lo + (m / 2)) axis depth
       else begin
         (* partition prims.(lo..hi-1) by bin <= best_b *)
         let i = ref lo and j = ref (hi - 1) in
@@ -182,26 +237,83 @@ let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost boxes =
           end
         done;
         let mid = if !i = lo || !i = hi then lo + (m / 2) else !i in
-        split k lo hi mid axis depth
+        split inp bld k lo hi mid axis depth
       end
     end);
     k
-  and split k lo hi mid axis depth =
-    ignore (node lo mid (depth + 1));
-    let r = node mid hi (depth + 1) in
-    fset nodes ((8 * k) + 6) (float r);
-    fset nodes ((8 * k) + 7) (float (-(axis + 1)))
-  in
-  if n > 0 then ignore (node 0 n 1);
-  let c = !count in
-  let out = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (8 * c) in
-  for k = 0 to c - 1 do
+  end
+
+and split inp bld k lo hi mid axis depth =
+  ignore (node inp bld lo mid (depth + 1));
+  let r = node inp bld mid hi (depth + 1) in
+  (* the nodes may have moved to a larger array *)
+  fset bld.buf ((8 * k) + 6) (float r);
+  fset bld.buf ((8 * k) + 7) (float (-(axis + 1)))
+
+(* [par n f] runs [f 0] ... [f (n-1)], in any order or at once. *)
+let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost ?par boxes =
+  let n = Float.Array.length boxes / 6 in
+  let cost = match cost with Some c -> c | None -> Float.Array.make n 1. in
+  if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
+  let prims = Array.init n Fun.id in
+  let cent = Float.Array.create (3 * n) in
+  for i = 0 to n - 1 do
     for a = 0 to 2 do
-      out.{(8 * k) + a} <- down (fget nodes ((8 * k) + a));
-      out.{(8 * k) + 3 + a} <- up (fget nodes ((8 * k) + 3 + a))
+      fset cent ((3 * i) + a) (0.5 *. (fget boxes ((6 * i) + a) +. fget boxes ((6 * i) + 3 + a)))
+    done
+  done;
+  let inp = { leaf_size; node_cost; cost; boxes; cent; prims } in
+  (* In parallel, the top of the tree is built first, leaving ranges of
+     at most n/16 primitives (at least 16 tasks) to tasks of their own;
+     the tasks' nodes are then spliced in where their placeholders are.
+     The tree is the same node for node: a subtree depends only on its
+     own range of the permutation. *)
+  let defer = match par with Some _ when n >= parallel_min -> n / 16 | _ -> 0 in
+  let top = builder ~defer (if defer = 0 then 2 * n else 64) in
+  if n > 0 then ignore (node inp top 0 n 1);
+  let tasks = Array.of_list (List.rev top.pending) in
+  let subs = Array.make (Array.length tasks) top in
+  (match par with
+  | Some par when Array.length tasks > 0 ->
+      par (Array.length tasks) (fun t ->
+          let lo, hi, depth = tasks.(t) in
+          let b = builder ~defer:0 (2 * (hi - lo)) in
+          ignore (node inp b lo hi depth);
+          subs.(t) <- b)
+  | _ -> ());
+  (* final position of each top node: a placeholder stands for its task's
+     nodes *)
+  let size k =
+    let g = fget top.buf ((8 * k) + 7) in
+    if g = placeholder then subs.(int_of_float (fget top.buf ((8 * k) + 6))).count else 1
+  in
+  let at = Array.make (top.count + 1) 0 in
+  for k = 0 to top.count - 1 do
+    at.(k + 1) <- at.(k) + size k
+  done;
+  let c = at.(top.count) in
+  let out = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (8 * c) in
+  let emit src j dst ~child =
+    for a = 0 to 2 do
+      out.{(8 * dst) + a} <- down (fget src ((8 * j) + a));
+      out.{(8 * dst) + 3 + a} <- up (fget src ((8 * j) + 3 + a))
     done;
-    out.{(8 * k) + 6} <- fget nodes ((8 * k) + 6);
-    out.{(8 * k) + 7} <- fget nodes ((8 * k) + 7)
+    let g = fget src ((8 * j) + 7) in
+    let l = fget src ((8 * j) + 6) in
+    out.{(8 * dst) + 6} <- (if g < 0. then float (child (int_of_float l)) else l);
+    out.{(8 * dst) + 7} <- g
+  in
+  let max_depth = ref top.max_depth in
+  for k = 0 to top.count - 1 do
+    if fget top.buf ((8 * k) + 7) = placeholder then begin
+      let b = subs.(int_of_float (fget top.buf ((8 * k) + 6))) in
+      if b.max_depth > !max_depth then max_depth := b.max_depth;
+      let base = at.(k) in
+      for j = 0 to b.count - 1 do
+        emit b.buf j (base + j) ~child:(fun r -> base + r)
+      done
+    end
+    else emit top.buf k at.(k) ~child:(fun r -> at.(r))
   done;
   {
     nodes = out;
@@ -388,10 +500,10 @@ let nearest b r tmin h f =
 
 let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
 
-let renumber b =
+let renumber (b : t) =
   (* a tree already renumbered calls back with positions: its order is
      the identity *)
   let order = if Array.length b.prims = b.n then Array.copy b.prims else Array.init b.n Fun.id in
   ({ b with prims = [||] }, order)
 
-let bytes b = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)
+let bytes (b : t) = (4 * Bigarray.Array1.dim b.nodes) + (8 * Array.length b.prims)

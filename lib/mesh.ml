@@ -53,7 +53,7 @@ let smooth_normal n1 n2 n3 u v =
 
 let vert verts i = Vec3.make (fget verts (3 * i)) (fget verts ((3 * i) + 1)) (fget verts ((3 * i) + 2))
 
-let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
+let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
   let verts = Float.Array.map single verts in
   let normals = Float.Array.copy normals in
   for i = 0 to (Float.Array.length normals / 3) - 1 do
@@ -92,7 +92,7 @@ let make ~verts ~normals ~faces ~normal_faces ~inside_vector =
       Float.Array.set boxes ((6 * j) + 4) hi.y;
       Float.Array.set boxes ((6 * j) + 5) hi.z)
     keep;
-  let bvh, order = Bvh.renumber (Bvh.build boxes) in
+  let bvh, order = Bvh.renumber (Bvh.build ?par boxes) in
   let tris = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (9 * k) in
   Array.iteri
     (fun j i ->

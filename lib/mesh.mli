@@ -8,7 +8,7 @@
 type t
 
 val make :
-  verts:Float.Array.t -> normals:Float.Array.t -> faces:int array -> normal_faces:int array ->
+  par:(int -> (int -> unit) -> unit) option -> verts:Float.Array.t -> normals:Float.Array.t -> faces:int array -> normal_faces:int array ->
   inside_vector:Vec3.t option -> t
 (** [verts] and [normals] hold 3 floats per vertex / normal; [faces] 3
     vertex indices per triangle; [normal_faces] is either empty (flat
@@ -16,7 +16,8 @@ val make :
     [< 0] makes that triangle flat). Indices must be in range (the caller
     checks them); normals are normalised here. Degenerate triangles (zero area) are dropped; see
     {!triangles}. [inside_vector] enables the inside test (POV-Ray's rule:
-    odd crossings along it). *)
+    odd crossings along it). [par]: build the BVH in parallel with it
+    (see {!Bvh.build}; the same tree). *)
 
 val triangles : t -> int
 (** Number of triangles kept. *)

@@ -52,7 +52,7 @@ let test_cost (o : Object.t) =
     | Object.Prim (Shape.Torus _) -> 16.
     | Object.Prim (Shape.Mesh _) | Object.Union _ | Object.Merge _ | Object.Intersection _ -> 8.
 
-let accelerate objects =
+let accelerate ?par objects =
   let box (o : Object.t) =
     match o.bounds with
     | Some ((lo : Vec3.t), (hi : Vec3.t)) when Vec3.is_finite lo && Vec3.is_finite hi -> Some (lo, hi)
@@ -93,7 +93,7 @@ let accelerate objects =
     Float.min 8. (Float.max 2. (Float.log2 n -. 12.))
   in
   let cost = Float.Array.init (Array.length finite) (fun i -> test_cost finite.(i)) in
-  let bvh, order = Bvh.renumber (Bvh.build ~leaf_size:16 ~node_cost ~cost boxes) in
+  let bvh, order = Bvh.renumber (Bvh.build ~leaf_size:16 ~node_cost ~cost ?par boxes) in
   let finite = Array.map (fun i -> finite.(i)) order in
   let spheres = Float.Array.make (4 * Array.length finite) (-1.) in
   Array.iteri

@@ -26,8 +26,9 @@ type t = {
                       replacing [objects] *)
 }
 
-val accelerate : Object.t array -> accel
-(** Build the BVH (binned SAH) over the objects' world bounds. *)
+val accelerate : ?par:(int -> (int -> unit) -> unit) -> Object.t array -> accel
+(** Build the BVH (binned SAH) over the objects' world bounds; with [par],
+    in parallel (see {!Bvh.build}; the same tree). *)
 
 val make :
   ?sky:Sky.t -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->

@@ -110,6 +110,9 @@ end)
 let built : Shape.t Phys.t = Phys.create 16
 let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16
 
+(* how BVHs are built in parallel while a scene compiles (see [scene]) *)
+let par : (int -> (int -> unit) -> unit) option ref = ref None
+
 let rec mesh (o : Sdl.obj) (m : Sdl.mesh) =
   match Phys.find_opt built m with
   | Some s -> s
@@ -122,7 +125,7 @@ and build_mesh (o : Sdl.obj) (m : Sdl.mesh) =
   if Array.length m.faces / 3 > 1 lsl 23 then
     Diag.error o.loc "a mesh is limited to 2^23 (8388608) triangles, found %d" (Array.length m.faces / 3);
   let mm =
-    Mesh.make ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
+    Mesh.make ~par:!par ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
       ~inside_vector:m.inside_vector
   in
   let n = Array.length m.faces / 3 in
@@ -253,8 +256,11 @@ let rec top ctx (o : Sdl.obj) acc =
       List.fold_left (fun acc c -> top ctx' c acc) acc l
   | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
 
-let rec scene (s : Sdl.scene) =
-  Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts; Shapes.forget_textures ()) (fun () -> scene_ s)
+let rec scene ?par:p (s : Sdl.scene) =
+  par := p;
+  Fun.protect
+    ~finally:(fun () -> par := None; Phys.reset built; Phys.reset parts; Shapes.forget_textures ())
+    (fun () -> scene_ s)
 
 and scene_ (s : Sdl.scene) =
   try
@@ -295,7 +301,7 @@ and scene_ (s : Sdl.scene) =
     Ok
       {
         Scene.objects;
-        accel = Scene.accelerate objects;
+        accel = Scene.accelerate ?par:!par objects;
         lights = Array.of_list (List.rev !lights);
         camera;
         background = !background;

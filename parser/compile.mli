@@ -8,4 +8,6 @@ val camera : Sdl.camera_item list -> Camlray.Camera.t
     up/right, angle, look_at, orthographic sizing, then transforms in
     written order). *)
 
-val scene : Sdl.scene -> (Camlray.Scene.t, Diag.t) result
+val scene : ?par:(int -> (int -> unit) -> unit) -> Sdl.scene -> (Camlray.Scene.t, Diag.t) result
+(** [par]: build the BVHs of large meshes and of the scene in parallel
+    ({!Camlray.Render.parallel}); the trees are the same as without. *)

@@ -79,7 +79,7 @@ let gmesh_obj =
       let c () = Random.State.float st 3. -. 1.5 in
       let verts = Float.Array.init (9 * n) (fun _ -> c ()) in
       let m =
-        Mesh.make ~verts ~normals:(Float.Array.create 0) ~faces:(Array.init (3 * n) Fun.id)
+        Mesh.make ~par:None ~verts ~normals:(Float.Array.create 0) ~faces:(Array.init (3 * n) Fun.id)
           ~normal_faces:[||] ~inside_vector:None
       in
       Object.make ~xform:xf (Shape.Mesh m))
@@ -182,6 +182,34 @@ let units =
         let b = Bvh.build ~leaf_size:16 ~node_cost:64. ~cost bs in
         Alcotest.(check int) "the dear primitive alone" 1 (seen b 0.5);
         Alcotest.(check bool) "the cheap ones still packed" true (seen b 12.5 >= 8));
+    Alcotest.test_case "a parallel build gives the same tree, node for node" `Quick (fun () ->
+        (* random boxes, some of them identical (the midpoint fallback),
+           costs that vary; tasks run in reverse order, then on 2 and 3
+           domains *)
+        let st = Random.State.make [| 17 |] in
+        List.iter
+          (fun n ->
+            let bs = Float.Array.create (6 * n) in
+            for i = 0 to n - 1 do
+              let same = i mod 7 = 0 in
+              for a = 0 to 2 do
+                let lo = if same then 0.5 else Random.State.float st 100. in
+                Float.Array.set bs ((6 * i) + a) lo;
+                Float.Array.set bs ((6 * i) + 3 + a) (lo +. Random.State.float st 2.)
+              done
+            done;
+            let cost = Float.Array.init n (fun i -> 1. +. float (i mod 3)) in
+            let serial = Bvh.build ~leaf_size:8 ~node_cost:2. ~cost bs in
+            let reverse n f = for i = n - 1 downto 0 do f i done in
+            let check name par =
+              let b = Bvh.build ~leaf_size:8 ~node_cost:2. ~cost ~par bs in
+              Alcotest.(check int) (name ^ ": nodes") (Bvh.nodes serial) (Bvh.nodes b);
+              if b <> serial then Alcotest.failf "%d boxes, %s: a different tree" n name
+            in
+            check "reverse order" reverse;
+            check "2 domains" (Render.parallel ~domains:2);
+            check "3 domains" (Render.parallel ~domains:3))
+          [ 100; 1 lsl 14; 40_000; 100_000 ]);
     Alcotest.test_case "boxes the ray misses are not visited" `Quick (fun () ->
         let b = Bvh.build (boxes (List.init 100 (fun i -> (float i, float i +. 0.5)))) in
         let seen = ref [] in
