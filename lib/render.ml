@@ -32,16 +32,21 @@ let shuffle seed a =
    its heap. With more domains than cores, 16 MB (RTIOW in mc mode on 4
    domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB; the snowman was
    slower with 64 or 256 MB).
-   On as many domains as cores, what counts is that each domain's heap is
-   allocated again once the domain runs, more than its size: on 2 cores,
-   2 domains render the snowman (1600x1200) in 0.35-0.37 s on the heaps
-   they start with, 0.23-0.25 s on heaps regrown at the first tile,
-   whether by one page (median of 10 alternated runs 0.234 s) or to 8 MB
-   (0.239 s); RTIOW in mc mode, 650 collections of 2 MB heaps, 0.844 s
-   against 0.850 s with 8 MB. Why the heaps domains are created with are
-   slower is not known (the time goes to the rendering code, not to the
-   collector, and both domains are slowed). 8 MB is kept: where more
-   cores wait at each stop, fewer stops count more. *)
+   Whatever the size, each rendering domain has a minor collection at its
+   first tile (growing the heap makes one; a heap already large enough
+   gets [Gc.minor]): until then, what the domain allocated as it started
+   stays packed in its minor heap, and the rendering code itself runs
+   slower on every domain (time in loads of scene data and in stores to
+   scratch, not in the collector: cache lines shared between domains, it
+   seems). Measured on 2 cores, snowman 1600x1200 on 2 domains: every
+   domain started on 16 MB heaps (OCAMLRUNPARAM=s=2M, so no growing) 0.33
+   to 0.35 s, the same with [Gc.minor] at each first tile 0.23 to 0.24 s,
+   as camlray runs by default (0.25); a [Gc.minor] in the main domain
+   before the pool starts does not help. The size matters little there:
+   regrowing by one page or to 8 MB, 0.234 and 0.239 s (medians of 10
+   alternated runs); RTIOW in mc mode, 650 collections of 2 MB heaps,
+   0.844 s against 0.850 s with 8 MB. 8 MB is kept: where more cores wait
+   at each stop, fewer stops count more. *)
 let minor_words domains =
   if domains > Domain.recommended_domain_count () then 2 * 1024 * 1024 (* 16 MB *)
   else 1024 * 1024 (* 8 MB per domain *)
@@ -52,7 +57,7 @@ let ensure_minor_heap words =
   if not (Domain.DLS.get big_minor) then begin
     Domain.DLS.set big_minor true;
     let g = Gc.get () in
-    if g.minor_heap_size < words then Gc.set { g with minor_heap_size = words }
+    if g.minor_heap_size < words then Gc.set { g with minor_heap_size = words } else Gc.minor ()
   end
 
 (* Tasks of up to 4 tiles: each task of [parallel_for] costs a few
