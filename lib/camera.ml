@@ -48,6 +48,25 @@ let[@inline] dir c sx sy =
 
 let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
+(* [span] written into [out] (the same arithmetic) *)
+let[@inline] span_into c (a : Vec3.t) sx sy unit (out : Vec3.m) =
+  let x = a.x +. (sx *. c.right.x) and y = a.y +. (sx *. c.right.y) and z = a.z +. (sx *. c.right.z) in
+  let x = x +. (sy *. c.up.x) and y = y +. (sy *. c.up.y) and z = z +. (sy *. c.up.z) in
+  let l = if unit then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 0. in
+  if l > 0. then
+    let k = 1. /. l in
+    Vec3.set out (k *. x) (k *. y) (k *. z)
+  else Vec3.set out x y z
+
+let ray_into c sx sy o d =
+  match c.projection with
+  | Perspective ->
+      Vec3.load o c.location;
+      span_into c c.direction sx sy true d
+  | Orthographic ->
+      span_into c c.location sx sy false o;
+      Vec3.load d (Vec3.normalize c.direction)
+
 let ray_lens c sx sy u v =
   let r = ray c sx sy in
   if c.aperture <= 0. then r

@@ -66,6 +66,19 @@ let direction_into l (p : Vec3.t) o =
       o.lz <- k *. vz;
       o.dist <- dist
 
+(* the same from a point written in place *)
+let direction_into_m l (p : Vec3.m) o =
+  match l.kind with
+  | Parallel _ -> direction_into l (Vec3.of_m p) o
+  | Point | Spot _ ->
+      let vx = l.position.x -. p.mx and vy = l.position.y -. p.my and vz = l.position.z -. p.mz in
+      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let k = 1. /. dist in
+      o.lx <- k *. vx;
+      o.ly <- k *. vy;
+      o.lz <- k *. vz;
+      o.dist <- dist
+
 let rad a = a *. Float.pi /. 180.
 
 let spot_factor ~axis ~radius ~falloff ~tightness to_point =
@@ -93,6 +106,12 @@ let attenuation l p =
     let _, d = direction_to l p in
     spot *. 2. /. (1. +. Float.pow (d /. l.fade_distance) l.fade_power)
   else spot
+
+(* the point made a vector only for spot lights and fading ones *)
+let attenuation_m l (p : Vec3.m) =
+  match l.kind with
+  | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
+  | _ -> attenuation l (Vec3.of_m p)
 
 let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
 

@@ -44,6 +44,10 @@ val area : Vec3.t -> Vec3.t -> int -> int -> area
 val attenuation : t -> Vec3.t -> float
 (** Spot cone and distance fade factor for light arriving at a point. *)
 
+val attenuation_m : t -> Vec3.m -> float
+(** The same at a point written in place (made a vector only for spot
+    and fading lights). *)
+
 val direction_to : t -> Vec3.t -> Vec3.t * float
 (** Unit vector from the point towards the light, and the distance over
     which shadow rays must look (for parallel lights: to the plane through
@@ -57,6 +61,9 @@ val dir : unit -> dir
 val direction_into : t -> Vec3.t -> dir -> unit
 (** [direction_to] written into a record: no allocation for point and
     spot lights. *)
+
+val direction_into_m : t -> Vec3.m -> dir -> unit
+(** The same from a point written in place. *)
 
 val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
 (** [position_at l a p u v], [u, v] in [[-1/2, 1/2]]: the point

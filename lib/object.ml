@@ -384,4 +384,14 @@ let normal o p h =
       if o.inverted then Vec3.neg n else n
   | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
 
+(* shapes whose normal is stored or read from the hit record *)
+let point_free = function
+  | Shape.Plane _ | Shape.Disc _ | Shape.Box _ | Shape.Triangle _ | Shape.Smooth_triangle _ | Shape.Mesh _ -> true
+  | Shape.Sphere _ | Shape.Cone _ | Shape.Torus _ -> false
+
+let normal_m o (p : Vec3.m) h =
+  match o.geom with
+  | Prim s when point_free s && Transform.is_identity o.xform -> normal o Vec3.zero h
+  | _ -> normal o (Vec3.of_m p) h
+
 let bounds o = o.bounds

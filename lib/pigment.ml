@@ -108,3 +108,6 @@ let rec eval p point =
       let n = Array.length cells in
       if n = 0 then Color.opaque Color.black else eval cells.(Int.min (n - 1) (Int.max 0 i)) point
   | Image_map { image; xform } -> image_eval image (Transform.inv_point xform point)
+
+(* a solid colour without making the point a vector *)
+let eval_m p (point : Vec3.m) = match p with Solid c -> c | _ -> eval p (Vec3.of_m point)

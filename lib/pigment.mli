@@ -42,5 +42,9 @@ val opaque : t -> bool
 val eval : t -> Vec3.t -> Color.rgbft
 (** The colour at a point in world space. *)
 
+val eval_m : t -> Vec3.m -> Color.rgbft
+(** The same at a point written in place (made a vector only for
+    patterns). *)
+
 val lerp : Color.rgbft -> Color.rgbft -> float -> Color.rgbft
 (** Interpolate all five channels. *)

@@ -181,6 +181,16 @@ let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
+(* the nearest hit of the ray loaded in [sc] *)
+let[@inline] nearest_loaded s sc tmin tmax (h : Hit.t) f =
+  h.t <- tmax;
+  h.u <- 0.;
+  h.v <- 0.;
+  h.id <- 0.;
+  let found = nearest_in s sc.ray tmin h f in
+  sc.busy <- false;
+  found
+
 let intersect_into s (o : Vec3.t) (d : Vec3.t) tmin tmax (h : Hit.t) (f : Object.found) =
   Array.length s.objects > 0
   && begin
@@ -192,13 +202,21 @@ let intersect_into s (o : Vec3.t) (d : Vec3.t) tmin tmax (h : Hit.t) (f : Object
        r.dx <- d.x;
        r.dy <- d.y;
        r.dz <- d.z;
-       h.t <- tmax;
-       h.u <- 0.;
-       h.v <- 0.;
-       h.id <- 0.;
-       let found = nearest_in s r tmin h f in
-       sc.busy <- false;
-       found
+       nearest_loaded s sc tmin tmax h f
+     end
+
+let intersect_m s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
+  Array.length s.objects > 0
+  && begin
+       let sc = take () in
+       let r = sc.ray in
+       r.ox <- o.mx;
+       r.oy <- o.my;
+       r.oz <- o.mz;
+       r.dx <- d.mx;
+       r.dy <- d.my;
+       r.dz <- d.mz;
+       nearest_loaded s sc tmin tmax h f
      end
 
 let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
@@ -211,6 +229,16 @@ let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
       ((point.x -. Float.Array.get sp i) *. k)
       ((point.y -. Float.Array.get sp (i + 1)) *. k)
       ((point.z -. Float.Array.get sp (i + 2)) *. k)
+
+let hit_normal_into s (f : Object.found) (h : Hit.t) (point : Vec3.m) (out : Vec3.m) =
+  if h.id >= 0. then Vec3.load out (Object.normal_m f.leaf point h)
+  else
+    let i = 4 * int_of_float (-.h.id -. 1.) and sp = s.accel.spheres in
+    let k = 1. /. Float.Array.get sp (i + 3) in
+    Vec3.set out
+      ((point.mx -. Float.Array.get sp i) *. k)
+      ((point.my -. Float.Array.get sp (i + 1)) *. k)
+      ((point.mz -. Float.Array.get sp (i + 2)) *. k)
 
 (* per domain: read before the next query *)
 let records_key = Scratch.key (fun () -> (Hit.create 0., Object.found dummy))

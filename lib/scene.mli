@@ -58,6 +58,9 @@ val intersect_into : t -> Vec3.t -> Vec3.t -> float -> float -> Hit.t -> Object.
     allocating: the distance and part into [h], the object into [f.leaf]
     (records the caller owns; read them before the next query). *)
 
+val intersect_m : t -> Vec3.m -> Vec3.m -> float -> float -> Hit.t -> Object.found -> bool
+(** {!intersect_into} with the ray in vectors written in place. *)
+
 val hit_records : unit -> Hit.t * Object.found
 (** The calling domain's records for {!intersect_into} (which {!intersect}
     uses too): read them before the next query. *)
@@ -65,6 +68,11 @@ val hit_records : unit -> Hit.t * Object.found
 val hit_normal : t -> Object.found -> Hit.t -> Vec3.t -> Vec3.t
 (** The outward unit normal at the point of a hit found by
     {!intersect_into}. *)
+
+val hit_normal_into : t -> Object.found -> Hit.t -> Vec3.m -> Vec3.m -> unit
+(** [hit_normal_into s f h p n]: {!hit_normal} at [p], written into [n];
+    allocates nothing for spheres of the flat array and untransformed
+    planes, discs, boxes, triangles and meshes. *)
 
 val occluded : t -> Ray.t -> float -> float -> bool
 (** Any-hit query: some shadow-casting surface in [(tmin, tmax)]. *)

@@ -46,3 +46,10 @@ let lerp a b s = madd a s (sub b a)
 let is_finite v = Float.is_finite v.x && Float.is_finite v.y && Float.is_finite v.z
 let max_component v = Float.max v.x (Float.max v.y v.z)
 let to_string v = Printf.sprintf "<%g, %g, %g>" v.x v.y v.z
+
+type m = { mutable mx : float; mutable my : float; mutable mz : float }
+
+let m () = { mx = 0.; my = 0.; mz = 0. }
+let[@inline] set (v : m) x y z = v.mx <- x; v.my <- y; v.mz <- z
+let[@inline] load (v : m) a = v.mx <- a.x; v.my <- a.y; v.mz <- a.z
+let[@inline] of_m (v : m) = { x = v.mx; y = v.my; z = v.mz }

@@ -44,3 +44,15 @@ val lerp : t -> t -> float -> t
 val is_finite : t -> bool
 val max_component : t -> float
 val to_string : t -> string
+
+(** A vector written in place, stored flat: the shading code keeps the
+    points, normals and directions of each nesting level in these, per
+    domain, so that a ray allocates none. *)
+type m = { mutable mx : float; mutable my : float; mutable mz : float }
+
+val m : unit -> m
+(** A new one, zero. *)
+
+val set : m -> float -> float -> float -> unit
+val load : m -> t -> unit
+val of_m : m -> t

@@ -101,17 +101,17 @@ let shadow_into (s : Scene.t) (w : shadow_walk) =
         faders;
       Color.acc_set w.acc !acc.r !acc.g !acc.b
 
-let[@inline] load_ray (r : Ray.scratch) (p : Vec3.t) x y z =
-  r.ox <- p.x;
-  r.oy <- p.y;
-  r.oz <- p.z;
+let[@inline] load_ray (r : Ray.scratch) (p : Vec3.m) x y z =
+  r.ox <- p.mx;
+  r.oy <- p.my;
+  r.oz <- p.mz;
   r.dx <- x;
   r.dy <- y;
   r.dz <- z
 
 (* Shadow colour of one light at [p], whose direction is in [w.l], into
    [w.acc]: area lights average their samples. *)
-let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
+let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
   match light.area with
   | None ->
       let l = w.l in
@@ -119,10 +119,11 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.t) =
       w.seg.len <- l.dist;
       shadow_into s w
   | Some a ->
+      let pv = Vec3.of_m p in
       let c =
         Light.average_area a (fun i j ->
-            let q = Light.sample_position light a p i j in
-            let v = Vec3.sub q p in
+            let q = Light.sample_position light a pv i j in
+            let v = Vec3.sub q pv in
             let d = Vec3.length v in
             let k = 1. /. d in
             load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
@@ -150,19 +151,28 @@ let fresnel n c =
     let a = (g -. c) /. (g +. c) and b = ((c *. (g +. c)) -. 1.) /. ((c *. (g -. c)) +. 1.) in
     0.5 *. a *. a *. (1. +. (b *. b))
 
+(* [Vec3.dot], in place: the same arithmetic *)
+let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+
+(* A layer's scalars, per nesting level: stored flat, so that passing
+   them allocates nothing. *)
+type nums = { mutable eta : float; mutable alpha : float; mutable weight : float }
+
 (* Diffuse and highlights of one light seen from [p], added into [out];
    the shadow is [light_shadow] (an area light's samples come here as
    point lights). Scalars throughout: nothing is allocated unless the
-   shadow ray crosses something transparent. *)
-let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d : Vec3.t)
+   shadow ray crosses something transparent. [k.alpha]: the layer's
+   opacity. *)
+let one_light s (f : Finish.t) (pc : Color.t) (k : nums) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
     (light : Light.t) (out : Color.acc) =
+  let alpha = k.alpha in
   let w = Scratch.get shadow_key in
   let l = w.l in
-  Light.direction_into light p l;
-  let nl = (n.x *. l.lx) +. (n.y *. l.ly) +. (n.z *. l.lz) in
+  Light.direction_into_m light p l;
+  let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
-  let att = if front || back then Light.attenuation light p else 0. in
+  let att = if front || back then Light.attenuation_m light p else 0. in
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
@@ -191,8 +201,8 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
           let mr = lr *. mt.r and mg = lg *. mt.g and mb = lb *. mt.b in
           if f.phong > 0. then begin
             (* r = d - 2 (d.n) n, the mirror direction *)
-            let k = -2. *. Vec3.dot d n in
-            let rx = d.x +. (k *. n.x) and ry = d.y +. (k *. n.y) and rz = d.z +. (k *. n.z) in
+            let k = -2. *. dot d n in
+            let rx = d.mx +. (k *. n.mx) and ry = d.my +. (k *. n.my) and rz = d.mz +. (k *. n.mz) in
             let rl = (rx *. l.lx) +. (ry *. l.ly) +. (rz *. l.lz) in
             if rl > 0. then begin
               let k = f.phong *. Float.pow rl f.phong_size in
@@ -203,10 +213,10 @@ let one_light s (f : Finish.t) (pc : Color.t) alpha (p : Vec3.t) (n : Vec3.t) (d
           end;
           if f.specular > 0. then begin
             (* h = (l - d) / |l - d|, the half vector *)
-            let hx = l.lx -. d.x and hy = l.ly -. d.y and hz = l.lz -. d.z in
+            let hx = l.lx -. d.mx and hy = l.ly -. d.my and hz = l.lz -. d.mz in
             let len = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
             let k = if len > 0. then 1. /. len else 1. in
-            let nh = (n.x *. (k *. hx)) +. (n.y *. (k *. hy)) +. (n.z *. (k *. hz)) in
+            let nh = (n.mx *. (k *. hx)) +. (n.my *. (k *. hy)) +. (n.mz *. (k *. hz)) in
             if nh > 0. then begin
               let k = f.specular *. Float.pow nh (1. /. f.roughness) in
               cr := !cr +. (k *. mr);
@@ -226,35 +236,54 @@ let direct_key = Scratch.key (fun () -> Color.acc 0.)
 
 (* Diffuse and highlights of every light for one texture layer, added
    into [out]. *)
-let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) alpha p n d out =
-  for k = 0 to Array.length s.lights - 1 do
-    let light = Array.unsafe_get s.lights k in
+let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) (k : nums) p n d out =
+  for j = 0 to Array.length s.lights - 1 do
+    let light = Array.unsafe_get s.lights j in
     match light.area with
     | Some a when a.area_illumination ->
         (* every sample shades as a point light; averaged like shadows *)
+        let pv = Vec3.of_m p in
         let c =
           Light.average_area a (fun i j ->
-              let q = Light.sample_position light a p i j in
+              let q = Light.sample_position light a pv i j in
               let one = Color.acc 0. in
-              one_light s f pc alpha p n d { light with position = q; area = None } one;
+              one_light s f pc k p n d { light with position = q; area = None } one;
               Color.of_acc one)
         in
         out.ar <- out.ar +. c.r;
         out.ag <- out.ag +. c.g;
         out.ab <- out.ab +. c.b
-    | _ -> one_light s f pc alpha p n d light out
+    | _ -> one_light s f pc k p n d light out
   done
 
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
 
-(* The running sums of [shade]: one frame per nesting level, per domain,
-   reused from ray to ray ([trace] starts every camera ray at depth 0).
-   [top] is the top layer's normal, [unset] until it is known. *)
-type frame = { c : Color.acc; tr : Color.acc; rf : Color.acc; mutable top : Vec3.t }
+(* What shading one hit keeps, one frame per nesting level, per domain,
+   reused from ray to ray ([trace_from] starts every camera ray at depth
+   0): the running sums; the hit point, the normal facing the ray, the
+   top layer's normal once known ([top_set]) and a perturbed normal; the
+   direction of a ray traced from here and what it brings back; the
+   scalars. The frame stays taken while rays traced from it run (they
+   read its point and direction): nothing is allocated per hit. *)
+type frame = {
+  c : Color.acc;
+  tr : Color.acc;
+  rf : Color.acc;
+  p : Vec3.m;
+  n0 : Vec3.m;
+  top : Vec3.m;
+  mutable top_set : bool;
+  pn : Vec3.m;
+  rd : Vec3.m;
+  rc : Color.acc;
+  k : nums;
+}
 
-let unset = Vec3.make nan nan nan
-let new_frame () = { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; top = unset }
+let new_frame () =
+  { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
+    top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
+    k = { eta = 1.; alpha = 1.; weight = 1. } }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
@@ -269,8 +298,12 @@ let enter () =
   let f = Array.unsafe_get fs.stack k in
   Color.acc_set f.c 0. 0. 0.;
   Color.acc_set f.tr 1. 1. 1.;
-  f.top <- unset;
-  fs
+  f.top_set <- false;
+  f
+
+let leave () =
+  let fs = Scratch.get frames_key in
+  fs.depth <- fs.depth - 1
 
 (* Relative index of refraction across a surface of [inner] for a ray
    inside [media]: entering or leaving is decided as POV-Ray does, by
@@ -293,74 +326,96 @@ let next_media (inner : Interior.t) media =
   if not (List.memq inner media) then inner :: media
   else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
 
-(* The ray from [o] along [d], hits beyond [tmin]; [media]: the interiors
-   the ray is inside, innermost first. *)
-let rec trace_ray (s : Scene.t) tmin (o : Vec3.t) (d : Vec3.t) level weight media =
-  if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then black
+let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
+
+(* The ray from [o] along [d], hits beyond [tmin], its radiance into
+   [out]; [media]: the interiors the ray is inside, innermost first. [o]
+   and [d] belong to the caller and are not written. *)
+let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level weight media (out : Color.acc) =
+  if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then Color.acc_set out 0. 0. 0.
   else
     (* read at once, before shading traces anything else *)
     let h, f = Scene.hit_records () in
-    if not (Scene.intersect_into s o d tmin infinity h f) then
-      if Sky.is_empty s.sky then s.background
-      else Sky.eval s.sky ~background:s.background (Vec3.normalize d)
+    if not (Scene.intersect_m s o d tmin infinity h f) then
+      if Sky.is_empty s.sky then set_color out s.background
+      else set_color out (Sky.eval s.sky ~background:s.background (Vec3.normalize (Vec3.of_m d)))
     else begin
       let t = h.t and obj = f.leaf in
-      let p = Vec3.madd o t d in
-      let normal = Scene.hit_normal s f h p in
+      let fr = enter () in
+      let p = fr.p in
+      Vec3.set p (o.mx +. (t *. d.mx)) (o.my +. (t *. d.my)) (o.mz +. (t *. d.mz));
+      Scene.hit_normal_into s f h p fr.n0;
       (* POV-Ray fades what comes through the far side of a medium, not
          the far surface's own shading *)
       let fade = match media with (i : Interior.t) :: _ -> Interior.fade i t | [] -> white in
-      shade s d obj p normal level weight media fade
+      shade s d obj fr level weight media fade out;
+      leave ()
     end
 
-and shade s d (obj : Object.t) p normal level weight media fade =
-  let entering = Vec3.dot normal d < 0. in
-  let n0 = if entering then normal else Vec3.neg normal in
+(* [fr.n0] holds the surface's normal; turned to face the ray here *)
+and shade s (d : Vec3.m) (obj : Object.t) fr level weight media (fade : Color.t) (out : Color.acc) =
+  let n0 = fr.n0 in
+  let entering = dot n0 d < 0. in
+  if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   let inner = obj.interior in
   let eta = relative_ior inner media in
+  fr.k.eta <- eta;
+  fr.k.weight <- weight;
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
-  let guess = total_internal eta (-.Vec3.dot d n0) in
-  let fs = enter () in
-  let fr = fs.stack.(fs.depth - 1) in
+  let guess = total_internal eta (-.dot d n0) in
   let c = fr.c and tr = fr.tr in
-  layers s d p n0 level weight media eta fr (not guess) c tr obj.texture;
-  let n = if fr.top == unset then n0 else fr.top in
-  if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.Vec3.dot d n)) then begin
-    fr.top <- unset;
+  layers s d level media fr (not guess) c tr obj.texture;
+  let n = if fr.top_set then fr.top else n0 in
+  if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.dot d n)) then begin
+    fr.top_set <- false;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
-    layers s d p n0 level weight media eta fr guess c tr obj.texture
+    layers s d level media fr guess c tr obj.texture
   end;
-  (* the frame is free again before anything is traced through *)
-  fs.depth <- fs.depth - 1;
-  let c = Color.of_acc c in
-  if Color.acc_luminance tr <= bailout then c
+  let n = if fr.top_set then fr.top else n0 in
+  if Color.acc_luminance tr <= bailout then Color.acc_set out c.ar c.ag c.ab
   else
     let w = weight *. Color.acc_max tr in
-    let tr = Color.of_acc tr in
-    if eta = 1. then
+    let rc = fr.rc in
+    if eta = 1. then begin
       (* same index on both sides: straight through, no trace level used *)
-      add c (mul (mul tr fade) (trace_ray s Ray.epsilon p d level w (next_media inner media)))
+      trace_ray s Ray.epsilon fr.p d level w (next_media inner media) rc;
+      Color.acc_set out
+        (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
+        (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
+        (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+    end
     else
-      let cos_i = -.Vec3.dot d n in
+      let cos_i = -.dot d n in
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
-      if k < 0. then
+      let rd = fr.rd in
+      if k < 0. then begin
         (* total internal reflection: not filtered by the surface colour *)
-        add c (mul fade (trace_ray s Ray.epsilon p (Vec3.madd d (2. *. cos_i) n) (level + 1) weight media))
-      else
-        let t = Vec3.madd (Vec3.scale eta d) ((eta *. cos_i) -. Float.sqrt k) n in
-        add c (mul (mul tr fade) (trace_ray s Ray.epsilon p t (level + 1) w (next_media inner media)))
+        let m = 2. *. cos_i in
+        Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
+        trace_ray s Ray.epsilon fr.p rd (level + 1) weight media rc;
+        Color.acc_set out (c.ar +. (fade.r *. rc.ar)) (c.ag +. (fade.g *. rc.ag)) (c.ab +. (fade.b *. rc.ab))
+      end
+      else begin
+        let m = (eta *. cos_i) -. Float.sqrt k in
+        Vec3.set rd ((eta *. d.mx) +. (m *. n.mx)) ((eta *. d.my) +. (m *. n.my)) ((eta *. d.mz) +. (m *. n.mz));
+        trace_ray s Ray.epsilon fr.p rd (level + 1) w (next_media inner media) rc;
+        Color.acc_set out
+          (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
+          (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
+          (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+      end
 
 (* Shade the layers of a texture top down, adding into [acc]; [w] is what
    the layers above let through, and holds at the end what the whole
-   texture lets through; sets [top.top] to the top layer's normal.
+   texture lets through; sets the frame's top normal to the top layer's.
    [refl]: add the finishes' reflection (POV-Ray leaves it out where the
    light passing through is totally reflected inside: the TIR ray stands
    for it). A function of its own, not a closure in [shade]: it runs for
    every hit. *)
-and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) (w : Color.acc) = function
+and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) = function
   | [] -> ()
   | (layer : Texture.layer) :: rest -> (
       match layer.tmap with
@@ -370,62 +425,69 @@ and layers s d p n0 level weight media eta (top : frame) refl (acc : Color.acc) 
           List.iter
             (fun (k, t) ->
               let c' = Color.acc 0. and f' = Color.acc 1. in
-              layers s d p n0 level weight media eta top refl c' f' t;
+              layers s d level media fr refl c' f' t;
               Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
               Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab)))
-            (Texture.blend m p);
+            (Texture.blend m (Vec3.of_m fr.p));
           Color.acc_set acc (acc.ar +. (w.ar *. c.ar)) (acc.ag +. (w.ag *. c.ag)) (acc.ab +. (w.ab *. c.ab));
           Color.acc_set w (w.ar *. f.ar) (w.ag *. f.ag) (w.ab *. f.ab);
-          if not (Color.acc_is_black w) then
-            layers s d p n0 level weight media eta top refl acc w rest
+          if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest
       | None ->
+          let p = fr.p and n0 = fr.n0 in
           let n =
             match layer.normal with
             | None -> n0
             | Some nm ->
-                let m = Normal.perturb nm p n0 in
-                if Vec3.dot m d > 0. then Vec3.madd m (-2. *. Vec3.dot m d) d |> Vec3.normalize
-                else m
+                let dv = Vec3.of_m d in
+                let m = Normal.perturb nm (Vec3.of_m p) (Vec3.of_m n0) in
+                Vec3.load fr.pn
+                  (if Vec3.dot m dv > 0. then Vec3.madd m (-2. *. Vec3.dot m dv) dv |> Vec3.normalize else m);
+                fr.pn
           in
-          if top.top == unset then top.top <- n;
+          if not fr.top_set then begin
+            fr.top_set <- true;
+            Vec3.set fr.top n.mx n.my n.mz
+          end;
           let f = layer.finish in
-          let pig = Pigment.eval layer.pigment p in
+          let pig = Pigment.eval_m layer.pigment p in
           let pc = pig.c in
-          let alpha =
-            if s.Scene.settings.legacy_alpha then
-              1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
-            else 1. -. pig.filter -. pig.transmit
-          in
+          let k = fr.k in
+          k.alpha <-
+            (if s.Scene.settings.legacy_alpha then
+               1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
+             else 1. -. pig.filter -. pig.transmit);
+          let alpha = k.alpha in
           (* this layer's own colour: lights, then ambient and emission *)
           let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
-          direct s f pc alpha p n d dl;
+          direct s f pc k p n d dl;
           let amb = s.settings.ambient_light in
           let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))
           and lb = dl.ab +. (alpha *. (pc.b *. ((f.ambient.b *. amb.b) +. f.emission.b))) in
           (* no tuple: the channels stay unboxed *)
-          let refl = refl && Finish.has_reflection f in
-          let rc = top.rf in
-          if refl then reflection s f pc n d p level (weight *. Color.acc_max w) media eta rc;
-          let lr = if refl then lr +. rc.ar else lr
-          and lg = if refl then lg +. rc.ag else lg
-          and lb = if refl then lb +. rc.ab else lb in
+          let refl_here = refl && Finish.has_reflection f in
+          let rc = fr.rf in
+          if refl_here then reflection s f pc n d level (k.weight *. Color.acc_max w) media fr rc;
+          let lr = if refl_here then lr +. rc.ar else lr
+          and lg = if refl_here then lg +. rc.ag else lg
+          and lb = if refl_here then lb +. rc.ab else lb in
           Color.acc_set acc (acc.ar +. (w.ar *. lr)) (acc.ag +. (w.ag *. lg)) (acc.ab +. (w.ab *. lb));
           Color.acc_set w
             (w.ar *. ((pig.filter *. pc.r) +. pig.transmit))
             (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
             (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
-          if not (Color.acc_is_black w) then
-            layers s d p n0 level weight media eta top refl acc w rest)
+          if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest)
 
-(* the reflected light into [out] (the frame's [rf]: nested traces use
-   frames of their own) *)
-and reflection s (f : Finish.t) pc n d p level weight media eta (out : Color.acc) =
+(* the reflected light into [out] (the frame's [rf]); the reflected ray
+   starts at the frame's point along its [rd], and brings its light back
+   into its [rc] *)
+and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level weight media (fr : frame) (out : Color.acc) =
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else
     let rf = f.reflection in
-    let cos_i = -.Vec3.dot d n in
+    let eta = fr.k.eta in
+    let cos_i = -.dot d n in
     (* kr = rmin + k (rmax - rmin), per channel, in scalars *)
     let lo = rf.rmin and hi = rf.rmax in
     let k =
@@ -442,11 +504,16 @@ and reflection s (f : Finish.t) pc n d p level weight media eta (out : Color.acc
     let mt = metallic_tint rf.rmetallic cos_i pc in
     let kr = kr *. mt.r and kg = kg *. mt.g and kb = kb *. mt.b in
     if kr = 0. && kg = 0. && kb = 0. then Color.acc_set out 0. 0. 0.
-    else
-      let dir = Vec3.madd d (2. *. cos_i) n in
-      let rc = trace_ray s Ray.epsilon p dir (level + 1) (weight *. w) media in
-      let rc = if rf.exponent = 1. then rc else Color.pow rc (1. /. rf.exponent) in
-      Color.acc_set out (kr *. rc.r) (kg *. rc.g) (kb *. rc.b)
+    else begin
+      let m = 2. *. cos_i in
+      let rd = fr.rd and rc = fr.rc in
+      Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
+      trace_ray s Ray.epsilon fr.p rd (level + 1) (weight *. w) media rc;
+      if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
+      else
+        let e = 1. /. rf.exponent in
+        Color.acc_set out (kr *. Float.pow rc.ar e) (kg *. Float.pow rc.ag e) (kb *. Float.pow rc.ab e)
+    end
 
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
@@ -456,24 +523,36 @@ let start_key : (Scene.t * Vec3.t * Interior.t list) option ref Scratch.key =
 
 (* per domain: a cache shared by domains would be written from both when
    the origin changes at every ray (orthographic camera, focal blur) *)
-let start_media (s : Scene.t) (o : Vec3.t) =
+let start_media (s : Scene.t) (o : Vec3.m) =
   let cache = Scratch.get start_key in
   match !cache with
-  | Some (s', o', m) when s' == s && o'.x = o.x && o'.y = o.y && o'.z = o.z -> m
+  | Some (s', o', m) when s' == s && o'.x = o.mx && o'.y = o.my && o'.z = o.mz -> m
   | _ ->
+      let ov = Vec3.of_m o in
       let m =
         Array.fold_left
-          (fun acc (obj : Object.t) -> if Object.inside obj o then obj.interior :: acc else acc)
+          (fun acc (obj : Object.t) -> if Object.inside obj ov then obj.interior :: acc else acc)
           [] s.objects
       in
-      cache := Some (s, o, m);
+      cache := Some (s, ov, m);
       m
 
-let trace_from s o d =
-  (Scratch.get frames_key).depth <- 0;
-  trace_ray s 0. o d 1 1. (start_media s o)
+(* A camera ray, per domain: its origin and direction, and its light. *)
+type camera_ray = { o : Vec3.m; d : Vec3.m; light : Color.acc }
 
-let trace s (ray : Ray.t) = trace_from s ray.origin ray.dir
+let camera_key = Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0. })
+
+(* the radiance along [r] into [r.light] *)
+let trace_camera_ray s (r : camera_ray) =
+  (Scratch.get frames_key).depth <- 0;
+  trace_ray s 0. r.o r.d 1 1. (start_media s r.o) r.light
+
+let trace s (ray : Ray.t) =
+  let r = Scratch.get camera_key in
+  Vec3.load r.o ray.origin;
+  Vec3.load r.d ray.dir;
+  trace_camera_ray s r;
+  Color.of_acc r.light
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
    through points of the lens, stratified by a Hammersley set turned by
@@ -503,7 +582,12 @@ let[@inline] sample (s : Scene.t) ~width ~height px py =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
   if cam.aperture > 0. then focal_blur s sx sy px py
-  else trace_from s (Camera.origin cam sx sy) (Camera.dir cam sx sy)
+  else begin
+    let r = Scratch.get camera_key in
+    Camera.ray_into cam sx sy r.o r.d;
+    trace_camera_ray s r;
+    Color.of_acc r.light
+  end
 
 let pixel s ~width ~height x y =
   sample s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)
