@@ -190,8 +190,12 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let width = o.width and height = o.height in
       let pixel =
         match o.mode with
-        | Whitted -> Whitted.pixel scene ~width ~height
-        | Monte_carlo -> Path.pixel (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth
+        | Whitted -> Whitted.pixel_into scene ~width ~height
+        | Monte_carlo ->
+            let f = Path.pixel (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth in
+            fun x y (out : Color.acc) ->
+              let c : Color.t = f x y in
+              Color.acc_set out c.r c.g c.b
       in
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in
@@ -215,7 +219,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
                 in
                 Option.fold ~none:full ~some:(crop full) region
             | _ ->
-                Render.image ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
+                Render.image_into ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
                   ~width ~height pixel)
       in
       if tty then prerr_newline ();

@@ -47,24 +47,26 @@ let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.
           true)
         else false
 
-(* [x, y, z] / |[x, y, z]| as [Vec3.normalize], allocating the result only *)
-let[@inline] unit_of x y z =
+(* [x, y, z] / |[x, y, z]| as [Vec3.normalize], into [out] *)
+let[@inline] unit_into (out : Vec3.m) x y z =
   let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
   if l > 0. then
     let k = 1. /. l in
-    Vec3.make (k *. x) (k *. y) (k *. z)
-  else Vec3.make x y z
+    Vec3.set out (k *. x) (k *. y) (k *. z)
+  else Vec3.set out x y z
 
 (* w n1 + u n2 + v n3, normalised, from the nine components *)
-let[@inline] blend3 ax ay az bx by bz cx cy cz u v =
+let[@inline] blend3 out ax ay az bx by bz cx cy cz u v =
   let w = 1. -. u -. v in
-  unit_of
+  unit_into out
     ((w *. ax) +. (u *. bx) +. (v *. cx))
     ((w *. ay) +. (u *. by) +. (v *. cy))
     ((w *. az) +. (u *. bz) +. (v *. cz))
 
 let smooth_normal (n1 : Vec3.t) (n2 : Vec3.t) (n3 : Vec3.t) u v =
-  blend3 n1.x n1.y n1.z n2.x n2.y n2.z n3.x n3.y n3.z u v
+  let out = Vec3.m () in
+  blend3 out n1.x n1.y n1.z n2.x n2.y n2.z n3.x n3.y n3.z u v;
+  Vec3.of_m out
 
 let vert verts i = Vec3.make (fget verts (3 * i)) (fget verts ((3 * i) + 1)) (fget verts ((3 * i) + 2))
 
@@ -151,15 +153,14 @@ let any_leaf m h r tmin _ i = not (leaf m () r tmin h i)
 let any_s m r tmin (h : Hit.t) = not (Bvh.iter_s m.bvh r tmin h.t m h any_leaf)
 let hit m r tmin h = hit_s m (Ray.of_ray r) tmin h
 
-(* The hit's normal, in scalars: one vector allocated, the result (the
-   same arithmetic as [Vec3.normalize (Vec3.cross (b - a) (c - a))] and
-   [smooth_normal]). *)
-let normal m (h : Hit.t) =
+(* The hit's normal into [out], in scalars (the same arithmetic as
+   [Vec3.normalize (Vec3.cross (b - a) (c - a))] and [smooth_normal]). *)
+let normal_into m (h : Hit.t) out =
   let i = int_of_float h.id in
   let na = if Array.length m.nfaces > 0 then m.nfaces.(3 * i) else -1 in
   if na >= 0 then begin
     let g = m.normals and nb = m.nfaces.((3 * i) + 1) and nc = m.nfaces.((3 * i) + 2) in
-    blend3
+    blend3 out
       (fget g (3 * na)) (fget g ((3 * na) + 1)) (fget g ((3 * na) + 2))
       (fget g (3 * nb)) (fget g ((3 * nb) + 1)) (fget g ((3 * nb) + 2))
       (fget g (3 * nc)) (fget g ((3 * nc) + 1)) (fget g ((3 * nc) + 2))
@@ -170,8 +171,13 @@ let normal m (h : Hit.t) =
     let ax = tget t o and ay = tget t (o + 1) and az = tget t (o + 2) in
     let ux = tget t (o + 3) -. ax and uy = tget t (o + 4) -. ay and uz = tget t (o + 5) -. az in
     let vx = tget t (o + 6) -. ax and vy = tget t (o + 7) -. ay and vz = tget t (o + 8) -. az in
-    unit_of ((uy *. vz) -. (uz *. vy)) ((uz *. vx) -. (ux *. vz)) ((ux *. vy) -. (uy *. vx))
+    unit_into out ((uy *. vz) -. (uz *. vy)) ((uz *. vx) -. (ux *. vz)) ((ux *. vy) -. (uy *. vx))
   end
+
+let normal m h =
+  let out = Vec3.m () in
+  normal_into m h out;
+  Vec3.of_m out
 
 let inside m p =
   match m.inside_vector with

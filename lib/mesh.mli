@@ -44,6 +44,9 @@ val normal : t -> Hit.t -> Vec3.t
 (** Unit normal of the triangle recorded in the hit (interpolated for
     smooth triangles). *)
 
+val normal_into : t -> Hit.t -> Vec3.m -> unit
+(** {!normal} written into a vector the caller owns. *)
+
 val inside : t -> Vec3.t -> bool
 
 val tri_hit :

@@ -389,9 +389,10 @@ let point_free = function
   | Shape.Plane _ | Shape.Disc _ | Shape.Box _ | Shape.Triangle _ | Shape.Smooth_triangle _ | Shape.Mesh _ -> true
   | Shape.Sphere _ | Shape.Cone _ | Shape.Torus _ -> false
 
-let normal_m o (p : Vec3.m) h =
+let normal_into o (p : Vec3.m) h out =
   match o.geom with
-  | Prim s when point_free s && Transform.is_identity o.xform -> normal o Vec3.zero h
-  | _ -> normal o (Vec3.of_m p) h
+  | Prim (Shape.Mesh m) when Transform.is_identity o.xform && not o.inverted -> Mesh.normal_into m h out
+  | Prim s when point_free s && Transform.is_identity o.xform -> Vec3.load out (normal o Vec3.zero h)
+  | _ -> Vec3.load out (normal o (Vec3.of_m p) h)
 
 let bounds o = o.bounds

@@ -93,10 +93,11 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 (** [normal leaf p h]: outward unit world normal of a leaf at the world
     point [p], from the hit record that found it. *)
 
-val normal_m : t -> Vec3.m -> Hit.t -> Vec3.t
-(** {!normal} with the point written in place: made a vector only when
-    the normal depends on it (not for untransformed planes, discs, boxes,
-    triangles and meshes). *)
+val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
+(** [normal_into leaf p h n]: {!normal} with the point and the normal
+    written in place: nothing allocated for untransformed planes, discs,
+    boxes, triangles and meshes (the point is made a vector only when the
+    normal depends on it). *)
 
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test at a world point. *)

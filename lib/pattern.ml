@@ -179,3 +179,10 @@ let value t p =
     let v = if v < 0. then v +. 1. else v in
     let v = Float.min 1. v in
     shape (Option.value ~default:(default_wave t.kind) t.wave) v
+
+(* [checker] at a point written in place: 0 or 1 *)
+let checker_m (p : Vec3.m) =
+  (int_of_float (Float.floor (p.mx +. eps))
+  + int_of_float (Float.floor (p.my +. eps))
+  + int_of_float (Float.floor (p.mz +. eps)))
+  land 1

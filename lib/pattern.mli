@@ -57,3 +57,7 @@ val value : t -> Vec3.t -> float
 (** The pattern at a point of pattern space: turbulence warp, the raw
     pattern, then frequency, phase and wave shaping (block patterns:
     the cell index as a float, no shaping). *)
+
+val checker_m : Vec3.m -> int
+(** The checker pattern's value (0 or 1) at a point written in place, as
+    {!value} gives it for [make Checker]. *)

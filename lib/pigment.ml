@@ -109,5 +109,13 @@ let rec eval p point =
       if n = 0 then Color.opaque Color.black else eval cells.(Int.min (n - 1) (Int.max 0 i)) point
   | Image_map { image; xform } -> image_eval image (Transform.inv_point xform point)
 
-(* a solid colour without making the point a vector *)
-let eval_m p (point : Vec3.m) = match p with Solid c -> c | _ -> eval p (Vec3.of_m point)
+(* a solid colour, or a plain checker of them, without making the point
+   a vector *)
+let rec eval_m p (point : Vec3.m) =
+  match p with
+  | Solid c -> c
+  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
+    when Transform.is_identity xform && Array.length cells > 0 ->
+      let n = Array.length cells in
+      eval_m cells.(Int.min (n - 1) (Pattern.checker_m point)) point
+  | _ -> eval p (Vec3.of_m point)

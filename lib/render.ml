@@ -91,9 +91,14 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
     else begin
       f ts.(i);
       let d = 1 + Atomic.fetch_and_add finished 1 in
-      if Mutex.try_lock report then
-        Fun.protect ~finally:(fun () -> Mutex.unlock report) (fun () ->
-            progress ~done_:d ~total)
+      (* no closure per tile *)
+      if Mutex.try_lock report then begin
+        match progress ~done_:d ~total with
+        | () -> Mutex.unlock report
+        | exception e ->
+            Mutex.unlock report;
+            raise e
+      end
     end
   in
   let own = (Gc.get ()).minor_heap_size and was_big = Domain.DLS.get big_minor in
@@ -107,19 +112,28 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
   Fun.protect ~finally:restore (fun () -> parallel ~domains total body);
   if Atomic.get stop then raise Cancelled
 
-let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
+(* the sum a pixel function writes into, per domain *)
+let pixel_key = Scratch.key (fun () -> Color.acc 0.)
+
+let image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
   let r = match region with Some r -> r | None -> { x0 = 0; y0 = 0; x1 = width; y1 = height } in
   if r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.x0 >= r.x1 || r.y0 >= r.y1 then
     invalid_arg "Render.image: region outside the image";
   let img = Image.create_unset (r.x1 - r.x0) (r.y1 - r.y0) in
   let cancelled = Option.value cancelled ~default:(fun () -> false) in
   run_tiles ~domains ?progress ~cancelled ?order_seed ~width ~height ~size:16 (fun t ->
+      let c = Scratch.get pixel_key in
       for y = Int.max t.y0 r.y0 to Int.min t.y1 r.y1 - 1 do
         for x = Int.max t.x0 r.x0 to Int.min t.x1 r.x1 - 1 do
           (* a pixel can take long (mc, many samples): stop between pixels *)
           if cancelled () then raise Cancelled;
-          let c : Color.t = f x y in
-          Image.set img (x - r.x0) (y - r.y0) c.r c.g c.b
+          f x y c;
+          Image.set img (x - r.x0) (y - r.y0) c.ar c.ag c.ab
         done
       done);
   img
+
+let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
+  image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height (fun x y out ->
+      let c : Color.t = f x y in
+      Color.acc_set out c.r c.g c.b)

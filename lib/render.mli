@@ -33,6 +33,14 @@ val image :
     stay aligned to the full image, so every pixel is computed exactly as
     in a full render. [cancelled] is also checked between pixels. *)
 
+val image_into :
+  domains:int -> ?progress:(done_:int -> total:int -> unit) ->
+  ?cancelled:(unit -> bool) -> ?order_seed:int -> ?region:tile -> width:int -> height:int ->
+  (int -> int -> Color.acc -> unit) -> Image.t
+(** {!image} with a pixel function that writes its colour into a sum
+    (one per tile, overwritten at every pixel): no colour record per
+    pixel. *)
+
 val parallel : domains:int -> Image.par
 (** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
     [domains] workers (in turn when [domains <= 1]): the image encoders'

@@ -231,7 +231,7 @@ let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
       ((point.z -. Float.Array.get sp (i + 2)) *. k)
 
 let hit_normal_into s (f : Object.found) (h : Hit.t) (point : Vec3.m) (out : Vec3.m) =
-  if h.id >= 0. then Vec3.load out (Object.normal_m f.leaf point h)
+  if h.id >= 0. then Object.normal_into f.leaf point h out
   else
     let i = 4 * int_of_float (-.h.id -. 1.) and sp = s.accel.spheres in
     let k = 1. /. Float.Array.get sp (i + 3) in

@@ -218,17 +218,22 @@ let intersect s r tmin tmax =
   let h = Hit.create tmax in
   if hit s r tmin h then h.t else infinity
 
+(* a box's faces: made once *)
+let minus_x = Vec3.neg Vec3.unit_x
+let minus_y = Vec3.neg Vec3.unit_y
+let minus_z = Vec3.neg Vec3.unit_z
+
 let normal s (p : Vec3.t) (h : Hit.t) =
   match s with
   | Sphere { center; radius } -> Vec3.scale (1. /. radius) (Vec3.sub p center)
   | Plane { normal; _ } | Disc { normal; _ } -> normal
   | Box _ -> (
       match int_of_float h.id with
-      | 0 -> Vec3.neg Vec3.unit_x
+      | 0 -> minus_x
       | 1 -> Vec3.unit_x
-      | 2 -> Vec3.neg Vec3.unit_y
+      | 2 -> minus_y
       | 3 -> Vec3.unit_y
-      | 4 -> Vec3.neg Vec3.unit_z
+      | 4 -> minus_z
       | _ -> Vec3.unit_z)
   | Cone { base; axis; u; v; length; r0; r1; _ } -> (
       match int_of_float h.id with

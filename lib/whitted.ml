@@ -154,9 +154,20 @@ let fresnel n c =
 (* [Vec3.dot], in place: the same arithmetic *)
 let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
 
-(* A layer's scalars, per nesting level: stored flat, so that passing
-   them allocates nothing. *)
-type nums = { mutable eta : float; mutable alpha : float; mutable weight : float }
+(* A nesting level's scalars, stored flat, so that passing them
+   allocates nothing: the relative index, the current layer's opacity,
+   the level's ADC weight, the weight of a reflection being traced
+   ([refl]) and of the ray traced next from here ([child], read by
+   [trace_ray] as it starts). *)
+type nums = {
+  mutable eta : float;
+  mutable alpha : float;
+  mutable weight : float;
+  mutable refl : float;
+  mutable child : float;
+}
+
+let nums () = { eta = 1.; alpha = 1.; weight = 1.; refl = 1.; child = 1. }
 
 (* Diffuse and highlights of one light seen from [p], added into [out];
    the shadow is [light_shadow] (an area light's samples come here as
@@ -283,7 +294,7 @@ type frame = {
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
-    k = { eta = 1.; alpha = 1.; weight = 1. } }
+    k = nums () }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
@@ -329,9 +340,11 @@ let next_media (inner : Interior.t) media =
 let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
 
 (* The ray from [o] along [d], hits beyond [tmin], its radiance into
-   [out]; [media]: the interiors the ray is inside, innermost first. [o]
-   and [d] belong to the caller and are not written. *)
-let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level weight media (out : Color.acc) =
+   [out]; its ADC weight is [from.child]; [media]: the interiors the ray
+   is inside, innermost first. [o] and [d] belong to the caller and are
+   not written. *)
+let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : nums) media (out : Color.acc) =
+  let weight = from.child in
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then Color.acc_set out 0. 0. 0.
   else
     (* read at once, before shading traces anything else *)
@@ -348,19 +361,21 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level weight medi
       (* POV-Ray fades what comes through the far side of a medium, not
          the far surface's own shading *)
       let fade = match media with (i : Interior.t) :: _ -> Interior.fade i t | [] -> white in
-      shade s d obj fr level weight media fade out;
+      fr.k.weight <- weight;
+      shade s d obj fr level media fade out;
       leave ()
     end
 
-(* [fr.n0] holds the surface's normal; turned to face the ray here *)
-and shade s (d : Vec3.m) (obj : Object.t) fr level weight media (fade : Color.t) (out : Color.acc) =
+(* [fr.n0] holds the surface's normal, turned to face the ray here;
+   [fr.k.weight] the ray's weight *)
+and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out : Color.acc) =
+  let weight = fr.k.weight in
   let n0 = fr.n0 in
   let entering = dot n0 d < 0. in
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   let inner = obj.interior in
   let eta = relative_ior inner media in
   fr.k.eta <- eta;
-  fr.k.weight <- weight;
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
@@ -381,7 +396,8 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level weight media (fade : Color.t)
     let rc = fr.rc in
     if eta = 1. then begin
       (* same index on both sides: straight through, no trace level used *)
-      trace_ray s Ray.epsilon fr.p d level w (next_media inner media) rc;
+      fr.k.child <- w;
+      trace_ray s Ray.epsilon fr.p d level fr.k (next_media inner media) rc;
       Color.acc_set out
         (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
         (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
@@ -395,13 +411,15 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level weight media (fade : Color.t)
         (* total internal reflection: not filtered by the surface colour *)
         let m = 2. *. cos_i in
         Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
-        trace_ray s Ray.epsilon fr.p rd (level + 1) weight media rc;
+        fr.k.child <- weight;
+        trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k media rc;
         Color.acc_set out (c.ar +. (fade.r *. rc.ar)) (c.ag +. (fade.g *. rc.ag)) (c.ab +. (fade.b *. rc.ab))
       end
       else begin
         let m = (eta *. cos_i) -. Float.sqrt k in
         Vec3.set rd ((eta *. d.mx) +. (m *. n.mx)) ((eta *. d.my) +. (m *. n.my)) ((eta *. d.mz) +. (m *. n.mz));
-        trace_ray s Ray.epsilon fr.p rd (level + 1) w (next_media inner media) rc;
+        fr.k.child <- w;
+        trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k (next_media inner media) rc;
         Color.acc_set out
           (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
           (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
@@ -468,7 +486,10 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           (* no tuple: the channels stay unboxed *)
           let refl_here = refl && Finish.has_reflection f in
           let rc = fr.rf in
-          if refl_here then reflection s f pc n d level (k.weight *. Color.acc_max w) media fr rc;
+          if refl_here then begin
+            k.refl <- k.weight *. Color.acc_max w;
+            reflection s f pc n d level media fr rc
+          end;
           let lr = if refl_here then lr +. rc.ar else lr
           and lg = if refl_here then lg +. rc.ag else lg
           and lb = if refl_here then lb +. rc.ab else lb in
@@ -480,9 +501,9 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest)
 
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
-   starts at the frame's point along its [rd], and brings its light back
-   into its [rc] *)
-and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level weight media (fr : frame) (out : Color.acc) =
+   starts at the frame's point along its [rd], weighs [fr.k.refl] times
+   the reflection's, and brings its light back into its [rc] *)
+and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level media (fr : frame) (out : Color.acc) =
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else
     let rf = f.reflection in
@@ -508,7 +529,8 @@ and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level weight media 
       let m = 2. *. cos_i in
       let rd = fr.rd and rc = fr.rc in
       Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
-      trace_ray s Ray.epsilon fr.p rd (level + 1) (weight *. w) media rc;
+      fr.k.child <- fr.k.refl *. w;
+      trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k media rc;
       if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
       else
         let e = 1. /. rf.exponent in
@@ -538,20 +560,20 @@ let start_media (s : Scene.t) (o : Vec3.m) =
       m
 
 (* A camera ray, per domain: its origin and direction, and its light. *)
-type camera_ray = { o : Vec3.m; d : Vec3.m; light : Color.acc }
+type camera_ray = { o : Vec3.m; d : Vec3.m; light : Color.acc; k : nums  (** [child] 1 *) }
 
-let camera_key = Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0. })
+let camera_key = Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0.; k = nums () })
 
-(* the radiance along [r] into [r.light] *)
-let trace_camera_ray s (r : camera_ray) =
+(* the radiance along [r] into [out] *)
+let trace_camera_ray s (r : camera_ray) out =
   (Scratch.get frames_key).depth <- 0;
-  trace_ray s 0. r.o r.d 1 1. (start_media s r.o) r.light
+  trace_ray s 0. r.o r.d 1 r.k (start_media s r.o) out
 
 let trace s (ray : Ray.t) =
   let r = Scratch.get camera_key in
   Vec3.load r.o ray.origin;
   Vec3.load r.d ray.dir;
-  trace_camera_ray s r;
+  trace_camera_ray s r r.light;
   Color.of_acc r.light
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
@@ -577,17 +599,27 @@ let focal_blur (s : Scene.t) sx sy px py =
   done;
   scale (1. /. float_of_int n) !acc
 
-(* inlined into [pixel]: the coordinates stay unboxed *)
-let[@inline] sample (s : Scene.t) ~width ~height px py =
+(* The light through the image point [(px, py)] into [out]; inlined:
+   the coordinates stay unboxed. *)
+let[@inline] sample_into (s : Scene.t) ~width ~height px py out =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
-  if cam.aperture > 0. then focal_blur s sx sy px py
+  if cam.aperture > 0. then set_color out (focal_blur s sx sy px py)
   else begin
     let r = Scratch.get camera_key in
     Camera.ray_into cam sx sy r.o r.d;
-    trace_camera_ray s r;
-    Color.of_acc r.light
+    trace_camera_ray s r out
   end
 
+let sample s ~width ~height px py =
+  let out = Color.acc 0. in
+  sample_into s ~width ~height px py out;
+  Color.of_acc out
+
+let pixel_into s ~width ~height x y out =
+  sample_into s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
+
 let pixel s ~width ~height x y =
-  sample s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5)
+  let out = Color.acc 0. in
+  pixel_into s ~width ~height x y out;
+  Color.of_acc out

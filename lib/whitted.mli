@@ -27,3 +27,9 @@ val sample : Scene.t -> width:int -> height:int -> float -> float -> Color.t
 
 val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 (** The colour of pixel [(x, y)]: one ray through the pixel centre. *)
+
+val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -> unit
+(** {!pixel} written into a sum the caller owns (overwritten): a camera
+    ray that crosses nothing transparent allocates nothing but its shadow
+    rays' distances (boxed for the BVH walk, 2 words each) and what
+    patterns, transforms and area lights need. *)

@@ -269,6 +269,39 @@ let declared () =
   close "material interior" 1.5 s.objects.(0).interior.ior;
   close "material texture" 1. (Pigment.eval (List.hd s.objects.(0).texture).pigment Vec3.zero).transmit
 
+(* The hot path allocates nothing in the common case: solid pigments, a
+   plain checker, point lights, reflection, spheres of the flat array,
+   planes, boxes and meshes. Minor words per camera ray over a
+   one-domain render as [camlray render] runs it ([Render.image_into]):
+   none without shadows; with them, only each shadow ray's distance (a
+   boxed float, 2 words). *)
+let allocation () =
+  let words ~shadowless =
+    let s =
+      Scn.compile
+        (Printf.sprintf
+           "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+            light_source { <-4, 6, -5>, rgb 1 %s }\n\
+            plane { y, 0 pigment { checker rgb 1, rgb <0.1, 0.2, 0.5> } finish { phong 0.3 } }\n\
+            sphere { <-1, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } finish { specular 0.5 } }\n\
+            sphere { <1.2, 0.8, 0.5>, 0.8 pigment { rgb 0.9 } finish { reflection 0.6 } }\n\
+            box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { rgb <0.2, 0.7, 0.3> } }\n\
+            mesh { triangle { <1, 0, -2>, <2, 0, -2>, <1.5, 1, -1.8> } pigment { rgb 0.5 } }"
+           (if shadowless then "shadowless" else ""))
+    in
+    let width = 64 and height = 48 in
+    let pixel = Whitted.pixel_into s ~width ~height in
+    ignore (Render.image_into ~domains:1 ~width ~height pixel);
+    let before = Gc.minor_words () in
+    ignore (Render.image_into ~domains:1 ~width ~height pixel);
+    (Gc.minor_words () -. before) /. Float.of_int (width * height)
+  in
+  let none = words ~shadowless:true and shadows = words ~shadowless:false in
+  (* the tiles and their sums: a few words per 16x16 tile *)
+  if none > 0.1 then Alcotest.failf "%.2f words per camera ray without shadows (at most 0.1)" none;
+  (* one light: a shadow ray per opaque hit, reflections' hits included *)
+  if shadows > 2.0 then Alcotest.failf "%.2f words per camera ray with one light (at most 2.0)" shadows
+
 let tests =
   ( "whitted",
     [
@@ -283,4 +316,5 @@ let tests =
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
+      Alcotest.test_case "the common case allocates nothing" `Quick allocation;
     ] )

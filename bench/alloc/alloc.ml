@@ -25,7 +25,7 @@ let () =
             else (width * height, "whitted")
           in
           let before = Gc.minor_words () in
-          ignore (Render.image ~domains:1 ~width ~height pixel);
+          ignore (Render.image_into ~domains:1 ~width ~height pixel);
           let words = Gc.minor_words () -. before in
           Printf.printf "| %s | %s | %d | %.1f |\n%!" (Filename.basename file) mode rays
             (words /. float rays);

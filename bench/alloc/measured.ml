@@ -11,6 +11,12 @@ let load file =
       | Error d -> Error (Camlray_lang.Diag.to_string d)
       | Ok s -> Ok s)
 
+(* as [camlray render] runs it: written into the tile's sum *)
 let pixel (s : Scene.t) ~width ~height ~mc =
-  if mc > 0 then Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16
-  else Whitted.pixel s ~width ~height
+  if mc > 0 then begin
+    let f = Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16 in
+    fun x y (out : Color.acc) ->
+      let c : Color.t = f x y in
+      Color.acc_set out c.r c.g c.b
+  end
+  else Whitted.pixel_into s ~width ~height

@@ -48,5 +48,5 @@ let () =
   let width = !w and height = !h in
   let pixel = Measured.pixel scene ~width ~height ~mc:!mc in
   start ();
-  ignore (Render.image ~domains:1 ~width ~height pixel);
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
   report ()
