@@ -271,7 +271,7 @@ let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) (k : nums) p n d
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
 
 (* What shading one hit keeps, one frame per nesting level, per domain,
-   reused from ray to ray ([trace_from] starts every camera ray at depth
+   reused from ray to ray ([trace_camera_ray] starts every camera ray at depth
    0): the running sums; the hit point, the normal facing the ray, the
    top layer's normal once known ([top_set]) and a perturbed normal; the
    direction of a ray traced from here and what it brings back; the
