@@ -1,5 +1,5 @@
-(* Node k is 8 floats at nodes.(8k .. 8k+7), 64 bytes, one cache line:
-   its box (min x, y, z, max x, y, z), then two integers stored as floats:
+(* Node k is 8 single-precision floats at nodes.(8k .. 8k+7), 32 bytes
+   (two nodes to a cache line): its box (min x, y, z, max x, y, z), then two integers stored as floats:
    for a leaf, the first entry in [prims] and the primitive count (> 0);
    for an interior node, the index of its second child (the first is k+1)
    and -(axis+1) for the axis it was split along. *)
