@@ -91,18 +91,18 @@ let rec eval p point =
       else
         let v0, p0 = entries.(0) in
         if v <= v0 then eval p0 point
-        else
-          let rec find i =
-            if i >= n then eval (snd entries.(n - 1)) point
-            else
-              let vi, pi = entries.(i) in
-              if v < vi then
-                let vp, pp = entries.(i - 1) in
-                if vi -. vp <= 0. then eval pi point
-                else lerp (eval pp point) (eval pi point) ((v -. vp) /. (vi -. vp))
-              else find (i + 1)
-          in
-          find 1
+        else begin
+          (* the first entry above v (a loop: no closure per point) *)
+          let i = ref 1 in
+          while !i < n && not (v < fst entries.(!i)) do
+            incr i
+          done;
+          if !i >= n then eval (snd entries.(n - 1)) point
+          else
+            let vi, pi = entries.(!i) and vp, pp = entries.(!i - 1) in
+            if vi -. vp <= 0. then eval pi point
+            else lerp (eval pp point) (eval pi point) ((v -. vp) /. (vi -. vp))
+        end
   | Blocks { pattern; cells; xform } ->
       let i = int_of_float (Pattern.value pattern (Transform.inv_point xform point)) in
       let n = Array.length cells in

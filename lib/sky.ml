@@ -4,14 +4,30 @@ let none = { pigments = [] }
 let is_empty s = s.pigments = []
 let transform tr s = { pigments = List.map (Pigment.transform tr) s.pigments }
 
+(* Layers over the background, top down, in scalars (the same
+   arithmetic as with colour records): what each layer lets through
+   weighs those below; nothing below a layer that lets nothing through. *)
 let eval s ~background dir =
-  let rec go acc w = function
-    | [] -> Color.add acc (Color.mul w background)
-    | p :: rest ->
-        let c = Pigment.eval p dir in
+  let ar = ref 0. and ag = ref 0. and ab = ref 0. in
+  let wr = ref 1. and wg = ref 1. and wb = ref 1. in
+  let rest = ref s.pigments and go = ref true in
+  while !go do
+    match !rest with
+    | [] ->
+        let (bg : Color.t) = background in
+        ar := !ar +. (!wr *. bg.r);
+        ag := !ag +. (!wg *. bg.g);
+        ab := !ab +. (!wb *. bg.b);
+        go := false
+    | p :: tl ->
+        let (c : Color.rgbft) = Pigment.eval p dir in
         let alpha = 1. -. c.filter -. c.transmit in
-        let acc = Color.add acc (Color.scale alpha (Color.mul w c.c)) in
-        let w = Color.mul w (Color.add (Color.scale c.filter c.c) (Color.gray c.transmit)) in
-        if Color.is_black w then acc else go acc w rest
-  in
-  go Color.black Color.white s.pigments
+        ar := !ar +. (alpha *. (!wr *. c.c.r));
+        ag := !ag +. (alpha *. (!wg *. c.c.g));
+        ab := !ab +. (alpha *. (!wb *. c.c.b));
+        wr := !wr *. ((c.filter *. c.c.r) +. c.transmit);
+        wg := !wg *. ((c.filter *. c.c.g) +. c.transmit);
+        wb := !wb *. ((c.filter *. c.c.b) +. c.transmit);
+        if !wr = 0. && !wg = 0. && !wb = 0. then go := false else rest := tl
+  done;
+  Color.make !ar !ag !ab
