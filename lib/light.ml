@@ -49,27 +49,14 @@ type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable
 
 let dir () = { lx = 0.; ly = 0.; lz = 1.; dist = 0. }
 
-let direction_into l (p : Vec3.t) o =
+let direction_into l (p : Vec3.m) o =
   match l.kind with
   | Parallel _ ->
-      let d, dist = direction_to l p in
+      let d, dist = direction_to l (Vec3.of_m p) in
       o.lx <- d.x;
       o.ly <- d.y;
       o.lz <- d.z;
       o.dist <- dist
-  | Point | Spot _ ->
-      let vx = l.position.x -. p.x and vy = l.position.y -. p.y and vz = l.position.z -. p.z in
-      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-      let k = 1. /. dist in
-      o.lx <- k *. vx;
-      o.ly <- k *. vy;
-      o.lz <- k *. vz;
-      o.dist <- dist
-
-(* the same from a point written in place *)
-let direction_into_m l (p : Vec3.m) o =
-  match l.kind with
-  | Parallel _ -> direction_into l (Vec3.of_m p) o
   | Point | Spot _ ->
       let vx = l.position.x -. p.mx and vy = l.position.y -. p.my and vz = l.position.z -. p.mz in
       let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in

@@ -58,12 +58,9 @@ type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable
 
 val dir : unit -> dir
 
-val direction_into : t -> Vec3.t -> dir -> unit
-(** [direction_to] written into a record: no allocation for point and
-    spot lights. *)
-
-val direction_into_m : t -> Vec3.m -> dir -> unit
-(** The same from a point written in place. *)
+val direction_into : t -> Vec3.m -> dir -> unit
+(** [direction_to] from a point written in place, into a record: no
+    allocation for point and spot lights. *)
 
 val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
 (** [position_at l a p u v], [u, v] in [[-1/2, 1/2]]: the point

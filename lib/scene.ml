@@ -181,31 +181,7 @@ let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
-(* the nearest hit of the ray loaded in [sc] *)
-let[@inline] nearest_loaded s sc tmin tmax (h : Hit.t) f =
-  h.t <- tmax;
-  h.u <- 0.;
-  h.v <- 0.;
-  h.id <- 0.;
-  let found = nearest_in s sc.ray tmin h f in
-  sc.busy <- false;
-  found
-
-let intersect_into s (o : Vec3.t) (d : Vec3.t) tmin tmax (h : Hit.t) (f : Object.found) =
-  Array.length s.objects > 0
-  && begin
-       let sc = take () in
-       let r = sc.ray in
-       r.ox <- o.x;
-       r.oy <- o.y;
-       r.oz <- o.z;
-       r.dx <- d.x;
-       r.dy <- d.y;
-       r.dz <- d.z;
-       nearest_loaded s sc tmin tmax h f
-     end
-
-let intersect_m s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
+let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
   Array.length s.objects > 0
   && begin
        let sc = take () in
@@ -216,7 +192,13 @@ let intersect_m s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.fo
        r.dx <- d.mx;
        r.dy <- d.my;
        r.dz <- d.mz;
-       nearest_loaded s sc tmin tmax h f
+       h.t <- tmax;
+       h.u <- 0.;
+       h.v <- 0.;
+       h.id <- 0.;
+       let found = nearest_in s r tmin h f in
+       sc.busy <- false;
+       found
      end
 
 let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
@@ -246,7 +228,10 @@ let hit_records () = Scratch.get records_key
 
 let intersect s (r : Ray.t) tmin tmax =
   let h, f = hit_records () in
-  if not (intersect_into s r.origin r.dir tmin tmax h f) then None
+  let o = Vec3.m () and d = Vec3.m () in
+  Vec3.load o r.origin;
+  Vec3.load d r.dir;
+  if not (intersect_into s o d tmin tmax h f) then None
   else
     let point = Ray.at r h.t in
     Some { t = h.t; obj = f.leaf; point; normal = hit_normal s f h point }

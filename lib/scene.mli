@@ -53,13 +53,11 @@ val nearest : t -> Ray.scratch -> float -> Hit.t -> Object.found -> bool
 val intersect : t -> Ray.t -> float -> float -> hit option
 (** Nearest hit in [(tmin, tmax)]. *)
 
-val intersect_into : t -> Vec3.t -> Vec3.t -> float -> float -> Hit.t -> Object.found -> bool
+val intersect_into : t -> Vec3.m -> Vec3.m -> float -> float -> Hit.t -> Object.found -> bool
 (** [intersect_into s origin dir tmin tmax h f]: {!intersect} without
-    allocating: the distance and part into [h], the object into [f.leaf]
-    (records the caller owns; read them before the next query). *)
-
-val intersect_m : t -> Vec3.m -> Vec3.m -> float -> float -> Hit.t -> Object.found -> bool
-(** {!intersect_into} with the ray in vectors written in place. *)
+    allocating, the ray in vectors written in place: the distance and part
+    into [h], the object into [f.leaf] (records the caller owns; read them
+    before the next query). *)
 
 val hit_records : unit -> Hit.t * Object.found
 (** The calling domain's records for {!intersect_into} (which {!intersect}

@@ -179,7 +179,7 @@ let one_light s (f : Finish.t) (pc : Color.t) (k : nums) (p : Vec3.m) (n : Vec3.
   let alpha = k.alpha in
   let w = Scratch.get shadow_key in
   let l = w.l in
-  Light.direction_into_m light p l;
+  Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
@@ -349,7 +349,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
   else
     (* read at once, before shading traces anything else *)
     let h, f = Scene.hit_records () in
-    if not (Scene.intersect_m s o d tmin infinity h f) then
+    if not (Scene.intersect_into s o d tmin infinity h f) then
       if Sky.is_empty s.sky then set_color out s.background
       else set_color out (Sky.eval s.sky ~background:s.background (Vec3.normalize (Vec3.of_m d)))
     else begin
