@@ -27,28 +27,7 @@ let[@inline] pixel_x ~width px = (px /. float_of_int width) -. 0.5
 let[@inline] pixel_y ~height py = 0.5 -. (py /. float_of_int height)
 let pixel_coords ~width ~height px py = (pixel_x ~width px, pixel_y ~height py)
 
-(* [a + sx right + sy up], normalized when [unit]: in scalars, allocating
-   the result only *)
-let[@inline] span c (a : Vec3.t) sx sy unit =
-  let x = a.x +. (sx *. c.right.x) and y = a.y +. (sx *. c.right.y) and z = a.z +. (sx *. c.right.z) in
-  let x = x +. (sy *. c.up.x) and y = y +. (sy *. c.up.y) and z = z +. (sy *. c.up.z) in
-  let l = if unit then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 0. in
-  if l > 0. then
-    let k = 1. /. l in
-    Vec3.make (k *. x) (k *. y) (k *. z)
-  else Vec3.make x y z
-
-let[@inline] origin c sx sy =
-  match c.projection with Perspective -> c.location | Orthographic -> span c c.location sx sy false
-
-let[@inline] dir c sx sy =
-  match c.projection with
-  | Perspective -> span c c.direction sx sy true
-  | Orthographic -> Vec3.normalize c.direction
-
-let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
-
-(* [span] written into [out] (the same arithmetic) *)
+(* [a + sx right + sy up], normalized when [unit], into [out] *)
 let[@inline] span_into c (a : Vec3.t) sx sy unit (out : Vec3.m) =
   let x = a.x +. (sx *. c.right.x) and y = a.y +. (sx *. c.right.y) and z = a.z +. (sx *. c.right.z) in
   let x = x +. (sy *. c.up.x) and y = y +. (sy *. c.up.y) and z = z +. (sy *. c.up.z) in
@@ -57,6 +36,21 @@ let[@inline] span_into c (a : Vec3.t) sx sy unit (out : Vec3.m) =
     let k = 1. /. l in
     Vec3.set out (k *. x) (k *. y) (k *. z)
   else Vec3.set out x y z
+
+let span c a sx sy unit =
+  let v = Vec3.m () in
+  span_into c a sx sy unit v;
+  Vec3.of_m v
+
+let origin c sx sy =
+  match c.projection with Perspective -> c.location | Orthographic -> span c c.location sx sy false
+
+let dir c sx sy =
+  match c.projection with
+  | Perspective -> span c c.direction sx sy true
+  | Orthographic -> Vec3.normalize c.direction
+
+let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
 let ray_into c sx sy o d =
   match c.projection with

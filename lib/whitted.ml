@@ -339,6 +339,14 @@ let next_media (inner : Interior.t) media =
 
 let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
 
+(* a surface's own light [c] and, through it ([tr], faded), the light [rc]
+   from beyond *)
+let[@inline] through (out : Color.acc) (c : Color.acc) (tr : Color.acc) (fade : Color.t) (rc : Color.acc) =
+  Color.acc_set out
+    (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
+    (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
+    (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+
 (* The ray from [o] along [d], hits beyond [tmin], its radiance into
    [out]; its ADC weight is [from.child]; [media]: the interiors the ray
    is inside, innermost first. [o] and [d] belong to the caller and are
@@ -398,10 +406,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out :
       (* same index on both sides: straight through, no trace level used *)
       fr.k.child <- w;
       trace_ray s Ray.epsilon fr.p d level fr.k (next_media inner media) rc;
-      Color.acc_set out
-        (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
-        (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
-        (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+      through out c tr fade rc
     end
     else
       let cos_i = -.dot d n in
@@ -420,10 +425,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out :
         Vec3.set rd ((eta *. d.mx) +. (m *. n.mx)) ((eta *. d.my) +. (m *. n.my)) ((eta *. d.mz) +. (m *. n.mz));
         fr.k.child <- w;
         trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k (next_media inner media) rc;
-        Color.acc_set out
-          (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
-          (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
-          (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+        through out c tr fade rc
       end
 
 (* Shade the layers of a texture top down, adding into [acc]; [w] is what
