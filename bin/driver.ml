@@ -214,8 +214,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
                 (* anti-aliasing works on whole 32x32 blocks: render them,
                    then keep the region *)
                 let full =
-                  Aa.render ~domains ~progress ~cancelled ~width ~height ~threshold
-                    ~depth:o.aa_depth (Whitted.sample scene ~width ~height)
+                  Aa.render_into ~domains ~progress ~cancelled ~width ~height ~threshold
+                    ~depth:o.aa_depth (Whitted.sample_into scene ~width ~height)
                 in
                 Option.fold ~none:full ~some:(crop full) region
             | _ ->

@@ -10,18 +10,18 @@ let[@inline] differs3 threshold ar ag ab br bg bb =
 let differs threshold (a : Color.t) (b : Color.t) = differs3 threshold a.r a.g a.b b.r b.g b.b
 
 (* The n x n samples added to the centre's [(cr, cg, cb)], channel by
-   channel in this order, into [out] at [3k]. *)
-let supersample_into ~depth sample x y cr cg cb out k =
+   channel in this order, into [out] at [3k]; [c] takes each sample. *)
+let supersample_into ~depth sample (c : Color.acc) x y cr cg cb out k =
   let n = depth in
   let r = ref cr and g = ref cg and b = ref cb in
   for j = 0 to n - 1 do
     for i = 0 to n - 1 do
       let dx = ((float_of_int i +. 0.5) /. float_of_int n) -. 0.5
       and dy = ((float_of_int j +. 0.5) /. float_of_int n) -. 0.5 in
-      let c : Color.t = sample (float_of_int x +. 0.5 +. dx) (float_of_int y +. 0.5 +. dy) in
-      r := !r +. c.r;
-      g := !g +. c.g;
-      b := !b +. c.b
+      sample (float_of_int x +. 0.5 +. dx) (float_of_int y +. 0.5 +. dy) c;
+      r := !r +. c.ar;
+      g := !g +. c.ag;
+      b := !b +. c.ab
     done
   done;
   let s = 1. /. float_of_int ((n * n) + 1) in
@@ -29,22 +29,28 @@ let supersample_into ~depth sample x y cr cg cb out k =
   Float.Array.unsafe_set out ((3 * k) + 1) (s *. !g);
   Float.Array.unsafe_set out ((3 * k) + 2) (s *. !b)
 
+(* a sample function returning colours, as one writing them *)
+let writing sample px py (out : Color.acc) =
+  let (c : Color.t) = sample px py in
+  Color.acc_set out c.r c.g c.b
+
 let supersample ~depth sample x y (centre : Color.t) =
   let out = Float.Array.create 3 in
-  supersample_into ~depth sample x y centre.r centre.g centre.b out 0;
+  supersample_into ~depth (writing sample) (Color.acc 0.) x y centre.r centre.g centre.b out 0;
   Color.make (Float.Array.get out 0) (Float.Array.get out 1) (Float.Array.get out 2)
 
 (* One block's samples, per domain, flat: colours stored in an array of
    records would be promoted by every minor collection that finds the
    block half done (the arrays, too large for the minor heap, live in
    the major one), and the major collector would mark and sweep them. *)
-type buffers = { value : Float.Array.t; enc : Float.Array.t; done_ : Bytes.t }
+type buffers = { value : Float.Array.t; enc : Float.Array.t; done_ : Bytes.t; one : Color.acc }
 
 let cells = (block + 1) * (block + 1)
 
 let buffers_key =
   Scratch.key (fun () ->
-      { value = Float.Array.create (3 * cells); enc = Float.Array.create (3 * cells); done_ = Bytes.create cells })
+      { value = Float.Array.create (3 * cells); enc = Float.Array.create (3 * cells); done_ = Bytes.create cells;
+        one = Color.acc 0. })
 
 let[@inline] get a k c = Float.Array.unsafe_get a ((3 * k) + c)
 
@@ -54,7 +60,7 @@ let[@inline] get a k c = Float.Array.unsafe_get a ((3 * k) + c)
 let render_block ~threshold ~depth sample img (t : Render.tile) =
   let w = t.x1 - t.x0 and h = t.y1 - t.y0 in
   let bw = w + 1 in
-  let { value; enc; done_ } = Scratch.get buffers_key in
+  let { value; enc; done_; one } = Scratch.get buffers_key in
   Bytes.fill done_ 0 (bw * (h + 1)) '\000';
   let set_encoded k =
     Float.Array.unsafe_set enc (3 * k) (encode1 (get value k 0));
@@ -64,18 +70,18 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
   let idx i j = (j * bw) + i in
   let trace i j =
     let x = t.x0 + i - 1 and y = t.y0 + j - 1 in
-    let c : Color.t = sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) in
+    sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) one;
     let k = idx i j in
-    Float.Array.unsafe_set value (3 * k) c.r;
-    Float.Array.unsafe_set value ((3 * k) + 1) c.g;
-    Float.Array.unsafe_set value ((3 * k) + 2) c.b;
+    Float.Array.unsafe_set value (3 * k) one.ar;
+    Float.Array.unsafe_set value ((3 * k) + 1) one.ag;
+    Float.Array.unsafe_set value ((3 * k) + 2) one.ab;
     set_encoded k
   in
   let super i j =
     let k = idx i j in
     if Bytes.unsafe_get done_ k = '\000' then begin
       Bytes.unsafe_set done_ k '\001';
-      supersample_into ~depth sample (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1)
+      supersample_into ~depth sample one (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1)
         (get value k 2) value k;
       set_encoded k
     end
@@ -103,8 +109,11 @@ let render_block ~threshold ~depth sample img (t : Render.tile) =
     done
   done
 
-let render ~domains ?progress ?cancelled ~width ~height ~threshold ~depth sample =
+let render_into ~domains ?progress ?cancelled ~width ~height ~threshold ~depth sample =
   let img = Image.create width height in
   Render.run_tiles ~domains ?progress ?cancelled ~width ~height ~size:block
     (render_block ~threshold ~depth sample img);
   img
+
+let render ~domains ?progress ?cancelled ~width ~height ~threshold ~depth sample =
+  render_into ~domains ?progress ?cancelled ~width ~height ~threshold ~depth (writing sample)

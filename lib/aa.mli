@@ -33,3 +33,10 @@ val render :
   ?cancelled:(unit -> bool) -> width:int -> height:int -> threshold:float -> depth:int ->
   (float -> float -> Color.t) -> Image.t
 (** Render an image with anti-aliasing; [depth] in 1..9. *)
+
+val render_into :
+  domains:int -> ?progress:(done_:int -> total:int -> unit) ->
+  ?cancelled:(unit -> bool) -> width:int -> height:int -> threshold:float -> depth:int ->
+  (float -> float -> Color.acc -> unit) -> Image.t
+(** {!render} with a sample function that writes its colour into a sum
+    (per domain, overwritten at every sample). *)

@@ -603,7 +603,7 @@ let focal_blur (s : Scene.t) sx sy px py =
 
 (* The light through the image point [(px, py)] into [out]; inlined:
    the coordinates stay unboxed. *)
-let[@inline] sample_into (s : Scene.t) ~width ~height px py out =
+let[@inline] sample_in (s : Scene.t) ~width ~height px py out =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
   if cam.aperture > 0. then set_color out (focal_blur s sx sy px py)
@@ -613,13 +613,15 @@ let[@inline] sample_into (s : Scene.t) ~width ~height px py out =
     trace_camera_ray s r out
   end
 
+let sample_into s ~width ~height px py out = sample_in s ~width ~height px py out
+
 let sample s ~width ~height px py =
   let out = Color.acc 0. in
-  sample_into s ~width ~height px py out;
+  sample_in s ~width ~height px py out;
   Color.of_acc out
 
 let pixel_into s ~width ~height x y out =
-  sample_into s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
+  sample_in s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
 
 let pixel s ~width ~height x y =
   let out = Color.acc 0. in

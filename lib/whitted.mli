@@ -25,6 +25,9 @@ val sample : Scene.t -> width:int -> height:int -> float -> float -> Color.t
     point [(px, py)] (pixel [(i, j)] spans [[i, i+1) x [j, j+1)], row 0 at
     the top). *)
 
+val sample_into : Scene.t -> width:int -> height:int -> float -> float -> Color.acc -> unit
+(** {!sample} written into a sum the caller owns (overwritten). *)
+
 val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 (** The colour of pixel [(x, y)]: one ray through the pixel centre. *)
 
