@@ -54,58 +54,63 @@ let buffers_key =
 
 let[@inline] get a k c = Float.Array.unsafe_get a ((3 * k) + c)
 
+let set_encoded b k =
+  Float.Array.unsafe_set b.enc (3 * k) (encode1 (get b.value k 0));
+  Float.Array.unsafe_set b.enc ((3 * k) + 1) (encode1 (get b.value k 1));
+  Float.Array.unsafe_set b.enc ((3 * k) + 2) (encode1 (get b.value k 2))
+
+(* The block's cell (i, j) is pixel (x0 + i - 1, y0 + j - 1), at [k]. The
+   steps are functions of their own, not closures made per block: a
+   minor collection in the middle of a block would promote those. *)
+let trace_cell b sample (t : Render.tile) bw i j =
+  let x = t.x0 + i - 1 and y = t.y0 + j - 1 in
+  let one = b.one in
+  sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) one;
+  let k = (j * bw) + i in
+  Float.Array.unsafe_set b.value (3 * k) one.ar;
+  Float.Array.unsafe_set b.value ((3 * k) + 1) one.ag;
+  Float.Array.unsafe_set b.value ((3 * k) + 2) one.ab;
+  set_encoded b k
+
+let super_cell b ~depth sample (t : Render.tile) bw i j =
+  let k = (j * bw) + i in
+  if Bytes.unsafe_get b.done_ k = '\000' then begin
+    Bytes.unsafe_set b.done_ k '\001';
+    let v = b.value in
+    supersample_into ~depth sample b.one (t.x0 + i - 1) (t.y0 + j - 1) (get v k 0) (get v k 1) (get v k 2) v k;
+    set_encoded b k
+  end
+
+let[@inline] differ threshold b k k' =
+  let e = b.enc in
+  differs3 threshold (get e k 0) (get e k 1) (get e k 2) (get e k' 0) (get e k' 1) (get e k' 2)
+
 (* One block: a (w+1) x (h+1) buffer whose row 0 and column 0 are the
    neighbours above and left of the block (outside the image at its
    border: still traced, as POV-Ray does). *)
 let render_block ~threshold ~depth sample img (t : Render.tile) =
   let w = t.x1 - t.x0 and h = t.y1 - t.y0 in
   let bw = w + 1 in
-  let { value; enc; done_; one } = Scratch.get buffers_key in
-  Bytes.fill done_ 0 (bw * (h + 1)) '\000';
-  let set_encoded k =
-    Float.Array.unsafe_set enc (3 * k) (encode1 (get value k 0));
-    Float.Array.unsafe_set enc ((3 * k) + 1) (encode1 (get value k 1));
-    Float.Array.unsafe_set enc ((3 * k) + 2) (encode1 (get value k 2))
-  in
-  let idx i j = (j * bw) + i in
-  let trace i j =
-    let x = t.x0 + i - 1 and y = t.y0 + j - 1 in
-    sample (float_of_int x +. 0.5) (float_of_int y +. 0.5) one;
-    let k = idx i j in
-    Float.Array.unsafe_set value (3 * k) one.ar;
-    Float.Array.unsafe_set value ((3 * k) + 1) one.ag;
-    Float.Array.unsafe_set value ((3 * k) + 2) one.ab;
-    set_encoded k
-  in
-  let super i j =
-    let k = idx i j in
-    if Bytes.unsafe_get done_ k = '\000' then begin
-      Bytes.unsafe_set done_ k '\001';
-      supersample_into ~depth sample one (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1)
-        (get value k 2) value k;
-      set_encoded k
-    end
-  in
-  let differ k k' =
-    differs3 threshold (get enc k 0) (get enc k 1) (get enc k 2) (get enc k' 0) (get enc k' 1) (get enc k' 2)
-  in
-  for i = 1 to w do trace i 0 done;
+  let b = Scratch.get buffers_key in
+  Bytes.fill b.done_ 0 (bw * (h + 1)) '\000';
+  for i = 1 to w do trace_cell b sample t bw i 0 done;
   for j = 1 to h do
-    trace 0 j;
+    trace_cell b sample t bw 0 j;
     for i = 1 to w do
-      trace i j;
-      let k = idx i j in
-      let left = differ (idx (i - 1) j) k in
-      let up = differ (idx i (j - 1)) k in
-      if left then super (i - 1) j;
-      if up then super i (j - 1);
-      if left || up then super i j
+      trace_cell b sample t bw i j;
+      let k = (j * bw) + i in
+      let left = differ threshold b (k - 1) k in
+      let up = differ threshold b (k - bw) k in
+      if left then super_cell b ~depth sample t bw (i - 1) j;
+      if up then super_cell b ~depth sample t bw i (j - 1);
+      if left || up then super_cell b ~depth sample t bw i j
     done
   done;
+  let v = b.value in
   for j = 1 to h do
     for i = 1 to w do
-      let k = idx i j in
-      Image.set img (t.x0 + i - 1) (t.y0 + j - 1) (get value k 0) (get value k 1) (get value k 2)
+      let k = (j * bw) + i in
+      Image.set img (t.x0 + i - 1) (t.y0 + j - 1) (get v k 0) (get v k 1) (get v k 2)
     done
   done
 
