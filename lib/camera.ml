@@ -37,15 +37,22 @@ let[@inline] span_into c (a : Vec3.t) sx sy unit (out : Vec3.m) =
     Vec3.set out (k *. x) (k *. y) (k *. z)
   else Vec3.set out x y z
 
-let span c a sx sy unit =
-  let v = Vec3.m () in
-  span_into c a sx sy unit v;
-  Vec3.of_m v
+(* the same as a new vector (the path tracer's camera rays): written
+   again rather than through [span_into], which would allocate a second
+   vector per sample *)
+let[@inline] span c (a : Vec3.t) sx sy unit =
+  let x = a.x +. (sx *. c.right.x) and y = a.y +. (sx *. c.right.y) and z = a.z +. (sx *. c.right.z) in
+  let x = x +. (sy *. c.up.x) and y = y +. (sy *. c.up.y) and z = z +. (sy *. c.up.z) in
+  let l = if unit then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 0. in
+  if l > 0. then
+    let k = 1. /. l in
+    Vec3.make (k *. x) (k *. y) (k *. z)
+  else Vec3.make x y z
 
-let origin c sx sy =
+let[@inline] origin c sx sy =
   match c.projection with Perspective -> c.location | Orthographic -> span c c.location sx sy false
 
-let dir c sx sy =
+let[@inline] dir c sx sy =
   match c.projection with
   | Perspective -> span c c.direction sx sy true
   | Orthographic -> Vec3.normalize c.direction

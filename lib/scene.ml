@@ -181,6 +181,16 @@ let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
+(* the nearest hit of the ray loaded in [sc] *)
+let[@inline] nearest_loaded s sc tmin tmax (h : Hit.t) f =
+  h.t <- tmax;
+  h.u <- 0.;
+  h.v <- 0.;
+  h.id <- 0.;
+  let found = nearest_in s sc.ray tmin h f in
+  sc.busy <- false;
+  found
+
 let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
   Array.length s.objects > 0
   && begin
@@ -192,13 +202,7 @@ let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object
        r.dx <- d.mx;
        r.dy <- d.my;
        r.dz <- d.mz;
-       h.t <- tmax;
-       h.u <- 0.;
-       h.v <- 0.;
-       h.id <- 0.;
-       let found = nearest_in s r tmin h f in
-       sc.busy <- false;
-       found
+       nearest_loaded s sc tmin tmax h f
      end
 
 let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
@@ -228,10 +232,14 @@ let hit_records () = Scratch.get records_key
 
 let intersect s (r : Ray.t) tmin tmax =
   let h, f = hit_records () in
-  let o = Vec3.m () and d = Vec3.m () in
-  Vec3.load o r.origin;
-  Vec3.load d r.dir;
-  if not (intersect_into s o d tmin tmax h f) then None
+  let found =
+    Array.length s.objects > 0
+    &&
+    let sc = take () in
+    Ray.load sc.ray r;
+    nearest_loaded s sc tmin tmax h f
+  in
+  if not found then None
   else
     let point = Ray.at r h.t in
     Some { t = h.t; obj = f.leaf; point; normal = hit_normal s f h point }
