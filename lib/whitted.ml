@@ -397,7 +397,6 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out :
     Color.acc_set tr 1. 1. 1.;
     layers s d level media fr guess c tr obj.texture
   end;
-  let n = if fr.top_set then fr.top else n0 in
   if Color.acc_luminance tr <= bailout then Color.acc_set out c.ar c.ag c.ab
   else
     let w = weight *. Color.acc_max tr in
