@@ -23,39 +23,66 @@ and unsupported = {
    compare showed in profiles of parsing) *)
 module H = Hashtbl.Make (String)
 
-type t = { globals : binding H.t; mutable scopes : binding H.t list }
+(* A name's binding is a cell, rewritten in place when the name is
+   declared again: a reader that has found the cell can keep it for as
+   long as [gen] has not moved (no name added or removed anywhere, no
+   scope entered or left), and read the name again without a lookup. *)
+type cell = { mutable b : binding }
 
-let create () = { globals = H.create 256; scopes = [] }
+type t = { globals : cell H.t; mutable scopes : cell H.t list; mutable gen : int }
 
-let find t name =
+let create () = { globals = H.create 256; scopes = []; gen = 0 }
+let generation t = t.gen
+let binding c = c.b
+let moved t = t.gen <- t.gen + 1
+
+let lookup t name =
   let rec go = function
     | [] -> H.find_opt t.globals name
-    | s :: rest -> ( match H.find_opt s name with Some b -> Some b | None -> go rest)
+    | s :: rest -> ( match H.find_opt s name with Some c -> Some c | None -> go rest)
   in
   go t.scopes
 
+let find t name = match lookup t name with Some c -> Some c.b | None -> None
+
+let set t table name b =
+  match H.find_opt table name with
+  | Some c -> c.b <- b
+  | None ->
+      H.replace table name { b };
+      moved t
+
 let declare t name b =
   match List.find_opt (fun s -> H.mem s name) t.scopes with
-  | Some s -> H.replace s name b
-  | None -> H.replace t.globals name b
+  | Some s -> set t s name b
+  | None -> set t t.globals name b
 
 let local t name b =
   match t.scopes with
-  | s :: _ -> H.replace s name b
-  | [] -> H.replace t.globals name b
+  | s :: _ -> set t s name b
+  | [] -> set t t.globals name b
 
 let undef t name =
-  match List.find_opt (fun s -> H.mem s name) t.scopes with
+  (match List.find_opt (fun s -> H.mem s name) t.scopes with
   | Some s -> H.remove s name
-  | None -> H.remove t.globals name
+  | None -> H.remove t.globals name);
+  moved t
 
-let push_scope t = t.scopes <- H.create 16 :: t.scopes
-let pop_scope t = match t.scopes with [] -> () | _ :: rest -> t.scopes <- rest
+let push_scope t =
+  t.scopes <- H.create 16 :: t.scopes;
+  moved t
 
-type mark = binding H.t list
+let pop_scope t =
+  (match t.scopes with [] -> () | _ :: rest -> t.scopes <- rest);
+  moved t
+
+type mark = cell H.t list
 
 let mark t = t.scopes
-let restore t m = t.scopes <- m
+
+let restore t m =
+  t.scopes <- m;
+  moved t
 
 let names t =
   let acc = ref [] in

@@ -36,6 +36,19 @@ val create : unit -> t
 val find : t -> string -> binding option
 (** Innermost scope first, then the globals. *)
 
+type cell
+(** Where a name's binding is kept: declaring the name again rewrites
+    the cell. *)
+
+val lookup : t -> string -> cell option
+(** The cell {!find} reads. *)
+
+val binding : cell -> binding
+
+val generation : t -> int
+(** Moves whenever a name is added or removed or a scope is entered or
+    left: while it stays, every name's {!lookup} gives the same cell. *)
+
 val declare : t -> string -> binding -> unit
 (** [#declare]: the innermost scope that already has the name, else the
     global table. *)

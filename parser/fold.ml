@@ -7,6 +7,7 @@ type e = { node : node; loc : Loc.t }
 
 and node =
   | Num of float
+  | Var of int  (** the i-th float name of a run kept to be read again (below) *)
   | Bin of string * e * e
   | Neg of e
   | Paren of e
@@ -181,15 +182,18 @@ and primary_end st e =
 
 (* In the order the parser's actions would run: left to right, inner
    first, each with the span the parser would give it. *)
-let rec eval e =
+let rec eval_with (values : float array) e =
   match e.node with
   | Num f -> Value.Float f
+  | Var i -> Value.Float (Array.unsafe_get values i)
   | Bin (op, a, b) ->
-      let a = eval a in
-      Value.binop e.loc op a (eval b)
-  | Neg a -> Value.neg e.loc (eval a)
-  | Paren a -> eval a
-  | Call (f, args) -> Value.call e.loc f (List.map eval args)
+      let a = eval_with values a in
+      Value.binop e.loc op a (eval_with values b)
+  | Neg a -> Value.neg e.loc (eval_with values a)
+  | Paren a -> eval_with values a
+  | Call (f, args) -> Value.call e.loc f (List.map (eval_with values) args)
+
+let eval e = eval_with [||] e
 
 (* < run, run [, run [, run]] >: 2 to 5 components, each a run ending at
    the comma or the '>' (no trailing comma, no components written without
@@ -215,12 +219,150 @@ let give_back t st first =
   | [] -> t.pending <- List.tl t.pending; (first, [])
   | x :: rest -> t.pending <- rest @ t.pending; (x, [])
 
+(* Vectors read again. In a loop or a macro body the same tokens are read
+   again and again: a vector run read there is kept, by position, as its
+   tree with the float names it read left as names ([Var]), and read
+   again from the tree when the same position comes up, if every one of
+   those names is still a float read without a side effect (their values
+   are looked up then), no token is pushed back, and the parser takes a
+   vector there. The tokens are passed over (they count towards the
+   token limit as if read), the arithmetic is done with the same
+   functions, spans and order as a run read token by token, and the
+   parser gets the same token: the scene and its errors are the same.
+   Anything else (a name that has become a vector, a macro or a
+   deprecated name; an error the parser would make) and the run is read
+   token by token as before. *)
+(* where a name's value is read: found once, kept while the symbol
+   table's generation stays *)
+type how = Builtin of float | Version | Named of Env.cell
+
+type plan = {
+  len : int;  (** tokens in the run, its '<' and '>' included *)
+  comps : e array;
+  span : Loc.t;
+  names : string array;  (** the float names it reads, each once ([Var i] is [names.(i)]) *)
+  mutable hows : how array;
+  mutable gen : int;  (** the {!Env.generation} [hows] were found in; -1: none *)
+}
+
+type Toks.memo += Plans of (int, plan) Hashtbl.t
+
+(* where a float name the run may read silently is read, as [ident]
+   reads it (None: not a name the run may read silently) *)
+let how t name =
+  if Hashtbl.length t.deprecated <> 0 && Hashtbl.mem t.deprecated name then None
+  else
+    match Cursor.builtin t name with
+    | Some v -> Some (Builtin v)
+    | None when String.equal name "version" -> Some Version
+    | None -> Option.map (fun c -> Named c) (Env.lookup t.env name)
+
+let value_of = function
+  | Builtin v -> Some v
+  | Version -> Some (Defaults.version ())
+  | Named c -> (
+      match Env.binding c with Env.Decl (Decl.Value (Value.Float f)) -> Some f | _ -> None)
+
+(* where the same tokens are read again: a macro's body, an open loop *)
+let read_again f =
+  (match f.kind with Macro_call _ -> true | Main | Include _ -> false)
+  || List.exists (function In_for _ | In_while _ -> true | In_if _ | In_switch _ -> false) f.ctrl
+
+let plans f =
+  match Toks.memo f.toks with
+  | Plans h -> h
+  | _ ->
+      let h = Hashtbl.create 16 in
+      Toks.set_memo f.toks (Plans h);
+      h
+
+(* After a vector run read token by token: keep it if its tokens are the
+   top frame's, in order, the last one just read. *)
+let keep t st cs span =
+  match t.frames with
+  | f :: _ when t.pending = [] && t.stop_at = None && read_again f ->
+      let taken = Array.of_list (List.rev st.taken) in
+      let len = Array.length taken in
+      let p0 = f.pos - len in
+      let raw i = Toks.get f.toks (p0 + i) in
+      let rec same i = i >= len || ((raw i).loc == snd taken.(i) && same (i + 1)) in
+      if p0 >= 0 && same 0 then begin
+        let names = ref [] in
+        for i = 0 to len - 1 do
+          match (raw i).raw with Ident n -> names := ((raw i).loc, n) :: !names | _ -> ()
+        done;
+        let names_once = Array.of_list (List.sort_uniq String.compare (List.map snd !names)) in
+        let index n =
+          let rec go i = if String.equal names_once.(i) n then i else go (i + 1) in
+          go 0
+        in
+        let rec named e =
+          match e.node with
+          | Num _ -> (
+              match List.assq_opt e.loc !names with Some n -> { e with node = Var (index n) } | None -> e)
+          | Var _ -> e
+          | Bin (op, a, b) -> { e with node = Bin (op, named a, named b) }
+          | Neg a -> { e with node = Neg (named a) }
+          | Paren a -> { e with node = Paren (named a) }
+          | Call (fn, args) -> { e with node = Call (fn, List.map named args) }
+        in
+        let plan =
+          { len; comps = Array.of_list (List.map named cs); span; names = names_once; hows = [||]; gen = -1 }
+        in
+        Hashtbl.replace (plans f) p0 plan
+      end
+  | _ -> ()
+
+let replay t ~accepts (tok, (loc : Loc.t)) =
+  match (tok : Parser.token) with
+  | LT when t.pending = [] && t.stop_at = None -> (
+      let f = top t in
+      let p0 = f.pos - 1 in
+      match Toks.memo f.toks with
+      | Plans h -> (
+          match Hashtbl.find_opt h p0 with
+          | Some p
+            when (Toks.get f.toks p0).loc == loc
+                 && t.supplied + p.len - 1 <= t.config.limits.max_tokens
+                 && accepts (Parser.VECTOR [||]) -> (
+              let n = Array.length p.names in
+              let gen = Env.generation t.env in
+              let found =
+                (p.gen = gen && Hashtbl.length t.deprecated = 0)
+                ||
+                let hows = Array.map (how t) p.names in
+                Array.for_all Option.is_some hows
+                && begin
+                  p.hows <- Array.map Option.get hows;
+                  p.gen <- (if Hashtbl.length t.deprecated = 0 then gen else -1);
+                  true
+                end
+              in
+              let values = Array.make n 0. in
+              let rec resolve i =
+                i >= n
+                || match value_of (Array.unsafe_get p.hows i) with
+                   | Some v -> Array.unsafe_set values i v; resolve (i + 1)
+                   | None -> false
+              in
+              if not (found && resolve 0) then None
+              else begin
+                f.pos <- p0 + p.len;
+                t.supplied <- t.supplied + p.len - 1;
+                let v = Array.map (fun e -> Value.to_float e.loc (eval_with values e)) p.comps in
+                Some (Parser.VECTOR v, p.span)
+              end)
+          | _ -> None)
+      | _ -> None)
+  | _ -> None
+
 let run_vector t ~next first =
   t.pending <- first :: t.pending;
   let st = { t; next; taken = []; ahead = Unknown } in
   match vector st with
   | cs, loc ->
       let v = Array.of_list (List.map (fun e -> Value.to_float e.loc (eval e)) cs) in
+      keep t st cs loc;
       ((Parser.VECTOR v, loc), List.rev st.taken)
   | exception Bail -> give_back t st first
 

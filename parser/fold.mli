@@ -41,3 +41,12 @@ val run :
     parser to be given instead if it refuses the run: its error message
     is then the one it would have given), or [(first, [])], anything read
     after [first] being given back. *)
+
+val replay :
+  Cursor.t -> accepts:(Parser.token -> bool) -> Parser.token * Loc.t -> (Parser.token * Loc.t) option
+(** [replay t ~accepts first]: [first], a ['<'] just read from the top
+    frame, starts a vector run already read at this position of a loop or
+    a macro body: the run read again from what was kept of it, its tokens
+    passed over, if the parser [accepts] a vector here and the run's
+    names are still floats read without a side effect. [None] otherwise,
+    nothing read. *)

@@ -227,7 +227,10 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
              nothing is read past where the parser would stop *)
           let (tok, loc), orig =
             if from_raw && t.config.fold && Fold.may_start t last tok && I.acceptable cp tok first.start
-            then Fold.run t ~next x
+            then
+              match Fold.replay t ~accepts:(fun v -> I.acceptable cp v first.start) x with
+              | Some y -> (y, [])
+              | None -> Fold.run t ~next x
             else (x, [])
           in
           t.last <- loc;

@@ -7,8 +7,12 @@ let bits = 6
 let size = 1 lsl bits
 let margin = size
 
+type memo = ..
+type memo += Nothing
+
 type t = {
   mutable chunks : Lexer.token array array;
+  mutable memo : memo;  (** what a reader keeps about these tokens (see {!Fold}) *)
   mutable count : int;  (** tokens lexed so far *)
   lex : (unit -> Lexer.token) option;  (** [None]: a fixed sequence *)
   mutable finished : bool;
@@ -19,10 +23,10 @@ let of_array a =
   let n = Array.length a in
   let chunk c = Array.sub a (c * size) (min size (n - (c * size))) in
   let chunks = Array.init ((n + size - 1) / size) chunk in
-  { chunks; count = n; lex = None; finished = true; released = 0 }
+  { chunks; memo = Nothing; count = n; lex = None; finished = true; released = 0 }
 
 let of_text ~file text =
-  { chunks = [||]; count = 0; lex = Some (Lexer.stream ~file text); finished = false; released = 0 }
+  { chunks = [||]; memo = Nothing; count = 0; lex = Some (Lexer.stream ~file text); finished = false; released = 0 }
 
 (* lex one more chunk (or up to the end) *)
 let fill t =
@@ -68,6 +72,9 @@ let[@inline] get t i =
   if i >= 0 && i < t.count && i lsr bits >= t.released then
     Array.unsafe_get (Array.unsafe_get t.chunks (i lsr bits)) (i land (size - 1))
   else get_slow t i
+
+let memo t = t.memo
+let set_memo t m = t.memo <- m
 
 let sub t pos len = Array.init len (fun k -> get t (pos + k))
 

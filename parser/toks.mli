@@ -5,6 +5,16 @@
 
 type t
 
+type memo = ..
+(** What a reader of the tokens keeps about them, by position (the
+    arithmetic runs {!Fold} has read in a loop or a macro body, to read
+    them again without their tokens). *)
+
+type memo += Nothing
+
+val memo : t -> memo
+val set_memo : t -> memo -> unit
+
 val of_array : Lexer.token array -> t
 (** A fixed sequence (a macro body); its last token is [Eof]. *)
 

@@ -34,11 +34,14 @@ let prop =
    parentheses, sin(...)) with what must not (members, macros that end
    mid-expression, directives inside an expression, comparisons, vectors,
    rand), in the places a run may start. *)
-let prelude =
+let plain_prelude =
   "#declare A = 3; #declare B = -0.5; #declare V = <1, 2, 3>; #declare R = seed(7);\n\
    #declare Arr = array[3] { 4, 5, 6 }\n\
-   #macro M() 3 #end #macro P() 2 * #end #macro Q() 1 + 2 #end #macro S(X) X * 2 #end\n\
-   #declare deprecated \"use A\" D = 4;\n"
+   #macro M() 3 #end #macro P() 2 * #end #macro Q() 1 + 2 #end #macro S(X) X * 2 #end\n"
+
+(* with a deprecated name, names are looked up at every reading (see
+   Fold.replay): both ways are tested *)
+let prelude = plain_prelude ^ "#declare deprecated \"use A\" D = 4;\n"
 
 let expr_gen =
   QCheck.Gen.(
@@ -80,7 +83,22 @@ let context_gen =
         map2 (fun a b -> Printf.sprintf "sphere { 0, 1 scale %s translate <%s, 0, 0> }" a b) e e;
         map2 (fun a b -> Printf.sprintf "sphere { 0, S(%s) + %s }" a b) e e;
         map (fun a -> Printf.sprintf "mesh2 { vertex_vectors { 3, <0,0,0>, <%s, 0, 0>, <0, 1, 0> } \
-                                      face_indices { 1, <0, 1, 2> } }" a) e ])
+                                      face_indices { 1, <0, 1, 2> } }" a) e;
+        (* vectors read again in loops and macro bodies (Fold.replay),
+           their names changing value, type or status between readings *)
+        map2 (fun a b -> Printf.sprintf "#for (I, 0, 3) sphere { <%s, I, 1>, %s } #end" a b) e e;
+        map (fun a -> Printf.sprintf
+               "#for (I, 0, 3) #if (I = 2) #declare A = <1, 2, 3>; #end sphere { <A * I, %s, 0>, 1 } #end" a) e;
+        map (fun a -> Printf.sprintf "#macro T(X) sphere { <X, %s, 1>, 1 } #end T(1) T(2) T(<1, 2, 3>) T(A) T(B)" a) e;
+        map (fun a -> Printf.sprintf
+               "#for (I, 0, 2) #if (I = 1) #declare deprecated \"no\" A = 2; #end sphere { <A, I, %s>, 1 } #end" a) e;
+        map (fun a -> Printf.sprintf "#for (I, 0, 2) #if (I = 1) #undef A #end sphere { <A, I, %s>, 1 } #end" a) e;
+        map (fun a -> Printf.sprintf "#declare J = 0; #while (J < 3) sphere { <J, %s, 0>, 1 } #declare J = J + 1; #end" a) e;
+        map (fun a -> Printf.sprintf
+               "#macro W(X) <X, %s, 1> #end sphere { W(1), 1 } #declare Z = W(2) + 1; sphere { Z, W(A).x } \
+                #if (W(3).x > 0) sphere { 0, 1 } #end" a) e;
+        map2 (fun a b -> Printf.sprintf
+                "#for (I, 0, 2) #declare C = <I, %s, 1>; #declare D2 = <%s, I>; sphere { C, D2.x } #end" a b) e e ])
 
 let folding_changes_nothing gen name count =
   let run fold text =
@@ -103,16 +121,19 @@ let fold_cases =
   Alcotest.test_case "folding arithmetic: fixed cases read the same" `Quick (fun () ->
       let run fold text =
         let options = { options with Parse.fold_arithmetic = fold } in
-        match Parse.string ~options (prelude ^ text) with
+        match Parse.string ~options text with
         | Ok s -> Ok (Printer.scene s)
         | Error d -> Error (Diag.to_string d)
       in
       List.iter
         (fun text ->
+          List.iter (fun prelude ->
+          let text = prelude ^ text in
           let a = run true text and b = run false text in
           if a <> b then
             Alcotest.failf "%s\nfolded: %s\nnot folded: %s" text
               (match a with Ok s | Error s -> s) (match b with Ok s | Error s -> s))
+          [ prelude; plain_prelude ])
         [ "sphere { 0, sqrt(-1) + M(1) }"; "sphere { <ln(0), M(1), 0>, 1 }";
           "sphere { <1, 2, 3> * 2, A < 4 }"; "sphere { 0, (A < 2 + 1) + 1 }";
           "sphere { <1>, 1 }"; "sphere { <1, 2>, 1 }"; "sphere { <1, 2, 3, 4, 5>, 1 }";
@@ -121,11 +142,41 @@ let fold_cases =
           "sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> * 2 } }";
           "sphere { 0, 1 pigment { rgb <1, 0.5, 0.25> + <0, 0, 1> } }";
           "#declare X = <1, 2, 3> sphere { X, 1 }"; "sphere { 0, D + 1 }";
-          "sphere { 0, 1 translate <A, 1/0, 2> }" ])
+          "sphere { 0, 1 translate <A, 1/0, 2> }";
+          "#for (I, 0, 3) sphere { <1/(I - 2), I, 0>, 1 } #end";
+          "#for (I, 0, 3) sphere { <I, 2, 0>, 1 } #if (I = 1) #declare A = \"s\"; #end sphere { <A, I, 0>, 1 } #end";
+          "#for (I, 0, 2) #declare V = <I, clock, version>; sphere { V, 1 } #end";
+          "#macro T(X) sphere { <X, 1, 1>, 1 } #end T(1) T(2) T(3) T(<1, 2, 3>)";
+          "#declare X = 5; #macro U() sphere { <X, 1, 1>, 1 } #end U() U() #macro V(X) U() #end V(7) U() V(8)";
+          "#declare X = 5; #for (I, 0, 3) sphere { <X, I, 1>, 1 } #if (I = 1) #undef X #declare X = 9; #end #end";
+          "#for (I, 0, 3) sphere { <I, 0, 1>, 1 } #if (I = 1) #local I = 7; #end #end" ])
+
+(* A loop that reaches the token limit while its vectors are read again
+   from what was kept of them stops at the same token, with the same
+   message. *)
+let replay_limit =
+  Alcotest.test_case "folding arithmetic: the token limit inside vectors read again" `Quick (fun () ->
+      let text = "#for (I, 0, 99) #declare V = <I, I + 1, I * 2 - 3>; #end sphere { V, 1 }" in
+      List.iter
+        (fun max_tokens ->
+          let run fold =
+            let limits = { options.limits with max_tokens } in
+            match Parse.string ~options:{ options with Parse.fold_arithmetic = fold; limits } text with
+            | Ok s -> Ok (Printer.scene s)
+            | Error d -> Error (Diag.to_string d)
+          in
+          let a = run true and b = run false in
+          (match b with Error _ -> () | Ok _ -> if max_tokens < 1000 then Alcotest.fail "no limit reached");
+          if a <> b then
+            Alcotest.failf "limit %d\nfolded: %s\nnot folded: %s" max_tokens
+              (match a with Ok s | Error s -> s) (match b with Ok s | Error s -> s))
+        [ 40; 41; 42; 43; 44; 45; 50; 77; 100; 333; 1000; 100_000 ])
 
 let fold_props =
   [ folding_changes_nothing (QCheck.Gen.map (fun c -> prelude ^ c) context_gen)
       "folding arithmetic: the same scene or error as without" 5000;
+    folding_changes_nothing (QCheck.Gen.map (fun c -> plain_prelude ^ c) context_gen)
+      "folding arithmetic, no deprecated name: the same scene or error as without" 3000;
     folding_changes_nothing gen "folding arithmetic: token soup reads the same" 5000 ]
 
-let tests = ("parse", fold_cases :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
+let tests = ("parse", fold_cases :: replay_limit :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
