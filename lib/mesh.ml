@@ -68,7 +68,6 @@ let smooth_normal (n1 : Vec3.t) (n2 : Vec3.t) (n3 : Vec3.t) u v =
   blend3 out n1.x n1.y n1.z n2.x n2.y n2.z n3.x n3.y n3.z u v;
   Vec3.of_m out
 
-let vert verts i = Vec3.make (fget verts (3 * i)) (fget verts ((3 * i) + 1)) (fget verts ((3 * i) + 2))
 
 let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
   let verts = Float.Array.map single verts in
@@ -81,43 +80,55 @@ let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
   let n = Array.length faces / 3 in
   let smooth = Array.length normal_faces > 0 in
   let v = verts in
-  let keep =
-    List.filter
-      (fun i ->
-        let a = vert v faces.(3 * i) and b = vert v faces.((3 * i) + 1) and c = vert v faces.((3 * i) + 2) in
-        let cr = Vec3.cross (Vec3.sub b a) (Vec3.sub c a) in
-        Vec3.length2 cr > 0. && Vec3.is_finite cr)
-      (List.init n Fun.id)
-    |> Array.of_list
-  in
-  let k = Array.length keep in
+  (* degenerate faces are dropped (in scalars: this runs over every face
+     of a mesh of millions before its BVH is built) *)
+  let g i c = fget v ((3 * i) + c) in
+  let kept = Bytes.make n '\000' and k = ref 0 in
+  for i = 0 to n - 1 do
+    let a = faces.(3 * i) and b = faces.((3 * i) + 1) and c = faces.((3 * i) + 2) in
+    let ax = g a 0 and ay = g a 1 and az = g a 2 in
+    let ux = g b 0 -. ax and uy = g b 1 -. ay and uz = g b 2 -. az in
+    let wx = g c 0 -. ax and wy = g c 1 -. ay and wz = g c 2 -. az in
+    let cx = (uy *. wz) -. (uz *. wy) and cy = (uz *. wx) -. (ux *. wz) and cz = (ux *. wy) -. (uy *. wx) in
+    if (cx *. cx) +. (cy *. cy) +. (cz *. cz) > 0. && Float.is_finite cx && Float.is_finite cy && Float.is_finite cz
+    then begin
+      Bytes.unsafe_set kept i '\001';
+      incr k
+    end
+  done;
+  let k = !k in
+  let keep = Array.make k 0 in
+  let j = ref 0 in
+  for i = 0 to n - 1 do
+    if Bytes.unsafe_get kept i = '\001' then begin
+      keep.(!j) <- i;
+      incr j
+    end
+  done;
   let faces' = Array.make (3 * k) 0 in
   let nfaces' = if smooth then Array.make (3 * k) (-1) else [||] in
   let boxes = Float.Array.create (6 * k) in
-  Array.iteri
-    (fun j i ->
-      for c = 0 to 2 do
-        faces'.((3 * j) + c) <- faces.((3 * i) + c);
-        if smooth then nfaces'.((3 * j) + c) <- normal_faces.((3 * i) + c)
-      done;
-      let a = vert v faces'.(3 * j) and b = vert v faces'.((3 * j) + 1) and c = vert v faces'.((3 * j) + 2) in
-      let lo = Vec3.min a (Vec3.min b c) and hi = Vec3.max a (Vec3.max b c) in
-      Float.Array.set boxes (6 * j) lo.x;
-      Float.Array.set boxes ((6 * j) + 1) lo.y;
-      Float.Array.set boxes ((6 * j) + 2) lo.z;
-      Float.Array.set boxes ((6 * j) + 3) hi.x;
-      Float.Array.set boxes ((6 * j) + 4) hi.y;
-      Float.Array.set boxes ((6 * j) + 5) hi.z)
-    keep;
+  for j = 0 to k - 1 do
+    let i = keep.(j) in
+    for c = 0 to 2 do
+      faces'.((3 * j) + c) <- faces.((3 * i) + c);
+      if smooth then nfaces'.((3 * j) + c) <- normal_faces.((3 * i) + c)
+    done;
+    let a = faces'.(3 * j) and b = faces'.((3 * j) + 1) and c = faces'.((3 * j) + 2) in
+    for q = 0 to 2 do
+      Float.Array.set boxes ((6 * j) + q) (Float.min (g a q) (Float.min (g b q) (g c q)));
+      Float.Array.set boxes ((6 * j) + 3 + q) (Float.max (g a q) (Float.max (g b q) (g c q)))
+    done
+  done;
   let bvh, order = Bvh.renumber (Bvh.build ?par boxes) in
   let tris = Bigarray.Array1.create Bigarray.float32 Bigarray.c_layout (9 * k) in
   Array.iteri
     (fun j i ->
       for c = 0 to 2 do
-        let p = vert v faces'.((3 * i) + c) in
-        tris.{(9 * j) + (3 * c)} <- p.x;
-        tris.{(9 * j) + (3 * c) + 1} <- p.y;
-        tris.{(9 * j) + (3 * c) + 2} <- p.z
+        let p = faces'.((3 * i) + c) in
+        for q = 0 to 2 do
+          tris.{(9 * j) + (3 * c) + q} <- g p q
+        done
       done)
     order;
   let nfaces = if smooth then Array.init (3 * k) (fun q -> nfaces'.((3 * order.(q / 3)) + (q mod 3))) else [||] in
