@@ -41,4 +41,12 @@ let to_string d =
 let error ?(chain = []) loc fmt =
   Printf.ksprintf (fun msg -> raise (Error { loc; msg; chain })) fmt
 
-let warning loc msg = prerr_string (report "warning" loc msg)
+let warnings = Atomic.make prerr_string
+let warning loc msg = (Atomic.get warnings) (report "warning" loc msg)
+
+let collect_warnings f =
+  let got = Buffer.create 64 in
+  let before = Atomic.exchange warnings (Buffer.add_string got) in
+  Fun.protect ~finally:(fun () -> Atomic.set warnings before) (fun () ->
+      let r = f () in
+      (r, Buffer.contents got))

@@ -13,6 +13,11 @@ val error : ?chain:(string * Loc.t) list -> Loc.t -> ('a, unit, string, 'b) form
 val warning : Loc.t -> string -> unit
 (** Print [FILE:LINE:COL: warning: MSG] on stderr (with the source line). *)
 
+val collect_warnings : (unit -> 'a) -> 'a * string
+(** [f ()] with the warnings it gives collected (as they would be printed)
+    instead of printed: for tests. Not for use from several domains at
+    once. *)
+
 val to_string : t -> string
 (** The full report, ending with a newline. *)
 

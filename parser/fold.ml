@@ -149,7 +149,11 @@ and unary st =
   | MINUS ->
       let e = unary st in
       { node = Neg e; loc = span loc e.loc }
-  | PLUS -> unary st
+  | PLUS ->
+      (* the parser gives the operand itself, its span starting at the
+         sign: a parenthesis does the same *)
+      let e = unary st in
+      { node = Paren e; loc = span loc e.loc }
   | FLOAT f | FLOAT_ID f -> primary_end st { node = Num f; loc }
   | LPAREN ->
       let e = add st in
@@ -195,6 +199,36 @@ let rec eval_with (values : float array) e =
 
 let eval e = eval_with [||] e
 
+(* A component of a vector read again, when it calls no function: its
+   operands are floats, and Value.arith on floats is the float operation,
+   with a warning before a division by zero (the order of the warnings,
+   operands first, is kept) *)
+let rec calls e =
+  match e.node with
+  | Num _ | Var _ -> false
+  | Bin (_, a, b) -> calls a || calls b
+  | Neg a | Paren a -> calls a
+  | Call _ -> true
+
+let rec eval_float (values : float array) e =
+  match e.node with
+  | Num f -> f
+  | Var i -> Array.unsafe_get values i
+  | Paren a -> eval_float values a
+  | Neg a -> -.eval_float values a
+  | Bin (op, a, b) -> (
+      let x = eval_float values a in
+      let y = eval_float values b in
+      match op with
+      | "+" -> x +. y
+      | "-" -> x -. y
+      | "*" -> x *. y
+      | "/" ->
+          if y = 0. then Diag.warning e.loc "Divide by zero.";
+          x /. y
+      | _ -> Value.to_float e.loc (Value.binop e.loc op (Value.Float x) (Value.Float y)))
+  | Call _ -> Value.to_float e.loc (eval_with values e)
+
 (* < run, run [, run [, run]] >: 2 to 5 components, each a run ending at
    the comma or the '>' (no trailing comma, no components written without
    commas: those go to the parser) *)
@@ -239,6 +273,7 @@ type how = Builtin of float | Version | Named of Env.cell
 type plan = {
   len : int;  (** tokens in the run, its '<' and '>' included *)
   comps : e array;
+  plain : bool array;  (** the component calls no function: {!eval_float} *)
   span : Loc.t;
   names : string array;  (** the float names it reads, each once ([Var i] is [names.(i)]) *)
   mutable hows : how array;
@@ -306,8 +341,10 @@ let keep t st cs span =
           | Paren a -> { e with node = Paren (named a) }
           | Call (fn, args) -> { e with node = Call (fn, List.map named args) }
         in
+        let comps = Array.of_list (List.map named cs) in
         let plan =
-          { len; comps = Array.of_list (List.map named cs); span; names = names_once; hows = [||]; gen = -1 }
+          { len; comps; plain = Array.map (fun e -> not (calls e)) comps; span; names = names_once;
+            hows = [||]; gen = -1 }
         in
         Hashtbl.replace (plans f) p0 plan
       end
@@ -349,7 +386,13 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
               else begin
                 f.pos <- p0 + p.len;
                 t.supplied <- t.supplied + p.len - 1;
-                let v = Array.map (fun e -> Value.to_float e.loc (eval_with values e)) p.comps in
+                let v =
+                  Array.mapi
+                    (fun i e ->
+                      if Array.unsafe_get p.plain i then eval_float values e
+                      else Value.to_float e.loc (eval_with values e))
+                    p.comps
+                in
                 Some (Parser.VECTOR v, p.span)
               end)
           | _ -> None)

@@ -100,12 +100,17 @@ let context_gen =
         map2 (fun a b -> Printf.sprintf
                 "#for (I, 0, 2) #declare C = <I, %s, 1>; #declare D2 = <%s, I>; sphere { C, D2.x } #end" a b) e e ])
 
+(* the scene (or error) and the warnings, in order *)
 let folding_changes_nothing gen name count =
   let run fold text =
     let options = { options with Parse.fold_arithmetic = fold } in
-    match Parse.string ~options text with
-    | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
-    | Error d -> Error (Diag.to_string d)
+    let r, warnings =
+      Diag.collect_warnings (fun () ->
+          match Parse.string ~options text with
+          | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
+          | Error d -> Error (Diag.to_string d))
+    in
+    match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
   in
   QCheck.Test.make ~name ~count (QCheck.make ~print:(fun s -> s) gen) (fun text ->
       let a = run true text and b = run false text in
@@ -121,9 +126,13 @@ let fold_cases =
   Alcotest.test_case "folding arithmetic: fixed cases read the same" `Quick (fun () ->
       let run fold text =
         let options = { options with Parse.fold_arithmetic = fold } in
-        match Parse.string ~options text with
-        | Ok s -> Ok (Printer.scene s)
-        | Error d -> Error (Diag.to_string d)
+        let r, warnings =
+          Diag.collect_warnings (fun () ->
+              match Parse.string ~options text with
+              | Ok s -> Ok (Printer.scene s)
+              | Error d -> Error (Diag.to_string d))
+        in
+        match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
       in
       List.iter
         (fun text ->
@@ -149,7 +158,9 @@ let fold_cases =
           "#macro T(X) sphere { <X, 1, 1>, 1 } #end T(1) T(2) T(3) T(<1, 2, 3>)";
           "#declare X = 5; #macro U() sphere { <X, 1, 1>, 1 } #end U() U() #macro V(X) U() #end V(7) U() V(8)";
           "#declare X = 5; #for (I, 0, 3) sphere { <X, I, 1>, 1 } #if (I = 1) #undef X #declare X = 9; #end #end";
-          "#for (I, 0, 3) sphere { <I, 0, 1>, 1 } #if (I = 1) #local I = 7; #end #end" ])
+          "#for (I, 0, 3) sphere { <I, 0, 1>, 1 } #if (I = 1) #local I = 7; #end #end";
+          "#for (I, 0, 3) sphere { <1/(I - 1), 2/(I*0 - 0) + 1/I, -(I/(2 - I))>, 1 } #end";
+          "#for (I, 0, 2) sphere { <sin(1/I), I, 0>, 1 } #end" ])
 
 (* A loop that reaches the token limit while its vectors are read again
    from what was kept of them stops at the same token, with the same
