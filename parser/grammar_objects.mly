@@ -83,15 +83,15 @@ mesh2_block:
 
 texture_list_item: COMMA? t = mesh_texture { t }
 
-(* ", item, item ..." with an optional trailing comma. Left recursive: a
-   mesh's 10^5 items are reduced one by one, not held on the parser's
-   stack to the closing brace (each held item outlived several minor
-   collections). *)
-items: rev = items_rev ioption(COMMA) { List.rev rev }
+(* ", item, item ..." with an optional trailing comma, last first.
+   Left recursive: a mesh's 10^5 items are reduced one by one, not held
+   on the parser's stack to the closing brace (each held item outlived
+   several minor collections). *)
+items: rev = items_rev ioption(COMMA) { rev }
 
 items_rev:
   | { [] }
-  | rest = items_rev COMMA p = param { (loc $loc(p), p) :: rest }
+  | rest = items_rev COMMA p = param { Shapes.item $startpos(p) $endpos(p) p :: rest }
 
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }

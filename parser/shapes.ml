@@ -94,61 +94,101 @@ let mesh _loc tris =
       face_textures; textures = Array.of_list textures; inside_vector = None }
 
 type mesh2_block =
-  | Verts of Vec3.t list
-  | Normals of Vec3.t list
+  | Verts of Float.Array.t  (* x y z of each vertex *)
+  | Normals of Float.Array.t
   | Faces of Loc.t * int array * int array  (* 3 indices per face; texture index per face *)
   | Nfaces of Loc.t * int array
   | Textures of Texture.t list
   | Ignored
 
-let count loc what n items =
+(* where an item stands, kept as the two positions its tokens already
+   have: the location is made only for a message *)
+type item = { start : Lexing.position; stop : Lexing.position; v : Value.t }
+
+let item start stop v = { start; stop; v }
+let item_loc it = Loc.make it.start it.stop
+
+let count loc what n k =
   let n = Value.to_int loc n in
-  let k = List.length items in
   if n <> k then Diag.error loc "%s announces %d items but has %d" what n k
 
-let vectors loc what n items =
-  count loc what n items;
-  List.map (fun (l, v) -> Value.to_vec3 l v) items
+(* the items, last first, as an array in source order *)
+let in_order rev =
+  let a = Array.of_list rev in
+  let k = Array.length a in
+  for i = 0 to (k / 2) - 1 do
+    let x = a.(i) in
+    a.(i) <- a.(k - 1 - i);
+    a.(k - 1 - i) <- x
+  done;
+  a
+
+let vectors loc what n rev =
+  let items = in_order rev in
+  let k = Array.length items in
+  count loc what n k;
+  let a = Float.Array.create (3 * k) in
+  Array.iteri
+    (fun i it ->
+      let p = Value.to_vec3 (item_loc it) it.v in
+      Float.Array.set a (3 * i) p.x;
+      Float.Array.set a ((3 * i) + 1) p.y;
+      Float.Array.set a ((3 * i) + 2) p.z)
+    items;
+  a
 
 let vertex_vectors loc n items = Verts (vectors loc "vertex_vectors" n items)
 let normal_vectors loc n items = Normals (vectors loc "normal_vectors" n items)
 
-let index_triple l v =
-  match v with
+(* the three indices of a face, written at [at] *)
+let index_triple it into at =
+  match it.v with
   | Value.Vector a when Array.length a >= 3 ->
-      Array.init 3 (fun i ->
-          let x = a.(i) in
-          if Float.of_int (int_of_float x) <> x then Diag.error l "face index %g is not an integer" x;
-          int_of_float x)
-  | _ -> Diag.error l "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
+      for i = 0 to 2 do
+        let x = a.(i) in
+        if Float.of_int (int_of_float x) <> x then Diag.error (item_loc it) "face index %g is not an integer" x;
+        into.(at + i) <- int_of_float x
+      done
+  | v -> Diag.error (item_loc it) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
 
 (* face_indices items: a vector, optionally followed by 1 or 3 texture indices *)
-let face_indices loc n items =
-  let faces = ref [] and texs = ref [] in
-  List.iter (fun (l, v) ->
-      match v with
-      | Value.Float x -> (
-          match !texs with
-          | -1 :: rest -> texs := int_of_float x :: rest
-          | _ -> () (* second and third per-vertex texture: ignored *))
-      | _ -> faces := index_triple l v :: !faces; texs := -1 :: !texs) items;
-  count loc "face_indices" n (List.filter (fun (_, v) -> match v with Value.Float _ -> false | _ -> true) items);
-  let f = Array.concat (List.rev !faces) in
-  let t = Array.of_list (List.rev !texs) in
-  Faces (loc, f, if Array.exists (fun x -> x >= 0) t then t else [||])
+let face_indices loc n rev =
+  let items = in_order rev in
+  let k = Array.length items in
+  let f = Array.make (3 * k) 0 and t = Array.make k (-1) and nf = ref 0 in
+  Array.iter
+    (fun it ->
+      match it.v with
+      | Value.Float x ->
+          (* the first texture index after a face is its texture; the
+             second and third (per vertex) are ignored *)
+          if !nf > 0 && t.(!nf - 1) = -1 then t.(!nf - 1) <- int_of_float x
+      | _ ->
+          index_triple it f (3 * !nf);
+          t.(!nf) <- -1;
+          incr nf)
+    items;
+  count loc "face_indices" n !nf;
+  let t = Array.sub t 0 !nf in
+  Faces (loc, Array.sub f 0 (3 * !nf), if Array.exists (fun x -> x >= 0) t then t else [||])
 
-let normal_indices loc n items =
-  count loc "normal_indices" n items;
-  Nfaces (loc, Array.concat (List.map (fun (l, v) -> index_triple l v) items))
+let normal_indices loc n rev =
+  let items = in_order rev in
+  let k = Array.length items in
+  count loc "normal_indices" n k;
+  let f = Array.make (3 * k) 0 in
+  Array.iteri (fun i it -> index_triple it f (3 * i)) items;
+  Nfaces (loc, f)
 
 let texture_list loc n ts =
-  count loc "texture_list" n ts;
+  count loc "texture_list" n (List.length ts);
   Textures ts
 
 let ignored_block = Ignored
 
 let mesh2 loc blocks =
-  let verts = ref [] and normals = ref [] and faces = ref None and nfaces = ref None and texs = ref [] in
+  let verts = ref (Float.Array.create 0) and normals = ref (Float.Array.create 0) and faces = ref None
+  and nfaces = ref None and texs = ref [] in
   List.iter (function
       | Verts v -> verts := v
       | Normals v -> normals := v
@@ -156,7 +196,7 @@ let mesh2 loc blocks =
       | Nfaces (l, f) -> nfaces := Some (l, f)
       | Textures t -> texs := t
       | Ignored -> ()) blocks;
-  let nv = List.length !verts and nn = List.length !normals in
+  let nv = Float.Array.length !verts / 3 and nn = Float.Array.length !normals / 3 in
   let floc, faces, ftex =
     match !faces with Some x -> x | None -> Diag.error loc "a mesh2 needs face_indices"
   in
@@ -173,7 +213,7 @@ let mesh2 loc blocks =
   in
   let nt = List.length !texs in
   Array.iter (fun i -> if i >= nt then Diag.error floc "texture index %d out of range (texture_list has %d)" i nt) ftex;
-  let normals = fa_of_vecs !normals in
+  let normals = !normals in
   let normal_faces =
     Array.mapi (fun i k -> let b = 3 * (i / 3) in
       let z j = let q = normal_faces.(b + j) in
@@ -182,7 +222,7 @@ let mesh2 loc blocks =
       if z 0 || z 1 || z 2 then -1 else k) normal_faces
   in
   Sdl.Mesh
-    { verts = fa_of_vecs !verts; normals; faces; normal_faces; face_textures = ftex;
+    { verts = !verts; normals; faces; normal_faces; face_textures = ftex;
       textures = Array.of_list !texs; inside_vector = None }
 
 let inside_vector loc v (o : Sdl.obj) =

@@ -35,10 +35,18 @@ val mesh : Loc.t -> mesh_tri list -> Sdl.shape
 type mesh2_block
 (** One block of a [mesh2]. *)
 
-val vertex_vectors : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
-val normal_vectors : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
-val face_indices : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
-val normal_indices : Loc.t -> Value.t -> (Loc.t * Value.t) list -> mesh2_block
+type item
+(** One item of a [mesh2] block: its value and where it stands. *)
+
+val item : Lexing.position -> Lexing.position -> Value.t -> item
+
+(* The blocks' items come last first (as the parser reduces them: a
+   mesh's 10^5 items are never copied into a list in order); they are
+   checked in order. *)
+val vertex_vectors : Loc.t -> Value.t -> item list -> mesh2_block
+val normal_vectors : Loc.t -> Value.t -> item list -> mesh2_block
+val face_indices : Loc.t -> Value.t -> item list -> mesh2_block
+val normal_indices : Loc.t -> Value.t -> item list -> mesh2_block
 val texture_list : Loc.t -> Value.t -> Camlray.Texture.t list -> mesh2_block
 val ignored_block : mesh2_block
 (** [uv_vectors], [uv_indices]: read and ignored. *)
