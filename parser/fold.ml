@@ -203,31 +203,51 @@ let eval e = eval_with [||] e
    operands are floats, and Value.arith on floats is the float operation,
    with a warning before a division by zero (the order of the warnings,
    operands first, is kept) *)
-let rec calls e =
-  match e.node with
-  | Num _ | Var _ -> false
-  | Bin (_, a, b) -> calls a || calls b
-  | Neg a | Paren a -> calls a
-  | Call _ -> true
+type fe =
+  | FNum of float
+  | FVar of int
+  | FAdd of fe * fe
+  | FSub of fe * fe
+  | FMul of fe * fe
+  | FDiv of Loc.t * fe * fe
+  | FNeg of fe
 
-let rec eval_float (values : float array) e =
+let rec plain e =
   match e.node with
-  | Num f -> f
-  | Var i -> Array.unsafe_get values i
-  | Paren a -> eval_float values a
-  | Neg a -> -.eval_float values a
+  | Num f -> Some (FNum f)
+  | Var i -> Some (FVar i)
+  | Paren a -> plain a
+  | Neg a -> Option.map (fun a -> FNeg a) (plain a)
   | Bin (op, a, b) -> (
+      match (plain a, plain b) with
+      | Some a, Some b -> (
+          match op with
+          | "+" -> Some (FAdd (a, b))
+          | "-" -> Some (FSub (a, b))
+          | "*" -> Some (FMul (a, b))
+          | "/" -> Some (FDiv (e.loc, a, b))
+          | _ -> None)
+      | _ -> None)
+  | Call _ -> None
+
+let rec eval_float (values : float array) = function
+  | FNum f -> f
+  | FVar i -> Array.unsafe_get values i
+  | FAdd (a, b) ->
+      let x = eval_float values a in
+      x +. eval_float values b
+  | FSub (a, b) ->
+      let x = eval_float values a in
+      x -. eval_float values b
+  | FMul (a, b) ->
+      let x = eval_float values a in
+      x *. eval_float values b
+  | FDiv (loc, a, b) ->
       let x = eval_float values a in
       let y = eval_float values b in
-      match op with
-      | "+" -> x +. y
-      | "-" -> x -. y
-      | "*" -> x *. y
-      | "/" ->
-          if y = 0. then Diag.warning e.loc "Divide by zero.";
-          x /. y
-      | _ -> Value.to_float e.loc (Value.binop e.loc op (Value.Float x) (Value.Float y)))
-  | Call _ -> Value.to_float e.loc (eval_with values e)
+      if y = 0. then Diag.warning loc "Divide by zero.";
+      x /. y
+  | FNeg a -> -.eval_float values a
 
 (* < run, run [, run [, run]] >: 2 to 5 components, each a run ending at
    the comma or the '>' (no trailing comma, no components written without
@@ -273,7 +293,7 @@ type how = Builtin of float | Version | Named of Env.cell
 type plan = {
   len : int;  (** tokens in the run, its '<' and '>' included *)
   comps : e array;
-  plain : bool array;  (** the component calls no function: {!eval_float} *)
+  plain : fe option array;  (** the component in floats, if it calls no function *)
   span : Loc.t;
   names : string array;  (** the float names it reads, each once ([Var i] is [names.(i)]) *)
   mutable hows : how array;
@@ -343,7 +363,7 @@ let keep t st cs span =
         in
         let comps = Array.of_list (List.map named cs) in
         let plan =
-          { len; comps; plain = Array.map (fun e -> not (calls e)) comps; span; names = names_once;
+          { len; comps; plain = Array.map plain comps; span; names = names_once;
             hows = [||]; gen = -1 }
         in
         Hashtbl.replace (plans f) p0 plan
@@ -386,13 +406,15 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
               else begin
                 f.pos <- p0 + p.len;
                 t.supplied <- t.supplied + p.len - 1;
-                let v =
-                  Array.mapi
-                    (fun i e ->
-                      if Array.unsafe_get p.plain i then eval_float values e
-                      else Value.to_float e.loc (eval_with values e))
-                    p.comps
-                in
+                let v = Array.make (Array.length p.comps) 0. in
+                for i = 0 to Array.length v - 1 do
+                  Array.unsafe_set v i
+                    (match Array.unsafe_get p.plain i with
+                    | Some f -> eval_float values f
+                    | None ->
+                        let e = Array.unsafe_get p.comps i in
+                        Value.to_float e.loc (eval_with values e))
+                done;
                 Some (Parser.VECTOR v, p.span)
               end)
           | _ -> None)
