@@ -53,7 +53,7 @@ let operator_next t =
 (* After these a '<' is a comparison, not the start of a vector *)
 let operand_end (tok : Parser.token) =
   match tok with
-  | FLOAT _ | FLOAT_ID _ | VECTOR _ | VECTOR_ID _ | STRING _ | STRING_ID _ | RPAREN | RBRACKET | GT
+  | FLOAT _ | FLOAT_ID _ | VECTOR _ | VECTOR_END _ | VECTOR_ID _ | STRING _ | STRING_ID _ | RPAREN | RBRACKET | GT
   | MEMBER _ | UNDEFINED_ID _ | FUNCTION_ID _ | FUNCTION_LIT _ ->
       true
   | _ -> false
@@ -380,8 +380,18 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
           match Hashtbl.find_opt h p0 with
           | Some p
             when (Toks.get f.toks p0).loc == loc
-                 && t.supplied + p.len - 1 <= t.config.limits.max_tokens
-                 && accepts (Parser.VECTOR [||]) -> (
+                 && t.supplied + p.len - 1 <= t.config.limits.max_tokens -> (
+              (* a ',' or '}' after the '>' ends the expression: if the
+                 parser reads a parameter here, it is this vector *)
+              let after = p0 + p.len in
+              let ends =
+                Toks.lexed f.toks after
+                && (match (Toks.get f.toks after).raw with
+                   | Tok (COMMA | RBRACE) -> true
+                   | _ -> false)
+                && accepts (Parser.VECTOR_END [||])
+              in
+              if not (ends || accepts (Parser.VECTOR [||])) then None else
               let n = Array.length p.names in
               let gen = Env.generation t.env in
               let found =
@@ -415,7 +425,7 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
                         let e = Array.unsafe_get p.comps i in
                         Value.to_float e.loc (eval_with values e))
                 done;
-                Some (Parser.VECTOR v, p.span)
+                Some ((if ends then Parser.VECTOR_END v else Parser.VECTOR v), p.span)
               end)
           | _ -> None)
       | _ -> None)

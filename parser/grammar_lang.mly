@@ -13,6 +13,9 @@ open Gram
 %token <float> FLOAT
 %token <string> STRING
 %token <float array> VECTOR
+(* a vector literal read again (Fold.replay) that a ',' or '}' follows:
+   a whole parameter, given as one *)
+%token <float array> VECTOR_END
 %token <float> FLOAT_ID
 %token <float array> VECTOR_ID
 %token <string> STRING_ID
@@ -204,7 +207,9 @@ open Gram
         else Value.Float (Fn.call (loc $loc) f args) }
   | k = RGB e = unary { Value.rgb_kind (loc $loc) k e }
 
-%public param: e = add %prec below_shift { e }
+%public param:
+  | e = add %prec below_shift { e }
+  | v = VECTOR_END { Value.Vector v }
 
 (* POV-Ray lets vector components go without commas: <0 20 0> *)
 %public vector_more:

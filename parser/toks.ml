@@ -73,6 +73,8 @@ let[@inline] get t i =
     Array.unsafe_get (Array.unsafe_get t.chunks (i lsr bits)) (i land (size - 1))
   else get_slow t i
 
+let lexed t i = i >= 0 && i < t.count && i lsr bits >= t.released
+
 let memo t = t.memo
 let set_memo t m = t.memo <- m
 

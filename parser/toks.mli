@@ -26,6 +26,10 @@ val get : t -> int -> Lexer.token
 (** Token [i]; past the end, the final [Eof]. Raises [Invalid_argument]
     for a released token (a bug: see {!release}). *)
 
+val lexed : t -> int -> bool
+(** Whether token [i] has been lexed and not released: {!get} reads it
+    without lexing. *)
+
 val mem : t -> int -> bool
 (** Whether there is a token [i] (the final [Eof] included). *)
 
