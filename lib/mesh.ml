@@ -116,8 +116,12 @@ let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
     done;
     let a = faces'.(3 * j) and b = faces'.((3 * j) + 1) and c = faces'.((3 * j) + 2) in
     for q = 0 to 2 do
-      Float.Array.set boxes ((6 * j) + q) (Float.min (g a q) (Float.min (g b q) (g c q)));
-      Float.Array.set boxes ((6 * j) + 3 + q) (Float.max (g a q) (Float.max (g b q) (g c q)))
+      (* a kept face's corners are finite (its cross product is): no
+         NaN to order, and a zero's sign does not move a box *)
+      let x = g a q and y = g b q and z = g c q in
+      let lo = if x < y then x else y and hi = if x > y then x else y in
+      Float.Array.set boxes ((6 * j) + q) (if z < lo then z else lo);
+      Float.Array.set boxes ((6 * j) + 3 + q) (if z > hi then z else hi)
     done
   done;
   let bvh, order = Bvh.renumber (Bvh.build ?par boxes) in
