@@ -83,15 +83,15 @@ mesh2_block:
 
 texture_list_item: COMMA? t = mesh_texture { t }
 
-(* ", item, item ..." with an optional trailing comma, last first.
-   Left recursive: a mesh's 10^5 items are reduced one by one, not held
-   on the parser's stack to the closing brace (each held item outlived
-   several minor collections). *)
-items: rev = items_rev ioption(COMMA) { rev }
+(* ", item, item ..." with an optional trailing comma. Left recursive: a
+   mesh's 10^5 items are reduced one by one into the block's items (kept
+   flat, see Shapes.items), not held on the parser's stack to the closing
+   brace. *)
+items: b = items_rev ioption(COMMA) { b }
 
 items_rev:
-  | { [] }
-  | rest = items_rev COMMA p = param { Shapes.item $startpos(p) $endpos(p) p :: rest }
+  | { Shapes.items () }
+  | b = items_rev COMMA p = param { Shapes.add_item b $startpos(p) $endpos(p) p }
 
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }

@@ -101,83 +101,154 @@ type mesh2_block =
   | Textures of Texture.t list
   | Ignored
 
-(* where an item stands, kept as the two positions its tokens already
-   have: the location is made only for a message *)
-type item = { start : Lexing.position; stop : Lexing.position; v : Value.t }
+(* A block's items as the parser reads them, kept flat: a mesh's 10^5
+   items are not 10^5 records outliving collections. Each item is written
+   into the block's store at its index, and the parser's value is the
+   store and how many items it holds: when the parser runs an action
+   ahead ([acceptable], reading a directive inside a declaration), the
+   item it adds is written again, the same, at the same index when the
+   parse gets there, and one it never gets to is past the count. Where
+   each item stands is kept as the numbers of its two positions; its
+   location is made only for a message. *)
+type store = {
+  mutable arity : Bytes.t;  (** per item: 0 a float, 1..254 a vector's length, 255 anything else *)
+  mutable nums : Float.Array.t;  (** the floats and vectors' components, item after item *)
+  mutable pos : int array;  (** 6 per item: start line, bol, cnum, stop line, bol, cnum *)
+  mutable files : (int * string) list;  (** each item's file, where it is not the first's *)
+  mutable others : (int * Value.t) list;  (** the items of arity 255 *)
+}
 
-let item start stop v = { start; stop; v }
-let item_loc it = Loc.make it.start it.stop
+type items = { store : store; count : int; used : int (** floats in [nums] *) }
+
+let items () =
+  { store = { arity = Bytes.create 16; nums = Float.Array.create 64; pos = Array.make 96 0; files = [];
+              others = [] };
+    count = 0; used = 0 }
+
+let add_item { store = b; count = i; used } (s : Lexing.position) (e : Lexing.position) (v : Value.t) =
+  if i >= Bytes.length b.arity then begin
+    let a = Bytes.create (2 * (i + 1)) in
+    Bytes.blit b.arity 0 a 0 (Bytes.length b.arity);
+    b.arity <- a;
+    let p = Array.make (12 * (i + 1)) 0 in
+    Array.blit b.pos 0 p 0 (Array.length b.pos);
+    b.pos <- p
+  end;
+  let floats k =
+    if used + k > Float.Array.length b.nums then begin
+      let a = Float.Array.create (2 * (used + k)) in
+      Float.Array.blit b.nums 0 a 0 (Float.Array.length b.nums);
+      b.nums <- a
+    end
+  in
+  let used =
+    match v with
+    | Value.Float f ->
+        floats 1;
+        Float.Array.unsafe_set b.nums used f;
+        Bytes.unsafe_set b.arity i '\000';
+        used + 1
+    | Value.Vector a when Array.length a >= 1 && Array.length a <= 254 ->
+        let k = Array.length a in
+        floats k;
+        for j = 0 to k - 1 do
+          Float.Array.unsafe_set b.nums (used + j) (Array.unsafe_get a j)
+        done;
+        Bytes.unsafe_set b.arity i (Char.unsafe_chr k);
+        used + k
+    | v ->
+        b.others <- (i, v) :: b.others;
+        Bytes.unsafe_set b.arity i '\255';
+        used
+  in
+  (match b.files with
+  | (_, f) :: _ when String.equal f s.pos_fname -> ()
+  | _ -> b.files <- (i, s.pos_fname) :: b.files);
+  let p = b.pos and o = 6 * i in
+  p.(o) <- s.pos_lnum;
+  p.(o + 1) <- s.pos_bol;
+  p.(o + 2) <- s.pos_cnum;
+  p.(o + 3) <- e.pos_lnum;
+  p.(o + 4) <- e.pos_bol;
+  p.(o + 5) <- e.pos_cnum;
+  { store = b; count = i + 1; used }
+
+let item_loc { store = b; _ } i =
+  (* the file of the latest entry at or before [i] (later entries come
+     first) *)
+  let file = match List.find_opt (fun (j, _) -> j <= i) b.files with Some (_, f) -> f | None -> "" in
+  let p k = b.pos.((6 * i) + k) in
+  let at l bol c = { Lexing.pos_fname = file; pos_lnum = l; pos_bol = bol; pos_cnum = c } in
+  Loc.make (at (p 0) (p 1) (p 2)) (at (p 3) (p 4) (p 5))
+
+(* [f i v] on every item in order, [v] as the parser gave it *)
+let iter_items ({ store = b; count; _ } : items) f =
+  let off = ref 0 in
+  for i = 0 to count - 1 do
+    let v =
+      match Char.code (Bytes.unsafe_get b.arity i) with
+      | 0 ->
+          incr off;
+          Value.Float (Float.Array.get b.nums (!off - 1))
+      | 255 -> List.assoc i b.others
+      | k ->
+          let o = !off in
+          off := o + k;
+          Value.Vector (Array.init k (fun j -> Float.Array.get b.nums (o + j)))
+    in
+    f i v
+  done
 
 let count loc what n k =
   let n = Value.to_int loc n in
   if n <> k then Diag.error loc "%s announces %d items but has %d" what n k
 
-(* the items, last first, as an array in source order *)
-let in_order rev =
-  let a = Array.of_list rev in
-  let k = Array.length a in
-  for i = 0 to (k / 2) - 1 do
-    let x = a.(i) in
-    a.(i) <- a.(k - 1 - i);
-    a.(k - 1 - i) <- x
-  done;
-  a
-
-let vectors loc what n rev =
-  let items = in_order rev in
-  let k = Array.length items in
-  count loc what n k;
-  let a = Float.Array.create (3 * k) in
-  Array.iteri
-    (fun i it ->
-      let p = Value.to_vec3 (item_loc it) it.v in
+let vectors loc what n b =
+  count loc what n b.count;
+  let a = Float.Array.create (3 * b.count) in
+  iter_items b (fun i v ->
+      let p = Value.to_vec3 (item_loc b i) v in
       Float.Array.set a (3 * i) p.x;
       Float.Array.set a ((3 * i) + 1) p.y;
-      Float.Array.set a ((3 * i) + 2) p.z)
-    items;
+      Float.Array.set a ((3 * i) + 2) p.z);
   a
 
 let vertex_vectors loc n items = Verts (vectors loc "vertex_vectors" n items)
 let normal_vectors loc n items = Normals (vectors loc "normal_vectors" n items)
 
 (* the three indices of a face, written at [at] *)
-let index_triple it into at =
-  match it.v with
+let index_triple loc v into at =
+  match v with
   | Value.Vector a when Array.length a >= 3 ->
       for i = 0 to 2 do
         let x = a.(i) in
-        if Float.of_int (int_of_float x) <> x then Diag.error (item_loc it) "face index %g is not an integer" x;
+        if Float.of_int (int_of_float x) <> x then Diag.error (Lazy.force loc) "face index %g is not an integer" x;
         into.(at + i) <- int_of_float x
       done
-  | v -> Diag.error (item_loc it) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
+  | v -> Diag.error (Lazy.force loc) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
 
 (* face_indices items: a vector, optionally followed by 1 or 3 texture indices *)
-let face_indices loc n rev =
-  let items = in_order rev in
-  let k = Array.length items in
+let face_indices loc n b =
+  let k = b.count in
   let f = Array.make (3 * k) 0 and t = Array.make k (-1) and nf = ref 0 in
-  Array.iter
-    (fun it ->
-      match it.v with
+  iter_items b (fun i v ->
+      match v with
       | Value.Float x ->
           (* the first texture index after a face is its texture; the
              second and third (per vertex) are ignored *)
           if !nf > 0 && t.(!nf - 1) = -1 then t.(!nf - 1) <- int_of_float x
       | _ ->
-          index_triple it f (3 * !nf);
+          index_triple (lazy (item_loc b i)) v f (3 * !nf);
           t.(!nf) <- -1;
-          incr nf)
-    items;
+          incr nf);
   count loc "face_indices" n !nf;
   let t = Array.sub t 0 !nf in
   Faces (loc, Array.sub f 0 (3 * !nf), if Array.exists (fun x -> x >= 0) t then t else [||])
 
-let normal_indices loc n rev =
-  let items = in_order rev in
-  let k = Array.length items in
-  count loc "normal_indices" n k;
-  let f = Array.make (3 * k) 0 in
-  Array.iteri (fun i it -> index_triple it f (3 * i)) items;
+let normal_indices loc n b =
+  count loc "normal_indices" n b.count;
+  let f = Array.make (3 * b.count) 0 in
+  iter_items b (fun i v -> index_triple (lazy (item_loc b i)) v f (3 * i));
   Nfaces (loc, f)
 
 let texture_list loc n ts =

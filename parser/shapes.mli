@@ -35,18 +35,19 @@ val mesh : Loc.t -> mesh_tri list -> Sdl.shape
 type mesh2_block
 (** One block of a [mesh2]. *)
 
-type item
-(** One item of a [mesh2] block: its value and where it stands. *)
+type items
+(** The items of a [mesh2] block, kept flat as they are read (values and
+    where they stand): checked when the block ends. *)
 
-val item : Lexing.position -> Lexing.position -> Value.t -> item
+val items : unit -> items
 
-(* The blocks' items come last first (as the parser reduces them: a
-   mesh's 10^5 items are never copied into a list in order); they are
-   checked in order. *)
-val vertex_vectors : Loc.t -> Value.t -> item list -> mesh2_block
-val normal_vectors : Loc.t -> Value.t -> item list -> mesh2_block
-val face_indices : Loc.t -> Value.t -> item list -> mesh2_block
-val normal_indices : Loc.t -> Value.t -> item list -> mesh2_block
+val add_item : items -> Lexing.position -> Lexing.position -> Value.t -> items
+(** Adds an item, in place (the grammar's action, run once per item). *)
+
+val vertex_vectors : Loc.t -> Value.t -> items -> mesh2_block
+val normal_vectors : Loc.t -> Value.t -> items -> mesh2_block
+val face_indices : Loc.t -> Value.t -> items -> mesh2_block
+val normal_indices : Loc.t -> Value.t -> items -> mesh2_block
 val texture_list : Loc.t -> Value.t -> Camlray.Texture.t list -> mesh2_block
 val ignored_block : mesh2_block
 (** [uv_vectors], [uv_indices]: read and ignored. *)

@@ -190,4 +190,28 @@ let fold_props =
       "folding arithmetic, no deprecated name: the same scene or error as without" 3000;
     folding_changes_nothing gen "folding arithmetic: token soup reads the same" 5000 ]
 
-let tests = ("parse", fold_cases :: replay_limit :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
+(* A directive after an item of a mesh2 block inside a #declare makes the
+   parser run its actions ahead (Supplier's probe for a missing ';'): the
+   item must not be added twice. *)
+let mesh2_items_once =
+  Alcotest.test_case "mesh2 items: directives between them in a #declare" `Quick (fun () ->
+      let read text =
+        match Parse.string ~options text with
+        | Ok s -> Printer.scene s
+        | Error d -> Alcotest.failf "%s" (Diag.to_string d)
+      in
+      let with_directives =
+        "#declare X = 1;\n\
+         #declare M = mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>\n\
+           #if (X) , <0,1,0> #else , <0,2,0> #end #debug \"\"\n\
+           , <1,1,0> #declare Y = 2; } face_indices { 2, <0,1,2> #debug \"\" , <1,3,2> #local Z = 1; } }\n\
+         object { M }"
+      and plain =
+        "#declare X = 1;\n\
+         #declare M = mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0>, <1,1,0> }\n\
+           face_indices { 2, <0,1,2>, <1,3,2> } }\n\
+         object { M }"
+      in
+      Alcotest.(check string) "the same mesh" (read plain) (read with_directives))
+
+let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
