@@ -431,19 +431,28 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
       | _ -> None)
   | _ -> None
 
-let run_vector t ~next first =
+(* A ',' or '}' next in the frame (looked at, not read: its lexing
+   happens where the parser would read it next anyway) ends the
+   expression: a vector there is a whole parameter, if the parser reads
+   one. *)
+let ends_param t ~accepts =
+  t.pending = [] && t.stop_at = None
+  && (match (raw_peek t).raw with Tok (COMMA | RBRACE) -> true | _ -> false)
+  && accepts (Parser.VECTOR_END [||])
+
+let run_vector t ~next ~accepts first =
   t.pending <- first :: t.pending;
   let st = { t; next; taken = []; ahead = Unknown } in
   match vector st with
   | cs, loc ->
       let v = Array.of_list (List.map (fun e -> Value.to_float e.loc (eval e)) cs) in
       keep t st cs loc;
-      ((Parser.VECTOR v, loc), List.rev st.taken)
+      (((if ends_param t ~accepts then Parser.VECTOR_END v else Parser.VECTOR v), loc), List.rev st.taken)
   | exception Bail -> give_back t st first
 
-let run t ~next ((tok, loc) as first) =
+let run t ~next ~accepts ((tok, loc) as first) =
   match tok with
-  | Parser.LT -> run_vector t ~next first
+  | Parser.LT -> run_vector t ~next ~accepts first
   | Parser.LPAREN | MINUS | PLUS | FUNC _ | FLOAT _ | FLOAT_ID _ -> (
       (* [first] is read: put it back for the descent to take again *)
       t.pending <- first :: t.pending;

@@ -34,13 +34,16 @@ val may_start : Cursor.t -> (Parser.token * Loc.t) option -> Parser.token -> boo
 val run :
   Cursor.t ->
   next:(Cursor.t -> Parser.token * Loc.t) ->
+  accepts:(Parser.token -> bool) ->
   Parser.token * Loc.t ->
   (Parser.token * Loc.t) * (Parser.token * Loc.t) list
 (** [run t ~next first]: [first] was just read by [next]. Either the run
     starting there, folded, with the tokens it was read from (for the
     parser to be given instead if it refuses the run: its error message
     is then the one it would have given), or [(first, [])], anything read
-    after [first] being given back. *)
+    after [first] being given back. A vector that a [,] or [}] follows is
+    given as [VECTOR_END] where the parser [accepts] it (a whole
+    parameter). *)
 
 val replay :
   Cursor.t -> accepts:(Parser.token -> bool) -> Parser.token * Loc.t -> (Parser.token * Loc.t) option

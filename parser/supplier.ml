@@ -228,9 +228,10 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
           let (tok, loc), orig =
             if from_raw && t.config.fold && Fold.may_start t last tok && I.acceptable cp tok first.start
             then
-              match Fold.replay t ~accepts:(fun v -> I.acceptable cp v first.start) x with
+              let accepts v = I.acceptable cp v first.start in
+              match Fold.replay t ~accepts x with
               | Some y -> (y, [])
-              | None -> Fold.run t ~next x
+              | None -> Fold.run t ~next ~accepts x
             else (x, [])
           in
           t.last <- loc;
