@@ -214,4 +214,39 @@ let mesh2_items_once =
       in
       Alcotest.(check string) "the same mesh" (read plain) (read with_directives))
 
-let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
+(* POV-Ray's own example scenes (Debian's povray-examples, installed by
+   make test's setup): each reads the same, warnings included, with
+   folding (and vectors read again) on and off. *)
+let pov_examples_dir = "/usr/share/doc/povray/examples"
+
+let rec pov_files dir =
+  Sys.readdir dir |> Array.to_list |> List.sort compare
+  |> List.concat_map (fun f ->
+         let p = Filename.concat dir f in
+         if Sys.is_directory p then pov_files p else if Filename.check_suffix f ".pov" then [ p ] else [])
+
+let pov_examples_fold =
+  Alcotest.test_case "folding arithmetic: POV-Ray's example scenes read the same" `Slow (fun () ->
+      if not (Sys.file_exists pov_examples_dir) then print_endline "povray-examples not installed: skipped"
+      else begin
+        let read fold file =
+          (* a small image: some scenes loop over its pixels *)
+          let options = { Parse.default_options with fold_arithmetic = fold; image_width = 40; image_height = 30 } in
+          let r, warnings =
+            Diag.collect_warnings (fun () ->
+                match Parse.file ~options file with
+                | Ok (s, _) -> (try Printer.scene s with e -> "unprintable: " ^ Printexc.to_string e)
+                | Error d -> "error: " ^ Diag.to_string d)
+          in
+          r ^ warnings
+        in
+        let files = pov_files pov_examples_dir in
+        List.iter
+          (fun f ->
+            let a = read true f and b = read false f in
+            if a <> b then Alcotest.failf "%s reads differently folded:\n%s\nand not:\n%s" f a b)
+          files;
+        Alcotest.(check bool) "some scenes" true (List.length files > 300)
+      end)
+
+let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: pov_examples_fold :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
