@@ -285,9 +285,9 @@ let give_back t st first =
    parser gets the same token: the scene and its errors are the same.
    Anything else (a name that has become a vector, a macro or a
    deprecated name; an error the parser would make) and the run is read
-   token by token as before. *)
-(* where a name's value is read: found once, kept while the symbol
-   table's generation stays *)
+   token by token as before. Where each name is read (a built-in, or a
+   symbol-table cell) is found once and kept while the table's
+   generation stays ([how], [gen] below). *)
 type how = Builtin of float | Version | Named of Env.cell
 
 type plan = {
