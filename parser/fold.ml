@@ -370,6 +370,9 @@ let keep t st cs span =
       end
   | _ -> ()
 
+(* a ',' or '}' next: the expression before it is a whole parameter *)
+let closes (tok : Lexer.token) = match tok.raw with Tok (COMMA | RBRACE) -> true | _ -> false
+
 let replay t ~accepts (tok, (loc : Loc.t)) =
   match (tok : Parser.token) with
   | LT when t.pending = [] && t.stop_at = None -> (
@@ -385,11 +388,7 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
                  parser reads a parameter here, it is this vector *)
               let after = p0 + p.len in
               let ends =
-                Toks.lexed f.toks after
-                && (match (Toks.get f.toks after).raw with
-                   | Tok (COMMA | RBRACE) -> true
-                   | _ -> false)
-                && accepts (Parser.VECTOR_END [||])
+                Toks.lexed f.toks after && closes (Toks.get f.toks after) && accepts (Parser.VECTOR_END [||])
               in
               if not (ends || accepts (Parser.VECTOR [||])) then None else
               let n = Array.length p.names in
@@ -437,7 +436,7 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
    one. *)
 let ends_param t ~accepts =
   t.pending = [] && t.stop_at = None
-  && (match (raw_peek t).raw with Tok (COMMA | RBRACE) -> true | _ -> false)
+  && closes (raw_peek t)
   && accepts (Parser.VECTOR_END [||])
 
 let run_vector t ~next ~accepts first =

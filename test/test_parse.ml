@@ -100,18 +100,19 @@ let context_gen =
         map2 (fun a b -> Printf.sprintf
                 "#for (I, 0, 2) #declare C = <I, %s, 1>; #declare D2 = <%s, I>; sphere { C, D2.x } #end" a b) e e ])
 
-(* the scene (or error) and the warnings, in order *)
-let folding_changes_nothing gen name count =
-  let run fold text =
-    let options = { options with Parse.fold_arithmetic = fold } in
-    let r, warnings =
-      Diag.collect_warnings (fun () ->
-          match Parse.string ~options text with
-          | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
-          | Error d -> Error (Diag.to_string d))
-    in
-    match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
+(* the scene (or error) and the warnings, in order, folding on or off *)
+let read_folded fold text =
+  let options = { options with Parse.fold_arithmetic = fold } in
+  let r, warnings =
+    Diag.collect_warnings (fun () ->
+        match Parse.string ~options text with
+        | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
+        | Error d -> Error (Diag.to_string d))
   in
+  match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
+
+let folding_changes_nothing gen name count =
+  let run = read_folded in
   QCheck.Test.make ~name ~count (QCheck.make ~print:(fun s -> s) gen) (fun text ->
       let a = run true text and b = run false text in
       if a <> b then
@@ -124,16 +125,7 @@ let folding_changes_nothing gen name count =
    as in the parser), vectors of every length, and a '<' that compares. *)
 let fold_cases =
   Alcotest.test_case "folding arithmetic: fixed cases read the same" `Quick (fun () ->
-      let run fold text =
-        let options = { options with Parse.fold_arithmetic = fold } in
-        let r, warnings =
-          Diag.collect_warnings (fun () ->
-              match Parse.string ~options text with
-              | Ok s -> Ok (Printer.scene s)
-              | Error d -> Error (Diag.to_string d))
-        in
-        match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
-      in
+      let run = read_folded in
       List.iter
         (fun text ->
           List.iter (fun prelude ->
