@@ -95,12 +95,28 @@ let peek st =
    and errors come where they would: everything the run reads is silent,
    and its arithmetic is done once, when it is whole, in the parser's
    order. *)
+(* where a float name the run may read silently is read, as [ident]
+   reads it (None: not a name the run may read silently); [value_of]:
+   its value, if it is still a float *)
+type how = Builtin of float | Version | Named of Env.cell
+
+let how t name =
+  if Hashtbl.length t.deprecated <> 0 && Hashtbl.mem t.deprecated name then None
+  else
+    match Cursor.builtin t name with
+    | Some v -> Some (Builtin v)
+    | None when String.equal name "version" -> Some Version
+    | None -> Option.map (fun c -> Named c) (Env.lookup t.env name)
+
+let value_of = function
+  | Builtin v -> Some v
+  | Version -> Some (Defaults.version ())
+  | Named c -> (
+      match Env.binding c with Env.Decl (Decl.Value (Value.Float f)) -> Some f | _ -> None)
+
 let silent_float t =
   match (raw_peek t).raw with
-  | Ident name ->
-      (Hashtbl.length t.deprecated = 0 || not (Hashtbl.mem t.deprecated name))
-      && (Cursor.builtin t name <> None || String.equal name "version"
-         || match Env.find t.env name with Some (Env.Decl (Decl.Value (Value.Float _))) -> true | _ -> false)
+  | Ident name -> ( match how t name with Some h -> value_of h <> None | None -> false)
   | _ -> false
 
 let take st =
@@ -287,8 +303,7 @@ let give_back t st first =
    deprecated name; an error the parser would make) and the run is read
    token by token as before. Where each name is read (a built-in, or a
    symbol-table cell) is found once and kept while the table's
-   generation stays ([how], [gen] below). *)
-type how = Builtin of float | Version | Named of Env.cell
+   generation stays ([how] above, [gen] below). *)
 
 type plan = {
   len : int;  (** tokens in the run, its '<' and '>' included *)
@@ -301,22 +316,6 @@ type plan = {
 }
 
 type Toks.memo += Plans of (int, plan) Hashtbl.t
-
-(* where a float name the run may read silently is read, as [ident]
-   reads it (None: not a name the run may read silently) *)
-let how t name =
-  if Hashtbl.length t.deprecated <> 0 && Hashtbl.mem t.deprecated name then None
-  else
-    match Cursor.builtin t name with
-    | Some v -> Some (Builtin v)
-    | None when String.equal name "version" -> Some Version
-    | None -> Option.map (fun c -> Named c) (Env.lookup t.env name)
-
-let value_of = function
-  | Builtin v -> Some v
-  | Version -> Some (Defaults.version ())
-  | Named c -> (
-      match Env.binding c with Env.Decl (Decl.Value (Value.Float f)) -> Some f | _ -> None)
 
 (* where the same tokens are read again: a macro's body, an open loop *)
 let read_again f =

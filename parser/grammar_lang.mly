@@ -13,8 +13,8 @@ open Gram
 %token <float> FLOAT
 %token <string> STRING
 %token <float array> VECTOR
-(* a vector literal read again (Fold.replay) that a ',' or '}' follows:
-   a whole parameter, given as one *)
+(* a vector literal (Fold) that a ',' or '}' follows: a whole
+   parameter, given as one *)
 %token <float array> VECTOR_END
 %token <float> FLOAT_ID
 %token <float array> VECTOR_ID

@@ -114,7 +114,8 @@ type store = {
   mutable arity : Bytes.t;  (** per item: 0 a float, 1..254 a vector's length, 255 anything else *)
   mutable nums : Float.Array.t;  (** the floats and vectors' components, item after item *)
   mutable pos : int array;  (** 6 per item: start line, bol, cnum, stop line, bol, cnum *)
-  mutable files : (int * string) list;  (** each item's file, where it is not the first's *)
+  mutable files : (int * string) list;
+      (** (first item, file) where the items' file changes, latest first *)
   mutable others : (int * Value.t) list;  (** the items of arity 255 *)
 }
 
@@ -207,7 +208,9 @@ let vectors loc what n b =
   count loc what n b.count;
   let a = Float.Array.create (3 * b.count) in
   iter_items b (fun i v ->
-      let p = Value.to_vec3 (item_loc b i) v in
+      (* the location only where to_vec3 needs it, for its message *)
+      let loc = match v with Value.Float _ | Value.Vector _ -> Loc.none | _ -> item_loc b i in
+      let p = Value.to_vec3 loc v in
       Float.Array.set a (3 * i) p.x;
       Float.Array.set a ((3 * i) + 1) p.y;
       Float.Array.set a ((3 * i) + 2) p.z);
@@ -216,16 +219,16 @@ let vectors loc what n b =
 let vertex_vectors loc n items = Verts (vectors loc "vertex_vectors" n items)
 let normal_vectors loc n items = Normals (vectors loc "normal_vectors" n items)
 
-(* the three indices of a face, written at [at] *)
-let index_triple loc v into at =
+(* the three indices of item [i], a face, written at [at] *)
+let index_triple b i v into at =
   match v with
   | Value.Vector a when Array.length a >= 3 ->
-      for i = 0 to 2 do
-        let x = a.(i) in
-        if Float.of_int (int_of_float x) <> x then Diag.error (Lazy.force loc) "face index %g is not an integer" x;
-        into.(at + i) <- int_of_float x
+      for j = 0 to 2 do
+        let x = a.(j) in
+        if Float.of_int (int_of_float x) <> x then Diag.error (item_loc b i) "face index %g is not an integer" x;
+        into.(at + j) <- int_of_float x
       done
-  | v -> Diag.error (Lazy.force loc) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
+  | v -> Diag.error (item_loc b i) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
 
 (* face_indices items: a vector, optionally followed by 1 or 3 texture indices *)
 let face_indices loc n b =
@@ -238,7 +241,7 @@ let face_indices loc n b =
              second and third (per vertex) are ignored *)
           if !nf > 0 && t.(!nf - 1) = -1 then t.(!nf - 1) <- int_of_float x
       | _ ->
-          index_triple (lazy (item_loc b i)) v f (3 * !nf);
+          index_triple b i v f (3 * !nf);
           t.(!nf) <- -1;
           incr nf);
   count loc "face_indices" n !nf;
@@ -248,7 +251,7 @@ let face_indices loc n b =
 let normal_indices loc n b =
   count loc "normal_indices" n b.count;
   let f = Array.make (3 * b.count) 0 in
-  iter_items b (fun i v -> index_triple (lazy (item_loc b i)) v f (3 * i));
+  iter_items b (fun i v -> index_triple b i v f (3 * i));
   Nfaces (loc, f)
 
 let texture_list loc n ts =

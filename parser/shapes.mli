@@ -42,7 +42,9 @@ type items
 val items : unit -> items
 
 val add_item : items -> Lexing.position -> Lexing.position -> Value.t -> items
-(** Adds an item, in place (the grammar's action, run once per item). *)
+(** The items with one more: written into the shared store at the next
+    index (an action the parser runs ahead writes the same item there
+    again). *)
 
 val vertex_vectors : Loc.t -> Value.t -> items -> mesh2_block
 val normal_vectors : Loc.t -> Value.t -> items -> mesh2_block

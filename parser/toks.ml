@@ -68,12 +68,12 @@ let[@inline never] get_slow t i =
     let chunk = t.chunks.(c) in
     chunk.(Array.length chunk - 1)
 
+let[@inline] lexed t i = i >= 0 && i < t.count && i lsr bits >= t.released
+
 let[@inline] get t i =
-  if i >= 0 && i < t.count && i lsr bits >= t.released then
+  if lexed t i then
     Array.unsafe_get (Array.unsafe_get t.chunks (i lsr bits)) (i land (size - 1))
   else get_slow t i
-
-let lexed t i = i >= 0 && i < t.count && i lsr bits >= t.released
 
 let memo t = t.memo
 let set_memo t m = t.memo <- m
