@@ -99,6 +99,11 @@ val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
     boxes, triangles and meshes (the point is made a vector only when the
     normal depends on it). *)
 
+val solid_box : t -> (Vec3.t * Vec3.t) option
+(** Where {!inside} can be true: [bounds] (the same value), except where a
+    disc (whose inside is a half-space) makes it wider; [None] when
+    unbounded. *)
+
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test at a world point. *)
 

@@ -10,7 +10,13 @@ type settings = {
    object, centre and radius when it is a plain sphere (no transform, clip,
    inversion or no_shadow), radius -1 otherwise: those are tested straight from this
    flat array, without following pointers to the object. *)
-type accel = { finite : Object.t array; bvh : Bvh.t; infinite : Object.t array; spheres : Float.Array.t }
+type accel = {
+  finite : Object.t array;
+  bvh : Bvh.t;
+  infinite : Object.t array;
+  spheres : Float.Array.t;
+  reach : Object.t array;  (** objects whose inside reaches beyond their box in the BVH, or without one *)
+}
 
 type t = {
   objects : Object.t array;
@@ -106,7 +112,11 @@ let accelerate ?par objects =
           Float.Array.set spheres ((4 * i) + 3) radius
       | _ -> ())
     finite;
-  { finite; bvh; infinite = Array.of_list infinite; spheres }
+  (* where a shape's inside is its box's, [solid_box] gives [bounds] itself *)
+  let beyond (o : Object.t) = let b = Object.solid_box o in b != o.bounds && b <> o.bounds in
+  let in_bvh o = match box o with Some b -> nonempty b | None -> false in
+  let reach = List.filter (fun o -> (not (in_bvh o)) || beyond o) (Array.to_list objects) in
+  { finite; bvh; infinite = Array.of_list infinite; spheres; reach = Array.of_list reach }
 
 let make ?(sky = Sky.none) ~objects ~lights ~camera ~background ~settings () =
   { objects; lights; camera; background; sky; settings; accel = accelerate objects }
@@ -287,6 +297,19 @@ let occluders_s s (r : Ray.scratch) tmin tmax opaque g =
   let sc = take () in
   Ray.copy r sc.ray;
   occluders_in s sc tmin tmax opaque g
+
+(* Inside tests at one point: the objects that reach beyond their boxes,
+   then those whose box holds the point (a query of the BVH with a ray of
+   no length). *)
+let containing s (p : Vec3.t) =
+  let a = s.accel in
+  let found = ref [] in
+  let test o = if Object.inside o p && not (List.memq o !found) then found := o :: !found in
+  Array.iter test a.reach;
+  ignore (Bvh.iter a.bvh (Ray.make p (Vec3.make 1. 0. 0.)) 0. 0. (fun i -> test a.finite.(i); true));
+  match !found with
+  | ([] | [ _ ]) as l -> l
+  | l -> Array.fold_left (fun acc o -> if List.memq o l then o :: acc else acc) [] s.objects
 
 let block _ _ = false
 let always _ = true

@@ -72,6 +72,11 @@ val hit_normal_into : t -> Object.found -> Hit.t -> Vec3.m -> Vec3.m -> unit
     allocates nothing for spheres of the flat array and untransformed
     planes, discs, boxes, triangles and meshes. *)
 
+val containing : t -> Vec3.t -> Object.t list
+(** The objects whose inside (POV-Ray's test) holds the point, the last
+    in [objects] first; objects whose box is away from the point are not
+    tested. *)
+
 val occluded : t -> Ray.t -> float -> float -> bool
 (** Any-hit query: some shadow-casting surface in [(tmin, tmax)]. *)
 

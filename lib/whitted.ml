@@ -552,11 +552,7 @@ let start_media (s : Scene.t) (o : Vec3.m) =
   | Some (s', o', m) when s' == s && o'.x = o.mx && o'.y = o.my && o'.z = o.mz -> m
   | _ ->
       let ov = Vec3.of_m o in
-      let m =
-        Array.fold_left
-          (fun acc (obj : Object.t) -> if Object.inside obj ov then obj.interior :: acc else acc)
-          [] s.objects
-      in
+      let m = List.map (fun (o : Object.t) -> o.interior) (Scene.containing s ov) in
       cache := Some (s, ov, m);
       m
 

@@ -37,13 +37,18 @@ let brute objects r =
       if Object.hit o r 1e-9 h f then (best := h.t; leaf := Some f.leaf)) objects;
   (!best, !leaf)
 
+let rec leaves (o : Object.t) =
+  match o.geom with
+  | Object.Prim _ -> [ o ]
+  | Object.Union cs | Object.Intersection cs | Object.Merge cs -> List.concat_map leaves (Array.to_list cs)
+
 let arb = QCheck.make ~print:(fun (l, _) -> Printf.sprintf "%d objects" (List.length l)) gscene
 
 let props =
   [
     QCheck.Test.make ~name:"BVH nearest hit = brute force" ~count:200 arb (fun (objs, rays) ->
-        let objects = Array.of_list objs in
-        let s = scene objects in
+        let s = scene (Array.of_list objs) in
+        let objects = s.objects in
         List.for_all (fun r ->
             let t, leaf = brute objects r in
             match Scene.intersect s r 1e-9 infinity, leaf with
@@ -51,6 +56,8 @@ let props =
             | Some h, Some l ->
                 let n = Object.normal l h.point (Hit.create 0.) in
                 h.t = t && (h.obj == l || h.t = t)
+                (* the leaf hit is one of the scene's own *)
+                && List.memq h.obj (List.concat_map leaves (Array.to_list objects))
                 && (match l.geom with Object.Prim (Shape.Sphere _) when h.obj == l -> Vec3.dist n h.normal < 1e-12 | _ -> true)
             | Some h, None -> QCheck.Test.fail_reportf "BVH found t=%g, brute force nothing" h.t
             | None, Some _ -> QCheck.Test.fail_reportf "BVH missed the hit at t=%g" t) rays);
@@ -62,6 +69,15 @@ let props =
             ignore (Scene.occluders s r 1e-9 30. Object.never (fun _ t -> a := t :: !a; true));
             Array.iter (fun o -> ignore (Object.crossings o r 1e-9 30. (fun (l : Object.t) t -> if not l.no_shadow then b := t :: !b; true))) objects;
             List.sort compare !a = List.sort compare !b) rays);
+    QCheck.Test.make ~name:"containing = every object's inside test, last first" ~count:300
+      (QCheck.make ~print:(fun (l, _) -> Printf.sprintf "%d objects" (List.length l))
+         QCheck.Gen.(pair (list_size (int_range 0 60) gobj) (list_size (return 40) (gvec 12.))))
+      (fun (objs, points) ->
+        let s = scene (Array.of_list objs) in
+        List.for_all (fun p ->
+            let brute = Array.fold_left (fun acc o -> if Object.inside o p then o :: acc else acc) [] s.objects in
+            let got = Scene.containing s p in
+            List.length got = List.length brute && List.for_all2 ( == ) got brute) points);
     QCheck.Test.make ~name:"occluders stops when told to" ~count:100 arb (fun (objs, rays) ->
         let s = scene (Array.of_list objs) in
         List.for_all (fun r ->
