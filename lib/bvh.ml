@@ -448,8 +448,8 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
     end
   end
 
-let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
-  let nodes = b.nodes in
+let[@inline never] iter_s b (r : Ray.scratch) tmin c1 c2 f =
+  let nodes = b.nodes and tmax = r.far in
   let ident = Array.length b.prims = 0 in
   if Bigarray.Array1.dim nodes = 0 then true
   else begin
@@ -471,7 +471,7 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
         if c > 0 then begin
           let first = int_of_float (nget nodes ((8 * kk) + 6)) in
           let j = ref first in
-          while !j < first + c && f c1 c2 r tmin tmax (if ident then !j else Array.unsafe_get b.prims !j) do
+          while !j < first + c && f c1 c2 r tmin (if ident then !j else Array.unsafe_get b.prims !j) do
             incr j
           done;
           if !j < first + c then (ok := false; go := false; false) else true
@@ -498,7 +498,10 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin tmax c1 c2 f =
 let nearest b r tmin h f =
   ignore (nearest_s b (Ray.of_ray r) tmin h f () (fun f () _ _ _ i -> f i; false))
 
-let iter b r tmin tmax f = iter_s b (Ray.of_ray r) tmin tmax f () (fun f () _ _ _ i -> f i)
+let iter b r tmin tmax f =
+  let s = Ray.of_ray r in
+  s.far <- tmax;
+  iter_s b s tmin f () (fun f () _ _ i -> f i)
 
 let renumber (b : t) =
   (* a tree already renumbered calls back with positions: its order is

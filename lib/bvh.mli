@@ -56,10 +56,11 @@ val nearest_s :
     array shared with nested walks started from [f]. *)
 
 val iter_s :
-  t -> Ray.scratch -> float -> float -> 'a -> 'b ->
-  ('a -> 'b -> Ray.scratch -> float -> float -> int -> bool) -> bool
-(** [iter_s b ray tmin tmax c1 c2 f]: as {!iter}, calling [f c1 c2 ray tmin
-    tmax i]; allocation-free like {!nearest_s}. *)
+  t -> Ray.scratch -> float -> 'a -> 'b -> ('a -> 'b -> Ray.scratch -> float -> int -> bool) -> bool
+(** [iter_s b ray tmin c1 c2 f]: as {!iter} within [(tmin, ray.far)],
+    calling [f c1 c2 ray tmin i]; allocation-free like {!nearest_s} (the
+    far end is read from the ray: a distance computed per ray and passed as
+    an argument would be boxed). *)
 
 val renumber : t -> t * int array
 (** [renumber b] is [(b', order)]: the same tree calling back with

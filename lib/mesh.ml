@@ -164,8 +164,11 @@ let leaf m () r tmin (h : Hit.t) i =
 let hit_s m r tmin h = Bvh.nearest_s m.bvh r tmin h m () leaf
 
 (* the walk goes on while no triangle is hit *)
-let any_leaf m h r tmin _ i = not (leaf m () r tmin h i)
-let any_s m r tmin (h : Hit.t) = not (Bvh.iter_s m.bvh r tmin h.t m h any_leaf)
+let any_leaf m h r tmin i = not (leaf m () r tmin h i)
+
+let any_s m (r : Ray.scratch) tmin (h : Hit.t) =
+  r.far <- h.t;
+  not (Bvh.iter_s m.bvh r tmin m h any_leaf)
 let hit m r tmin h = hit_s m (Ray.of_ray r) tmin h
 
 (* The hit's normal into [out], in scalars (the same arithmetic as
@@ -202,7 +205,7 @@ let inside m p =
       let count = ref 0 in
       let h = Hit.create infinity in
       ignore
-        (Bvh.iter_s m.bvh r 0. infinity () () (fun () () _ _ _ i ->
+        (Bvh.iter_s m.bvh r 0. () () (fun () () _ _ i ->
              h.t <- infinity;
              if tri m i r 0. h then incr count;
              true));

@@ -337,22 +337,24 @@ let intersect o r tmin tmax =
   let h = Hit.create tmax in
   if hit o r tmin h (found o) then h.t else infinity
 
-(* A crossing of a mesh (no clip) in (tmin, tmax): the first one found *)
-let any_mesh o m r tmin tmax (h : Hit.t) (f : found) =
-  h.t <- tmax;
+(* A crossing of a mesh (no clip) in (tmin, r.far): the first one found *)
+let any_mesh o m (r : Ray.scratch) tmin (h : Hit.t) (f : found) =
+  h.t <- r.far;
   let got = Mesh.any_s m (local o r f) tmin h in
   if got then f.leaf <- o;
   got
 
-(* [crossings_s o ray tmin tmax h f shadow opaque g]: with [h] and [f] as
+(* [crossings_s o ray tmin h f shadow opaque g]: with [h] and [f] as
    scratch. A shadow ray through a mesh that [g] stops at wherever it is
    crossed ([opaque]) needs one crossing, not the nearest: an any-hit walk
-   of the mesh's BVH. *)
-let crossings_s o r tmin tmax (h : Hit.t) fd shadow opaque g =
+   of the mesh's BVH. [g] is not called where [opaque] already answers: a
+   crossing's distance passed to it is boxed. *)
+let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
   match o.geom with
   | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && (o.no_shadow || opaque o) ->
-      o.no_shadow || (not (any_mesh o m r tmin tmax h fd)) || g o h.t
+      o.no_shadow || not (any_mesh o m r tmin h fd)
   | _ ->
+  let tmax = r.far in
   let ok = ref true and go = ref true and first = ref true and tm = ref 0. in
   while !go do
     h.t <- tmax;
@@ -360,7 +362,7 @@ let crossings_s o r tmin tmax (h : Hit.t) fd shadow opaque g =
     first := false;
     if got then begin
       let leaf = fd.leaf and t = h.t in
-      if (shadow && leaf.no_shadow) || g leaf t then tm := next_tmin_s r t
+      if (shadow && leaf.no_shadow) || ((not (opaque leaf)) && g leaf t) then tm := next_tmin_s r t
       else (
         ok := false;
         go := false)
@@ -372,7 +374,9 @@ let crossings_s o r tmin tmax (h : Hit.t) fd shadow opaque g =
 let never _ = false
 
 let crossings o r tmin tmax f =
-  crossings_s o (Ray.of_ray r) tmin tmax (Hit.create tmax) (found o) false never f
+  let s = Ray.of_ray r in
+  s.far <- tmax;
+  crossings_s o s tmin (Hit.create tmax) (found o) false never f
 
 let normal o p h =
   match o.geom with

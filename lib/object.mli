@@ -82,12 +82,13 @@ val never : t -> bool
 (** No object: the [opaque] of {!crossings_s} when nothing is known. *)
 
 val crossings_s :
-  t -> Ray.scratch -> float -> float -> Hit.t -> found -> bool -> (t -> bool) -> (t -> float -> bool) -> bool
-(** [crossings_s o ray tmin tmax h f shadow opaque g]: {!crossings} on a
-    scratch ray with [h] and [f] as scratch; with [shadow], leaves marked
-    [no_shadow] are skipped. [opaque leaf] says that [g leaf t] is [false]
-    at every crossing of that leaf: a mesh so marked is then asked for any
-    one crossing, not walked nearest first (shadow rays only). *)
+  t -> Ray.scratch -> float -> Hit.t -> found -> bool -> (t -> bool) -> (t -> float -> bool) -> bool
+(** [crossings_s o ray tmin h f shadow opaque g]: {!crossings} within
+    [(tmin, ray.far)] on a scratch ray, with [h] and [f] as scratch; with
+    [shadow], leaves marked [no_shadow] are skipped. [opaque leaf] says that
+    [g leaf t] is [false] at every crossing of that leaf: [g] is then not
+    called there (the walk stops), and a mesh so marked is asked for any one
+    crossing, not walked nearest first (shadow rays only). *)
 
 val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 (** [normal leaf p h]: outward unit world normal of a leaf at the world

@@ -12,9 +12,10 @@ type scratch = {
   mutable dx : float;
   mutable dy : float;
   mutable dz : float;
+  mutable far : float;
 }
 
-let scratch () = { ox = 0.; oy = 0.; oz = 0.; dx = 0.; dy = 0.; dz = 1. }
+let scratch () = { ox = 0.; oy = 0.; oz = 0.; dx = 0.; dy = 0.; dz = 1.; far = infinity }
 
 let[@inline] load s r =
   s.ox <- r.origin.x;
@@ -22,7 +23,8 @@ let[@inline] load s r =
   s.oz <- r.origin.z;
   s.dx <- r.dir.x;
   s.dy <- r.dir.y;
-  s.dz <- r.dir.z
+  s.dz <- r.dir.z;
+  s.far <- infinity
 
 let[@inline] copy src dst =
   dst.ox <- src.ox;
@@ -30,7 +32,8 @@ let[@inline] copy src dst =
   dst.oz <- src.oz;
   dst.dx <- src.dx;
   dst.dy <- src.dy;
-  dst.dz <- src.dz
+  dst.dz <- src.dz;
+  dst.far <- src.far
 
 let of_ray r =
   let s = scratch () in

@@ -14,8 +14,8 @@ val epsilon : float
 val shadow_epsilon : float
 (** POV-Ray ignores shadow-ray hits closer than this (1e-3). *)
 
-(** A ray as six mutable floats, stored flat: what the intersection code
-    reads. One per domain is loaded from a {!t} per query (or written by a
+(** A ray as mutable floats stored flat (origin, direction, and the far
+    end of a walk along it): what the intersection code reads. One per domain is loaded from a {!t} per query (or written by a
     transform into object space), so queries allocate nothing per ray.
     Also used to hold a point (origin fields) for inside tests. *)
 type scratch = {
@@ -25,14 +25,19 @@ type scratch = {
   mutable dx : float;
   mutable dy : float;
   mutable dz : float;
+  mutable far : float;
+      (** where walks that read their range from the ray end ({!Bvh.iter_s},
+          [Object.crossings_s], [Scene.occluders_s]); a float stored here,
+          unlike one passed to a function, is not boxed *)
 }
 
 val scratch : unit -> scratch
 val load : scratch -> t -> unit
-(** [load s r] copies [r] into [s]. *)
+(** [load s r] copies [r] into [s], with [far] infinite. *)
 
 val copy : scratch -> scratch -> unit
 (** [copy src dst] *)
 
 val of_ray : t -> scratch
-(** A fresh scratch holding [r] (allocates: for tests and cold paths). *)
+(** A fresh scratch holding [r], [far] infinite (allocates: for tests and
+    cold paths). *)

@@ -256,22 +256,26 @@ let intersect s (r : Ray.t) tmin tmax =
 
 (* Every crossing matters for coloured shadows: each object crossed walks
    all its surface crossings; the BVH skips objects whose box is missed. *)
-let occluder_leaf a sc r tmin tmax i =
+let occluder_leaf a sc (r : Ray.scratch) tmin i =
   let sp = a.spheres in
   let rad = Float.Array.unsafe_get sp ((4 * i) + 3) in
   if rad < 0. then
-    Object.crossings_s (Array.unsafe_get a.finite i) r tmin tmax sc.h sc.f true sc.opaque sc.occ
+    Object.crossings_s (Array.unsafe_get a.finite i) r tmin sc.h sc.f true sc.opaque sc.occ
   else
+    let tmax = r.far in
     let t = sphere_root sp i rad r tmin tmax in
     t = infinity
     ||
     let o = Array.unsafe_get a.finite i in
-    sc.occ o t
+    (* an opaque sphere stops the walk without [occ] (its distance would
+       be boxed to be passed) *)
+    (not (sc.opaque o)) && sc.occ o t
     &&
     let t' = sphere_root sp i rad r (Object.next_tmin_s r t) tmax in
     t' = infinity || sc.occ o t'
 
-let occluders_in s sc tmin tmax opaque g =
+(* within (tmin, sc.ray.far) *)
+let occluders_in s sc tmin opaque g =
   let a = s.accel in
   (* written only when they change (ray after ray they are the same
      closed functions, and each write is a [caml_modify]); the last ones
@@ -280,23 +284,24 @@ let occluders_in s sc tmin tmax opaque g =
   if sc.opaque != opaque then sc.opaque <- opaque;
   let ok = ref true and i = ref 0 in
   while !ok && !i < Array.length a.infinite do
-    ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin tmax sc.h sc.f true opaque g;
+    ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin sc.h sc.f true opaque g;
     incr i
   done;
-  let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin tmax a sc occluder_leaf in
+  let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin a sc occluder_leaf in
   sc.busy <- false;
   ok
 
 let occluders s r tmin tmax opaque g =
   let sc = take () in
   Ray.load sc.ray r;
-  occluders_in s sc tmin tmax opaque g
+  sc.ray.far <- tmax;
+  occluders_in s sc tmin opaque g
 
-(* the same from a ray in a scratch record of the caller's *)
-let occluders_s s (r : Ray.scratch) tmin tmax opaque g =
+(* the same from a ray in a scratch record of the caller's, up to its [far] *)
+let occluders_s s (r : Ray.scratch) tmin opaque g =
   let sc = take () in
   Ray.copy r sc.ray;
-  occluders_in s sc tmin tmax opaque g
+  occluders_in s sc tmin opaque g
 
 (* Inside tests at one point: the objects that reach beyond their boxes,
    then those whose box holds the point (a query of the BVH with a ray of

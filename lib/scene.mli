@@ -86,9 +86,12 @@ val occluders :
     shadow-casting object hit in [(tmin, tmax)] (in no particular order)
     until [f] returns [false]; returns [false] if some call did. [f obj t]
     must be [false] at every crossing of an object for which [opaque obj]
-    holds: such an object may be asked for one crossing, not all (see
-    {!Object.crossings_s}); {!Object.never} when nothing is known. *)
+    holds: such an object is not passed to [f] (the walk stops there) and
+    may be asked for one crossing, not all (see {!Object.crossings_s});
+    {!Object.never} when nothing is known. *)
 
 val occluders_s :
-  t -> Ray.scratch -> float -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
-(** [occluders] of a ray held in a scratch record. *)
+  t -> Ray.scratch -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
+(** [occluders_s s ray tmin opaque f]: [occluders] of a ray held in a
+    scratch record, within [(tmin, ray.far)]. With [opaque] and [f] closed
+    functions, a walk that crosses only opaque objects allocates nothing. *)

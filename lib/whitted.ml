@@ -68,7 +68,8 @@ let shadow_into (s : Scene.t) (w : shadow_walk) =
   let dist = w.seg.len in
   Color.acc_set w.acc 1. 1. 1.;
   if w.faders != [] then w.faders <- [];
-  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon dist shadow_opaque shadow_hit in
+  w.ray.far <- dist;
+  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
   let faders = w.faders in
   match faders with
   | [] -> if not visible then Color.acc_set w.acc 0. 0. 0.

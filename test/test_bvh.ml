@@ -119,13 +119,25 @@ let any_hit_props =
         List.for_all (fun r ->
             let walked = Scene.occluders s r 1e-9 30. Object.never (fun _ _ -> false) in
             let calls = ref 0 in
+            let sr = Ray.of_ray r in
+            sr.far <- 30.;
             let any =
-              Scene.occluders_s s (Ray.of_ray r) 1e-9 30. is_mesh (fun _ t ->
+              Scene.occluders_s s sr 1e-9 is_mesh (fun o t ->
                   incr calls;
+                  if is_mesh o then QCheck.Test.fail_report "called on an opaque mesh";
                   if not (t > 1e-9 && t < 30.) then QCheck.Test.fail_reportf "crossing at t=%g" t;
                   false)
             in
             walked = any && !calls <= 1) rays);
+    QCheck.Test.make ~name:"opaque objects: blocked as when walked, never passed to the callback"
+      ~count:200 arb (fun (objs, rays) ->
+        let s = scene (Array.of_list objs) in
+        List.for_all (fun r ->
+            let walked = Scene.occluders s r 1e-9 30. Object.never (fun _ _ -> false) in
+            let sr = Ray.of_ray r in
+            sr.far <- 30.;
+            let any = Scene.occluders_s s sr 1e-9 (fun _ -> true) (fun _ _ -> QCheck.Test.fail_report "called") in
+            walked = any) rays);
     QCheck.Test.make ~name:"Mesh.any_s finds a crossing exactly when Mesh.hit_s does" ~count:300
       (QCheck.make QCheck.Gen.(pair gmesh_obj (list_size (return 30) gray)))
       (fun (o, rays) ->
@@ -233,11 +245,14 @@ let units =
         Alcotest.(check (list int)) "only box 10" [ 10 ] !seen);
   ]
 
+let opaque_all (_ : Object.t) = true
+let no_light (_ : Object.t) (_ : float) = false
+
 (* The traversal and intersection kernel allocates nothing: every leaf
    kind, transforms, a union with its own BVH, a mesh, CSG and a clip
    (whose rejected crossings alone may box a float). *)
 let no_alloc =
-  Alcotest.test_case "Scene.nearest allocates nothing" `Quick (fun () ->
+  Alcotest.test_case "Scene.nearest and the shadow walk allocate nothing" `Quick (fun () ->
       let s =
         Helpers.compile_string
           {|camera { location <0, 3, -12> look_at <0, 0, 0> }
@@ -263,6 +278,23 @@ union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigm
       let words = Gc.minor_words () -. before in
       Alcotest.(check bool) "some rays hit" true (hits > 1000);
       (* a few words of slack, nothing per ray *)
-      if words > 16. then Alcotest.failf "%.0f minor words for %d rays" words (Array.length rays))
+      if words > 16. then Alcotest.failf "%.0f minor words for %d rays" words (Array.length rays);
+      (* the shadow walk over the same rays, every object opaque, its range
+         (30 units) read from the ray *)
+      let r = Ray.scratch () in
+      let blocked = ref 0 in
+      let walk () =
+        Array.iter (fun ray ->
+            Ray.load r ray;
+            r.far <- 30.;
+            if not (Scene.occluders_s s r 1e-3 opaque_all no_light) then incr blocked) rays
+      in
+      walk ();
+      blocked := 0;
+      let before = Gc.minor_words () in
+      walk ();
+      let words = Gc.minor_words () -. before in
+      Alcotest.(check bool) "some rays blocked" true (!blocked > 1000);
+      if words > 16. then Alcotest.failf "%.0f minor words for %d shadow walks" words (Array.length rays))
 
 let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest ((union_prop :: props) @ any_hit_props))

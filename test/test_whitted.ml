@@ -273,8 +273,7 @@ let declared () =
    plain checker, point lights, reflection, spheres of the flat array,
    planes, boxes and meshes. Minor words per camera ray over a
    one-domain render as [camlray render] runs it ([Render.image_into]):
-   none without shadows; with them, only each shadow ray's distance (a
-   boxed float, 2 words). *)
+   none, with shadows or without. *)
 let allocation () =
   let words ~shadowless =
     let s =
@@ -300,7 +299,7 @@ let allocation () =
   (* the tiles and their sums: a few words per 16x16 tile *)
   if none > 0.1 then Alcotest.failf "%.2f words per camera ray without shadows (at most 0.1)" none;
   (* one light: a shadow ray per opaque hit, reflections' hits included *)
-  if shadows > 2.0 then Alcotest.failf "%.2f words per camera ray with one light (at most 2.0)" shadows
+  if shadows > 0.1 then Alcotest.failf "%.2f words per camera ray with one light (at most 0.1)" shadows
 
 let tests =
   ( "whitted",
