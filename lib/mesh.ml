@@ -63,6 +63,9 @@ let[@inline] blend3 out ax ay az bx by bz cx cy cz u v =
     ((w *. ay) +. (u *. by) +. (v *. cy))
     ((w *. az) +. (u *. bz) +. (v *. cz))
 
+let smooth_normal_into (n1 : Vec3.t) (n2 : Vec3.t) (n3 : Vec3.t) (h : Hit.t) out =
+  blend3 out n1.x n1.y n1.z n2.x n2.y n2.z n3.x n3.y n3.z h.u h.v
+
 let smooth_normal (n1 : Vec3.t) (n2 : Vec3.t) (n3 : Vec3.t) u v =
   let out = Vec3.m () in
   blend3 out n1.x n1.y n1.z n2.x n2.y n2.z n3.x n3.y n3.z u v;

@@ -58,3 +58,6 @@ val tri_hit :
 
 val smooth_normal : Vec3.t -> Vec3.t -> Vec3.t -> float -> float -> Vec3.t
 (** Barycentric interpolation of three vertex normals, normalised. *)
+
+val smooth_normal_into : Vec3.t -> Vec3.t -> Vec3.t -> Hit.t -> Vec3.m -> unit
+(** [smooth_normal n1 n2 n3 h.u h.v] written into a vector. *)

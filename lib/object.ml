@@ -208,31 +208,41 @@ let inside o (p : Vec3.t) =
   f.pt.oz <- p.z;
   inside_s o f
 
-(* Whether the ray misses the object's box within (tmin, tmax). *)
-let box_missed o (r : Ray.scratch) tmin tmax =
+(* if-based: Float.min/max are calls with boxed arguments (and order NaN
+   and -0, which the comparison below does not need: no slab distance is
+   NaN, the zero directions being set apart) *)
+let[@inline] fmin (a : float) b = if a <= b then a else b
+let[@inline] fmax (a : float) b = if a >= b then a else b
+
+(* Whether the ray misses the object's box within (tmin, tmax); inlined,
+   so that a [tmax] read from a hit record is not boxed to be passed. *)
+let[@inline] box_missed o (r : Ray.scratch) tmin tmax =
   match o.bounds with
   | None -> false
   | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
       let ax = (lo.x -. r.ox) /. r.dx and bx = (hi.x -. r.ox) /. r.dx in
       let ay = (lo.y -. r.oy) /. r.dy and by = (hi.y -. r.oy) /. r.dy in
       let az = (lo.z -. r.oz) /. r.dz and bz = (hi.z -. r.oz) /. r.dz in
-      let out o l u = o < l || o > u in
-      (r.dx = 0. && out r.ox lo.x hi.x)
-      || (r.dy = 0. && out r.oy lo.y hi.y)
-      || (r.dz = 0. && out r.oz lo.z hi.z)
+      (r.dx = 0. && (r.ox < lo.x || r.ox > hi.x))
+      || (r.dy = 0. && (r.oy < lo.y || r.oy > hi.y))
+      || (r.dz = 0. && (r.oz < lo.z || r.oz > hi.z))
       ||
+      (* [+. 0.] unboxes the bounds and the infinities: a branch choosing
+         between a boxed and an unboxed float would box the result, and
+         the slab distances with it *)
+      let tmin = tmin +. 0. and tmax = tmax +. 0. in
       let t0 =
-        Float.max tmin
-          (Float.max
-             (if r.dx = 0. then neg_infinity else Float.min ax bx)
-             (Float.max (if r.dy = 0. then neg_infinity else Float.min ay by)
-                (if r.dz = 0. then neg_infinity else Float.min az bz)))
+        fmax tmin
+          (fmax
+             (if r.dx = 0. then neg_infinity +. 0. else fmin ax bx)
+             (fmax (if r.dy = 0. then neg_infinity +. 0. else fmin ay by)
+                (if r.dz = 0. then neg_infinity +. 0. else fmin az bz)))
       and t1 =
-        Float.min tmax
-          (Float.min
-             (if r.dx = 0. then infinity else Float.max ax bx)
-             (Float.min (if r.dy = 0. then infinity else Float.max ay by)
-                (if r.dz = 0. then infinity else Float.max az bz)))
+        fmin tmax
+          (fmin
+             (if r.dx = 0. then infinity +. 0. else fmax ax bx)
+             (fmin (if r.dy = 0. then infinity +. 0. else fmax ay by)
+                (if r.dz = 0. then infinity +. 0. else fmax az bz)))
       in
       t0 > t1
 
@@ -388,15 +398,18 @@ let normal o p h =
       if o.inverted then Vec3.neg n else n
   | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
 
-(* shapes whose normal is stored or read from the hit record *)
-let point_free = function
-  | Shape.Plane _ | Shape.Disc _ | Shape.Box _ | Shape.Triangle _ | Shape.Smooth_triangle _ | Shape.Mesh _ -> true
-  | Shape.Sphere _ | Shape.Cone _ | Shape.Torus _ -> false
-
+(* [normal] in place, the same arithmetic: nothing allocated *)
 let normal_into o (p : Vec3.m) h out =
   match o.geom with
-  | Prim (Shape.Mesh m) when Transform.is_identity o.xform && not o.inverted -> Mesh.normal_into m h out
-  | Prim s when point_free s && Transform.is_identity o.xform -> Vec3.load out (normal o Vec3.zero h)
-  | _ -> Vec3.load out (normal o (Vec3.of_m p) h)
+  | Prim s ->
+      if Transform.is_identity o.xform then Shape.normal_into s p h out
+      else begin
+        Transform.inv_point_m o.xform p out;
+        Shape.normal_into s out h out;
+        Transform.normal_m o.xform out;
+        Vec3.normalize_m out
+      end;
+      if o.inverted then Vec3.set out (-.out.mx) (-.out.my) (-.out.mz)
+  | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
 
 let bounds o = o.bounds

@@ -255,6 +255,51 @@ let normal s (p : Vec3.t) (h : Hit.t) =
   | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal na nb nc h.u h.v
   | Mesh m -> Mesh.normal m h
 
+(* [normal] in place, the same arithmetic; [p] is read before [out] is
+   written, so they may be the same vector *)
+let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
+  match s with
+  | Sphere { center; radius } ->
+      let k = 1. /. radius in
+      Vec3.set out (k *. (p.mx -. center.x)) (k *. (p.my -. center.y)) (k *. (p.mz -. center.z))
+  | Plane { normal; _ } | Disc { normal; _ } | Triangle { n = normal; _ } -> Vec3.load out normal
+  | Box _ -> (
+      match int_of_float h.id with
+      | 0 -> Vec3.load out minus_x
+      | 1 -> Vec3.load out Vec3.unit_x
+      | 2 -> Vec3.load out minus_y
+      | 3 -> Vec3.load out Vec3.unit_y
+      | 4 -> Vec3.load out minus_z
+      | _ -> Vec3.load out Vec3.unit_z)
+  | Cone { base; axis; u; v; length; r0; r1; _ } -> (
+      match int_of_float h.id with
+      | 1 -> Vec3.set out (-.axis.x) (-.axis.y) (-.axis.z)
+      | 2 -> Vec3.load out axis
+      | _ ->
+          let ox = p.mx -. base.x and oy = p.my -. base.y and oz = p.mz -. base.z in
+          let x = (ox *. u.x) +. (oy *. u.y) +. (oz *. u.z)
+          and y = (ox *. v.x) +. (oy *. v.y) +. (oz *. v.z)
+          and z = (ox *. axis.x) +. (oy *. axis.y) +. (oz *. axis.z) in
+          let k = (r1 -. r0) /. length in
+          let rz = r0 +. (k *. z) in
+          let c = -.k *. rz in
+          Vec3.set out
+            ((x *. u.x) +. (y *. v.x) +. (c *. axis.x))
+            ((x *. u.y) +. (y *. v.y) +. (c *. axis.y))
+            ((x *. u.z) +. (y *. v.z) +. (c *. axis.z));
+          Vec3.normalize_m out)
+  | Torus { major; _ } ->
+      let px = p.mx and py = p.my and pz = p.mz in
+      let rho = Float.sqrt ((px *. px) +. (pz *. pz)) in
+      if rho = 0. then Vec3.load out Vec3.unit_y
+      else begin
+        let k = major /. rho in
+        Vec3.set out (px -. (k *. px)) py (pz -. (k *. pz));
+        Vec3.normalize_m out
+      end
+  | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal_into na nb nc h out
+  | Mesh m -> Mesh.normal_into m h out
+
 let[@inline] inside_xyz s x y z =
   match s with
   | Sphere { center = c; radius } ->

@@ -64,6 +64,10 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 (** Outward unit normal at a point on the surface, given the record of the
     hit that found it. *)
 
+val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
+(** {!normal} written into a vector (the same arithmetic, nothing
+    allocated); the point and the result may be the same vector. *)
+
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test (CSG and the [inside] function); triangles have
     no inside; meshes only with an [inside_vector]. *)

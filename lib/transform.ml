@@ -144,6 +144,26 @@ let normal t (n : Vec3.t) =
       ((g m 1 *. n.x) +. (g m 4 *. n.y) +. (g m 7 *. n.z))
       ((g m 2 *. n.x) +. (g m 5 *. n.y) +. (g m 8 *. n.z))
 
+(* [inv_point] and [normal] in place, the same arithmetic; [p] and [out]
+   (or [n]'s input and output) may be the same vector *)
+let inv_point_m t (p : Vec3.m) (out : Vec3.m) =
+  if t.id then Vec3.set out p.mx p.my p.mz
+  else
+    let m = t.inv and x = p.mx and y = p.my and z = p.mz in
+    Vec3.set out
+      ((g m 0 *. x) +. (g m 1 *. y) +. (g m 2 *. z) +. (1. *. g m 9))
+      ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
+      ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
+
+let normal_m t (n : Vec3.m) =
+  if not t.id then begin
+    let m = t.inv and x = n.mx and y = n.my and z = n.mz in
+    Vec3.set n
+      ((g m 0 *. x) +. (g m 3 *. y) +. (g m 6 *. z))
+      ((g m 1 *. x) +. (g m 4 *. y) +. (g m 7 *. z))
+      ((g m 2 *. x) +. (g m 5 *. y) +. (g m 8 *. z))
+  end
+
 let determinant t = det3 t.m
 
 let to_string t =

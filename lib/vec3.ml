@@ -53,3 +53,10 @@ let m () = { mx = 0.; my = 0.; mz = 0. }
 let[@inline] set (v : m) x y z = v.mx <- x; v.my <- y; v.mz <- z
 let[@inline] load (v : m) a = v.mx <- a.x; v.my <- a.y; v.mz <- a.z
 let[@inline] of_m (v : m) = { x = v.mx; y = v.my; z = v.mz }
+
+let[@inline] normalize_m (v : m) =
+  let x = v.mx and y = v.my and z = v.mz in
+  let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+  if l > 0. then
+    let k = 1. /. l in
+    set v (k *. x) (k *. y) (k *. z)

@@ -56,3 +56,6 @@ val m : unit -> m
 val set : m -> float -> float -> float -> unit
 val load : m -> t -> unit
 val of_m : m -> t
+
+val normalize_m : m -> unit
+(** {!normalize} in place (the same arithmetic). *)
