@@ -191,11 +191,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let pixel =
         match o.mode with
         | Whitted -> Whitted.pixel_into scene ~width ~height
-        | Monte_carlo ->
-            let f = Path.pixel (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth in
-            fun x y (out : Color.acc) ->
-              let c : Color.t = f x y in
-              Color.acc_set out c.r c.g c.b
+        | Monte_carlo -> Path.pixel_into (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth
       in
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in

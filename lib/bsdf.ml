@@ -31,14 +31,8 @@ let around (n : Vec3.t) cos_t phi =
     ((kt *. tz) +. (kb *. bz) +. (cos_t *. n.z))
 
 let cosine_hemisphere n u1 u2 = around n (Float.sqrt (1. -. u1)) (2. *. Float.pi *. u2)
-let reflect wo n = Vec3.madd (Vec3.neg wo) (2. *. Vec3.dot wo n) n
 
-(* density of a direction around [axis] with (e+1)/(2 pi) cos^e *)
-let lobe_pdf e c = if c <= 0. then 0. else (e +. 1.) *. 0.5 *. inv_pi *. Float.pow c e
-
-let half wo wi = Vec3.normalize (Vec3.add wo wi)
-
-let fresnel eta ci =
+let[@inline] fresnel eta ci =
   let ci = fmin 1. (Float.abs ci) in
   let s2 = eta *. eta *. (1. -. (ci *. ci)) in
   if s2 >= 1. then 1.
@@ -48,61 +42,97 @@ let fresnel eta ci =
     let rp = (ci -. (eta *. ct)) /. (ci +. (eta *. ct)) in
     0.5 *. ((rs *. rs) +. (rp *. rp))
 
-(* density of wi through a half-vector lobe *)
-let half_pdf e n wo wi =
-  let h = half wo wi in
-  let oh = Vec3.dot wo h in
-  if oh <= 0. then 0. else lobe_pdf e (Vec3.dot n h) /. (4. *. oh)
+(* In place: lobes in a {!Material.lobes}, vectors in {!Vec3.m}, results
+   in the caller's records. The helpers are inlined so that the floats
+   they pass and return stay unboxed; the arithmetic is that of the
+   vector forms ([reflect], [half], [around]) term for term. *)
+
+let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+
+(* [around (x, y, z) cos_t phi] into [out] *)
+let[@inline] around_into (out : Vec3.m) nx ny nz cos_t phi =
+  let sin_t = Float.sqrt (fmax 0. (1. -. (cos_t *. cos_t))) in
+  let sign = if nz > 0. || (nz = 0. && 1. /. nz > 0.) then 1. else -1. in
+  let a = -1. /. (sign +. nz) in
+  let b = nx *. ny *. a in
+  let tx = 1. +. (sign *. nx *. nx *. a) and ty = sign *. b and tz = -.sign *. nx in
+  let bx = b and by = sign +. (ny *. ny *. a) and bz = -.ny in
+  let kt = sin_t *. Float.cos phi and kb = sin_t *. Float.sin phi in
+  Vec3.set out
+    ((kt *. tx) +. (kb *. bx) +. (cos_t *. nx))
+    ((kt *. ty) +. (kb *. by) +. (cos_t *. ny))
+    ((kt *. tz) +. (kb *. bz) +. (cos_t *. nz))
+
+(* [reflect wo (x, y, z)] into [out] *)
+let[@inline] reflect_into (out : Vec3.m) (wo : Vec3.m) x y z =
+  let k = 2. *. ((wo.mx *. x) +. (wo.my *. y) +. (wo.mz *. z)) in
+  Vec3.set out ((-.wo.mx) +. (k *. x)) ((-.wo.my) +. (k *. y)) ((-.wo.mz) +. (k *. z))
+
+(* [dot (reflect wo n) wi] *)
+let[@inline] reflect_dot (wo : Vec3.m) (n : Vec3.m) (wi : Vec3.m) =
+  let k = 2. *. dot wo n in
+  (((-.wo.mx) +. (k *. n.mx)) *. wi.mx) +. (((-.wo.my) +. (k *. n.my)) *. wi.my)
+  +. (((-.wo.mz) +. (k *. n.mz)) *. wi.mz)
+
+(* density of a direction around [axis] with (e+1)/(2 pi) cos^e *)
+let[@inline] lobe_pdf e c = if c <= 0. then 0. else (e +. 1.) *. 0.5 *. inv_pi *. Float.pow c e
+
+(* [half wo wi] as a unit vector, then [dot n h] ([~oh:false]) or the
+   density of wi through a half-vector lobe of exponent [e] ([~oh:true]) *)
+let[@inline] half_use ~oh e (n : Vec3.m) (wo : Vec3.m) (wi : Vec3.m) =
+  let hx = wo.mx +. wi.mx and hy = wo.my +. wi.my and hz = wo.mz +. wi.mz in
+  let l = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+  let k = 1. /. l in
+  let hx = if l > 0. then k *. hx else hx and hy = if l > 0. then k *. hy else hy
+  and hz = if l > 0. then k *. hz else hz in
+  let nh = (n.mx *. hx) +. (n.my *. hy) +. (n.mz *. hz) in
+  if not oh then nh
+  else
+    let o = (wo.mx *. hx) +. (wo.my *. hy) +. (wo.mz *. hz) in
+    if o <= 0. then 0. else lobe_pdf e nh /. (4. *. o)
+
+let fget = Float.Array.unsafe_get
 
 (* A lobe's f is a scalar times the lobe's colour: [lobe_k] is the scalar
    (0 for deltas and below the surface), so that sums over lobes need no
    colour per lobe. *)
-let lobe_k (l : Material.lobe) n wo wi =
-  let ci = Vec3.dot n wi in
+let[@inline] lobe_k (m : Material.lobes) i n wo wi =
+  let ci = dot n wi in
   if ci <= 0. then 0.
   else
-    match l with
-    | Lambert _ -> inv_pi
-    | Phong { exponent; _ } ->
-        let c = Vec3.dot (reflect wo n) wi in
-        if c <= 0. then 0. else Float.pow c exponent *. inv_pi /. ci
-    | Blinn { exponent; _ } ->
-        let c = Vec3.dot n (half wo wi) in
-        if c <= 0. then 0. else Float.pow c exponent *. inv_pi /. ci
-    | Glossy { exponent; _ } -> half_pdf exponent n wo wi /. ci
-    | Mirror _ | Glass _ -> 0.
+    let kind = Array.unsafe_get m.kind i and e = fget m.e i in
+    if kind = Material.k_lambert then inv_pi
+    else if kind = Material.k_phong then
+      let c = reflect_dot wo n wi in
+      if c <= 0. then 0. else Float.pow c e *. inv_pi /. ci
+    else if kind = Material.k_blinn then
+      let c = half_use ~oh:false e n wo wi in
+      if c <= 0. then 0. else Float.pow c e *. inv_pi /. ci
+    else if kind = Material.k_glossy then half_use ~oh:true e n wo wi /. ci
+    else 0.
 
-let lobe_color (l : Material.lobe) =
-  match l with
-  | Lambert a | Mirror a -> a
-  | Phong { k; _ } | Blinn { k; _ } -> k
-  | Glossy { color; _ } -> color
-  | Glass { transmit; _ } -> transmit
+let[@inline] lobe_pdf_of (m : Material.lobes) i n wo wi =
+  let kind = Array.unsafe_get m.kind i and e = fget m.e i in
+  if kind = Material.k_lambert then fmax 0. (dot n wi) *. inv_pi
+  else if kind = Material.k_phong then lobe_pdf e (reflect_dot wo n wi)
+  else if kind = Material.k_blinn || kind = Material.k_glossy then half_use ~oh:true e n wo wi
+  else 0.
 
-let lobe_pdf_of (l : Material.lobe) n wo wi =
-  match l with
-  | Lambert _ -> fmax 0. (Vec3.dot n wi) *. inv_pi
-  | Phong { exponent; _ } -> lobe_pdf exponent (Vec3.dot (reflect wo n) wi)
-  | Blinn { exponent; _ } | Glossy { exponent; _ } -> half_pdf exponent n wo wi
-  | Mirror _ | Glass _ -> 0.
-
-let total (m : Material.t) =
+let[@inline] total (m : Material.lobes) =
   let s = ref 0. in
-  for i = 0 to Array.length m.lobes - 1 do
-    s := !s +. Material.weight (Array.unsafe_get m.lobes i)
+  for i = 0 to m.count - 1 do
+    s := !s +. fget m.w i
   done;
   !s
 
-let eval (m : Material.t) ~n ~wo ~wi =
+let eval_into (m : Material.lobes) n wo wi (out : Color.acc) =
   let r = ref 0. and g = ref 0. and b = ref 0. in
-  for i = 0 to Array.length m.lobes - 1 do
-    let l = Array.unsafe_get m.lobes i in
-    let k = lobe_k l n wo wi in
+  for i = 0 to m.count - 1 do
+    let k = lobe_k m i n wo wi in
     if k <> 0. then begin
-      let c = lobe_color l in
-      r := !r +. (k *. c.r);
-      g := !g +. (k *. c.g);
-      b := !b +. (k *. c.b)
+      r := !r +. (k *. fget m.c (3 * i));
+      g := !g +. (k *. fget m.c ((3 * i) + 1));
+      b := !b +. (k *. fget m.c ((3 * i) + 2))
     end
     else begin
       (* the sum adds black: +0, as before (keeps -0 sums bit-identical) *)
@@ -111,36 +141,34 @@ let eval (m : Material.t) ~n ~wo ~wi =
       b := !b +. 0.
     end
   done;
-  make !r !g !b
+  Color.acc_set out !r !g !b
 
-let pdf_total (m : Material.t) w ~n ~wo ~wi =
+let[@inline] pdf_total (m : Material.lobes) w n wo wi =
   if w <= 0. then 0.
   else begin
     let acc = ref 0. in
-    for i = 0 to Array.length m.lobes - 1 do
-      let l = Array.unsafe_get m.lobes i in
-      acc := !acc +. (Material.weight l /. w *. lobe_pdf_of l n wo wi)
+    for i = 0 to m.count - 1 do
+      acc := !acc +. (fget m.w i /. w *. lobe_pdf_of m i n wo wi)
     done;
     !acc
   end
 
-let pdf (m : Material.t) ~n ~wo ~wi = pdf_total m (total m) ~n ~wo ~wi
+let[@inline] pdf_m m n wo wi = pdf_total m (total m) n wo wi
 
-let has_smooth (m : Material.t) =
+let has_smooth_m (m : Material.lobes) =
   let r = ref false in
-  for i = 0 to Array.length m.lobes - 1 do
-    if not (Material.is_delta (Array.unsafe_get m.lobes i)) then r := true
+  for i = 0 to m.count - 1 do
+    let k = Array.unsafe_get m.kind i in
+    if not (k = Material.k_mirror || k = Material.k_glass) then r := true
   done;
   !r
 
-type sample = { wi : Vec3.t; weight : Color.t; pdf : float; delta : bool }
-
 (* the lobe [sample] picks: i with probability weight_i / tot *)
-let pick (m : Material.t) tot u =
-  let k = Array.length m.lobes in
+let[@inline] pick (m : Material.lobes) tot u =
+  let k = m.count in
   let i = ref 0 and acc = ref 0. and go = ref true in
   while !go do
-    let wl = Material.weight (Array.unsafe_get m.lobes !i) in
+    let wl = fget m.w !i in
     if !i = k - 1 || u *. tot < !acc +. wl then go := false
     else (
       acc := !acc +. wl;
@@ -148,41 +176,109 @@ let pick (m : Material.t) tot u =
   done;
   !i
 
-let smooth (m : Material.t) tot ~n ~wo wi =
-  let ci = Vec3.dot n wi in
-  if ci <= 0. then None
-  else
-    let pd = pdf_total m tot ~n ~wo ~wi in
-    if pd <= 0. then None
-    else
-      let f = eval m ~n ~wo ~wi in
-      Some { wi; weight = scale (ci /. pd) f; pdf = pd; delta = false }
+type pdf = { mutable pdf : float }
+type sampled = { wi : Vec3.m; weight : Color.acc; p : pdf; mutable delta : bool }
+
+let sampled () = { wi = Vec3.m (); weight = Color.acc 0.; p = { pdf = 0. }; delta = false }
+
+(* the mixture of non-delta lobes at the direction already in [out.wi] *)
+let smooth_into (m : Material.lobes) tot n wo (out : sampled) =
+  let wi = out.wi in
+  let ci = dot n wi in
+  ci > 0.
+  &&
+  let pd = pdf_total m tot n wo wi in
+  pd > 0.
+  && begin
+       eval_into m n wo wi out.weight;
+       let k = ci /. pd and f = out.weight in
+       Color.acc_set f (k *. f.ar) (k *. f.ag) (k *. f.ab);
+       out.p.pdf <- pd;
+       out.delta <- false;
+       true
+     end
+
+let[@inline] delta_into (out : sampled) k (a : Float.Array.t) i =
+  Color.acc_set out.weight (k *. fget a (3 * i)) (k *. fget a ((3 * i) + 1)) (k *. fget a ((3 * i) + 2));
+  out.p.pdf <- 0.;
+  out.delta <- true
+
+(* [sample] into [out]; false where it gives [None] *)
+let[@inline] sample_into (m : Material.lobes) (n : Vec3.m) (wo : Vec3.m) u v w (out : sampled) =
+  let tot = total m in
+  tot > 0.
+  &&
+  let i = pick m tot u in
+  let p = fget m.w i /. tot in
+  let kind = Array.unsafe_get m.kind i and e = fget m.e i in
+  let wi = out.wi in
+  if kind = Material.k_lambert then begin
+    around_into wi n.mx n.my n.mz (Float.sqrt (1. -. v)) (2. *. Float.pi *. w);
+    smooth_into m tot n wo out
+  end
+  else if kind = Material.k_phong then begin
+    let c = Float.pow v (1. /. (e +. 1.)) in
+    reflect_into wi wo n.mx n.my n.mz;
+    around_into wi wi.mx wi.my wi.mz c (2. *. Float.pi *. w);
+    smooth_into m tot n wo out
+  end
+  else if kind = Material.k_blinn || kind = Material.k_glossy then begin
+    let c = Float.pow v (1. /. (e +. 1.)) in
+    around_into wi n.mx n.my n.mz c (2. *. Float.pi *. w);
+    reflect_into wi wo wi.mx wi.my wi.mz;
+    smooth_into m tot n wo out
+  end
+  else if kind = Material.k_mirror then begin
+    reflect_into wi wo n.mx n.my n.mz;
+    delta_into out (1. /. p) m.c i;
+    true
+  end
+  else begin
+    (* glass *)
+    let ci = dot wo n in
+    let fr = fresnel e ci in
+    if v < fr then begin
+      reflect_into wi wo n.mx n.my n.mz;
+      delta_into out (1. /. p) m.c2 i
+    end
+    else begin
+      let s2 = e *. e *. (1. -. (ci *. ci)) in
+      let ct = Float.sqrt (fmax 0. (1. -. s2)) in
+      (* Heckbert: T = eta D + (eta c - cos_t) n, D = -wo *)
+      let k = (e *. ci) -. ct in
+      Vec3.set wi ((-.e *. wo.mx) +. (k *. n.mx)) ((-.e *. wo.my) +. (k *. n.my)) ((-.e *. wo.mz) +. (k *. n.mz));
+      Vec3.normalize_m wi;
+      delta_into out (1. /. p) m.c i
+    end;
+    true
+  end
+
+(* The vector forms, on a material as a value: the same code, through
+   the in-place one *)
+
+let with_vectors (m : Material.t) (n : Vec3.t) (wo : Vec3.t) (wi : Vec3.t) f =
+  let l = Material.lobes () and nm = Vec3.m () and om = Vec3.m () and im = Vec3.m () in
+  Material.load l m;
+  Vec3.load nm n;
+  Vec3.load om wo;
+  Vec3.load im wi;
+  f l nm om im
+
+let eval m ~n ~wo ~wi =
+  with_vectors m n wo wi (fun l n wo wi ->
+      let out = Color.acc 0. in
+      eval_into l n wo wi out;
+      Color.of_acc out)
+
+let pdf m ~n ~wo ~wi = with_vectors m n wo wi pdf_m
+
+let has_smooth (m : Material.t) = Array.exists (fun l -> not (Material.is_delta l)) m.lobes
+
+type sample = { wi : Vec3.t; weight : Color.t; pdf : float; delta : bool }
 
 let sample (m : Material.t) ~n ~wo u v w =
-  let tot = total m in
-  if tot <= 0. then None
-  else
-    let i = pick m tot u in
-    let p = Material.weight m.lobes.(i) /. tot in
-    match m.lobes.(i) with
-    | Lambert _ -> smooth m tot ~n ~wo (cosine_hemisphere n v w)
-    | Phong { exponent; _ } ->
-        let c = Float.pow v (1. /. (exponent +. 1.)) in
-        smooth m tot ~n ~wo (around (reflect wo n) c (2. *. Float.pi *. w))
-    | Blinn { exponent; _ } | Glossy { exponent; _ } ->
-        let c = Float.pow v (1. /. (exponent +. 1.)) in
-        let h = around n c (2. *. Float.pi *. w) in
-        smooth m tot ~n ~wo (reflect wo h)
-    | Mirror c ->
-        Some { wi = reflect wo n; weight = scale (1. /. p) c; pdf = 0.; delta = true }
-    | Glass { eta; reflect = cr; transmit } ->
-        let ci = Vec3.dot wo n in
-        let fr = fresnel eta ci in
-        if v < fr then
-          Some { wi = reflect wo n; weight = scale (1. /. p) cr; pdf = 0.; delta = true }
-        else
-          let s2 = eta *. eta *. (1. -. (ci *. ci)) in
-          let ct = Float.sqrt (fmax 0. (1. -. s2)) in
-          (* Heckbert: T = eta D + (eta c - cos_t) n, D = -wo *)
-          let wi = Vec3.normalize (Vec3.madd (Vec3.scale (-.eta) wo) ((eta *. ci) -. ct) n) in
-          Some { wi; weight = scale (1. /. p) transmit; pdf = 0.; delta = true }
+  with_vectors m n wo Vec3.zero (fun l n wo _ ->
+      let out = sampled () in
+      if sample_into l n wo u v w out then
+        Some { wi = Vec3.of_m out.wi; weight = Color.of_acc out.weight; pdf = out.p.pdf; delta = out.delta }
+      else None)

@@ -37,3 +37,34 @@ val fresnel : float -> float -> float
 (** [fresnel eta cos_i]: exact unpolarised reflectance of a smooth
     dielectric boundary, [eta] = n_incident / n_transmitted; 1 under total
     internal reflection. *)
+
+(** {1 In place}
+
+    The same functions on a {!Material.lobes} with vectors in
+    {!Vec3.m} and results written into the caller's records: what the
+    path tracer calls at every vertex, allocating nothing. The forms above
+    go through these. *)
+
+val eval_into : Material.lobes -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
+(** [eval_into m n wo wi out]: {!eval}. *)
+
+val pdf_m : Material.lobes -> Vec3.m -> Vec3.m -> Vec3.m -> float
+(** [pdf_m m n wo wi]: {!pdf} (inlined: the result is not boxed). *)
+
+val has_smooth_m : Material.lobes -> bool
+
+type pdf = { mutable pdf : float }
+
+type sampled = { wi : Vec3.m; weight : Color.acc; p : pdf; mutable delta : bool }
+(** A {!sample} written in place. *)
+
+val sampled : unit -> sampled
+
+val sample_into : Material.lobes -> Vec3.m -> Vec3.m -> float -> float -> float -> sampled -> bool
+(** [sample_into m n wo u v w out]: {!sample} into [out]; [false] where it
+    is [None] (inlined: [u], [v], [w] are not boxed). *)
+
+val around_into : Vec3.m -> float -> float -> float -> float -> float -> unit
+(** [around_into out x y z cos_t phi]: the direction at angle [acos cos_t]
+    from the unit axis [(x, y, z)] and azimuth [phi] (what
+    {!cosine_hemisphere} uses), into [out]. *)

@@ -112,3 +112,56 @@ let pdf e p q nq =
 
 let find es o =
   Array.find_opt (function Sphere { obj; _ } -> obj == o | Delta _ | Area _ -> false) es
+
+(* In place: [sample] into the caller's records. *)
+type nums = { mutable dist : float; mutable pdf : float }
+type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
+
+let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. } }
+
+let copy_sample (s : sample option) out =
+  match s with
+  | None -> false
+  | Some s ->
+      Vec3.load out.wi s.wi;
+      Color.acc_set out.value s.value.r s.value.g s.value.b;
+      out.n.dist <- s.dist;
+      out.n.pdf <- s.pdf;
+      true
+
+(* [point_light l pos p] into [out], the same arithmetic ([direction_to]
+   and [attenuation] of the light moved to [pos]) *)
+let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
+  let wi = out.wi in
+  (match l.kind with
+  | Parallel { point_at } ->
+      let dx = pos.x -. point_at.x and dy = pos.y -. point_at.y and dz = pos.z -. point_at.z in
+      Vec3.set wi dx dy dz;
+      Vec3.normalize_m wi;
+      out.n.dist <- ((pos.x -. p.mx) *. wi.mx) +. ((pos.y -. p.my) *. wi.my) +. ((pos.z -. p.mz) *. wi.mz)
+  | Point | Spot _ ->
+      let vx = pos.x -. p.mx and vy = pos.y -. p.my and vz = pos.z -. p.mz in
+      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let k = 1. /. dist in
+      Vec3.set wi (k *. vx) (k *. vy) (k *. vz);
+      out.n.dist <- dist);
+  let att =
+    match l.kind with
+    | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
+    | _ -> Light.attenuation (if pos == l.position then l else { l with position = pos }) (Vec3.of_m p)
+  in
+  (not (att <= 0. || out.n.dist <= 0.))
+  && begin
+       let k = Float.pi *. att in
+       Color.acc_set out.value (k *. l.color.r) (k *. l.color.g) (k *. l.color.b);
+       out.n.pdf <- 0.;
+       true
+     end
+
+(* inlined: [u] and [v] are not boxed *)
+let[@inline] sample_into e (p : Vec3.m) u v out =
+  match e with
+  | Delta l -> point_light_into l l.position p out
+  | Area { light; area } ->
+      point_light_into light (Light.position_at light area (Vec3.of_m p) (u -. 0.5) (v -. 0.5)) p out
+  | Sphere _ -> copy_sample (sample e (Vec3.of_m p) u v) out

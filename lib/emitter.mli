@@ -51,3 +51,16 @@ val pdf : t -> Vec3.t -> Vec3.t -> Vec3.t -> float
 
 val find : t array -> Object.t -> t option
 (** The emitter standing for an object, if it is sampled directly. *)
+
+(** {1 In place} *)
+
+type nums = { mutable dist : float; mutable pdf : float }
+type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
+(** A {!sample} written in place. *)
+
+val sampled : unit -> sampled
+
+val sample_into : t -> Vec3.m -> float -> float -> sampled -> bool
+(** [sample_into e p u v out]: {!sample} into [out], [false] for [None]
+    (the same values). Allocates nothing for point and parallel lights
+    without fading; area lights and spheres go through {!sample}. *)

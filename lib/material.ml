@@ -44,19 +44,6 @@ let metallic_f c =
   let x = Float.acos (fmin 1. (Float.abs c)) /. (Float.pi /. 2.) in
   fmin 1. (fmax 0. ((0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903))
 
-let tint m c (p : Color.t) =
-  if m = 0. then white
-  else
-    let k = m *. (1. -. metallic_f c) in
-    make (1. +. (k *. (p.r -. 1.))) (1. +. (k *. (p.g -. 1.))) (1. +. (k *. (p.b -. 1.)))
-
-(* POV-Ray's reflection amount Kr at the viewing cosine c. *)
-let reflectivity (r : Finish.reflection) ior c =
-  let t =
-    if r.fresnel then fresnel_pov ior c else Float.pow (fmax 0. (1. -. c)) r.falloff
-  in
-  add r.rmin (scale t (add r.rmax (scale (-1.) r.rmin)))
-
 let clamp01 x = fmin 1. (fmax 0. x)
 
 (* No reflection, highlight or metal: a matte surface (most of a Monte
@@ -66,57 +53,146 @@ let plain_diffuse (f : Finish.t) =
   f.specular = 0. && f.phong = 0. && f.metallic = 0. && f.reflection.rmetallic = 0.
   && zero f.reflection.rmin && zero f.reflection.rmax
 
-(* At most five lobes: literal arrays are allocated inline, where
-   Array.of_list calls the runtime. *)
-let of_rev_list = function
-  | [] -> [||]
-  | [ a ] -> [| a |]
-  | [ b; a ] -> [| a; b |]
-  | [ c; b; a ] -> [| a; b; c |]
-  | [ d; c; b; a ] -> [| a; b; c; d |]
-  | l -> Array.of_list (List.rev l)
+(* The lobes written in place: kind, weight, colours and exponent of up
+   to five lobes in flat arrays, filled at each path vertex without
+   allocating. *)
+let k_lambert = 0 and k_mirror = 1 and k_phong = 2 and k_blinn = 3 and k_glossy = 4 and k_glass = 5
+let max_lobes = 5
 
-let of_texture (tex : Texture.t) (inter : Interior.t) p ~cos_o ~entering =
+type lobes = {
+  mutable count : int;
+  kind : int array;
+  w : Float.Array.t;  (** weight *)
+  c : Float.Array.t;  (** 3 per lobe: albedo, colour, k, or glass's transmit *)
+  c2 : Float.Array.t;  (** 3 per lobe: glass's reflect *)
+  e : Float.Array.t;  (** exponent, or glass's eta *)
+  em : Color.acc;  (** emission *)
+}
+
+let lobes () =
+  { count = 0; kind = Array.make max_lobes 0; w = Float.Array.make max_lobes 0.;
+    c = Float.Array.make (3 * max_lobes) 0.; c2 = Float.Array.make (3 * max_lobes) 0.;
+    e = Float.Array.make max_lobes 0.; em = Color.acc 0. }
+
+let fset = Float.Array.unsafe_set
+let fget = Float.Array.unsafe_get
+let[@inline] max3 r g b = fmax r (fmax g b)
+
+(* a lobe added when its weight is positive, as [weight] computes it *)
+let[@inline] push m kind w r g b r2 g2 b2 e =
+  if w > 0. then begin
+    let i = m.count in
+    Array.unsafe_set m.kind i kind;
+    fset m.w i w;
+    fset m.c (3 * i) r;
+    fset m.c ((3 * i) + 1) g;
+    fset m.c ((3 * i) + 2) b;
+    fset m.c2 (3 * i) r2;
+    fset m.c2 ((3 * i) + 1) g2;
+    fset m.c2 ((3 * i) + 2) b2;
+    fset m.e i e;
+    m.count <- i + 1
+  end
+
+let load_lobe m (l : lobe) =
+  let w = weight l in
+  match l with
+  | Lambert a -> push m k_lambert w a.r a.g a.b 0. 0. 0. 0.
+  | Mirror a -> push m k_mirror w a.r a.g a.b 0. 0. 0. 0.
+  | Phong { k; exponent } -> push m k_phong w k.r k.g k.b 0. 0. 0. exponent
+  | Blinn { k; exponent } -> push m k_blinn w k.r k.g k.b 0. 0. 0. exponent
+  | Glossy { color; exponent } -> push m k_glossy w color.r color.g color.b 0. 0. 0. exponent
+  | Glass { eta; reflect; transmit } ->
+      push m k_glass w transmit.r transmit.g transmit.b reflect.r reflect.g reflect.b eta
+
+let load m (t : t) =
+  m.count <- 0;
+  Array.iter (load_lobe m) t.lobes;
+  Color.acc_set m.em t.emission.r t.emission.g t.emission.b
+
+let lobe m i =
+  let col a = Color.make (fget a (3 * i)) (fget a ((3 * i) + 1)) (fget a ((3 * i) + 2)) in
+  let e = fget m.e i in
+  match Array.unsafe_get m.kind i with
+  | 0 -> Lambert (col m.c)
+  | 1 -> Mirror (col m.c)
+  | 2 -> Phong { k = col m.c; exponent = e }
+  | 3 -> Blinn { k = col m.c; exponent = e }
+  | 4 -> Glossy { color = col m.c; exponent = e }
+  | _ -> Glass { eta = e; reflect = col m.c2; transmit = col m.c }
+
+(* The material at [p] into [m], as [of_texture] makes it (the same
+   arithmetic); inlined into its two callers, so that [cos_o] is not
+   boxed *)
+let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o entering =
+  m.count <- 0;
   match tex with
-  | [] -> black
+  | [] -> Color.acc_set m.em 0. 0. 0.
   | (layer : Texture.layer) :: _ ->
       let f = layer.finish in
-      let pc = Pigment.eval layer.pigment p in
+      let pc = Pigment.eval_m layer.pigment p in
       let pig = pc.c in
       let tr = clamp01 (pc.filter +. pc.transmit) in
       let alpha = 1. -. tr in
       let refracts = tr > 0. && inter.ior <> 1. in
-      if (not (tr > 0.)) && plain_diffuse f then
-        (* every lobe but the diffuse one has weight 0 here, whatever the
-           angle: the same material, without computing them *)
-        let l = Lambert (scale (alpha *. f.diffuse) pig) in
-        { lobes = (if weight l > 0. then [| l |] else [||]); emission = scale alpha (mul pig f.emission) }
-      else
-      (* at most five lobes, kept in order when their weight is positive *)
-      let lobes = ref [] in
-      let push l = if weight l > 0. then lobes := l :: !lobes in
+      Color.acc_set m.em (alpha *. (pig.r *. f.emission.r)) (alpha *. (pig.g *. f.emission.g))
+        (alpha *. (pig.b *. f.emission.b));
       (* the opaque part *)
-      push (Lambert (scale (alpha *. f.diffuse) pig));
-      let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
-      (* metals: reflection tinted by the pigment, whitening at grazing
-         angles as POV's metallic factor does *)
-      let kr = reflectivity f.reflection inter.ior cos_o in
-      let kr = if metal then mul kr (tint 1. cos_o pig) else kr in
-      (* exact Fresnel on the glass part replaces POV's reflection there *)
-      let kr = if refracts then scale alpha kr else kr in
-      let htint = tint f.metallic cos_o pig in
-      if metal && f.specular > 0. && not (is_black kr) then
-        (* a rough metal: the highlight is the blurred reflection *)
-        push (Glossy { color = kr; exponent = 1. /. f.roughness })
-      else begin
-        push (Mirror kr);
-        push (Blinn { k = scale f.specular htint; exponent = 1. /. f.roughness })
-      end;
-      push (Phong { k = scale f.phong htint; exponent = f.phong_size });
-      (* the transparent part *)
-      if tr > 0. then begin
-        let transmit = add (scale pc.filter pig) (gray pc.transmit) in
-        let eta = if refracts then (if entering then 1. /. inter.ior else inter.ior) else 1. in
-        push (Glass { eta; reflect = gray tr; transmit })
-      end;
-      { lobes = of_rev_list !lobes; emission = scale alpha (mul pig f.emission) }
+      let d = alpha *. f.diffuse in
+      let lr = d *. pig.r and lg = d *. pig.g and lb = d *. pig.b in
+      push m k_lambert (max3 lr lg lb) lr lg lb 0. 0. 0. 0.;
+      (* a matte surface (most hits) has no other lobe of positive weight *)
+      if tr > 0. || not (plain_diffuse f) then begin
+        let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
+        (* [reflectivity], tinted for metals ([tint 1.]), scaled by alpha
+           where the glass part's Fresnel replaces it *)
+        let r = f.reflection in
+        let t = if r.fresnel then fresnel_pov inter.ior cos_o else Float.pow (fmax 0. (1. -. cos_o)) r.falloff in
+        let kx = r.rmin.r +. (t *. (r.rmax.r +. (-1. *. r.rmin.r)))
+        and ky = r.rmin.g +. (t *. (r.rmax.g +. (-1. *. r.rmin.g)))
+        and kz = r.rmin.b +. (t *. (r.rmax.b +. (-1. *. r.rmin.b))) in
+        let mk = if metal then 1. *. (1. -. metallic_f cos_o) else 0. in
+        let kx = if metal then kx *. (1. +. (mk *. (pig.r -. 1.))) else kx
+        and ky = if metal then ky *. (1. +. (mk *. (pig.g -. 1.))) else ky
+        and kz = if metal then kz *. (1. +. (mk *. (pig.b -. 1.))) else kz in
+        let kx = if refracts then alpha *. kx else kx
+        and ky = if refracts then alpha *. ky else ky
+        and kz = if refracts then alpha *. kz else kz in
+        (* [tint f.metallic cos_o pig] for the highlights *)
+        let plainh = f.metallic = 0. in
+        let hk = if plainh then 0. else f.metallic *. (1. -. metallic_f cos_o) in
+        let hr = if plainh then 1. else 1. +. (hk *. (pig.r -. 1.))
+        and hg = if plainh then 1. else 1. +. (hk *. (pig.g -. 1.))
+        and hb = if plainh then 1. else 1. +. (hk *. (pig.b -. 1.)) in
+        if metal && f.specular > 0. && not (kx = 0. && ky = 0. && kz = 0.) then
+          (* a rough metal: the highlight is the blurred reflection *)
+          push m k_glossy (max3 kx ky kz) kx ky kz 0. 0. 0. (1. /. f.roughness)
+        else begin
+          push m k_mirror (max3 kx ky kz) kx ky kz 0. 0. 0. 0.;
+          let s = f.specular and e = 1. /. f.roughness in
+          let br = s *. hr and bg = s *. hg and bb = s *. hb in
+          push m k_blinn (8. *. max3 br bg bb /. (e +. 1.)) br bg bb 0. 0. 0. e
+        end;
+        let ph = f.phong and e = f.phong_size in
+        let pr = ph *. hr and pg = ph *. hg and pb = ph *. hb in
+        push m k_phong (2. *. max3 pr pg pb /. (e +. 1.)) pr pg pb 0. 0. 0. e;
+        (* the transparent part *)
+        if tr > 0. then begin
+          let tr_r = (pc.filter *. pig.r) +. pc.transmit
+          and tr_g = (pc.filter *. pig.g) +. pc.transmit
+          and tr_b = (pc.filter *. pig.b) +. pc.transmit in
+          let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
+          push m k_glass (fmax (max3 tr tr tr) (max3 tr_r tr_g tr_b)) tr_r tr_g tr_b tr tr tr eta
+        end
+      end
+
+let into m tex inter (p : Vec3.m) (n : Vec3.m) (wo : Vec3.m) ~entering =
+  fill m tex inter p ((n.mx *. wo.mx) +. (n.my *. wo.my) +. (n.mz *. wo.mz)) entering
+
+let of_lobes m = { lobes = Array.init m.count (lobe m); emission = Color.of_acc m.em }
+
+let of_texture (tex : Texture.t) (inter : Interior.t) (p : Vec3.t) ~cos_o ~entering =
+  let m = lobes () and pm = Vec3.m () in
+  Vec3.load pm p;
+  fill m tex inter pm cos_o entering;
+  of_lobes m

@@ -40,3 +40,39 @@ val is_delta : lobe -> bool
 
 val weight : lobe -> float
 (** A rough albedo, used to choose lobes in proportion when sampling. *)
+
+(** {1 In place}
+
+    The path tracer's form: a vertex's lobes written into flat arrays it
+    owns, filled without allocating. *)
+
+val k_lambert : int
+val k_mirror : int
+val k_phong : int
+val k_blinn : int
+val k_glossy : int
+val k_glass : int
+
+type lobes = {
+  mutable count : int;
+  kind : int array;  (** [k_lambert] ... [k_glass] *)
+  w : Float.Array.t;  (** {!weight} *)
+  c : Float.Array.t;
+      (** 3 per lobe: Lambert's albedo, Mirror's colour, Phong's and
+          Blinn's [k], Glossy's [color], Glass's [transmit] *)
+  c2 : Float.Array.t;  (** 3 per lobe: Glass's [reflect] *)
+  e : Float.Array.t;  (** the exponent, or Glass's [eta] *)
+  em : Color.acc;  (** the emission *)
+}
+
+val lobes : unit -> lobes
+(** Room for the at most five lobes of a material. *)
+
+val into : lobes -> Texture.t -> Interior.t -> Vec3.m -> Vec3.m -> Vec3.m -> entering:bool -> unit
+(** [into m tex inter p n wo ~entering]: {!of_texture} at [p] with [cos_o]
+    the dot product of [n] and [wo], written into [m] (the same values). *)
+
+val load : lobes -> t -> unit
+(** A material's lobes, in order, into [m]. *)
+
+val of_lobes : lobes -> t

@@ -3,7 +3,6 @@ open Color
 (* if-based min/max: Float.min/max order NaN and -0 through a C call *)
 let[@inline] fmax (a : float) b = if a >= b then a else b
 let[@inline] fmin (a : float) b = if a <= b then a else b
-let[@inline] maxc (c : Color.t) = fmax c.r (fmax c.g c.b)
 
 type t = { scene : Scene.t; emitters : Emitter.t array; nee : bool; has_env : bool }
 
@@ -11,179 +10,313 @@ let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
   { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee;
     has_env = not (Sky.is_empty scene.sky && is_black scene.background) }
 
-(* The environment light: the sky_sphere, or the uniform background. *)
-let env (s : Scene.t) dir =
-  if Sky.is_empty s.sky then s.background else Sky.eval s.sky ~background:s.background dir
-
 let[@inline] power a b =
   let a2 = a *. a and b2 = b *. b in
   if a2 +. b2 = 0. then 0. else a2 /. (a2 +. b2)
+
+(* The state of a sample, per domain, in flat records: the ray, the
+   vertex, the path's throughput and light, the material, the sampled
+   directions. A path is walked in a loop over these, allocating nothing
+   in the common case (solid pigments, point lights or the background,
+   shapes of any kind). *)
+type nums = { mutable prev_pdf : float }
+
+let camera_v = 0 and specular_v = 1 and smooth_v = 2
+
+type state = {
+  o : Vec3.m;  (** the ray *)
+  d : Vec3.m;
+  p : Vec3.m;  (** the vertex *)
+  ng : Vec3.m;  (** the surface's normal there *)
+  n : Vec3.m;  (** ... facing the ray *)
+  wo : Vec3.m;
+  thr : Color.acc;  (** throughput *)
+  acc : Color.acc;  (** light found *)
+  dl : Color.acc;  (** direct light at the vertex *)
+  f : Color.acc;  (** f at a light's direction *)
+  tr : Color.acc;  (** transmittance of a shadow ray *)
+  sum : Color.acc;  (** a pixel's samples *)
+  env_wi : Vec3.m;
+  q : Vec3.m;  (** a shadow ray's crossing *)
+  prev_p : Vec3.m;  (** the previous vertex, when [prev] is [smooth_v] *)
+  prev_n : Vec3.m;
+  num : nums;
+  mutable prev : int;
+  mat : Material.lobes;
+  bs : Bsdf.sampled;
+  ls : Emitter.sampled;
+  h : Hit.t;
+  fd : Object.found;
+  shadow : Ray.scratch;
+  sampler : Sampler.t;
+}
+
+let state_key =
+  Scratch.key (fun () ->
+      let v = Vec3.m and c () = Color.acc 0. in
+      { o = v (); d = v (); p = v (); ng = v (); n = v (); wo = v (); thr = c (); acc = c (); dl = c ();
+        f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); prev_p = v (); prev_n = v ();
+        num = { prev_pdf = 0. }; prev = camera_v; mat = Material.lobes (); bs = Bsdf.sampled ();
+        ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
+        sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0 })
+
+let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+let[@inline] is_black_acc (c : Color.acc) = c.ar = 0. && c.ag = 0. && c.ab = 0.
 
 (* Light that passes straight through along a shadow ray: surfaces that
    neither refract (ior 1) nor are opaque let (f P + t) through, as a glass
    lobe with eta 1 would; anything else blocks (light bent by refraction
    is found by the paths, not by shadow rays). [blocks o]: every crossing
-   of [o] blocks (one is enough to find). *)
+   of [o] blocks (one is enough to find). A crossing's filter multiplies
+   [tr] of the domain's state (the shadow ray's there too). *)
 let blocks (o : Object.t) =
   o.interior.ior <> 1.
   || match o.texture with [] -> true | (layer : Texture.layer) :: _ -> Pigment.opaque layer.pigment
 
-let transmittance (s : Scene.t) p wi dist =
-  let ray = Ray.make p wi in
-  let acc = ref white in
-  let open_ =
-    Scene.occluders s ray Ray.shadow_epsilon dist blocks (fun (o : Object.t) t ->
-        match o.texture with
-        | [] -> false
-        | (layer : Texture.layer) :: _ ->
-            let c = Pigment.eval layer.pigment (Ray.at ray t) in
-            if c.filter +. c.transmit <= 0. || o.interior.ior <> 1. then false
-            else begin
-              acc := mul !acc (add (scale c.filter c.c) (gray c.transmit));
-              not (is_black !acc)
-            end)
-  in
-  if open_ then !acc else black
+let pass_through (o : Object.t) t =
+  match o.texture with
+  | [] -> false
+  | (layer : Texture.layer) :: _ ->
+      let st = Scratch.get state_key in
+      let r = st.shadow in
+      Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+      let c = Pigment.eval_m layer.pigment st.q in
+      if c.filter +. c.transmit <= 0. || o.interior.ior <> 1. then false
+      else begin
+        let a = st.tr in
+        Color.acc_set a
+          (a.ar *. ((c.filter *. c.c.r) +. c.transmit))
+          (a.ag *. ((c.filter *. c.c.g) +. c.transmit))
+          (a.ab *. ((c.filter *. c.c.b) +. c.transmit));
+        not (is_black_acc a)
+      end
+
+(* The light let through from [st.p] along [dir], as far as [far], into
+   [st.tr] *)
+let transmittance (s : Scene.t) st (dir : Vec3.m) =
+  let r = st.shadow in
+  r.ox <- st.p.mx;
+  r.oy <- st.p.my;
+  r.oz <- st.p.mz;
+  r.dx <- dir.mx;
+  r.dy <- dir.my;
+  r.dz <- dir.mz;
+  Color.acc_set st.tr 1. 1. 1.;
+  if not (Scene.occluders_s s r Ray.shadow_epsilon blocks pass_through) then Color.acc_set st.tr 0. 0. 0.
 
 (* The random dimensions of one sample: 0-1 pixel, 2-3 lens, then a block
    per bounce. *)
 let dims_per_bounce t = 8 + (2 * Array.length t.emitters)
 let d_lobe = 0 and d_dir = 1 and d_rr = 3 and d_env = 4 and d_light = 6
 
-(* Next-event estimation at a vertex: every emitter, plus the environment. *)
-let direct t sampler base (m : Material.t) p n wo =
+let env_m (s : Scene.t) (d : Vec3.m) =
+  if Sky.is_empty s.sky then s.background else Sky.eval s.sky ~background:s.background (Vec3.of_m d)
+
+(* Next-event estimation at the vertex: every emitter, plus the
+   environment, into [st.dl]. *)
+let direct t (st : state) sampler base =
   let s = t.scene in
-  let acc = ref black in
+  let dl = st.dl and m = st.mat and n = st.n and wo = st.wo and f = st.f in
+  Color.acc_set dl 0. 0. 0.;
   for i = 0 to Array.length t.emitters - 1 do
     let e = Array.unsafe_get t.emitters i in
-    let u = Sampler.get sampler (base + d_light + (2 * i))
-    and v = Sampler.get sampler (base + d_light + (2 * i) + 1) in
-    match Emitter.sample e p u v with
-    | None -> ()
-    | Some ls ->
-        let ci = Vec3.dot n ls.wi in
-        if ci > 0. then begin
-          let f = Bsdf.eval m ~n ~wo ~wi:ls.wi in
-          if not (is_black f) then
-            match e with
-            | Delta l | Area { light = l; _ } ->
-                let tr = if l.shadowless then white else transmittance s p ls.wi ls.dist in
-                acc := add !acc (scale ci (mul f (mul tr ls.value)))
-            | Sphere { obj; _ } -> (
-                match Scene.intersect s (Ray.make p ls.wi) Ray.epsilon infinity with
-                | Some h when h.obj == obj ->
-                    let le = Emitter.emission obj h.point in
-                    let pb = Bsdf.pdf m ~n ~wo ~wi:ls.wi in
-                    let w = power ls.pdf pb in
-                    acc := add !acc (scale (ci *. w /. ls.pdf) (mul f le))
-                | _ -> ())
-        end
+    let ls = st.ls in
+    if
+      Emitter.sample_into e st.p
+        (Sampler.get sampler (base + d_light + (2 * i)))
+        (Sampler.get sampler (base + d_light + (2 * i) + 1))
+        ls
+    then begin
+      let ci = dot n ls.wi in
+      if ci > 0. then begin
+        Bsdf.eval_into m n wo ls.wi f;
+        if not (is_black_acc f) then
+          match e with
+          | Delta l | Area { light = l; _ } ->
+              let tr = st.tr and v = ls.value in
+              if l.shadowless then Color.acc_set tr 1. 1. 1.
+              else begin
+                st.shadow.far <- ls.n.dist;
+                transmittance s st ls.wi
+              end;
+              Color.acc_set dl
+                (dl.ar +. (ci *. (f.ar *. (tr.ar *. v.ar))))
+                (dl.ag +. (ci *. (f.ag *. (tr.ag *. v.ag))))
+                (dl.ab +. (ci *. (f.ab *. (tr.ab *. v.ab))))
+          | Sphere { obj; _ } -> (
+              match Scene.intersect s (Ray.make (Vec3.of_m st.p) (Vec3.of_m ls.wi)) Ray.epsilon infinity with
+              | Some h when h.obj == obj ->
+                  let le = Emitter.emission obj h.point in
+                  let pb = Bsdf.pdf_m m n wo ls.wi in
+                  let k = ci *. power ls.n.pdf pb /. ls.n.pdf in
+                  Color.acc_set dl
+                    (dl.ar +. (k *. (f.ar *. le.r)))
+                    (dl.ag +. (k *. (f.ag *. le.g)))
+                    (dl.ab +. (k *. (f.ab *. le.b)))
+              | _ -> ())
+      end
+    end
   done;
   (* the environment is sampled cosine-weighted about the normal *)
   if t.has_env then begin
-    let wi =
-      Bsdf.cosine_hemisphere n (Sampler.get sampler (base + d_env))
-        (Sampler.get sampler (base + d_env + 1))
-    in
-    let ci = Vec3.dot n wi in
+    let wi = st.env_wi in
+    Bsdf.around_into wi n.mx n.my n.mz
+      (Float.sqrt (1. -. Sampler.get sampler (base + d_env)))
+      (2. *. Float.pi *. Sampler.get sampler (base + d_env + 1));
+    let ci = dot n wi in
     if ci > 0. then begin
-      let f = Bsdf.eval m ~n ~wo ~wi in
-      if not (is_black f) then begin
-        let pl = ci /. Float.pi and pb = Bsdf.pdf m ~n ~wo ~wi in
-        let tr = transmittance s p wi infinity in
-        if not (is_black tr) then
-          acc := add !acc (scale (ci *. power pl pb /. pl) (mul f (mul tr (env s wi))))
+      Bsdf.eval_into m n wo wi f;
+      if not (is_black_acc f) then begin
+        let pl = ci /. Float.pi and pb = Bsdf.pdf_m m n wo wi in
+        st.shadow.far <- infinity;
+        transmittance s st wi;
+        let tr = st.tr in
+        if not (is_black_acc tr) then begin
+          let c = env_m s wi in
+          let k = ci *. power pl pb /. pl in
+          Color.acc_set dl
+            (dl.ar +. (k *. (f.ar *. (tr.ar *. c.r))))
+            (dl.ag +. (k *. (f.ag *. (tr.ag *. c.g))))
+            (dl.ab +. (k *. (f.ab *. (tr.ab *. c.b))))
+        end
       end
     end
-  end;
-  !acc
+  end
 
-(* What the previous vertex needs to weight light found by its bounce. *)
-type prev = Camera | Specular | Smooth of { p : Vec3.t; n : Vec3.t; pdf : float }
-
-let li t sampler ~max_depth (ray : Ray.t) =
+(* One radiance sample along the ray in [st.o], [st.d], into [st.acc]. *)
+let li_into t sampler ~max_depth (st : state) =
   let s = t.scene in
   let per = dims_per_bounce t in
-  let rec go (ray : Ray.t) depth thr acc prev =
-    let tmin = if depth = 0 then 0. else Ray.epsilon in
-    match Scene.intersect s ray tmin infinity with
-    | None ->
+  let thr = st.thr and acc = st.acc and o = st.o and d = st.d in
+  Color.acc_set thr 1. 1. 1.;
+  Color.acc_set acc 0. 0. 0.;
+  st.prev <- camera_v;
+  let depth = ref 0 and go = ref true in
+  while !go do
+    let tmin = if !depth = 0 then 0. else Ray.epsilon in
+    let h = st.h and fd = st.fd in
+    if not (Scene.intersect_into s o d tmin infinity h fd) then begin
+      go := false;
+      if t.has_env then begin
         let w =
-          match prev with
-          | Smooth { n; pdf; _ } when t.nee ->
-              power pdf (fmax 0. (Vec3.dot n ray.dir) /. Float.pi)
-          | _ -> 1.
+          if st.prev = smooth_v && t.nee then
+            power st.num.prev_pdf (fmax 0. (dot st.prev_n d) /. Float.pi)
+          else 1.
         in
-        if t.has_env then madd acc w (mul thr (env s ray.dir)) else acc
-    | Some hit ->
-        let obj = hit.obj in
-        let wo = Vec3.neg ray.dir in
-        let entering = Vec3.dot hit.normal ray.dir < 0. in
-        let n = if entering then hit.normal else Vec3.neg hit.normal in
-        (* a ray leaving a solid travelled inside it: interior fade *)
-        let thr = if entering then thr else mul thr (Interior.fade obj.interior hit.t) in
-        let m =
-          Material.of_texture obj.texture obj.interior hit.point ~cos_o:(Vec3.dot n wo) ~entering
+        let c = env_m s d in
+        Color.acc_set acc
+          (acc.ar +. (w *. (thr.ar *. c.r)))
+          (acc.ag +. (w *. (thr.ag *. c.g)))
+          (acc.ab +. (w *. (thr.ab *. c.b)))
+      end
+    end
+    else begin
+      let obj = fd.leaf and th = h.t in
+      let p = st.p and ng = st.ng and n = st.n and wo = st.wo in
+      Vec3.set p (o.mx +. (th *. d.mx)) (o.my +. (th *. d.my)) (o.mz +. (th *. d.mz));
+      Scene.hit_normal_into s fd h p ng;
+      Vec3.set wo (-.d.mx) (-.d.my) (-.d.mz);
+      let entering = dot ng d < 0. in
+      if entering then Vec3.set n ng.mx ng.my ng.mz else Vec3.set n (-.ng.mx) (-.ng.my) (-.ng.mz);
+      (* a ray leaving a solid travelled inside it: interior fade (white,
+         which changes nothing, without a fade distance) *)
+      if (not entering) && obj.interior.fade_distance <> 0. then begin
+        let c = Interior.fade obj.interior th in
+        Color.acc_set thr (thr.ar *. c.r) (thr.ag *. c.g) (thr.ab *. c.b)
+      end;
+      let m = st.mat in
+      Material.into m obj.texture obj.interior p n wo ~entering;
+      if not (is_black_acc m.em) then begin
+        let w =
+          if st.prev = smooth_v && t.nee then
+            match Emitter.find t.emitters obj with
+            | Some e -> power st.num.prev_pdf (Emitter.pdf e (Vec3.of_m st.prev_p) (Vec3.of_m p) (Vec3.of_m ng))
+            | None -> 1.
+          else 1.
         in
-        let acc =
-          if is_black m.emission then acc
-          else
-            let w =
-              match (prev, Emitter.find t.emitters obj) with
-              | Smooth { p; pdf; _ }, Some e when t.nee ->
-                  power pdf (Emitter.pdf e p hit.point hit.normal)
-              | _ -> 1.
-            in
-            add acc (scale w (mul thr m.emission))
-        in
-        if depth >= max_depth then acc
-        else
-          let base = 4 + (depth * per) in
-          let acc =
-            if t.nee && Bsdf.has_smooth m then
-              add acc (mul thr (direct t sampler base m hit.point n wo))
-            else acc
-          in
-          match
-            Bsdf.sample m ~n ~wo
-              (Sampler.get sampler (base + d_lobe))
-              (Sampler.get sampler (base + d_dir))
-              (Sampler.get sampler (base + d_dir + 1))
-          with
-          | None -> acc
-          | Some bs ->
-              let thr = mul thr bs.weight in
-              let q = if depth >= 3 then fmin 0.95 (maxc thr) else 1. in
-              if q <= 0. || Sampler.get sampler (base + d_rr) >= q then acc
-              else
-                let prev =
-                  if bs.delta then Specular else Smooth { p = hit.point; n; pdf = bs.pdf }
-                in
-                go (Ray.make hit.point bs.wi) (depth + 1) (scale (1. /. q) thr) acc prev
-  in
-  go ray 0 white black Camera
+        let em = m.em in
+        Color.acc_set acc
+          (acc.ar +. (w *. (thr.ar *. em.ar)))
+          (acc.ag +. (w *. (thr.ag *. em.ag)))
+          (acc.ab +. (w *. (thr.ab *. em.ab)))
+      end;
+      if !depth >= max_depth then go := false
+      else begin
+        let base = 4 + (!depth * per) in
+        if t.nee && Bsdf.has_smooth_m m then begin
+          direct t st sampler base;
+          let dl = st.dl in
+          Color.acc_set acc (acc.ar +. (thr.ar *. dl.ar)) (acc.ag +. (thr.ag *. dl.ag)) (acc.ab +. (thr.ab *. dl.ab))
+        end;
+        let bs = st.bs in
+        if
+          not
+            (Bsdf.sample_into m n wo
+               (Sampler.get sampler (base + d_lobe))
+               (Sampler.get sampler (base + d_dir))
+               (Sampler.get sampler (base + d_dir + 1))
+               bs)
+        then go := false
+        else begin
+          let bw = bs.weight in
+          Color.acc_set thr (thr.ar *. bw.ar) (thr.ag *. bw.ag) (thr.ab *. bw.ab);
+          let q = if !depth >= 3 then fmin 0.95 (fmax thr.ar (fmax thr.ag thr.ab)) else 1. in
+          if q <= 0. || Sampler.get sampler (base + d_rr) >= q then go := false
+          else begin
+            if bs.delta then st.prev <- specular_v
+            else begin
+              st.prev <- smooth_v;
+              Vec3.set st.prev_p p.mx p.my p.mz;
+              Vec3.set st.prev_n n.mx n.my n.mz;
+              st.num.prev_pdf <- bs.p.pdf
+            end;
+            Vec3.set o p.mx p.my p.mz;
+            Vec3.set d bs.wi.mx bs.wi.my bs.wi.mz;
+            incr depth;
+            let k = 1. /. q in
+            Color.acc_set thr (k *. thr.ar) (k *. thr.ag) (k *. thr.ab)
+          end
+        end
+      end
+    end
+  done
 
-let pixel t ~width ~height ~seed ~spp ~max_depth x y =
+let li t sampler ~max_depth (ray : Ray.t) =
+  let st = Scratch.get state_key in
+  Vec3.load st.o ray.origin;
+  Vec3.load st.d ray.dir;
+  li_into t sampler ~max_depth st;
+  Color.of_acc st.acc
+
+let pixel_into t ~width ~height ~seed ~spp ~max_depth x y (out : Color.acc) =
+  let st = Scratch.get state_key in
+  let cam = t.scene.camera and sampler = st.sampler and sum = st.sum in
   let side = int_of_float (Float.sqrt (float_of_int spp)) in
   let strat = side * side = spp in
-  let acc = ref black in
+  Color.acc_set sum 0. 0. 0.;
   for k = 0 to spp - 1 do
-    let sampler = Sampler.create ~seed ~pixel:((y * width) + x) ~sample:k in
+    Sampler.reset sampler ~seed ~pixel:((y * width) + x) ~sample:k;
     let u1 = Sampler.get sampler 0 and u2 = Sampler.get sampler 1 in
-    let jx, jy =
-      if strat then
-        ( (float_of_int (k mod side) +. u1) /. float_of_int side,
-          (float_of_int (k / side) +. u2) /. float_of_int side )
-      else (u1, u2)
-    in
-    let sx, sy =
-      Camera.pixel_coords ~width ~height (float_of_int x +. jx) (float_of_int y +. jy)
-    in
-    let ray =
-      Camera.ray_lens t.scene.camera sx sy (Sampler.get sampler 2) (Sampler.get sampler 3)
-    in
-    let c = li t sampler ~max_depth ray in
+    let jx = if strat then (float_of_int (k mod side) +. u1) /. float_of_int side else u1
+    and jy = if strat then (float_of_int (k / side) +. u2) /. float_of_int side else u2 in
+    let sx = Camera.pixel_x ~width (float_of_int x +. jx)
+    and sy = Camera.pixel_y ~height (float_of_int y +. jy) in
+    if cam.aperture <= 0. then Camera.ray_into cam sx sy st.o st.d
+    else begin
+      let r = Camera.ray_lens cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) in
+      Vec3.load st.o r.origin;
+      Vec3.load st.d r.dir
+    end;
+    li_into t sampler ~max_depth st;
+    let c = st.acc in
     (* a non-finite sample (never expected) would poison the pixel: drop it *)
-    if Float.is_finite (c.r +. c.g +. c.b) then acc := add !acc c
+    if Float.is_finite (c.ar +. c.ag +. c.ab) then
+      Color.acc_set sum (sum.ar +. c.ar) (sum.ag +. c.ag) (sum.ab +. c.ab)
   done;
-  scale (1. /. float_of_int spp) !acc
+  let k = 1. /. float_of_int spp in
+  Color.acc_set out (k *. sum.ar) (k *. sum.ag) (k *. sum.ab)
+
+let pixel t ~width ~height ~seed ~spp ~max_depth x y =
+  let out = Color.acc 0. in
+  pixel_into t ~width ~height ~seed ~spp ~max_depth x y out;
+  Color.of_acc out

@@ -21,6 +21,13 @@ val li : t -> Sampler.t -> max_depth:int -> Ray.t -> Color.t
     Random dimensions 0-3 of the sampler are left to the caller (pixel and
     lens). *)
 
+val pixel_into :
+  t -> width:int -> height:int -> seed:int -> spp:int -> max_depth:int -> int -> int -> Color.acc -> unit
+(** {!pixel} written into a sum the caller owns: a sample walks its path
+    in per-domain records, allocating nothing in the common case (solid
+    pigments, point lights and the background, shapes of any kind, no
+    focal blur). *)
+
 val pixel :
   t -> width:int -> height:int -> seed:int -> spp:int -> max_depth:int -> int -> int -> Color.t
 (** Mean of [spp] samples of pixel [(x, y)], jittered inside the pixel

@@ -74,12 +74,16 @@ let image_eval (im : image) (p : Vec3.t) =
       lerp (lerp (get i j) (get (i + 1) j) a) (lerp (get i (j + 1)) (get (i + 1) (j + 1)) a) b
 
 (* Whether every point is opaque (filter and transmit 0): a shadow ray
-   through such a pigment is blocked without evaluating it. *)
+   through such a pigment is blocked without evaluating it (asked at
+   every shadow ray's crossing: no closure made for the walk). *)
 let rec opaque = function
   | Solid c -> c.filter = 0. && c.transmit = 0.
-  | Map { entries; _ } -> Array.for_all (fun (_, p) -> opaque p) entries
-  | Blocks { cells; _ } -> Array.for_all opaque cells
+  | Map { entries; _ } -> entries_opaque entries 0
+  | Blocks { cells; _ } -> cells_opaque cells 0
   | Image_map _ -> false
+
+and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
+and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
 
 let rec eval p point =
   match p with

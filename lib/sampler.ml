@@ -1,7 +1,7 @@
 (* Counter-based: number [dim] of a stream is hash(key + dim * golden),
    where key mixes seed, pixel and sample. Arithmetic wraps on 63-bit ints;
    we keep 62 bits so every step stays non-negative after masking. *)
-type t = { key : int; mutable n : int }
+type t = { mutable key : int; mutable n : int }
 
 let mask = (1 lsl 62) - 1
 let golden = 0x1E3779B97F4A7C15 land mask
@@ -12,12 +12,15 @@ let hash x =
   let x = (x lxor (x lsr 29)) * 0x14D049BB133111EB land mask in
   (x lxor (x lsr 32)) land mask
 
-let create ~seed ~pixel ~sample =
-  let k = hash (hash (hash seed + pixel) + sample) in
-  { key = k; n = 0 }
+let[@inline] key ~seed ~pixel ~sample = hash (hash (hash seed + pixel) + sample)
+let create ~seed ~pixel ~sample = { key = key ~seed ~pixel ~sample; n = 0 }
+
+let reset s ~seed ~pixel ~sample =
+  s.key <- key ~seed ~pixel ~sample;
+  s.n <- 0
 
 (* top 53 of 62 bits *)
-let get s dim = float_of_int (hash (s.key + (dim * golden)) lsr 9) *. 0x1p-53
+let[@inline] get s dim = float_of_int (hash (s.key + (dim * golden)) lsr 9) *. 0x1p-53
 
 let float s =
   let v = get s s.n in

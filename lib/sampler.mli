@@ -9,6 +9,10 @@ type t
 val create : seed:int -> pixel:int -> sample:int -> t
 (** A fresh stream for one sample of one pixel ([pixel = y * width + x]). *)
 
+val reset : t -> seed:int -> pixel:int -> sample:int -> unit
+(** Make [s] the stream {!create} would make (a sampler reused sample
+    after sample, allocating nothing). *)
+
 val get : t -> int -> float
 (** [get s dim]: number [dim] (any non-negative int) of the stream,
     uniform in [[0, 1)] with 53 random bits. Pure: no state changes. *)

@@ -348,6 +348,34 @@ let mc_scenes () =
       if mean img <= 0. then Alcotest.failf "%s is black" f)
     files
 
+(* A sample walks its path in per-domain records: solid pigments, a
+   point light and the background, matte, metal and glass surfaces,
+   spheres, a transformed sphere, a box and a plane, nothing allocated.
+   Minor words per sample over a one-domain render as [camlray render]
+   runs it ([Render.image_into]); the tiles' records are the slack. *)
+let allocation () =
+  let s =
+    Helpers.compile_string
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       light_source { <-4, 6, -5>, rgb 1 }\n\
+       background { rgb <0.4, 0.5, 0.7> }\n\
+       plane { y, 0 pigment { rgb <0.8, 0.8, 0.7> } }\n\
+       sphere { <-1, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } finish { phong 0.5 specular 0.3 } }\n\
+       sphere { <1.2, 0.8, 0.5>, 0.8 pigment { rgb 0.9 } finish { reflection 0.6 metallic } }\n\
+       sphere { <0, 0.5, -1.5>, 0.5 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.5 } }\n\
+       sphere { 0, 1 scale <0.3, 0.6, 0.3> translate <2, 0.6, -1> pigment { rgb <0.2, 0.7, 0.3> } }\n\
+       box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> rotate y*20 pigment { rgb <0.2, 0.3, 0.8> } }"
+  in
+  let width = 48 and height = 36 and spp = 4 in
+  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let before = Gc.minor_words () in
+  let img = Render.image_into ~domains:1 ~width ~height pixel in
+  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  (* the picture is not black: paths found light *)
+  Alcotest.(check bool) "lit" true (mean img > 0.05);
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample (at most 0.1)" words
+
 let tests =
   ( "path",
     [
@@ -365,4 +393,5 @@ let tests =
     Alcotest.test_case "area light from a scene: far field = point light" `Quick area_light_from_scene;
     Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
+      Alcotest.test_case "a sample allocates nothing" `Quick allocation;
     ] )

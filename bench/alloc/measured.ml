@@ -13,10 +13,5 @@ let load file =
 
 (* as [camlray render] runs it: written into the tile's sum *)
 let pixel (s : Scene.t) ~width ~height ~mc =
-  if mc > 0 then begin
-    let f = Path.pixel (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16 in
-    fun x y (out : Color.acc) ->
-      let c : Color.t = f x y in
-      Color.acc_set out c.r c.g c.b
-  end
+  if mc > 0 then Path.pixel_into (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16
   else Whitted.pixel_into s ~width ~height
