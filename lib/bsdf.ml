@@ -14,23 +14,24 @@ let basis (n : Vec3.t) =
   ( Vec3.make (1. +. (sign *. n.x *. n.x *. a)) (sign *. b) (-.sign *. n.x),
     Vec3.make b (sign +. (n.y *. n.y *. a)) (-.n.y) )
 
-(* [around n cos_t phi] is [sin_t cos phi t + sin_t sin phi b + cos_t n]
-   with [t, b = basis n], computed in floats (same operations, one
-   vector allocated). *)
-let around (n : Vec3.t) cos_t phi =
+(* [around (x, y, z) cos_t phi] into [out] *)
+let[@inline] around_into (out : Vec3.m) nx ny nz cos_t phi =
   let sin_t = Float.sqrt (fmax 0. (1. -. (cos_t *. cos_t))) in
-  let sign = if n.z > 0. || (n.z = 0. && 1. /. n.z > 0.) then 1. else -1. in
-  let a = -1. /. (sign +. n.z) in
-  let b = n.x *. n.y *. a in
-  let tx = 1. +. (sign *. n.x *. n.x *. a) and ty = sign *. b and tz = -.sign *. n.x in
-  let bx = b and by = sign +. (n.y *. n.y *. a) and bz = -.n.y in
+  let sign = if nz > 0. || (nz = 0. && 1. /. nz > 0.) then 1. else -1. in
+  let a = -1. /. (sign +. nz) in
+  let b = nx *. ny *. a in
+  let tx = 1. +. (sign *. nx *. nx *. a) and ty = sign *. b and tz = -.sign *. nx in
+  let bx = b and by = sign +. (ny *. ny *. a) and bz = -.ny in
   let kt = sin_t *. Float.cos phi and kb = sin_t *. Float.sin phi in
-  Vec3.make
-    ((kt *. tx) +. (kb *. bx) +. (cos_t *. n.x))
-    ((kt *. ty) +. (kb *. by) +. (cos_t *. n.y))
-    ((kt *. tz) +. (kb *. bz) +. (cos_t *. n.z))
+  Vec3.set out
+    ((kt *. tx) +. (kb *. bx) +. (cos_t *. nx))
+    ((kt *. ty) +. (kb *. by) +. (cos_t *. ny))
+    ((kt *. tz) +. (kb *. bz) +. (cos_t *. nz))
 
-let cosine_hemisphere n u1 u2 = around n (Float.sqrt (1. -. u1)) (2. *. Float.pi *. u2)
+let cosine_hemisphere (n : Vec3.t) u1 u2 =
+  let out = Vec3.m () in
+  around_into out n.x n.y n.z (Float.sqrt (1. -. u1)) (2. *. Float.pi *. u2);
+  Vec3.of_m out
 
 let[@inline] fresnel eta ci =
   let ci = fmin 1. (Float.abs ci) in
@@ -48,20 +49,6 @@ let[@inline] fresnel eta ci =
    vector forms ([reflect], [half], [around]) term for term. *)
 
 let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
-
-(* [around (x, y, z) cos_t phi] into [out] *)
-let[@inline] around_into (out : Vec3.m) nx ny nz cos_t phi =
-  let sin_t = Float.sqrt (fmax 0. (1. -. (cos_t *. cos_t))) in
-  let sign = if nz > 0. || (nz = 0. && 1. /. nz > 0.) then 1. else -1. in
-  let a = -1. /. (sign +. nz) in
-  let b = nx *. ny *. a in
-  let tx = 1. +. (sign *. nx *. nx *. a) and ty = sign *. b and tz = -.sign *. nx in
-  let bx = b and by = sign +. (ny *. ny *. a) and bz = -.ny in
-  let kt = sin_t *. Float.cos phi and kb = sin_t *. Float.sin phi in
-  Vec3.set out
-    ((kt *. tx) +. (kb *. bx) +. (cos_t *. nx))
-    ((kt *. ty) +. (kb *. by) +. (cos_t *. ny))
-    ((kt *. tz) +. (kb *. bz) +. (cos_t *. nz))
 
 (* [reflect wo (x, y, z)] into [out] *)
 let[@inline] reflect_into (out : Vec3.m) (wo : Vec3.m) x y z =

@@ -55,12 +55,48 @@ type sample = { wi : Vec3.t; dist : float; value : Color.t; pdf : float }
 
 let two_pi = 2. *. Float.pi
 
-let point_light (l : Light.t) pos p =
-  let l' = { l with position = pos } in
-  let wi, dist = Light.direction_to l' p in
-  let att = Light.attenuation l' p in
-  if att <= 0. || dist <= 0. then None
-  else Some { wi; dist; value = Color.scale (Float.pi *. att) l.color; pdf = 0. }
+(* In place: [sample] into the caller's records. *)
+type nums = { mutable dist : float; mutable pdf : float }
+type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
+
+let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. } }
+
+(* [point_light l pos p] into [out], the same arithmetic ([direction_to]
+   and [attenuation] of the light moved to [pos]) *)
+let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
+  let wi = out.wi in
+  (match l.kind with
+  | Parallel { point_at } ->
+      let dx = pos.x -. point_at.x and dy = pos.y -. point_at.y and dz = pos.z -. point_at.z in
+      Vec3.set wi dx dy dz;
+      Vec3.normalize_m wi;
+      out.n.dist <- ((pos.x -. p.mx) *. wi.mx) +. ((pos.y -. p.my) *. wi.my) +. ((pos.z -. p.mz) *. wi.mz)
+  | Point | Spot _ ->
+      let vx = pos.x -. p.mx and vy = pos.y -. p.my and vz = pos.z -. p.mz in
+      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let k = 1. /. dist in
+      Vec3.set wi (k *. vx) (k *. vy) (k *. vz);
+      out.n.dist <- dist);
+  let att =
+    match l.kind with
+    | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
+    | _ -> Light.attenuation (if pos == l.position then l else { l with position = pos }) (Vec3.of_m p)
+  in
+  (not (att <= 0. || out.n.dist <= 0.))
+  && begin
+       let k = Float.pi *. att in
+       Color.acc_set out.value (k *. l.color.r) (k *. l.color.g) (k *. l.color.b);
+       out.n.pdf <- 0.;
+       true
+     end
+
+(* the value form of [point_light_into] *)
+let point_light l pos p =
+  let out = sampled () and pm = Vec3.m () in
+  Vec3.load pm p;
+  if point_light_into l pos pm out then
+    Some { wi = Vec3.of_m out.wi; dist = out.n.dist; value = Color.of_acc out.value; pdf = out.n.pdf }
+  else None
 
 let cos_max r d = Float.sqrt (fmax 0. (1. -. (r *. r /. (d *. d))))
 
@@ -113,12 +149,6 @@ let pdf e p q nq =
 let find es o =
   Array.find_opt (function Sphere { obj; _ } -> obj == o | Delta _ | Area _ -> false) es
 
-(* In place: [sample] into the caller's records. *)
-type nums = { mutable dist : float; mutable pdf : float }
-type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
-
-let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. } }
-
 let copy_sample (s : sample option) out =
   match s with
   | None -> false
@@ -128,35 +158,6 @@ let copy_sample (s : sample option) out =
       out.n.dist <- s.dist;
       out.n.pdf <- s.pdf;
       true
-
-(* [point_light l pos p] into [out], the same arithmetic ([direction_to]
-   and [attenuation] of the light moved to [pos]) *)
-let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
-  let wi = out.wi in
-  (match l.kind with
-  | Parallel { point_at } ->
-      let dx = pos.x -. point_at.x and dy = pos.y -. point_at.y and dz = pos.z -. point_at.z in
-      Vec3.set wi dx dy dz;
-      Vec3.normalize_m wi;
-      out.n.dist <- ((pos.x -. p.mx) *. wi.mx) +. ((pos.y -. p.my) *. wi.my) +. ((pos.z -. p.mz) *. wi.mz)
-  | Point | Spot _ ->
-      let vx = pos.x -. p.mx and vy = pos.y -. p.my and vz = pos.z -. p.mz in
-      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-      let k = 1. /. dist in
-      Vec3.set wi (k *. vx) (k *. vy) (k *. vz);
-      out.n.dist <- dist);
-  let att =
-    match l.kind with
-    | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
-    | _ -> Light.attenuation (if pos == l.position then l else { l with position = pos }) (Vec3.of_m p)
-  in
-  (not (att <= 0. || out.n.dist <= 0.))
-  && begin
-       let k = Float.pi *. att in
-       Color.acc_set out.value (k *. l.color.r) (k *. l.color.g) (k *. l.color.b);
-       out.n.pdf <- 0.;
-       true
-     end
 
 (* inlined: [u] and [v] are not boxed *)
 let[@inline] sample_into e (p : Vec3.m) u v out =

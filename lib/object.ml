@@ -388,17 +388,7 @@ let crossings o r tmin tmax f =
   s.far <- tmax;
   crossings_s o s tmin (Hit.create tmax) (found o) false never f
 
-let normal o p h =
-  match o.geom with
-  | Prim s ->
-      let n =
-        if Transform.is_identity o.xform then Shape.normal s p h
-        else Vec3.normalize (Transform.normal o.xform (Shape.normal s (Transform.inv_point o.xform p) h))
-      in
-      if o.inverted then Vec3.neg n else n
-  | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
-
-(* [normal] in place, the same arithmetic: nothing allocated *)
+(* A leaf's world normal at [p], into [out]: nothing allocated *)
 let normal_into o (p : Vec3.m) h out =
   match o.geom with
   | Prim s ->
@@ -411,5 +401,11 @@ let normal_into o (p : Vec3.m) h out =
       end;
       if o.inverted then Vec3.set out (-.out.mx) (-.out.my) (-.out.mz)
   | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
+
+let normal o (p : Vec3.t) h =
+  let pm = Vec3.m () and out = Vec3.m () in
+  Vec3.load pm p;
+  normal_into o pm h out;
+  Vec3.of_m out
 
 let bounds o = o.bounds

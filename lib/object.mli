@@ -96,8 +96,8 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 
 val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
 (** [normal_into leaf p h n]: {!normal} with the point and the normal
-    written in place (the same arithmetic): nothing allocated, for every
-    shape, transformed or not. *)
+    written in place ({!normal} goes through it): nothing allocated, for
+    every shape, transformed or not. *)
 
 val solid_box : t -> (Vec3.t * Vec3.t) option
 (** Where {!inside} can be true: [bounds] (the same value), except where a

@@ -223,40 +223,8 @@ let minus_x = Vec3.neg Vec3.unit_x
 let minus_y = Vec3.neg Vec3.unit_y
 let minus_z = Vec3.neg Vec3.unit_z
 
-let normal s (p : Vec3.t) (h : Hit.t) =
-  match s with
-  | Sphere { center; radius } -> Vec3.scale (1. /. radius) (Vec3.sub p center)
-  | Plane { normal; _ } | Disc { normal; _ } -> normal
-  | Box _ -> (
-      match int_of_float h.id with
-      | 0 -> minus_x
-      | 1 -> Vec3.unit_x
-      | 2 -> minus_y
-      | 3 -> Vec3.unit_y
-      | 4 -> minus_z
-      | _ -> Vec3.unit_z)
-  | Cone { base; axis; u; v; length; r0; r1; _ } -> (
-      match int_of_float h.id with
-      | 1 -> Vec3.neg axis
-      | 2 -> axis
-      | _ ->
-          let o = Vec3.sub p base in
-          let x = Vec3.dot o u and y = Vec3.dot o v and z = Vec3.dot o axis in
-          let k = (r1 -. r0) /. length in
-          let rz = r0 +. (k *. z) in
-          Vec3.normalize (Vec3.madd (Vec3.add (Vec3.scale x u) (Vec3.scale y v)) (-.k *. rz) axis))
-  | Torus { major; _ } ->
-      let rho = Float.sqrt ((p.x *. p.x) +. (p.z *. p.z)) in
-      if rho = 0. then Vec3.unit_y
-      else
-        let k = major /. rho in
-        Vec3.normalize (Vec3.make (p.x -. (k *. p.x)) p.y (p.z -. (k *. p.z)))
-  | Triangle { n; _ } -> n
-  | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal na nb nc h.u h.v
-  | Mesh m -> Mesh.normal m h
-
-(* [normal] in place, the same arithmetic; [p] is read before [out] is
-   written, so they may be the same vector *)
+(* The outward unit normal at [p], into [out]; [p] is read before [out]
+   is written, so they may be the same vector *)
 let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   match s with
   | Sphere { center; radius } ->
@@ -299,6 +267,12 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       end
   | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal_into na nb nc h out
   | Mesh m -> Mesh.normal_into m h out
+
+let normal s (p : Vec3.t) h =
+  let pm = Vec3.m () in
+  Vec3.load pm p;
+  normal_into s pm h pm;
+  Vec3.of_m pm
 
 let[@inline] inside_xyz s x y z =
   match s with

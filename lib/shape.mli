@@ -65,8 +65,8 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
     hit that found it. *)
 
 val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
-(** {!normal} written into a vector (the same arithmetic, nothing
-    allocated); the point and the result may be the same vector. *)
+(** {!normal} written into a vector, nothing allocated ({!normal} goes
+    through it); the point and the result may be the same vector. *)
 
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test (CSG and the [inside] function); triangles have

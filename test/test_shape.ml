@@ -116,25 +116,6 @@ let props =
                 | _ -> ())
               [ x; y; z ];
             !ok);
-    QCheck.Test.make ~name:"normal_into is Object.normal, bit for bit (placed, unplaced, inverted)"
-      ~count:3000 arb (fun (s, xf, r) ->
-        match hit_of s xf r with
-        | None -> true
-        | Some (o, h, p, n) ->
-            let same (a : Vec3.t) (b : Vec3.m) =
-              Int64.bits_of_float a.x = Int64.bits_of_float b.mx
-              && Int64.bits_of_float a.y = Int64.bits_of_float b.my
-              && Int64.bits_of_float a.z = Int64.bits_of_float b.mz
-            in
-            let into o p =
-              let pm = Vec3.m () and out = Vec3.m () in
-              Vec3.load pm p;
-              Object.normal_into o pm h out;
-              out
-            in
-            let plain = Object.make s and inv = Object.invert o in
-            same n (into o p) && same (Object.normal inv p h) (into inv p)
-            && same (Object.normal plain p h) (into plain p));
     QCheck.Test.make ~name:"normals of closed solids point outward" ~count:3000 arb (fun (s, xf, r) ->
         QCheck.assume (closed s);
         match hit_of s xf r with
