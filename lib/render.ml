@@ -26,38 +26,54 @@ let shuffle seed a =
 
 (* Every minor collection stops all domains at once, and with more
    domains than cores a descheduled domain holds the others at each one:
-   a larger minor heap in every rendering domain (Gc.set acts on the
-   calling domain only) makes the stops rare; the calling domain gets its
-   own size back afterwards. One domain never waits for another: it keeps
-   its heap. With more domains than cores, 16 MB (RTIOW in mc mode on 4
-   domains, 2 cores: 1.05 s with 8 MB, 0.87 s with 16 MB; the snowman was
-   slower with 64 or 256 MB).
-   Whatever the size, each rendering domain has a minor collection at its
-   first tile (growing the heap makes one; a heap already large enough
-   gets [Gc.minor]): until then, what the domain allocated as it started
-   stays packed in its minor heap, and the rendering code itself runs
-   slower on every domain (time in loads of scene data and in stores to
-   scratch, not in the collector: cache lines shared between domains, it
-   seems). Measured on 2 cores, snowman 1600x1200 on 2 domains: every
-   domain started on 16 MB heaps (OCAMLRUNPARAM=s=2M, so no growing) 0.33
-   to 0.35 s, the same with [Gc.minor] at each first tile 0.23 to 0.24 s,
-   as camlray runs by default (0.25); a [Gc.minor] in the main domain
-   before the pool starts does not help. The size matters little there:
-   regrowing by one page or to 8 MB, 0.234 and 0.239 s (medians of 10
-   alternated runs); RTIOW in mc mode, 650 collections of 2 MB heaps,
-   0.844 s against 0.850 s with 8 MB. 8 MB is kept: where more cores wait
-   at each stop, fewer stops count more. *)
+   a domain that allocates gets a larger minor heap (Gc.set acts on the
+   calling domain only), which makes the stops rare; the calling domain
+   gets its own size back afterwards. With more domains than cores, 16 MB
+   (RTIOW in mc mode on 4 domains, 2 cores, when its samples allocated:
+   1.05 s with 8 MB, 0.87 s with 16 MB; the snowman was slower with 64 or
+   256 MB), 8 MB otherwise.
+   Only a domain that allocates: growing the heap is itself a collection,
+   a stop of all domains, and shading that allocates nothing (whitted
+   camera rays, Monte Carlo samples, in the common case) never fills even
+   the default heap. A domain's allocation is watched from its second tile
+   (the first makes its scratch) and the heap grown once it passes 1 K
+   words a tile on average (4 a pixel; the Cornell box's area light, some
+   1,000 words a camera ray, passes it at once; the snowman, 0.1 words a
+   camera ray and its tiles' records, never). Measured on 2 cores, 1600x1200, medians
+   of 5 to 7 alternated runs, growing at the first tile against growing
+   only when allocating: snowman on 4 domains 0.229 against 0.210 s (2
+   domains 0.203 both), default scene 0.384 against 0.360 s (0.342 and
+   0.339); the Cornell box (400x400) on 4 domains needs its heap grown:
+   0.401 s, against 0.697 s never grown.
+   (A collection at each domain's first tile used to matter on its own:
+   what a domain allocated as it started stayed packed in its minor heap
+   and the snowman on 2 domains took 0.33 s instead of 0.23 s; no longer
+   measurable since per-domain scratch went through [Scratch]: 0.203 s
+   with or without it.) *)
 let minor_words domains =
   if domains > Domain.recommended_domain_count () then 2 * 1024 * 1024 (* 16 MB *)
   else 1024 * 1024 (* 8 MB per domain *)
 
-let big_minor = Domain.DLS.new_key (fun () -> false)
+(* words a tile may allocate, on average, without the heap growing *)
+let per_tile = 1024.
 
-let ensure_minor_heap words =
-  if not (Domain.DLS.get big_minor) then begin
-    Domain.DLS.set big_minor true;
-    let g = Gc.get () in
-    if g.minor_heap_size < words then Gc.set { g with minor_heap_size = words } else Gc.minor ()
+(* per domain: tiles started, its minor words at its second (the first
+   makes the domain's scratch), whether its heap grew *)
+type watch = { mutable tiles : int; mutable grown : bool; from : Float.Array.t }
+
+let watch_key = Domain.DLS.new_key (fun () -> { tiles = 0; grown = false; from = Float.Array.make 1 0. })
+
+let watch_allocation words =
+  let w = Domain.DLS.get watch_key in
+  if not w.grown then begin
+    let now = Gc.minor_words () in
+    w.tiles <- w.tiles + 1;
+    if w.tiles = 2 then Float.Array.unsafe_set w.from 0 now
+    else if w.tiles > 3 && now -. Float.Array.unsafe_get w.from 0 > per_tile *. float_of_int (w.tiles - 2) then begin
+      w.grown <- true;
+      let g = Gc.get () in
+      if g.minor_heap_size < words then Gc.set { g with minor_heap_size = words }
+    end
   end
 
 (* Tasks of up to 4 tiles: each task of [parallel_for] costs a few
@@ -86,7 +102,7 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
   let report = Mutex.create () in
   let stop = Atomic.make false in
   let body i =
-    if domains > 1 then ensure_minor_heap (minor_words domains);
+    if domains > 1 then watch_allocation (minor_words domains);
     if Atomic.get stop || cancelled () then Atomic.set stop true
     else begin
       f ts.(i);
@@ -101,10 +117,13 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
       end
     end
   in
-  let own = (Gc.get ()).minor_heap_size and was_big = Domain.DLS.get big_minor in
+  let own = (Gc.get ()).minor_heap_size and w = Domain.DLS.get watch_key in
+  let was_grown = w.grown in
+  if not was_grown then w.tiles <- 0;
   let restore () =
-    if not was_big then begin
-      Domain.DLS.set big_minor false;
+    if not was_grown then begin
+      w.grown <- false;
+      w.tiles <- 0;
       let g = Gc.get () in
       if g.minor_heap_size <> own then Gc.set { g with minor_heap_size = own }
     end

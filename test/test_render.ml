@@ -96,4 +96,30 @@ let units =
           [ (1, 0.1); (2, 0.15); (3, 0.175); (5, 0.19375) ]);
   ]
 
-let tests = ("render", units)
+(* The rendering domains' minor heaps: grown for a pixel function that
+   allocates (fewer collections, each a stop of all domains), left alone
+   for one that does not (growing is itself a collection), and the
+   calling domain's own size back afterwards. *)
+let heap_policy () =
+  let own = (Gc.get ()).minor_heap_size in
+  let largest garbage =
+    let seen = Atomic.make 0 in
+    let sink = ref [] in
+    ignore
+      (Render.image_into ~domains:2 ~width:256 ~height:256 (fun x y out ->
+           if garbage then sink := List.init 16 (fun i -> i + x + y);
+           (* looked at once a tile: [Gc.get] makes a record *)
+           if x land 15 = 15 && y land 15 = 15 then begin
+             let h = (Gc.get ()).minor_heap_size in
+             if h > Atomic.get seen then Atomic.set seen h
+           end;
+           Color.acc_set out 0. 0. 0.));
+    ignore (Sys.opaque_identity !sink);
+    Atomic.get seen
+  in
+  let quiet = largest false and busy = largest true in
+  Alcotest.(check int) "not grown without allocation" own quiet;
+  Alcotest.(check bool) "grown for an allocating pixel function" true (busy >= 1024 * 1024);
+  Alcotest.(check int) "the calling domain's size back" own (Gc.get ()).minor_heap_size
+
+let tests = ("render", units @ [ Alcotest.test_case "minor heaps grow only where pixels allocate" `Quick heap_policy ])
