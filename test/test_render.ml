@@ -42,7 +42,8 @@ let units =
   [
     Alcotest.test_case "8x8 whitted image equals the computed colours" `Quick computed_8x8;
     Alcotest.test_case "the parallel loop runs every index once, whatever the chunks" `Quick (fun () ->
-        (* tasks take up to 4 indices: sizes around each chunk boundary *)
+        (* tasks take up to 4 indices, at least 96 tasks a domain: sizes
+           around each chunk boundary *)
         List.iter
           (fun (domains, n) ->
             let seen = Array.init n (fun _ -> Atomic.make 0) in
@@ -52,7 +53,8 @@ let units =
                 if Atomic.get a <> 1 then
                   Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
               seen)
-          [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (3, 383); (3, 385);
+          [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (2, 383); (2, 384);
+            (2, 767); (2, 768); (3, 383); (3, 385); (3, 575); (3, 577); (4, 1535); (4, 1537);
             (2, 7500); (4, 1875); (4, 1999) ]);
     Alcotest.test_case "whitted: 1 and 2 domains give identical images" `Quick (fun () ->
         let text = default_scene () in
