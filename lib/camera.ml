@@ -68,18 +68,32 @@ let ray_into c sx sy o d =
       span_into c c.location sx sy false o;
       Vec3.load d (Vec3.normalize c.direction)
 
-let ray_lens c sx sy u v =
-  let r = ray c sx sy in
-  if c.aperture <= 0. then r
-  else
+(* [Vec3.normalize v], component [k] *)
+let[@inline] unit_comp (v : Vec3.t) k =
+  let l = Float.sqrt ((v.x *. v.x) +. (v.y *. v.y) +. (v.z *. v.z)) in
+  let c = match k with 0 -> v.x | 1 -> v.y | _ -> v.z in
+  if l > 0. then 1. /. l *. c else c
+
+let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
+  ray_into c sx sy o d;
+  if c.aperture > 0. then begin
     (* POV-Ray's lens has radius aperture/4 (checked by rendering a point
        light out of focus); uniform polar mapping of the square onto it *)
     let rad = 0.25 *. c.aperture *. Float.sqrt u in
     let phi = 2. *. Float.pi *. v in
-    let ru = Vec3.normalize c.right and rv = Vec3.normalize c.up in
-    let offset = Vec3.add (Vec3.scale (rad *. Float.cos phi) ru) (Vec3.scale (rad *. Float.sin phi) rv) in
-    let axis = Vec3.normalize c.direction in
-    let tf = c.focal_distance /. Vec3.dot r.dir axis in
-    let focus = Ray.at r tf in
-    let o = Vec3.add r.origin offset in
-    Ray.make o (Vec3.normalize (Vec3.sub focus o))
+    let kc = rad *. Float.cos phi and ks = rad *. Float.sin phi in
+    let ox = (kc *. unit_comp c.right 0) +. (ks *. unit_comp c.up 0)
+    and oy = (kc *. unit_comp c.right 1) +. (ks *. unit_comp c.up 1)
+    and oz = (kc *. unit_comp c.right 2) +. (ks *. unit_comp c.up 2) in
+    let ax = unit_comp c.direction 0 and ay = unit_comp c.direction 1 and az = unit_comp c.direction 2 in
+    let tf = c.focal_distance /. ((d.mx *. ax) +. (d.my *. ay) +. (d.mz *. az)) in
+    let fx = o.mx +. (tf *. d.mx) and fy = o.my +. (tf *. d.my) and fz = o.mz +. (tf *. d.mz) in
+    Vec3.set o (o.mx +. ox) (o.my +. oy) (o.mz +. oz);
+    Vec3.set d (fx -. o.mx) (fy -. o.my) (fz -. o.mz);
+    Vec3.normalize_m d
+  end
+
+let ray_lens c sx sy u v =
+  let o = Vec3.m () and d = Vec3.m () in
+  lens_into c sx sy u v o d;
+  Ray.make (Vec3.of_m o) (Vec3.of_m d)

@@ -30,6 +30,10 @@ val ray_into : t -> float -> float -> Vec3.m -> Vec3.m -> unit
 (** [ray_into c sx sy o d]: {!origin} and {!dir} written into [o] and [d]
     (nothing allocated for a perspective camera). *)
 
+val lens_into : t -> float -> float -> float -> float -> Vec3.m -> Vec3.m -> unit
+(** [lens_into cam sx sy u v o d]: {!ray_lens} written into [o] and [d]
+    ({!ray_lens} goes through it). *)
+
 val ray_lens : t -> float -> float -> float -> float -> Ray.t
 (** [ray_lens cam sx sy u v]: as [ray], with the origin moved to the point
     [(u, v)] in [[0,1)^2] of the lens and aimed at the same point of the

@@ -104,6 +104,10 @@ val solid_box : t -> (Vec3.t * Vec3.t) option
     disc (whose inside is a half-space) makes it wider; [None] when
     unbounded. *)
 
+val inside_s : t -> found -> bool
+(** [inside] at the point held in [f.pt] (origin fields), [f] as scratch:
+    nothing allocated. *)
+
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test at a world point. *)
 

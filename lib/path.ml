@@ -302,11 +302,7 @@ let pixel_into t ~width ~height ~seed ~spp ~max_depth x y (out : Color.acc) =
     let sx = Camera.pixel_x ~width (float_of_int x +. jx)
     and sy = Camera.pixel_y ~height (float_of_int y +. jy) in
     if cam.aperture <= 0. then Camera.ray_into cam sx sy st.o st.d
-    else begin
-      let r = Camera.ray_lens cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) in
-      Vec3.load st.o r.origin;
-      Vec3.load st.d r.dir
-    end;
+    else Camera.lens_into cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) st.o st.d;
     li_into t sampler ~max_depth st;
     let c = st.acc in
     (* a non-finite sample (never expected) would poison the pixel: drop it *)

@@ -304,17 +304,50 @@ let occluders_s s (r : Ray.scratch) tmin opaque g =
   occluders_in s sc tmin opaque g
 
 (* Inside tests at one point: the objects that reach beyond their boxes,
-   then those whose box holds the point (a query of the BVH with a ray of
-   no length). *)
-let containing s (p : Vec3.t) =
+   then those whose box holds the point (a walk of the BVH along a ray of
+   no length); per domain, nothing allocated unless something holds it *)
+type probe = { at : Ray.scratch; pf : Object.found; mutable hits : Object.t list }
+
+let probe_key = Scratch.key (fun () -> { at = Ray.scratch (); pf = Object.found dummy; hits = [] })
+
+let[@inline] probe_test pr o =
+  if Object.inside_s o pr.pf && not (List.memq o pr.hits) then pr.hits <- o :: pr.hits
+
+let probe_leaf a pr _ _ i =
+  probe_test pr (Array.unsafe_get a.finite i);
+  true
+
+let containing_m s (p : Vec3.m) =
   let a = s.accel in
-  let found = ref [] in
-  let test o = if Object.inside o p && not (List.memq o !found) then found := o :: !found in
-  Array.iter test a.reach;
-  ignore (Bvh.iter a.bvh (Ray.make p (Vec3.make 1. 0. 0.)) 0. 0. (fun i -> test a.finite.(i); true));
-  match !found with
-  | ([] | [ _ ]) as l -> l
-  | l -> Array.fold_left (fun acc o -> if List.memq o l then o :: acc else acc) [] s.objects
+  let pr = Scratch.get probe_key in
+  let pt = pr.pf.pt and r = pr.at in
+  pt.ox <- p.mx;
+  pt.oy <- p.my;
+  pt.oz <- p.mz;
+  r.ox <- p.mx;
+  r.oy <- p.my;
+  r.oz <- p.mz;
+  r.dx <- 1.;
+  r.dy <- 0.;
+  r.dz <- 0.;
+  r.far <- 0.;
+  for i = 0 to Array.length a.reach - 1 do
+    probe_test pr (Array.unsafe_get a.reach i)
+  done;
+  ignore (Bvh.iter_s a.bvh r 0. a pr probe_leaf);
+  match pr.hits with
+  | [] -> []
+  | [ _ ] as l ->
+      pr.hits <- [];
+      l
+  | l ->
+      pr.hits <- [];
+      Array.fold_left (fun acc o -> if List.memq o l then o :: acc else acc) [] s.objects
+
+let containing s (p : Vec3.t) =
+  let pm = Vec3.m () in
+  Vec3.load pm p;
+  containing_m s pm
 
 let block _ _ = false
 let always _ = true

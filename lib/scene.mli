@@ -72,6 +72,10 @@ val hit_normal_into : t -> Object.found -> Hit.t -> Vec3.m -> Vec3.m -> unit
     allocates nothing for spheres of the flat array and untransformed
     planes, discs, boxes, triangles and meshes. *)
 
+val containing_m : t -> Vec3.m -> Object.t list
+(** {!containing} of a point written in place: nothing allocated when no
+    object holds it. *)
+
 val containing : t -> Vec3.t -> Object.t list
 (** The objects whose inside (POV-Ray's test) holds the point, the last
     in [objects] first; objects whose box is away from the point are not

@@ -542,19 +542,23 @@ and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level media (fr : f
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
    the camera location is the same for every ray of a pinhole camera. *)
-let start_key : (Scene.t * Vec3.t * Interior.t list) option ref Scratch.key =
-  Scratch.key (fun () -> ref None)
+type start = { mutable scene : Scene.t option; at : Vec3.m; mutable media : Interior.t list }
+
+let start_key = Scratch.key (fun () -> { scene = None; at = Vec3.m (); media = [] })
 
 (* per domain: a cache shared by domains would be written from both when
-   the origin changes at every ray (orthographic camera, focal blur) *)
+   the origin changes at every ray (orthographic camera, focal blur); a
+   new origin costs an allocation only where some object holds it *)
 let start_media (s : Scene.t) (o : Vec3.m) =
-  let cache = Scratch.get start_key in
-  match !cache with
-  | Some (s', o', m) when s' == s && o'.x = o.mx && o'.y = o.my && o'.z = o.mz -> m
+  let c = Scratch.get start_key in
+  let at = c.at in
+  match c.scene with
+  | Some s' when s' == s && at.mx = o.mx && at.my = o.my && at.mz = o.mz -> c.media
   | _ ->
-      let ov = Vec3.of_m o in
-      let m = List.map (fun (o : Object.t) -> o.interior) (Scene.containing s ov) in
-      cache := Some (s, ov, m);
+      (match c.scene with Some s' when s' == s -> () | _ -> c.scene <- Some s);
+      Vec3.set at o.mx o.my o.mz;
+      let m = match Scene.containing_m s o with [] -> [] | l -> List.map (fun (o : Object.t) -> o.interior) l in
+      if c.media != m then c.media <- m;
       m
 
 (* A camera ray, per domain: its origin and direction, and its light. *)
@@ -579,30 +583,44 @@ let trace s (ray : Ray.t) =
    a per-pixel offset (POV-Ray picks its lens points at random and stops
    early by a confidence test, so blurred parts agree in the mean, not
    pixel for pixel). *)
-let radical_inverse k =
-  let rec go k f acc = if k = 0 then acc else go (k lsr 1) (f *. 0.5) (if k land 1 = 1 then acc +. f else acc) in
-  go k 0.5 0.
+let[@inline] radical_inverse k =
+  let k = ref k and f = ref 0.5 and acc = ref 0. in
+  while !k <> 0 do
+    if !k land 1 = 1 then acc := !acc +. !f;
+    f := !f *. 0.5;
+    k := !k lsr 1
+  done;
+  !acc
 
-let focal_blur (s : Scene.t) sx sy px py =
+(* per domain: the lens points' sampler and the sum of their light *)
+let blur_key = Scratch.key (fun () -> (Sampler.create ~seed:0 ~pixel:0 ~sample:0, Color.acc 0.))
+
+let focal_blur_into (s : Scene.t) sx sy px py out =
   let cam = s.camera in
   let n = if cam.blur_samples > 0 then cam.blur_samples else 10 (* camlray's default *) in
   let key = (int_of_float (Float.floor py) * 65599) + int_of_float (Float.floor px) in
-  let sampler = Sampler.create ~seed:0 ~pixel:key ~sample:0 in
+  let sampler, sum = Scratch.get blur_key in
+  Sampler.reset sampler ~seed:0 ~pixel:key ~sample:0;
   let du = Sampler.get sampler 0 and dv = Sampler.get sampler 1 in
-  let acc = ref black in
+  let r = Scratch.get camera_key in
+  Color.acc_set sum 0. 0. 0.;
   for k = 0 to n - 1 do
     let u = Float.rem (((float_of_int k +. 0.5) /. float_of_int n) +. du) 1. in
     let v = Float.rem (radical_inverse k +. dv) 1. in
-    acc := add !acc (trace s (Camera.ray_lens cam sx sy u v))
+    Camera.lens_into cam sx sy u v r.o r.d;
+    trace_camera_ray s r r.light;
+    let l = r.light in
+    Color.acc_set sum (sum.ar +. l.ar) (sum.ag +. l.ag) (sum.ab +. l.ab)
   done;
-  scale (1. /. float_of_int n) !acc
+  let k = 1. /. float_of_int n in
+  Color.acc_set out (k *. sum.ar) (k *. sum.ag) (k *. sum.ab)
 
 (* The light through the image point [(px, py)] into [out]; inlined:
    the coordinates stay unboxed. *)
 let[@inline] sample_in (s : Scene.t) ~width ~height px py out =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
-  if cam.aperture > 0. then set_color out (focal_blur s sx sy px py)
+  if cam.aperture > 0. then focal_blur_into s sx sy px py out
   else begin
     let r = Scratch.get camera_key in
     Camera.ray_into cam sx sy r.o r.d;

@@ -252,7 +252,7 @@ let no_light (_ : Object.t) (_ : float) = false
    kind, transforms, a union with its own BVH, a mesh, CSG and a clip
    (whose rejected crossings alone may box a float). *)
 let no_alloc =
-  Alcotest.test_case "Scene.nearest and the shadow walk allocate nothing" `Quick (fun () ->
+  Alcotest.test_case "Scene.nearest, the shadow walk and containing_m allocate nothing" `Quick (fun () ->
       let s =
         Helpers.compile_string
           {|camera { location <0, 3, -12> look_at <0, 0, 0> }
@@ -295,6 +295,22 @@ union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigm
       walk ();
       let words = Gc.minor_words () -. before in
       Alcotest.(check bool) "some rays blocked" true (!blocked > 1000);
-      if words > 16. then Alcotest.failf "%.0f minor words for %d shadow walks" words (Array.length rays))
+      if words > 16. then Alcotest.failf "%.0f minor words for %d shadow walks" words (Array.length rays);
+      (* where camera rays start (focal blur moves the origin at every
+         ray): points among the objects, outside all of them and in front
+         of the disc (whose inside is the half-space behind it) *)
+      let p = Vec3.m () and none = ref true in
+      let probe () =
+        for i = 0 to 999 do
+          Vec3.set p (float (i mod 12) -. 6.) 1.5 (-2.8 -. (float (i mod 7) *. 0.001));
+          if Scene.containing_m s p <> [] then none := false
+        done
+      in
+      probe ();
+      let before = Gc.minor_words () in
+      probe ();
+      let words = Gc.minor_words () -. before in
+      Alcotest.(check bool) "inside nothing" true !none;
+      if words > 16. then Alcotest.failf "%.0f minor words for 1000 points" words)
 
 let tests = ("bvh", no_alloc :: units @ List.map QCheck_alcotest.to_alcotest ((union_prop :: props) @ any_hit_props))
