@@ -47,11 +47,13 @@ let compile ?(domains = 1) text =
 
 (* the best of seven runs: these machines are shared and noisy, and a
    render of 10^3 objects takes some 12 ms (with three, t(10^3) moved by
-   1 ms, 8%, from run to run) *)
+   1 ms, 8%, from run to run); pixels written in place, as [camlray
+   render] runs them *)
 let trace ~width ~height ~domains (s : Scene.t) =
   Gc.full_major ();
+  let pixel = Whitted.pixel_into s ~width ~height in
   List.fold_left Float.min infinity
-    (List.init 7 (fun _ -> snd (time (fun () -> Render.image ~domains ~width ~height (Whitted.pixel s ~width ~height)))))
+    (List.init 7 (fun _ -> snd (time (fun () -> Render.image_into ~domains ~width ~height pixel))))
 
 let direct_spheres ?(domains = 1) n =
   let base = compile header in
