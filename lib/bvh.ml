@@ -41,7 +41,11 @@ let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 el
 let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
 
 (* What a build reads: the primitives' boxes, centroids and costs, and
-   the permutation it sorts in place (each subtree owns a range of it). *)
+   the permutation it sorts in place (each subtree owns a range of it).
+   Boxes, centroids and costs are copies kept in the permutation's order,
+   each swapped with it: a node reads its primitives' data in sequence,
+   not scattered over the arrays (at 10^6 boxes, what the build spent its
+   time waiting for). *)
 type input = {
   leaf_size : int;
   node_cost : float;
@@ -50,6 +54,23 @@ type input = {
   cent : Float.Array.t;
   prims : int array;
 }
+
+let[@inline] swap_floats a k i j =
+  for x = 0 to k - 1 do
+    let t = fget a ((k * i) + x) in
+    fset a ((k * i) + x) (fget a ((k * j) + x));
+    fset a ((k * j) + x) t
+  done
+
+(* exchange the primitives at positions [i] and [j], with their data *)
+let swap inp i j =
+  let p = inp.prims in
+  let t = p.(i) in
+  p.(i) <- p.(j);
+  p.(j) <- t;
+  swap_floats inp.boxes 6 i j;
+  swap_floats inp.cent 3 i j;
+  swap_floats inp.cost 1 i j
 
 (* One builder per task: bin scratch, and the nodes it has written,
    numbered depth first from 0. A range of at most [defer] primitives is
@@ -63,6 +84,10 @@ type builder = {
   mutable pending : (int * int * int) list;  (** lo, hi, depth; last deferred first *)
   mutable npending : int;
   bbox : Float.Array.t;
+  bcent : Float.Array.t;  (** per bin: its centroids' bounds *)
+  mutable known : Float.Array.t;
+      (** per depth, for the left and the right child of a node split by
+          bins: box, centroid bounds and total cost, 13 floats each *)
   bcount : int array;
   bcost : Float.Array.t;
   rcost : Float.Array.t;
@@ -79,6 +104,8 @@ let builder ~defer cap =
     pending = [];
     npending = 0;
     bbox = Float.Array.create (6 * bins);
+    bcent = Float.Array.create (6 * bins);
+    known = Float.Array.create (26 * 64);
     bcount = Array.make bins 0;
     bcost = Float.Array.create bins;
     rcost = Float.Array.create bins;
@@ -99,7 +126,10 @@ let reserve_node bld =
   bld.count <- k + 1;
   k
 
-let rec node inp bld lo hi depth =
+(* [side]: 0 or 1 when the node is the left or right child of a split by
+   bins, whose bins gave its bounds (stored in [known] at [depth]); -1
+   when they are to be computed *)
+let rec node inp bld lo hi depth side =
   if hi - lo <= bld.defer then begin
     let k = reserve_node bld in
     fset bld.buf ((8 * k) + 6) (float bld.npending);
@@ -109,7 +139,7 @@ let rec node inp bld lo hi depth =
     k
   end
   else begin
-    let { leaf_size; node_cost; cost; boxes; cent; prims } = inp in
+    let { leaf_size; node_cost; cost; boxes; cent; _ } = inp in
     let { bbox; bcount; bcost; rcost; rarea; rcount; _ } = bld in
     let k = reserve_node bld in
     let nodes = bld.buf in
@@ -119,24 +149,40 @@ let rec node inp bld lo hi depth =
     let cx0 = ref infinity and cy0 = ref infinity and cz0 = ref infinity in
     let cx1 = ref neg_infinity and cy1 = ref neg_infinity and cz1 = ref neg_infinity in
     let total = ref 0. in
-    for j = lo to hi - 1 do
-      let i = prims.(j) in
-      total := !total +. fget cost i;
-      let o = 6 * i in
-      bx0 := fmin !bx0 (fget boxes o);
-      by0 := fmin !by0 (fget boxes (o + 1));
-      bz0 := fmin !bz0 (fget boxes (o + 2));
-      bx1 := fmax !bx1 (fget boxes (o + 3));
-      by1 := fmax !by1 (fget boxes (o + 4));
-      bz1 := fmax !bz1 (fget boxes (o + 5));
-      let c = 3 * i in
-      cx0 := fmin !cx0 (fget cent c);
-      cy0 := fmin !cy0 (fget cent (c + 1));
-      cz0 := fmin !cz0 (fget cent (c + 2));
-      cx1 := fmax !cx1 (fget cent c);
-      cy1 := fmax !cy1 (fget cent (c + 1));
-      cz1 := fmax !cz1 (fget cent (c + 2))
-    done;
+    if side >= 0 then begin
+      let q = 13 * ((2 * depth) + side) and kn = bld.known in
+      bx0 := fget kn q;
+      by0 := fget kn (q + 1);
+      bz0 := fget kn (q + 2);
+      bx1 := fget kn (q + 3);
+      by1 := fget kn (q + 4);
+      bz1 := fget kn (q + 5);
+      cx0 := fget kn (q + 6);
+      cy0 := fget kn (q + 7);
+      cz0 := fget kn (q + 8);
+      cx1 := fget kn (q + 9);
+      cy1 := fget kn (q + 10);
+      cz1 := fget kn (q + 11);
+      total := fget kn (q + 12)
+    end
+    else
+      for i = lo to hi - 1 do
+        total := !total +. fget cost i;
+        let o = 6 * i in
+        bx0 := fmin !bx0 (fget boxes o);
+        by0 := fmin !by0 (fget boxes (o + 1));
+        bz0 := fmin !bz0 (fget boxes (o + 2));
+        bx1 := fmax !bx1 (fget boxes (o + 3));
+        by1 := fmax !by1 (fget boxes (o + 4));
+        bz1 := fmax !bz1 (fget boxes (o + 5));
+        let c = 3 * i in
+        cx0 := fmin !cx0 (fget cent c);
+        cy0 := fmin !cy0 (fget cent (c + 1));
+        cz0 := fmin !cz0 (fget cent (c + 2));
+        cx1 := fmax !cx1 (fget cent c);
+        cy1 := fmax !cy1 (fget cent (c + 1));
+        cz1 := fmax !cz1 (fget cent (c + 2))
+      done;
     let o = 8 * k in
     fset nodes o !bx0;
     fset nodes (o + 1) !by0;
@@ -156,28 +202,33 @@ let rec node inp bld lo hi depth =
     (if m <= 1 then leaf ()
     else if not (ext > 0.) then
       if m <= leaf_size then leaf ()
-      else split inp bld k lo hi (lo + (m / 2)) axis depth
+      else split inp bld k lo hi (lo + (m / 2)) axis depth false
     else begin
       (* bin the centroids along the widest axis, then sweep for the SAH *)
       Array.fill bcount 0 bins 0;
       Float.Array.fill bcost 0 bins 0.;
+      let bcent = bld.bcent in
       for b = 0 to bins - 1 do
         for a = 0 to 2 do
           fset bbox ((6 * b) + a) infinity;
-          fset bbox ((6 * b) + 3 + a) neg_infinity
+          fset bbox ((6 * b) + 3 + a) neg_infinity;
+          fset bcent ((6 * b) + a) infinity;
+          fset bcent ((6 * b) + 3 + a) neg_infinity
         done
       done;
       let scale = float bins /. ext *. (1. -. 1e-9) in
       let bin_of i = Int.min (bins - 1) (int_of_float ((fget cent ((3 * i) + axis) -. c0) *. scale)) in
-      for j = lo to hi - 1 do
-        let i = prims.(j) in
+      for i = lo to hi - 1 do
         let b = bin_of i in
         bcount.(b) <- bcount.(b) + 1;
         fset bcost b (fget bcost b +. fget cost i);
         for a = 0 to 2 do
           let q = (6 * b) + a in
           fset bbox q (fmin (fget bbox q) (fget boxes ((6 * i) + a)));
-          fset bbox (q + 3) (fmax (fget bbox (q + 3)) (fget boxes ((6 * i) + 3 + a)))
+          fset bbox (q + 3) (fmax (fget bbox (q + 3)) (fget boxes ((6 * i) + 3 + a)));
+          let c = fget cent ((3 * i) + a) in
+          fset bcent q (fmin (fget bcent q) c);
+          fset bcent (q + 3) (fmax (fget bcent (q + 3)) c)
         done
       done;
       (* right-to-left sweep *)
@@ -223,29 +274,61 @@ let rec node inp bld lo hi depth =
       (* a node's walk costs [node_cost] primitive tests of cost 1 *)
       let split_cost = !best +. (node_cost *. half_area !bx0 !by0 !bz0 !bx1 !by1 !bz1) in
       if m <= leaf_size && split_cost >= leaf_cost then leaf ()
-      else if !best = infinity then split inp bld k lo hi (lo + (m / 2)) axis depth
+      else if !best = infinity then split inp bld k lo hi (lo + (m / 2)) axis depth false
       else begin
-        (* partition prims.(lo..hi-1) by bin <= best_b *)
+        (* partition positions lo..hi-1 (primitives and their data) by
+           bin <= best_b *)
         let i = ref lo and j = ref (hi - 1) in
         while !i <= !j do
-          if bin_of prims.(!i) <= !best_b then incr i
+          if bin_of !i <= !best_b then incr i
           else begin
-            let tmp = prims.(!i) in
-            prims.(!i) <- prims.(!j);
-            prims.(!j) <- tmp;
+            swap inp !i !j;
             decr j
           end
         done;
-        let mid = if !i = lo || !i = hi then lo + (m / 2) else !i in
-        split inp bld k lo hi mid axis depth
+        if !i = lo || !i = hi then split inp bld k lo hi (lo + (m / 2)) axis depth false
+        else begin
+          (* the children's bounds and costs are their bins' *)
+          let d = depth + 1 in
+          if 26 * (d + 1) > Float.Array.length bld.known then begin
+            let a = Float.Array.create (2 * 26 * (d + 1)) in
+            Float.Array.blit bld.known 0 a 0 (Float.Array.length bld.known);
+            bld.known <- a
+          end;
+          let kn = bld.known in
+          for side = 0 to 1 do
+            let q = 13 * ((2 * d) + side) in
+            let b0 = if side = 0 then 0 else !best_b + 1 and b1 = if side = 0 then !best_b else bins - 1 in
+            for a = 0 to 2 do
+              let lo_ = ref infinity and hi_ = ref neg_infinity and clo = ref infinity and chi = ref neg_infinity in
+              for b = b0 to b1 do
+                let r = (6 * b) + a in
+                lo_ := fmin !lo_ (fget bbox r);
+                hi_ := fmax !hi_ (fget bbox (r + 3));
+                clo := fmin !clo (fget bcent r);
+                chi := fmax !chi (fget bcent (r + 3))
+              done;
+              fset kn (q + a) !lo_;
+              fset kn (q + 3 + a) !hi_;
+              fset kn (q + 6 + a) !clo;
+              fset kn (q + 9 + a) !chi
+            done;
+            let c = ref 0. in
+            for b = b0 to b1 do
+              c := !c +. fget bcost b
+            done;
+            fset kn (q + 12) !c
+          done;
+          split inp bld k lo hi !i axis depth true
+        end
       end
     end);
     k
   end
 
-and split inp bld k lo hi mid axis depth =
-  ignore (node inp bld lo mid (depth + 1));
-  let r = node inp bld mid hi (depth + 1) in
+and split inp bld k lo hi mid axis depth by_bins =
+  ignore (node inp bld lo mid (depth + 1) (if by_bins then 0 else -1));
+  let r = node inp bld mid hi (depth + 1) (if by_bins then 1 else -1) in
   (* the nodes may have moved to a larger array *)
   fset bld.buf ((8 * k) + 6) (float r);
   fset bld.buf ((8 * k) + 7) (float (-(axis + 1)))
@@ -253,7 +336,8 @@ and split inp bld k lo hi mid axis depth =
 (* [par n f] runs [f 0] ... [f (n-1)], in any order or at once. *)
 let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost ?par boxes =
   let n = Float.Array.length boxes / 6 in
-  let cost = match cost with Some c -> c | None -> Float.Array.make n 1. in
+  let cost = match cost with Some c -> Float.Array.copy c | None -> Float.Array.make n 1. in
+  let boxes = Float.Array.copy boxes in
   if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
   let prims = Array.init n Fun.id in
   let cent = Float.Array.create (3 * n) in
@@ -270,7 +354,7 @@ let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost ?par boxes =
      own range of the permutation. *)
   let defer = match par with Some _ when n >= parallel_min -> n / 16 | _ -> 0 in
   let top = builder ~defer (if defer = 0 then 2 * n else 64) in
-  if n > 0 then ignore (node inp top 0 n 1);
+  if n > 0 then ignore (node inp top 0 n 1 (-1));
   let tasks = Array.of_list (List.rev top.pending) in
   let subs = Array.make (Array.length tasks) top in
   (match par with
@@ -278,7 +362,7 @@ let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost ?par boxes =
       par (Array.length tasks) (fun t ->
           let lo, hi, depth = tasks.(t) in
           let b = builder ~defer:0 (2 * (hi - lo)) in
-          ignore (node inp b lo hi depth);
+          ignore (node inp b lo hi depth (-1));
           subs.(t) <- b)
   | _ -> ());
   (* final position of each top node: a placeholder stands for its task's

@@ -6,7 +6,9 @@
     query calls back with primitive indices.
 
     Memory: 32 bytes per node (at most [2n - 1] nodes, about [n/2] with
-    leaves of ~4), plus 8 bytes per primitive for the index permutation. *)
+    leaves of ~4), plus 8 bytes per primitive for the index permutation;
+    while it runs, the build also holds copies of the boxes, centroids and
+    costs in its permutation's order (80 bytes a primitive). *)
 
 type t
 
@@ -18,7 +20,8 @@ val build :
     A node of at most [leaf_size] primitives (default 4) becomes a leaf
     when the surface area heuristic finds that testing them all costs no
     more than splitting it: [cost.(i)] is primitive i's test (default 1),
-    [node_cost] a node's walk in the same unit (default 1). With [par]
+    [node_cost] a node's walk in the same unit (default 1; a node's cost
+    is summed bin by bin, exactly for whole-number costs). With [par]
     (which runs [f 0] ... [f (n-1)] in any order or at once: see
     {!Render.parallel}), trees of at least 2^14 primitives are built by
     tasks of up to n/16 primitives below a top built first: the same tree,
