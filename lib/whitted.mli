@@ -33,6 +33,6 @@ val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 
 val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -> unit
 (** {!pixel} written into a sum the caller owns (overwritten): a camera
-    ray that crosses nothing transparent allocates nothing but its shadow
-    rays' distances (boxed for the BVH walk, 2 words each) and what
-    patterns, transforms and area lights need. *)
+    ray that crosses nothing transparent allocates nothing but what
+    patterns other than a plain checker, area lights and sky spheres
+    need. *)
