@@ -57,22 +57,22 @@ let two_pi = 2. *. Float.pi
 
 (* In place: [sample] into the caller's records. *)
 type nums = { mutable dist : float; mutable pdf : float }
-type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
+type sampled = { wi : Vec3.m; value : Color.acc; n : nums; pos : Vec3.m  (** where the light is *) }
 
-let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. } }
+let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. }; pos = Vec3.m () }
 
-(* [point_light l pos p] into [out], the same arithmetic ([direction_to]
-   and [attenuation] of the light moved to [pos]) *)
-let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
-  let wi = out.wi in
+(* [point_light l pos p] into [out], [pos] in [out.pos], the same
+   arithmetic ([direction_to] and [attenuation] of the light moved there) *)
+let point_light_into (l : Light.t) (p : Vec3.m) out =
+  let wi = out.wi and pos = out.pos in
   (match l.kind with
   | Parallel { point_at } ->
-      let dx = pos.x -. point_at.x and dy = pos.y -. point_at.y and dz = pos.z -. point_at.z in
+      let dx = pos.mx -. point_at.x and dy = pos.my -. point_at.y and dz = pos.mz -. point_at.z in
       Vec3.set wi dx dy dz;
       Vec3.normalize_m wi;
-      out.n.dist <- ((pos.x -. p.mx) *. wi.mx) +. ((pos.y -. p.my) *. wi.my) +. ((pos.z -. p.mz) *. wi.mz)
+      out.n.dist <- ((pos.mx -. p.mx) *. wi.mx) +. ((pos.my -. p.my) *. wi.my) +. ((pos.mz -. p.mz) *. wi.mz)
   | Point | Spot _ ->
-      let vx = pos.x -. p.mx and vy = pos.y -. p.my and vz = pos.z -. p.mz in
+      let vx = pos.mx -. p.mx and vy = pos.my -. p.my and vz = pos.mz -. p.mz in
       let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
       let k = 1. /. dist in
       Vec3.set wi (k *. vx) (k *. vy) (k *. vz);
@@ -80,7 +80,10 @@ let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
   let att =
     match l.kind with
     | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
-    | _ -> Light.attenuation (if pos == l.position then l else { l with position = pos }) (Vec3.of_m p)
+    | _ ->
+        let c = l.position in
+        let moved = not (pos.mx = c.x && pos.my = c.y && pos.mz = c.z) in
+        Light.attenuation (if moved then { l with position = Vec3.of_m pos } else l) (Vec3.of_m p)
   in
   (not (att <= 0. || out.n.dist <= 0.))
   && begin
@@ -91,10 +94,11 @@ let point_light_into (l : Light.t) (pos : Vec3.t) (p : Vec3.m) out =
      end
 
 (* the value form of [point_light_into] *)
-let point_light l pos p =
+let point_light l (pos : Vec3.t) p =
   let out = sampled () and pm = Vec3.m () in
   Vec3.load pm p;
-  if point_light_into l pos pm out then
+  Vec3.load out.pos pos;
+  if point_light_into l pm out then
     Some { wi = Vec3.of_m out.wi; dist = out.n.dist; value = Color.of_acc out.value; pdf = out.n.pdf }
   else None
 
@@ -146,8 +150,17 @@ let pdf e p q nq =
         let c = Float.abs (Vec3.dot w nq) /. Float.sqrt dist2 in
         if c <= 0. then 0. else dist2 /. (c *. 4. *. Float.pi *. radius *. radius)
 
-let find es o =
-  Array.find_opt (function Sphere { obj; _ } -> obj == o | Delta _ | Area _ -> false) es
+(* a loop, not [Array.find_opt] with a closure made at every call: asked
+   at every path vertex that emits *)
+let find_index es o =
+  let r = ref (-1) and i = ref 0 in
+  while !r < 0 && !i < Array.length es do
+    (match Array.unsafe_get es !i with Sphere { obj; _ } when obj == o -> r := !i | _ -> ());
+    incr i
+  done;
+  !r
+
+let find es o = match find_index es o with -1 -> None | i -> Some es.(i)
 
 let copy_sample (s : sample option) out =
   match s with
@@ -162,7 +175,10 @@ let copy_sample (s : sample option) out =
 (* inlined: [u] and [v] are not boxed *)
 let[@inline] sample_into e (p : Vec3.m) u v out =
   match e with
-  | Delta l -> point_light_into l l.position p out
+  | Delta l ->
+      Vec3.load out.pos l.position;
+      point_light_into l p out
   | Area { light; area } ->
-      point_light_into light (Light.position_at light area (Vec3.of_m p) (u -. 0.5) (v -. 0.5)) p out
+      Light.position_into light area p (u -. 0.5) (v -. 0.5) out.pos;
+      point_light_into light p out
   | Sphere _ -> copy_sample (sample e (Vec3.of_m p) u v) out

@@ -45,6 +45,9 @@ type sample = {
 val sample : t -> Vec3.t -> float -> float -> sample option
 (** [sample e p u v]: a direction towards the emitter from [p]. *)
 
+val find_index : t array -> Object.t -> int
+(** The position of the emissive sphere that is [o] in [es], or -1. *)
+
 val pdf : t -> Vec3.t -> Vec3.t -> Vec3.t -> float
 (** [pdf e p q nq]: the density with which {!sample} from [p] picks the
     direction towards [q] on the emitter (normal [nq]). *)
@@ -55,12 +58,12 @@ val find : t array -> Object.t -> t option
 (** {1 In place} *)
 
 type nums = { mutable dist : float; mutable pdf : float }
-type sampled = { wi : Vec3.m; value : Color.acc; n : nums }
+type sampled = { wi : Vec3.m; value : Color.acc; n : nums; pos : Vec3.m  (** where the light is *) }
 (** A {!sample} written in place. *)
 
 val sampled : unit -> sampled
 
 val sample_into : t -> Vec3.m -> float -> float -> sampled -> bool
 (** [sample_into e p u v out]: {!sample} into [out], [false] for [None]
-    (the same values). Allocates nothing for point and parallel lights
-    without fading; area lights and spheres go through {!sample}. *)
+    (the same values). Allocates nothing for point, parallel and area
+    lights without fading; spheres go through {!sample}. *)

@@ -102,29 +102,50 @@ let attenuation_m l (p : Vec3.m) =
 
 let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
 
-let position_at l a p u v =
-  let u, v =
-    if a.circular && (u <> 0. || v <> 0.) then
-      (* square [-0.5,0.5]^2 to the disc of diameter 1 (concentric map) *)
-      let x = 2. *. u and y = 2. *. v in
-      let r, phi =
-        if Float.abs x > Float.abs y then (x, Float.pi /. 4. *. (y /. x))
-        else (y, (Float.pi /. 2.) -. (Float.pi /. 4. *. (x /. y)))
-      in
-      (0.5 *. r *. Float.cos phi, 0.5 *. r *. Float.sin phi)
-    else (u, v)
-  in
-  let a1, a2 =
-    if not a.orient then (a.axis1, a.axis2)
-    else
-      (* axes turned to be perpendicular to the direction to the point *)
-      let d = Vec3.normalize (Vec3.sub p l.position) in
-      let helper = if Float.abs d.y < 0.9 then Vec3.unit_y else Vec3.unit_x in
-      let e1 = Vec3.normalize (Vec3.cross helper d) in
-      let e2 = Vec3.cross d e1 in
-      (Vec3.scale (Vec3.length a.axis1) e1, Vec3.scale (Vec3.length a.axis2) e2)
-  in
-  Vec3.add l.position (Vec3.add (Vec3.scale u a1) (Vec3.scale v a2))
+(* [x, y, z] / |[x, y, z]| as [Vec3.normalize], component [k] *)
+let[@inline] unit_k x y z k =
+  let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+  let c = match k with 0 -> x | 1 -> y | _ -> z in
+  if l > 0. then 1. /. l *. c else c
+
+(* The point [(u, v)] of the light's area seen from [p], into [out];
+   inlined, so that [u] and [v] are not boxed. Scalars, no vectors made. *)
+let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
+  (* square [-0.5,0.5]^2 to the disc of diameter 1 (concentric map) *)
+  let circ = a.circular && (u <> 0. || v <> 0.) in
+  let x = 2. *. u and y = 2. *. v in
+  let xr = Float.abs x > Float.abs y in
+  let r = if xr then x else y in
+  let phi = if not circ then 0. else if xr then Float.pi /. 4. *. (y /. x) else (Float.pi /. 2.) -. (Float.pi /. 4. *. (x /. y)) in
+  let u = if circ then 0.5 *. r *. Float.cos phi else u and v = if circ then 0.5 *. r *. Float.sin phi else v in
+  let c = l.position in
+  if not a.orient then begin
+    let a1 = a.axis1 and a2 = a.axis2 in
+    Vec3.set out (c.x +. ((u *. a1.x) +. (v *. a2.x))) (c.y +. ((u *. a1.y) +. (v *. a2.y)))
+      (c.z +. ((u *. a1.z) +. (v *. a2.z)))
+  end
+  else begin
+    (* axes turned to be perpendicular to the direction to the point *)
+    let dx0 = p.mx -. c.x and dy0 = p.my -. c.y and dz0 = p.mz -. c.z in
+    let dx = unit_k dx0 dy0 dz0 0 and dy = unit_k dx0 dy0 dz0 1 and dz = unit_k dx0 dy0 dz0 2 in
+    let hy = Float.abs dy < 0.9 in
+    let hx = if hy then 0. else 1. and hyv = if hy then 1. else 0. and hz = 0. in
+    (* e1 = normalize (helper x d), e2 = d x e1 *)
+    let cx = (hyv *. dz) -. (hz *. dy) and cy = (hz *. dx) -. (hx *. dz) and cz = (hx *. dy) -. (hyv *. dx) in
+    let e1x = unit_k cx cy cz 0 and e1y = unit_k cx cy cz 1 and e1z = unit_k cx cy cz 2 in
+    let e2x = (dy *. e1z) -. (dz *. e1y) and e2y = (dz *. e1x) -. (dx *. e1z) and e2z = (dx *. e1y) -. (dy *. e1x) in
+    let l1 = Vec3.length a.axis1 and l2 = Vec3.length a.axis2 in
+    Vec3.set out
+      (c.x +. ((u *. (l1 *. e1x)) +. (v *. (l2 *. e2x))))
+      (c.y +. ((u *. (l1 *. e1y)) +. (v *. (l2 *. e2y))))
+      (c.z +. ((u *. (l1 *. e1z)) +. (v *. (l2 *. e2z))))
+  end
+
+let position_at l a (p : Vec3.t) u v =
+  let pm = Vec3.m () and out = Vec3.m () in
+  Vec3.load pm p;
+  position_into l a pm u v out;
+  Vec3.of_m out
 
 let sample_position l a p i j = position_at l a p (offset a.n1 i) (offset a.n2 j)
 

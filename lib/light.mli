@@ -68,6 +68,11 @@ val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
     [p] (moved onto the disc when [circular], the axes turned to face [p]
     when [orient]). *)
 
+val position_into : t -> area -> Vec3.m -> float -> float -> Vec3.m -> unit
+(** [position_into l a p u v out]: {!position_at} from a point written in
+    place, into [out], nothing allocated ({!position_at} goes through
+    it). *)
+
 val sample_position : t -> area -> Vec3.t -> int -> int -> Vec3.t
 (** [sample_position l a p i j]: where sample [(i, j)] of an area light
     is, as seen from the lit point [p] ([orient] and [circular] applied). *)

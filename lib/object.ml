@@ -361,8 +361,10 @@ let any_mesh o m (r : Ray.scratch) tmin (h : Hit.t) (f : found) =
    crossing's distance passed to it is boxed. *)
 let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
   match o.geom with
-  | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && (o.no_shadow || opaque o) ->
-      o.no_shadow || not (any_mesh o m r tmin h fd)
+  | Prim _ when shadow && o.no_shadow ->
+      (* every crossing would be passed over (a light's looks_like) *)
+      true
+  | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && opaque o -> not (any_mesh o m r tmin h fd)
   | _ ->
   let tmax = r.far in
   let ok = ref true and go = ref true and first = ref true and tm = ref 0. in

@@ -229,9 +229,11 @@ let li_into t sampler ~max_depth (st : state) =
       if not (is_black_acc m.em) then begin
         let w =
           if st.prev = smooth_v && t.nee then
-            match Emitter.find t.emitters obj with
-            | Some e -> power st.num.prev_pdf (Emitter.pdf e (Vec3.of_m st.prev_p) (Vec3.of_m p) (Vec3.of_m ng))
-            | None -> 1.
+            match Emitter.find_index t.emitters obj with
+            | -1 -> 1.
+            | i ->
+                power st.num.prev_pdf
+                  (Emitter.pdf t.emitters.(i) (Vec3.of_m st.prev_p) (Vec3.of_m p) (Vec3.of_m ng))
           else 1.
         in
         let em = m.em in

@@ -374,7 +374,25 @@ let allocation () =
   let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
   (* the picture is not black: paths found light *)
   Alcotest.(check bool) "lit" true (mean img > 0.05);
-  if words > 0.1 then Alcotest.failf "%.2f minor words per sample (at most 0.1)" words
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample (at most 0.1)" words;
+  (* area lights, square and oriented disc, one with a looks_like shape
+     (crossed by every shadow ray towards it, casting none) *)
+  let s =
+    Helpers.compile_string
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       light_source { <0, 4, 0>, rgb 1 area_light <1, 0, 0>, <0, 0, 1>, 4, 4\n\
+         looks_like { box { <-0.5, -0.01, -0.5>, <0.5, 0.01, 0.5> pigment { rgb 1 } finish { emission 1 } } } }\n\
+       light_source { <-4, 5, -3>, rgb 0.5 area_light <1, 0, 0>, <0, 1, 0>, 3, 3 circular orient }\n\
+       plane { y, 0 pigment { rgb <0.8, 0.8, 0.7> } }\n\
+       sphere { <0, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } }"
+  in
+  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let before = Gc.minor_words () in
+  let img = Render.image_into ~domains:1 ~width ~height pixel in
+  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  Alcotest.(check bool) "lit by area lights" true (mean img > 0.05);
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with area lights (at most 0.1)" words
 
 let tests =
   ( "path",
@@ -393,5 +411,5 @@ let tests =
     Alcotest.test_case "area light from a scene: far field = point light" `Quick area_light_from_scene;
     Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
-      Alcotest.test_case "a sample allocates nothing" `Quick allocation;
+      Alcotest.test_case "a sample allocates nothing (point and area lights)" `Quick allocation;
     ] )
