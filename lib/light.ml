@@ -149,32 +149,105 @@ let position_at l a (p : Vec3.t) u v =
 
 let sample_position l a p i j = position_at l a p (offset a.n1 i) (offset a.n2 j)
 
-let differ (a : Color.t) (b : Color.t) =
-  Float.abs (a.r -. b.r) +. Float.abs (a.g -. b.g) +. Float.abs (a.b -. b.b) > 0.1
+(* The samples' colours met so far (3 floats each, [seen] marks them) and
+   the recursion's results, 4 quadrants of 3 floats per level: per domain,
+   grown as needed, so that an average allocates nothing. *)
+type average = {
+  mutable cols : Float.Array.t;
+  mutable seen : Bytes.t;
+  mutable res : Float.Array.t;
+  sample : Color.acc;
+  mutable busy : bool;
+}
+
+let new_average () =
+  { cols = Float.Array.create 0; seen = Bytes.empty; res = Float.Array.create 0; sample = Color.acc 0.; busy = false }
+
+let average_key = Scratch.key new_average
+
+(* sample (i, j)'s colour, asked once: its offset in [cols] *)
+let get st a ctx f i j =
+  let k = (j * a.n1) + i in
+  if Bytes.unsafe_get st.seen k = '\000' then begin
+    let c = st.sample in
+    f ctx i j c;
+    Float.Array.unsafe_set st.cols (3 * k) c.ar;
+    Float.Array.unsafe_set st.cols ((3 * k) + 1) c.ag;
+    Float.Array.unsafe_set st.cols ((3 * k) + 2) c.ab;
+    Bytes.unsafe_set st.seen k '\001'
+  end;
+  3 * k
+
+(* as [differ] on two samples' colours *)
+let fget = Float.Array.unsafe_get
+
+let differ_at cols x y =
+  Float.abs (fget cols x -. fget cols y)
+  +. Float.abs (fget cols (x + 1) -. fget cols (y + 1))
+  +. Float.abs (fget cols (x + 2) -. fget cols (y + 2))
+  > 0.1
+
+(* the average of a quadrant, into [st.res] at [slot]; its sub-quadrants'
+   at the next level's four slots *)
+let rec quadrant st a ctx f u1 v1 u2 v2 level slot =
+  let c1 = get st a ctx f u1 v1 and c2 = get st a ctx f u2 v1 and c3 = get st a ctx f u1 v2
+  and c4 = get st a ctx f u2 v2 in
+  let cols = st.cols and res = st.res in
+  if (u2 - u1 <= 1 && v2 - v1 <= 1)
+     || level >= a.adaptive
+        && not (differ_at cols c1 c2 || differ_at cols c3 c4 || differ_at cols c1 c3 || differ_at cols c2 c4)
+  then
+    for x = 0 to 2 do
+      Float.Array.unsafe_set res (slot + x)
+        (0.25 *. ((fget cols (c1 + x) +. fget cols (c2 + x)) +. (fget cols (c3 + x) +. fget cols (c4 + x))))
+    done
+  else begin
+    let ua = (u1 + u2) / 2 and va = (v1 + v2) / 2 in
+    let ub = (u1 + u2 + 1) / 2 and vb = (v1 + v2 + 1) / 2 in
+    let q = 12 * (level + 1) in
+    quadrant st a ctx f u1 v1 ua va (level + 1) q;
+    quadrant st a ctx f ub v1 u2 va (level + 1) (q + 3);
+    quadrant st a ctx f u1 vb ua v2 (level + 1) (q + 6);
+    quadrant st a ctx f ub vb u2 v2 (level + 1) (q + 9);
+    for x = 0 to 2 do
+      Float.Array.unsafe_set res (slot + x)
+        (0.25 *. ((fget res (q + x) +. fget res (q + 3 + x)) +. (fget res (q + 6 + x) +. fget res (q + 9 + x))))
+    done
+  end
+
+let average_area_into a ctx f (out : Color.acc) =
+  let st =
+    let st = Scratch.get average_key in
+    if st.busy then new_average () else st
+  in
+  st.busy <- true;
+  let n = a.n1 * a.n2 in
+  if Bytes.length st.seen < n then begin
+    st.seen <- Bytes.create n;
+    st.cols <- Float.Array.create (3 * n)
+  end;
+  Bytes.fill st.seen 0 n '\000';
+  (* each level halves the larger side: the recursion ends at single
+     cells within log2 (max n1 n2) + 2 levels *)
+  let levels = ref 2 and m = ref (Int.max a.n1 a.n2) in
+  while !m > 0 do
+    incr levels;
+    m := !m lsr 1
+  done;
+  if Float.Array.length st.res < 12 * (!levels + 1) then st.res <- Float.Array.create (12 * (!levels + 1));
+  match quadrant st a ctx f 0 0 (a.n1 - 1) (a.n2 - 1) 0 0 with
+  | () ->
+      st.busy <- false;
+      Color.acc_set out (fget st.res 0) (fget st.res 1) (fget st.res 2)
+  | exception e ->
+      st.busy <- false;
+      raise e
 
 let average_area a f =
-  let cache = Array.make (a.n1 * a.n2) None in
-  let get i j =
-    match cache.((j * a.n1) + i) with
-    | Some c -> c
-    | None ->
-        let c = f i j in
-        cache.((j * a.n1) + i) <- Some c;
-        c
-  in
-  let rec go u1 v1 u2 v2 level =
-    let c1 = get u1 v1 and c2 = get u2 v1 and c3 = get u1 v2 and c4 = get u2 v2 in
-    let corners () = Color.scale 0.25 (Color.add (Color.add c1 c2) (Color.add c3 c4)) in
-    if u2 - u1 <= 1 && v2 - v1 <= 1 then corners ()
-    else if level >= a.adaptive && not (differ c1 c2 || differ c3 c4 || differ c1 c3 || differ c2 c4)
-    then corners ()
-    else
-      let ua = (u1 + u2) / 2 and va = (v1 + v2) / 2 in
-      let ub = (u1 + u2 + 1) / 2 and vb = (v1 + v2 + 1) / 2 in
-      let q a b c d = go a b c d (level + 1) in
-      Color.scale 0.25
-        (Color.add
-           (Color.add (q u1 v1 ua va) (q ub v1 u2 va))
-           (Color.add (q u1 vb ua v2) (q ub vb u2 v2)))
-  in
-  go 0 0 (a.n1 - 1) (a.n2 - 1) 0
+  let out = Color.acc 0. in
+  average_area_into a f
+    (fun f i j (o : Color.acc) ->
+      let c : Color.t = f i j in
+      Color.acc_set o c.r c.g c.b)
+    out;
+  Color.of_acc out

@@ -84,3 +84,13 @@ val average_area : area -> (int -> int -> Color.t) -> Color.t
     most one step wide is the mean of its four corners; past the first
     [adaptive] levels a rectangle is only split when two adjacent corners
     differ by more than 0.1. Each sample is computed once. *)
+
+val average_area_into : area -> 'c -> ('c -> int -> int -> Color.acc -> unit) -> Color.acc -> unit
+(** [average_area_into a ctx f out]: {!average_area} of the samples [f ctx
+    i j] writes, into [out] ({!average_area} goes through it). With [f] a
+    closed function, nothing is allocated: the samples and the partial
+    means are kept in per-domain arrays. *)
+
+val offset : int -> int -> float
+(** [offset n i]: where sample [i] of [n] lies along an axis, in
+    [[-1/2, 1/2]]. *)

@@ -33,11 +33,21 @@ type shadow_walk = {
   ray : Ray.scratch;
   l : Light.dir;
   seg : length;  (** how far the shadow ray goes *)
+  (* an area light's average: the light, the scene, the lit point, a
+     sample's position, the mean *)
+  mutable alight : Light.t;
+  mutable aarea : Light.area;
+  mutable ascene : Scene.t option;
+  lp : Vec3.m;
+  q : Vec3.m;
+  mean : Color.acc;
 }
 
 let shadow_key =
   Scratch.key (fun () ->
-      { acc = Color.acc 1.; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. } })
+      { acc = Color.acc 1.; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
+        alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
+        ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0. })
 
 let shadow_hit (o : Object.t) t =
   let w = Scratch.get shadow_key in
@@ -110,6 +120,19 @@ let[@inline] load_ray (r : Ray.scratch) (p : Vec3.m) x y z =
   r.dy <- y;
   r.dz <- z
 
+(* Sample (i, j) of the area light in [w]: the shadow colour from its
+   point, seen from [w.lp] *)
+let area_sample (w : shadow_walk) i j (out : Color.acc) =
+  let light = w.alight and a = w.aarea and p = w.lp and q = w.q in
+  Light.position_into light a p (Light.offset a.n1 i) (Light.offset a.n2 j) q;
+  let vx = q.mx -. p.mx and vy = q.my -. p.my and vz = q.mz -. p.mz in
+  let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  let k = 1. /. d in
+  load_ray w.ray p (k *. vx) (k *. vy) (k *. vz);
+  w.seg.len <- d;
+  (match w.ascene with Some s -> shadow_into s w | None -> ());
+  Color.acc_set out w.acc.ar w.acc.ag w.acc.ab
+
 (* Shadow colour of one light at [p], whose direction is in [w.l], into
    [w.acc]: area lights average their samples. *)
 let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
@@ -120,19 +143,13 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
       w.seg.len <- l.dist;
       shadow_into s w
   | Some a ->
-      let pv = Vec3.of_m p in
-      let c =
-        Light.average_area a (fun i j ->
-            let q = Light.sample_position light a pv i j in
-            let v = Vec3.sub q pv in
-            let d = Vec3.length v in
-            let k = 1. /. d in
-            load_ray w.ray p (k *. v.x) (k *. v.y) (k *. v.z);
-            w.seg.len <- d;
-            shadow_into s w;
-            Color.of_acc w.acc)
-      in
-      Color.acc_set w.acc c.r c.g c.b
+      if w.alight != light then w.alight <- light;
+      if w.aarea != a then w.aarea <- a;
+      (match w.ascene with Some s' when s' == s -> () | _ -> w.ascene <- Some s);
+      Vec3.set w.lp p.mx p.my p.mz;
+      Light.average_area_into a w area_sample w.mean;
+      let c = w.mean in
+      Color.acc_set w.acc c.ar c.ag c.ab
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
 let metallic_tint m cos_angle (pc : Color.t) =

@@ -34,5 +34,4 @@ val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -> unit
 (** {!pixel} written into a sum the caller owns (overwritten): a camera
     ray that crosses nothing transparent allocates nothing but what
-    patterns other than a plain checker, area lights and sky spheres
-    need. *)
+    patterns other than a plain checker and sky spheres need. *)

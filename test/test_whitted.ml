@@ -275,7 +275,7 @@ let declared () =
    one-domain render as [camlray render] runs it ([Render.image_into]):
    none, with shadows or without. *)
 let allocation () =
-  let words ~shadowless =
+  let words light =
     let s =
       Scn.compile
         (Printf.sprintf
@@ -286,7 +286,7 @@ let allocation () =
             sphere { <1.2, 0.8, 0.5>, 0.8 pigment { rgb 0.9 } finish { reflection 0.6 } }\n\
             box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { rgb <0.2, 0.7, 0.3> } }\n\
             mesh { triangle { <1, 0, -2>, <2, 0, -2>, <1.5, 1, -1.8> } pigment { rgb 0.5 } }"
-           (if shadowless then "shadowless" else ""))
+           light)
     in
     let width = 64 and height = 48 in
     let pixel = Whitted.pixel_into s ~width ~height in
@@ -295,11 +295,17 @@ let allocation () =
     ignore (Render.image_into ~domains:1 ~width ~height pixel);
     (Gc.minor_words () -. before) /. Float.of_int (width * height)
   in
-  let none = words ~shadowless:true and shadows = words ~shadowless:false in
+  let none = words "shadowless" and shadows = words "" in
   (* the tiles and their sums: a few words per 16x16 tile *)
   if none > 0.1 then Alcotest.failf "%.2f words per camera ray without shadows (at most 0.1)" none;
   (* one light: a shadow ray per opaque hit, reflections' hits included *)
-  if shadows > 0.1 then Alcotest.failf "%.2f words per camera ray with one light (at most 0.1)" shadows
+  if shadows > 0.1 then Alcotest.failf "%.2f words per camera ray with one light (at most 0.1)" shadows;
+  (* area lights: 16 shadow rays a hit averaged adaptively, square and
+     oriented disc *)
+  let area = words "area_light <2, 0, 0>, <0, 0, 2>, 4, 4 adaptive 1"
+  and disc = words "area_light <2, 0, 0>, <0, 2, 0>, 5, 5 circular orient" in
+  if area > 0.1 then Alcotest.failf "%.2f words per camera ray with an area light (at most 0.1)" area;
+  if disc > 0.1 then Alcotest.failf "%.2f words per camera ray with a circular area light (at most 0.1)" disc
 
 let tests =
   ( "whitted",
