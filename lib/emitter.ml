@@ -82,8 +82,8 @@ let point_light_into (l : Light.t) (p : Vec3.m) out =
     | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
     | _ ->
         let c = l.position in
-        let moved = not (pos.mx = c.x && pos.my = c.y && pos.mz = c.z) in
-        Light.attenuation (if moved then { l with position = Vec3.of_m pos } else l) (Vec3.of_m p)
+        if pos.mx = c.x && pos.my = c.y && pos.mz = c.z then Light.attenuation_m l p
+        else Light.attenuation { l with position = Vec3.of_m pos } (Vec3.of_m p)
   in
   (not (att <= 0. || out.n.dist <= 0.))
   && begin

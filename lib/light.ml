@@ -33,32 +33,27 @@ let area axis1 axis2 n1 n2 =
   { axis1; axis2; n1 = max 1 n1; n2 = max 1 n2; adaptive = 100; circular = false;
     orient = false; jitter = false; area_illumination = false }
 
-let direction_to l p =
-  match l.kind with
-  | Parallel { point_at } ->
-      let d = Vec3.normalize (Vec3.sub l.position point_at) in
-      (d, Vec3.dot (Vec3.sub l.position p) d)
-  | Point | Spot _ ->
-      let v = Vec3.sub l.position p in
-      let dist = Vec3.length v in
-      (Vec3.scale (1. /. dist) v, dist)
-
-(* [direction_to] without the tuple and vectors: the unit direction and
-   the distance written into a caller's scratch record. *)
+(* The unit direction to the light and its distance, written into a
+   caller's scratch record: no tuple, no vector. *)
 type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable dist : float }
 
 let dir () = { lx = 0.; ly = 0.; lz = 1.; dist = 0. }
 
 let direction_into l (p : Vec3.m) o =
+  let c = l.position in
   match l.kind with
-  | Parallel _ ->
-      let d, dist = direction_to l (Vec3.of_m p) in
-      o.lx <- d.x;
-      o.ly <- d.y;
-      o.lz <- d.z;
-      o.dist <- dist
+  | Parallel { point_at } ->
+      let dx = c.x -. point_at.x and dy = c.y -. point_at.y and dz = c.z -. point_at.z in
+      let n = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+      let k = 1. /. n in
+      let ux = if n > 0. then k *. dx else dx and uy = if n > 0. then k *. dy else dy
+      and uz = if n > 0. then k *. dz else dz in
+      o.lx <- ux;
+      o.ly <- uy;
+      o.lz <- uz;
+      o.dist <- ((c.x -. p.mx) *. ux) +. ((c.y -. p.my) *. uy) +. ((c.z -. p.mz) *. uz)
   | Point | Spot _ ->
-      let vx = l.position.x -. p.mx and vy = l.position.y -. p.my and vz = l.position.z -. p.mz in
+      let vx = c.x -. p.mx and vy = c.y -. p.my and vz = c.z -. p.mz in
       let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
       let k = 1. /. dist in
       o.lx <- k *. vx;
@@ -66,10 +61,17 @@ let direction_into l (p : Vec3.m) o =
       o.lz <- k *. vz;
       o.dist <- dist
 
+let direction_to l (p : Vec3.t) =
+  let pm = Vec3.m () and o = dir () in
+  Vec3.load pm p;
+  direction_into l pm o;
+  (Vec3.make o.lx o.ly o.lz, o.dist)
+
 let rad a = a *. Float.pi /. 180.
 
-let spot_factor ~axis ~radius ~falloff ~tightness to_point =
-  let c = Vec3.dot axis to_point in
+(* a spot light's factor at the cosine [c] between its axis and the
+   direction to the lit point *)
+let[@inline] spot_cos c ~radius ~falloff ~tightness =
   if c <= 0. then 0.
   else
     let f = if tightness = 0. then 1. else Float.pow c tightness in
@@ -80,33 +82,50 @@ let spot_factor ~axis ~radius ~falloff ~tightness to_point =
       let u = (c -. cf) /. (cr -. cf) in
       f *. u *. u *. (3. -. (2. *. u))
 
-let attenuation l p =
-  let spot =
-    match l.kind with
-    | Point | Parallel _ -> 1.
-    | Spot { point_at; radius; falloff; tightness } ->
-        let axis = Vec3.normalize (Vec3.sub point_at l.position) in
-        spot_factor ~axis ~radius ~falloff ~tightness
-          (Vec3.normalize (Vec3.sub p l.position))
-  in
-  if l.fade_power > 0. && l.fade_distance <> 0. then
-    let _, d = direction_to l p in
-    spot *. 2. /. (1. +. Float.pow (d /. l.fade_distance) l.fade_power)
-  else spot
-
-(* the point made a vector only for spot lights and fading ones *)
-let attenuation_m l (p : Vec3.m) =
-  match l.kind with
-  | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
-  | _ -> attenuation l (Vec3.of_m p)
-
-let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
-
 (* [x, y, z] / |[x, y, z]| as [Vec3.normalize], component [k] *)
 let[@inline] unit_k x y z k =
   let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
   let c = match k with 0 -> x | 1 -> y | _ -> z in
   if l > 0. then 1. /. l *. c else c
+
+(* The light's attenuation at a point written in place, in scalars
+   (inlined: nothing boxed) *)
+let[@inline] attenuation_m l (p : Vec3.m) =
+  let c = l.position in
+  let spot =
+    match l.kind with
+    | Point | Parallel _ -> 1.
+    | Spot { point_at; radius; falloff; tightness } ->
+        let ax = point_at.x -. c.x and ay = point_at.y -. c.y and az = point_at.z -. c.z in
+        let tx = p.mx -. c.x and ty = p.my -. c.y and tz = p.mz -. c.z in
+        let cos =
+          (unit_k ax ay az 0 *. unit_k tx ty tz 0)
+          +. (unit_k ax ay az 1 *. unit_k tx ty tz 1)
+          +. (unit_k ax ay az 2 *. unit_k tx ty tz 2)
+        in
+        spot_cos cos ~radius ~falloff ~tightness
+  in
+  if l.fade_power > 0. && l.fade_distance <> 0. then
+    (* [direction_to]'s distance *)
+    let d =
+      match l.kind with
+      | Parallel { point_at } ->
+          let dx = c.x -. point_at.x and dy = c.y -. point_at.y and dz = c.z -. point_at.z in
+          ((c.x -. p.mx) *. unit_k dx dy dz 0) +. ((c.y -. p.my) *. unit_k dx dy dz 1)
+          +. ((c.z -. p.mz) *. unit_k dx dy dz 2)
+      | Point | Spot _ ->
+          let vx = c.x -. p.mx and vy = c.y -. p.my and vz = c.z -. p.mz in
+          Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))
+    in
+    spot *. 2. /. (1. +. Float.pow (d /. l.fade_distance) l.fade_power)
+  else spot
+
+let attenuation l (p : Vec3.t) =
+  let pm = Vec3.m () in
+  Vec3.load pm p;
+  attenuation_m l pm
+
+let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
 
 (* The point [(u, v)] of the light's area seen from [p], into [out];
    inlined, so that [u] and [v] are not boxed. Scalars, no vectors made. *)

@@ -305,6 +305,13 @@ let allocation () =
   let area = words "area_light <2, 0, 0>, <0, 0, 2>, 4, 4 adaptive 1"
   and disc = words "area_light <2, 0, 0>, <0, 2, 0>, 5, 5 circular orient" in
   if area > 0.1 then Alcotest.failf "%.2f words per camera ray with an area light (at most 0.1)" area;
+  List.iter
+    (fun (what, light) ->
+      let w = words light in
+      if w > 0.1 then Alcotest.failf "%.2f words per camera ray with a %s light (at most 0.1)" w what)
+    [ ("spot", "spotlight point_at <0, 0, 0> radius 15 falloff 25 tightness 10");
+      ("parallel", "parallel point_at <0, 0, 0>");
+      ("fading", "fade_distance 4 fade_power 2") ];
   if disc > 0.1 then Alcotest.failf "%.2f words per camera ray with a circular area light (at most 0.1)" disc
 
 let tests =
