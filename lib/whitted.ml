@@ -57,10 +57,19 @@ let shadow_hit (o : Object.t) t =
     false
   end
   else begin
-    let r = w.ray in
-    let q = Vec3.make (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz)) in
-    let f = texture_filter o.texture q in
-    Color.acc_set a (a.ar *. f.r) (a.ag *. f.g) (a.ab *. f.b);
+    (match o.texture with
+    | [ { tmap = None; pigment = Pigment.Solid c; _ } ] ->
+        (* one layer of a solid colour: [texture_filter] without the point
+           or a colour made (white times (f P + t), the same floats) *)
+        Color.acc_set a
+          (a.ar *. ((c.filter *. c.c.r) +. c.transmit))
+          (a.ag *. ((c.filter *. c.c.g) +. c.transmit))
+          (a.ab *. ((c.filter *. c.c.b) +. c.transmit))
+    | tex ->
+        let r = w.ray in
+        let q = Vec3.make (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz)) in
+        let f = texture_filter tex q in
+        Color.acc_set a (a.ar *. f.r) (a.ag *. f.g) (a.ab *. f.b));
     if has_fade o.interior then w.faders <- (o, t) :: w.faders;
     not (Color.acc_is_black a)
   end
