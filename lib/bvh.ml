@@ -40,20 +40,23 @@ let half_area x0 y0 z0 x1 y1 z1 =
 let down x = if Float.is_finite x then x -. (Float.abs x *. 0x1p-22) -. 1e-37 else x
 let up x = if Float.is_finite x then x +. (Float.abs x *. 0x1p-22) +. 1e-37 else x
 
-(* What a build reads: the primitives' boxes, centroids and costs, and
-   the permutation it sorts in place (each subtree owns a range of it).
-   Boxes, centroids and costs are copies kept in the permutation's order,
-   each swapped with it: a node reads its primitives' data in sequence,
-   not scattered over the arrays (at 10^6 boxes, what the build spent its
-   time waiting for). *)
+(* What a build reads: the primitives' boxes and costs, and the
+   permutation it sorts in place (each subtree owns a range of it). Boxes
+   and costs are copies kept in the permutation's order, swapped with it:
+   a node reads its primitives' data in sequence, not scattered over the
+   arrays (at 10^6 boxes, what the build spent its time waiting for);
+   centroids are taken from the boxes where needed. *)
 type input = {
   leaf_size : int;
   node_cost : float;
   cost : Float.Array.t;
   boxes : Float.Array.t;
-  cent : Float.Array.t;
+  uniform : bool;  (** every cost is 1: [cost] need not follow the permutation *)
   prims : int array;
 }
+
+(* a primitive's centroid, from its box (as the build always took it) *)
+let[@inline] centre boxes i a = 0.5 *. (fget boxes ((6 * i) + a) +. fget boxes ((6 * i) + 3 + a))
 
 let[@inline] swap_floats a k i j =
   for x = 0 to k - 1 do
@@ -69,8 +72,7 @@ let swap inp i j =
   p.(i) <- p.(j);
   p.(j) <- t;
   swap_floats inp.boxes 6 i j;
-  swap_floats inp.cent 3 i j;
-  swap_floats inp.cost 1 i j
+  if not inp.uniform then swap_floats inp.cost 1 i j
 
 (* One builder per task: bin scratch, and the nodes it has written,
    numbered depth first from 0. A range of at most [defer] primitives is
@@ -139,7 +141,7 @@ let rec node inp bld lo hi depth side =
     k
   end
   else begin
-    let { leaf_size; node_cost; cost; boxes; cent; _ } = inp in
+    let { leaf_size; node_cost; cost; boxes; _ } = inp in
     let { bbox; bcount; bcost; rcost; rarea; rcount; _ } = bld in
     let k = reserve_node bld in
     let nodes = bld.buf in
@@ -175,13 +177,13 @@ let rec node inp bld lo hi depth side =
         bx1 := fmax !bx1 (fget boxes (o + 3));
         by1 := fmax !by1 (fget boxes (o + 4));
         bz1 := fmax !bz1 (fget boxes (o + 5));
-        let c = 3 * i in
-        cx0 := fmin !cx0 (fget cent c);
-        cy0 := fmin !cy0 (fget cent (c + 1));
-        cz0 := fmin !cz0 (fget cent (c + 2));
-        cx1 := fmax !cx1 (fget cent c);
-        cy1 := fmax !cy1 (fget cent (c + 1));
-        cz1 := fmax !cz1 (fget cent (c + 2))
+        let x = centre boxes i 0 and y = centre boxes i 1 and z = centre boxes i 2 in
+        cx0 := fmin !cx0 x;
+        cy0 := fmin !cy0 y;
+        cz0 := fmin !cz0 z;
+        cx1 := fmax !cx1 x;
+        cy1 := fmax !cy1 y;
+        cz1 := fmax !cz1 z
       done;
     let o = 8 * k in
     fset nodes o !bx0;
@@ -217,7 +219,7 @@ let rec node inp bld lo hi depth side =
         done
       done;
       let scale = float bins /. ext *. (1. -. 1e-9) in
-      let bin_of i = Int.min (bins - 1) (int_of_float ((fget cent ((3 * i) + axis) -. c0) *. scale)) in
+      let bin_of i = Int.min (bins - 1) (int_of_float ((centre boxes i axis -. c0) *. scale)) in
       for i = lo to hi - 1 do
         let b = bin_of i in
         bcount.(b) <- bcount.(b) + 1;
@@ -226,7 +228,7 @@ let rec node inp bld lo hi depth side =
           let q = (6 * b) + a in
           fset bbox q (fmin (fget bbox q) (fget boxes ((6 * i) + a)));
           fset bbox (q + 3) (fmax (fget bbox (q + 3)) (fget boxes ((6 * i) + 3 + a)));
-          let c = fget cent ((3 * i) + a) in
+          let c = centre boxes i a in
           fset bcent q (fmin (fget bcent q) c);
           fset bcent (q + 3) (fmax (fget bcent (q + 3)) c)
         done
@@ -336,17 +338,12 @@ and split inp bld k lo hi mid axis depth by_bins =
 (* [par n f] runs [f 0] ... [f (n-1)], in any order or at once. *)
 let build ?(leaf_size = 4) ?(node_cost = 1.) ?cost ?par boxes =
   let n = Float.Array.length boxes / 6 in
+  let uniform = cost = None in
   let cost = match cost with Some c -> Float.Array.copy c | None -> Float.Array.make n 1. in
   let boxes = Float.Array.copy boxes in
   if n > max_prims then invalid_arg "Bvh.build: more than 2^23 primitives";
   let prims = Array.init n Fun.id in
-  let cent = Float.Array.create (3 * n) in
-  for i = 0 to n - 1 do
-    for a = 0 to 2 do
-      fset cent ((3 * i) + a) (0.5 *. (fget boxes ((6 * i) + a) +. fget boxes ((6 * i) + 3 + a)))
-    done
-  done;
-  let inp = { leaf_size; node_cost; cost; boxes; cent; prims } in
+  let inp = { leaf_size; node_cost; cost; boxes; uniform; prims } in
   (* In parallel, the top of the tree is built first, leaving ranges of
      at most n/16 primitives (at least 16 tasks) to tasks of their own;
      the tasks' nodes are then spliced in where their placeholders are.

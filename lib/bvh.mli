@@ -7,8 +7,8 @@
 
     Memory: 32 bytes per node (at most [2n - 1] nodes, about [n/2] with
     leaves of ~4), plus 8 bytes per primitive for the index permutation;
-    while it runs, the build also holds copies of the boxes, centroids and
-    costs in its permutation's order (80 bytes a primitive). *)
+    while it runs, the build also holds copies of the boxes and costs in
+    its permutation's order (56 bytes a primitive). *)
 
 type t
 
