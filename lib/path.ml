@@ -95,12 +95,7 @@ let pass_through (o : Object.t) t =
    [st.tr] *)
 let transmittance (s : Scene.t) st (dir : Vec3.m) =
   let r = st.shadow in
-  r.ox <- st.p.mx;
-  r.oy <- st.p.my;
-  r.oz <- st.p.mz;
-  r.dx <- dir.mx;
-  r.dy <- dir.my;
-  r.dz <- dir.mz;
+  Ray.set r st.p dir.mx dir.my dir.mz;
   Color.acc_set st.tr 1. 1. 1.;
   if not (Scene.occluders_s s r Ray.shadow_epsilon blocks pass_through) then Color.acc_set st.tr 0. 0. 0.
 

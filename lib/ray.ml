@@ -26,6 +26,14 @@ let[@inline] load s r =
   s.dz <- r.dir.z;
   s.far <- infinity
 
+let[@inline] set s (o : Vec3.m) dx dy dz =
+  s.ox <- o.mx;
+  s.oy <- o.my;
+  s.oz <- o.mz;
+  s.dx <- dx;
+  s.dy <- dy;
+  s.dz <- dz
+
 let[@inline] copy src dst =
   dst.ox <- src.ox;
   dst.oy <- src.oy;

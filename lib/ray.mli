@@ -35,6 +35,10 @@ val scratch : unit -> scratch
 val load : scratch -> t -> unit
 (** [load s r] copies [r] into [s], with [far] infinite. *)
 
+val set : scratch -> Vec3.m -> float -> float -> float -> unit
+(** [set s o dx dy dz]: the origin [o] and the direction [(dx, dy, dz)]
+    into [s] ([far] untouched). *)
+
 val copy : scratch -> scratch -> unit
 (** [copy src dst] *)
 

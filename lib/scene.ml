@@ -205,13 +205,7 @@ let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object
   Array.length s.objects > 0
   && begin
        let sc = take () in
-       let r = sc.ray in
-       r.ox <- o.mx;
-       r.oy <- o.my;
-       r.oz <- o.mz;
-       r.dx <- d.mx;
-       r.dy <- d.my;
-       r.dz <- d.mz;
+       Ray.set sc.ray o d.mx d.my d.mz;
        nearest_loaded s sc tmin tmax h f
      end
 
@@ -320,16 +314,9 @@ let probe_leaf a pr _ _ i =
 let containing_m s (p : Vec3.m) =
   let a = s.accel in
   let pr = Scratch.get probe_key in
-  let pt = pr.pf.pt and r = pr.at in
-  pt.ox <- p.mx;
-  pt.oy <- p.my;
-  pt.oz <- p.mz;
-  r.ox <- p.mx;
-  r.oy <- p.my;
-  r.oz <- p.mz;
-  r.dx <- 1.;
-  r.dy <- 0.;
-  r.dz <- 0.;
+  let r = pr.at in
+  Ray.set pr.pf.pt p 0. 0. 1.;
+  Ray.set r p 1. 0. 0.;
   r.far <- 0.;
   for i = 0 to Array.length a.reach - 1 do
     probe_test pr (Array.unsafe_get a.reach i)

@@ -121,14 +121,6 @@ let shadow_into (s : Scene.t) (w : shadow_walk) =
         faders;
       Color.acc_set w.acc !acc.r !acc.g !acc.b
 
-let[@inline] load_ray (r : Ray.scratch) (p : Vec3.m) x y z =
-  r.ox <- p.mx;
-  r.oy <- p.my;
-  r.oz <- p.mz;
-  r.dx <- x;
-  r.dy <- y;
-  r.dz <- z
-
 (* Sample (i, j) of the area light in [w]: the shadow colour from its
    point, seen from [w.lp] *)
 let area_sample (w : shadow_walk) i j (out : Color.acc) =
@@ -137,7 +129,7 @@ let area_sample (w : shadow_walk) i j (out : Color.acc) =
   let vx = q.mx -. p.mx and vy = q.my -. p.my and vz = q.mz -. p.mz in
   let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
   let k = 1. /. d in
-  load_ray w.ray p (k *. vx) (k *. vy) (k *. vz);
+  Ray.set w.ray p (k *. vx) (k *. vy) (k *. vz);
   w.seg.len <- d;
   (match w.ascene with Some s -> shadow_into s w | None -> ());
   Color.acc_set out w.acc.ar w.acc.ag w.acc.ab
@@ -148,7 +140,7 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
   match light.area with
   | None ->
       let l = w.l in
-      load_ray w.ray p l.lx l.ly l.lz;
+      Ray.set w.ray p l.lx l.ly l.lz;
       w.seg.len <- l.dist;
       shadow_into s w
   | Some a ->
