@@ -48,7 +48,7 @@ let[@inline] fresnel eta ci =
    they pass and return stay unboxed; the arithmetic is that of the
    vector forms ([reflect], [half], [around]) term for term. *)
 
-let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+let dot = Vec3.dot_m
 
 (* [reflect wo (x, y, z)] into [out] *)
 let[@inline] reflect_into (out : Vec3.m) (wo : Vec3.m) x y z =

@@ -68,12 +68,6 @@ let ray_into c sx sy o d =
       span_into c c.location sx sy false o;
       Vec3.load d (Vec3.normalize c.direction)
 
-(* [Vec3.normalize v], component [k] *)
-let[@inline] unit_comp (v : Vec3.t) k =
-  let l = Float.sqrt ((v.x *. v.x) +. (v.y *. v.y) +. (v.z *. v.z)) in
-  let c = match k with 0 -> v.x | 1 -> v.y | _ -> v.z in
-  if l > 0. then 1. /. l *. c else c
-
 let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
   ray_into c sx sy o d;
   if c.aperture > 0. then begin
@@ -82,10 +76,12 @@ let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
     let rad = 0.25 *. c.aperture *. Float.sqrt u in
     let phi = 2. *. Float.pi *. v in
     let kc = rad *. Float.cos phi and ks = rad *. Float.sin phi in
-    let ox = (kc *. unit_comp c.right 0) +. (ks *. unit_comp c.up 0)
-    and oy = (kc *. unit_comp c.right 1) +. (ks *. unit_comp c.up 1)
-    and oz = (kc *. unit_comp c.right 2) +. (ks *. unit_comp c.up 2) in
-    let ax = unit_comp c.direction 0 and ay = unit_comp c.direction 1 and az = unit_comp c.direction 2 in
+    let rt = c.right and up = c.up and dir = c.direction in
+    let ox = (kc *. Vec3.unit_k rt.x rt.y rt.z 0) +. (ks *. Vec3.unit_k up.x up.y up.z 0)
+    and oy = (kc *. Vec3.unit_k rt.x rt.y rt.z 1) +. (ks *. Vec3.unit_k up.x up.y up.z 1)
+    and oz = (kc *. Vec3.unit_k rt.x rt.y rt.z 2) +. (ks *. Vec3.unit_k up.x up.y up.z 2) in
+    let ax = Vec3.unit_k dir.x dir.y dir.z 0 and ay = Vec3.unit_k dir.x dir.y dir.z 1
+    and az = Vec3.unit_k dir.x dir.y dir.z 2 in
     let tf = c.focal_distance /. ((d.mx *. ax) +. (d.my *. ay) +. (d.mz *. az)) in
     let fx = o.mx +. (tf *. d.mx) and fy = o.my +. (tf *. d.my) and fz = o.mz +. (tf *. d.mz) in
     Vec3.set o (o.mx +. ox) (o.my +. oy) (o.mz +. oz);

@@ -82,12 +82,6 @@ let[@inline] spot_cos c ~radius ~falloff ~tightness =
       let u = (c -. cf) /. (cr -. cf) in
       f *. u *. u *. (3. -. (2. *. u))
 
-(* [x, y, z] / |[x, y, z]| as [Vec3.normalize], component [k] *)
-let[@inline] unit_k x y z k =
-  let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
-  let c = match k with 0 -> x | 1 -> y | _ -> z in
-  if l > 0. then 1. /. l *. c else c
-
 (* The light's attenuation at a point written in place, in scalars
    (inlined: nothing boxed) *)
 let[@inline] attenuation_m l (p : Vec3.m) =
@@ -99,9 +93,9 @@ let[@inline] attenuation_m l (p : Vec3.m) =
         let ax = point_at.x -. c.x and ay = point_at.y -. c.y and az = point_at.z -. c.z in
         let tx = p.mx -. c.x and ty = p.my -. c.y and tz = p.mz -. c.z in
         let cos =
-          (unit_k ax ay az 0 *. unit_k tx ty tz 0)
-          +. (unit_k ax ay az 1 *. unit_k tx ty tz 1)
-          +. (unit_k ax ay az 2 *. unit_k tx ty tz 2)
+          (Vec3.unit_k ax ay az 0 *. Vec3.unit_k tx ty tz 0)
+          +. (Vec3.unit_k ax ay az 1 *. Vec3.unit_k tx ty tz 1)
+          +. (Vec3.unit_k ax ay az 2 *. Vec3.unit_k tx ty tz 2)
         in
         spot_cos cos ~radius ~falloff ~tightness
   in
@@ -111,8 +105,8 @@ let[@inline] attenuation_m l (p : Vec3.m) =
       match l.kind with
       | Parallel { point_at } ->
           let dx = c.x -. point_at.x and dy = c.y -. point_at.y and dz = c.z -. point_at.z in
-          ((c.x -. p.mx) *. unit_k dx dy dz 0) +. ((c.y -. p.my) *. unit_k dx dy dz 1)
-          +. ((c.z -. p.mz) *. unit_k dx dy dz 2)
+          ((c.x -. p.mx) *. Vec3.unit_k dx dy dz 0) +. ((c.y -. p.my) *. Vec3.unit_k dx dy dz 1)
+          +. ((c.z -. p.mz) *. Vec3.unit_k dx dy dz 2)
       | Point | Spot _ ->
           let vx = c.x -. p.mx and vy = c.y -. p.my and vz = c.z -. p.mz in
           Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))
@@ -146,12 +140,12 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
   else begin
     (* axes turned to be perpendicular to the direction to the point *)
     let dx0 = p.mx -. c.x and dy0 = p.my -. c.y and dz0 = p.mz -. c.z in
-    let dx = unit_k dx0 dy0 dz0 0 and dy = unit_k dx0 dy0 dz0 1 and dz = unit_k dx0 dy0 dz0 2 in
+    let dx = Vec3.unit_k dx0 dy0 dz0 0 and dy = Vec3.unit_k dx0 dy0 dz0 1 and dz = Vec3.unit_k dx0 dy0 dz0 2 in
     let hy = Float.abs dy < 0.9 in
     let hx = if hy then 0. else 1. and hyv = if hy then 1. else 0. and hz = 0. in
     (* e1 = normalize (helper x d), e2 = d x e1 *)
     let cx = (hyv *. dz) -. (hz *. dy) and cy = (hz *. dx) -. (hx *. dz) and cz = (hx *. dy) -. (hyv *. dx) in
-    let e1x = unit_k cx cy cz 0 and e1y = unit_k cx cy cz 1 and e1z = unit_k cx cy cz 2 in
+    let e1x = Vec3.unit_k cx cy cz 0 and e1y = Vec3.unit_k cx cy cz 1 and e1z = Vec3.unit_k cx cy cz 2 in
     let e2x = (dy *. e1z) -. (dz *. e1y) and e2y = (dz *. e1x) -. (dx *. e1z) and e2z = (dx *. e1y) -. (dy *. e1x) in
     let l1 = Vec3.length a.axis1 and l2 = Vec3.length a.axis2 in
     Vec3.set out

@@ -49,11 +49,8 @@ let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.
 
 (* [x, y, z] / |[x, y, z]| as [Vec3.normalize], into [out] *)
 let[@inline] unit_into (out : Vec3.m) x y z =
-  let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
-  if l > 0. then
-    let k = 1. /. l in
-    Vec3.set out (k *. x) (k *. y) (k *. z)
-  else Vec3.set out x y z
+  Vec3.set out x y z;
+  Vec3.normalize_m out
 
 (* w n1 + u n2 + v n3, normalised, from the nine components *)
 let[@inline] blend3 out ax ay az bx by bz cx cy cz u v =

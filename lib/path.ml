@@ -60,8 +60,7 @@ let state_key =
         ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
         sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0 })
 
-let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
-let[@inline] is_black_acc (c : Color.acc) = c.ar = 0. && c.ag = 0. && c.ab = 0.
+let dot = Vec3.dot_m
 
 (* Light that passes straight through along a shadow ray: surfaces that
    neither refract (ior 1) nor are opaque let (f P + t) through, as a glass
@@ -88,7 +87,7 @@ let pass_through (o : Object.t) t =
           (a.ar *. ((c.filter *. c.c.r) +. c.transmit))
           (a.ag *. ((c.filter *. c.c.g) +. c.transmit))
           (a.ab *. ((c.filter *. c.c.b) +. c.transmit));
-        not (is_black_acc a)
+        not (Color.acc_is_black a)
       end
 
 (* The light let through from [st.p] along [dir], as far as [far], into
@@ -125,7 +124,7 @@ let direct t (st : state) sampler base =
       let ci = dot n ls.wi in
       if ci > 0. then begin
         Bsdf.eval_into m n wo ls.wi f;
-        if not (is_black_acc f) then
+        if not (Color.acc_is_black f) then
           match e with
           | Delta l | Area { light = l; _ } ->
               let tr = st.tr and v = ls.value in
@@ -161,12 +160,12 @@ let direct t (st : state) sampler base =
     let ci = dot n wi in
     if ci > 0. then begin
       Bsdf.eval_into m n wo wi f;
-      if not (is_black_acc f) then begin
+      if not (Color.acc_is_black f) then begin
         let pl = ci /. Float.pi and pb = Bsdf.pdf_m m n wo wi in
         st.shadow.far <- infinity;
         transmittance s st wi;
         let tr = st.tr in
-        if not (is_black_acc tr) then begin
+        if not (Color.acc_is_black tr) then begin
           let c = env_m s wi in
           let k = ci *. power pl pb /. pl in
           Color.acc_set dl
@@ -221,7 +220,7 @@ let li_into t sampler ~max_depth (st : state) =
       end;
       let m = st.mat in
       Material.into m obj.texture obj.interior p n wo ~entering;
-      if not (is_black_acc m.em) then begin
+      if not (Color.acc_is_black m.em) then begin
         let w =
           if st.prev = smooth_v && t.nee then
             match Emitter.find_index t.emitters obj with

@@ -54,6 +54,13 @@ let[@inline] set (v : m) x y z = v.mx <- x; v.my <- y; v.mz <- z
 let[@inline] load (v : m) a = v.mx <- a.x; v.my <- a.y; v.mz <- a.z
 let[@inline] of_m (v : m) = { x = v.mx; y = v.my; z = v.mz }
 
+let[@inline] dot_m (a : m) (b : m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+
+let[@inline] unit_k x y z k =
+  let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+  let c = match k with 0 -> x | 1 -> y | _ -> z in
+  if l > 0. then 1. /. l *. c else c
+
 let[@inline] normalize_m (v : m) =
   let x = v.mx and y = v.my and z = v.mz in
   let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in

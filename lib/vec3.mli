@@ -57,5 +57,12 @@ val set : m -> float -> float -> float -> unit
 val load : m -> t -> unit
 val of_m : m -> t
 
+val dot_m : m -> m -> float
+(** {!dot} of two vectors written in place. *)
+
+val unit_k : float -> float -> float -> int -> float
+(** [unit_k x y z k]: component [k] (0, 1, 2) of [normalize (x, y, z)],
+    the same arithmetic, without making the vector. *)
+
 val normalize_m : m -> unit
 (** {!normalize} in place (the same arithmetic). *)

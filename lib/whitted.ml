@@ -171,7 +171,7 @@ let fresnel n c =
     0.5 *. a *. a *. (1. +. (b *. b))
 
 (* [Vec3.dot], in place: the same arithmetic *)
-let[@inline] dot (a : Vec3.m) (b : Vec3.m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
+let dot = Vec3.dot_m
 
 (* A nesting level's scalars, stored flat, so that passing them
    allocates nothing: the relative index, the current layer's opacity,
