@@ -57,35 +57,26 @@ let two_pi = 2. *. Float.pi
 
 (* In place: [sample] into the caller's records. *)
 type nums = { mutable dist : float; mutable pdf : float }
-type sampled = { wi : Vec3.m; value : Color.acc; n : nums; pos : Vec3.m  (** where the light is *) }
+type sampled = {
+  wi : Vec3.m;
+  value : Color.acc;
+  n : nums;
+  pos : Vec3.m;  (** where the light is *)
+  ld : Light.dir;  (** scratch *)
+}
 
-let sampled () = { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. }; pos = Vec3.m () }
+let sampled () =
+  { wi = Vec3.m (); value = Color.acc 0.; n = { dist = 0.; pdf = 0. }; pos = Vec3.m (); ld = Light.dir () }
 
-(* [point_light l pos p] into [out], [pos] in [out.pos], the same
-   arithmetic ([direction_to] and [attenuation] of the light moved there) *)
+(* [point_light l pos p] into [out], [pos] in [out.pos]: the light's
+   direction and attenuation as if it stood there *)
 let point_light_into (l : Light.t) (p : Vec3.m) out =
-  let wi = out.wi and pos = out.pos in
-  (match l.kind with
-  | Parallel { point_at } ->
-      let dx = pos.mx -. point_at.x and dy = pos.my -. point_at.y and dz = pos.mz -. point_at.z in
-      Vec3.set wi dx dy dz;
-      Vec3.normalize_m wi;
-      out.n.dist <- ((pos.mx -. p.mx) *. wi.mx) +. ((pos.my -. p.my) *. wi.my) +. ((pos.mz -. p.mz) *. wi.mz)
-  | Point | Spot _ ->
-      let vx = pos.mx -. p.mx and vy = pos.my -. p.my and vz = pos.mz -. p.mz in
-      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-      let k = 1. /. dist in
-      Vec3.set wi (k *. vx) (k *. vy) (k *. vz);
-      out.n.dist <- dist);
-  let att =
-    match l.kind with
-    | (Point | Parallel _) when not (l.fade_power > 0. && l.fade_distance <> 0.) -> 1.
-    | _ ->
-        let c = l.position in
-        if pos.mx = c.x && pos.my = c.y && pos.mz = c.z then Light.attenuation_m l p
-        else Light.attenuation { l with position = Vec3.of_m pos } (Vec3.of_m p)
-  in
-  (not (att <= 0. || out.n.dist <= 0.))
+  let pos = out.pos and ld = out.ld in
+  Light.direction_at l pos.mx pos.my pos.mz p ld;
+  Vec3.set out.wi ld.lx ld.ly ld.lz;
+  out.n.dist <- ld.dist;
+  let att = Light.attenuation_at l pos.mx pos.my pos.mz p in
+  (not (att <= 0. || ld.dist <= 0.))
   && begin
        let k = Float.pi *. att in
        Color.acc_set out.value (k *. l.color.r) (k *. l.color.g) (k *. l.color.b);

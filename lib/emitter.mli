@@ -58,12 +58,18 @@ val find : t array -> Object.t -> t option
 (** {1 In place} *)
 
 type nums = { mutable dist : float; mutable pdf : float }
-type sampled = { wi : Vec3.m; value : Color.acc; n : nums; pos : Vec3.m  (** where the light is *) }
+type sampled = {
+  wi : Vec3.m;
+  value : Color.acc;
+  n : nums;
+  pos : Vec3.m;  (** where the light is *)
+  ld : Light.dir;  (** scratch *)
+}
 (** A {!sample} written in place. *)
 
 val sampled : unit -> sampled
 
 val sample_into : t -> Vec3.m -> float -> float -> sampled -> bool
 (** [sample_into e p u v out]: {!sample} into [out], [false] for [None]
-    (the same values). Allocates nothing for point, parallel and area
-    lights without fading; spheres go through {!sample}. *)
+    (the same values). Allocates nothing for point, spot, parallel and
+    area lights; spheres go through {!sample}. *)

@@ -39,27 +39,38 @@ type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable
 
 let dir () = { lx = 0.; ly = 0.; lz = 1.; dist = 0. }
 
-let direction_into l (p : Vec3.m) o =
-  let c = l.position in
+(* The light as if it stood at (cx, cy, cz), seen from [p], in scalars
+   (inlined: nothing boxed): [direction_to]'s distance, ... *)
+let[@inline] distance_at l cx cy cz (p : Vec3.m) =
   match l.kind with
   | Parallel { point_at } ->
-      let dx = c.x -. point_at.x and dy = c.y -. point_at.y and dz = c.z -. point_at.z in
-      let n = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
-      let k = 1. /. n in
-      let ux = if n > 0. then k *. dx else dx and uy = if n > 0. then k *. dy else dy
-      and uz = if n > 0. then k *. dz else dz in
-      o.lx <- ux;
-      o.ly <- uy;
-      o.lz <- uz;
-      o.dist <- ((c.x -. p.mx) *. ux) +. ((c.y -. p.my) *. uy) +. ((c.z -. p.mz) *. uz)
+      let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
+      ((cx -. p.mx) *. Vec3.unit_k dx dy dz 0)
+      +. ((cy -. p.my) *. Vec3.unit_k dx dy dz 1)
+      +. ((cz -. p.mz) *. Vec3.unit_k dx dy dz 2)
   | Point | Spot _ ->
-      let vx = c.x -. p.mx and vy = c.y -. p.my and vz = c.z -. p.mz in
-      let dist = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let vx = cx -. p.mx and vy = cy -. p.my and vz = cz -. p.mz in
+      Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))
+
+(* ... and its unit direction with that distance, into [o] *)
+let[@inline] direction_at l cx cy cz (p : Vec3.m) o =
+  let dist = distance_at l cx cy cz p in
+  o.dist <- dist;
+  match l.kind with
+  | Parallel { point_at } ->
+      let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
+      o.lx <- Vec3.unit_k dx dy dz 0;
+      o.ly <- Vec3.unit_k dx dy dz 1;
+      o.lz <- Vec3.unit_k dx dy dz 2
+  | Point | Spot _ ->
       let k = 1. /. dist in
-      o.lx <- k *. vx;
-      o.ly <- k *. vy;
-      o.lz <- k *. vz;
-      o.dist <- dist
+      o.lx <- k *. (cx -. p.mx);
+      o.ly <- k *. (cy -. p.my);
+      o.lz <- k *. (cz -. p.mz)
+
+let direction_into l (p : Vec3.m) o =
+  let c = l.position in
+  direction_at l c.x c.y c.z p o
 
 let direction_to l (p : Vec3.t) =
   let pm = Vec3.m () and o = dir () in
@@ -82,16 +93,15 @@ let[@inline] spot_cos c ~radius ~falloff ~tightness =
       let u = (c -. cf) /. (cr -. cf) in
       f *. u *. u *. (3. -. (2. *. u))
 
-(* The light's attenuation at a point written in place, in scalars
-   (inlined: nothing boxed) *)
-let[@inline] attenuation_m l (p : Vec3.m) =
-  let c = l.position in
+(* The attenuation of the light as if it stood at (cx, cy, cz), at a
+   point written in place, in scalars (inlined: nothing boxed) *)
+let[@inline] attenuation_at l cx cy cz (p : Vec3.m) =
   let spot =
     match l.kind with
     | Point | Parallel _ -> 1.
     | Spot { point_at; radius; falloff; tightness } ->
-        let ax = point_at.x -. c.x and ay = point_at.y -. c.y and az = point_at.z -. c.z in
-        let tx = p.mx -. c.x and ty = p.my -. c.y and tz = p.mz -. c.z in
+        let ax = point_at.x -. cx and ay = point_at.y -. cy and az = point_at.z -. cz in
+        let tx = p.mx -. cx and ty = p.my -. cy and tz = p.mz -. cz in
         let cos =
           (Vec3.unit_k ax ay az 0 *. Vec3.unit_k tx ty tz 0)
           +. (Vec3.unit_k ax ay az 1 *. Vec3.unit_k tx ty tz 1)
@@ -100,19 +110,12 @@ let[@inline] attenuation_m l (p : Vec3.m) =
         spot_cos cos ~radius ~falloff ~tightness
   in
   if l.fade_power > 0. && l.fade_distance <> 0. then
-    (* [direction_to]'s distance *)
-    let d =
-      match l.kind with
-      | Parallel { point_at } ->
-          let dx = c.x -. point_at.x and dy = c.y -. point_at.y and dz = c.z -. point_at.z in
-          ((c.x -. p.mx) *. Vec3.unit_k dx dy dz 0) +. ((c.y -. p.my) *. Vec3.unit_k dx dy dz 1)
-          +. ((c.z -. p.mz) *. Vec3.unit_k dx dy dz 2)
-      | Point | Spot _ ->
-          let vx = c.x -. p.mx and vy = c.y -. p.my and vz = c.z -. p.mz in
-          Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))
-    in
-    spot *. 2. /. (1. +. Float.pow (d /. l.fade_distance) l.fade_power)
+    spot *. 2. /. (1. +. Float.pow (distance_at l cx cy cz p /. l.fade_distance) l.fade_power)
   else spot
+
+let[@inline] attenuation_m l (p : Vec3.m) =
+  let c = l.position in
+  attenuation_at l c.x c.y c.z p
 
 let attenuation l (p : Vec3.t) =
   let pm = Vec3.m () in

@@ -45,8 +45,12 @@ val attenuation : t -> Vec3.t -> float
 (** Spot cone and distance fade factor for light arriving at a point. *)
 
 val attenuation_m : t -> Vec3.m -> float
-(** The same at a point written in place (made a vector only for spot
-    and fading lights). *)
+(** The same at a point written in place, in scalars (inlined: nothing
+    allocated). *)
+
+val attenuation_at : t -> float -> float -> float -> Vec3.m -> float
+(** [attenuation_at l x y z p]: {!attenuation_m} of the light as if it
+    stood at [(x, y, z)] (a point of an area light). *)
 
 val direction_to : t -> Vec3.t -> Vec3.t * float
 (** Unit vector from the point towards the light, and the distance over
@@ -59,8 +63,12 @@ type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable
 val dir : unit -> dir
 
 val direction_into : t -> Vec3.m -> dir -> unit
-(** [direction_to] from a point written in place, into a record: no
-    allocation for point and spot lights. *)
+(** [direction_to] from a point written in place, into a record: nothing
+    allocated. *)
+
+val direction_at : t -> float -> float -> float -> Vec3.m -> dir -> unit
+(** [direction_at l x y z p o]: {!direction_into} for the light as if it
+    stood at [(x, y, z)]. *)
 
 val position_at : t -> area -> Vec3.t -> float -> float -> Vec3.t
 (** [position_at l a p u v], [u, v] in [[-1/2, 1/2]]: the point
