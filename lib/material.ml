@@ -3,7 +3,6 @@ open Color
 (* if-based min/max: Float.min/max order NaN and -0 through a C call *)
 let[@inline] fmax (a : float) b = if a >= b then a else b
 let[@inline] fmin (a : float) b = if a <= b then a else b
-let[@inline] maxc (c : Color.t) = fmax c.r (fmax c.g c.b)
 
 type lobe =
   | Lambert of Color.t
@@ -21,13 +20,25 @@ let is_delta = function
   | Mirror _ | Glass _ -> true
   | Lambert _ | Phong _ | Blinn _ | Glossy _ -> false
 
+let k_lambert = 0 and k_mirror = 1 and k_phong = 2 and k_blinn = 3 and k_glossy = 4 and k_glass = 5
+let[@inline] max3 r g b = fmax r (fmax g b)
+
+(* A lobe's weight from its kind, colour [(r, g, b)] (glass: transmit),
+   glass's reflect [(r2, g2, b2)] and exponent [e] *)
+let[@inline] weight_of kind r g b r2 g2 b2 e =
+  if kind = k_phong then 2. *. max3 r g b /. (e +. 1.)
+  else if kind = k_blinn then 8. *. max3 r g b /. (e +. 1.)
+  else if kind = k_glass then fmax (max3 r2 g2 b2) (max3 r g b)
+  else max3 r g b
+
 let weight = function
-  | Lambert a -> maxc a
-  | Mirror c -> maxc c
-  | Phong { k; exponent } -> 2. *. maxc k /. (exponent +. 1.)
-  | Blinn { k; exponent } -> 8. *. maxc k /. (exponent +. 1.)
-  | Glossy { color; _ } -> maxc color
-  | Glass { reflect; transmit; _ } -> fmax (maxc reflect) (maxc transmit)
+  | Lambert a -> weight_of k_lambert a.r a.g a.b 0. 0. 0. 0.
+  | Mirror c -> weight_of k_mirror c.r c.g c.b 0. 0. 0. 0.
+  | Phong { k; exponent } -> weight_of k_phong k.r k.g k.b 0. 0. 0. exponent
+  | Blinn { k; exponent } -> weight_of k_blinn k.r k.g k.b 0. 0. 0. exponent
+  | Glossy { color; _ } -> weight_of k_glossy color.r color.g color.b 0. 0. 0. 0.
+  | Glass { reflect; transmit; _ } ->
+      weight_of k_glass transmit.r transmit.g transmit.b reflect.r reflect.g reflect.b 0.
 
 (* Unpolarised Fresnel reflectance for a relative index n = n_t / n_i
    (POV-Ray's formula, pov-facts 5.5); 1 past the critical angle. *)
@@ -56,7 +67,6 @@ let plain_diffuse (f : Finish.t) =
 (* The lobes written in place: kind, weight, colours and exponent of up
    to five lobes in flat arrays, filled at each path vertex without
    allocating. *)
-let k_lambert = 0 and k_mirror = 1 and k_phong = 2 and k_blinn = 3 and k_glossy = 4 and k_glass = 5
 let max_lobes = 5
 
 type lobes = {
@@ -76,10 +86,9 @@ let lobes () =
 
 let fset = Float.Array.unsafe_set
 let fget = Float.Array.unsafe_get
-let[@inline] max3 r g b = fmax r (fmax g b)
-
-(* a lobe added when its weight is positive, as [weight] computes it *)
-let[@inline] push m kind w r g b r2 g2 b2 e =
+(* a lobe added when its weight is positive *)
+let[@inline] push m kind r g b r2 g2 b2 e =
+  let w = weight_of kind r g b r2 g2 b2 e in
   if w > 0. then begin
     let i = m.count in
     Array.unsafe_set m.kind i kind;
@@ -95,15 +104,14 @@ let[@inline] push m kind w r g b r2 g2 b2 e =
   end
 
 let load_lobe m (l : lobe) =
-  let w = weight l in
   match l with
-  | Lambert a -> push m k_lambert w a.r a.g a.b 0. 0. 0. 0.
-  | Mirror a -> push m k_mirror w a.r a.g a.b 0. 0. 0. 0.
-  | Phong { k; exponent } -> push m k_phong w k.r k.g k.b 0. 0. 0. exponent
-  | Blinn { k; exponent } -> push m k_blinn w k.r k.g k.b 0. 0. 0. exponent
-  | Glossy { color; exponent } -> push m k_glossy w color.r color.g color.b 0. 0. 0. exponent
+  | Lambert a -> push m k_lambert a.r a.g a.b 0. 0. 0. 0.
+  | Mirror a -> push m k_mirror a.r a.g a.b 0. 0. 0. 0.
+  | Phong { k; exponent } -> push m k_phong k.r k.g k.b 0. 0. 0. exponent
+  | Blinn { k; exponent } -> push m k_blinn k.r k.g k.b 0. 0. 0. exponent
+  | Glossy { color; exponent } -> push m k_glossy color.r color.g color.b 0. 0. 0. exponent
   | Glass { eta; reflect; transmit } ->
-      push m k_glass w transmit.r transmit.g transmit.b reflect.r reflect.g reflect.b eta
+      push m k_glass transmit.r transmit.g transmit.b reflect.r reflect.g reflect.b eta
 
 let load m (t : t) =
   m.count <- 0;
@@ -140,7 +148,7 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
       (* the opaque part *)
       let d = alpha *. f.diffuse in
       let lr = d *. pig.r and lg = d *. pig.g and lb = d *. pig.b in
-      push m k_lambert (max3 lr lg lb) lr lg lb 0. 0. 0. 0.;
+      push m k_lambert lr lg lb 0. 0. 0. 0.;
       (* a matte surface (most hits) has no other lobe of positive weight *)
       if tr > 0. || not (plain_diffuse f) then begin
         let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
@@ -166,23 +174,23 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
         and hb = if plainh then 1. else 1. +. (hk *. (pig.b -. 1.)) in
         if metal && f.specular > 0. && not (kx = 0. && ky = 0. && kz = 0.) then
           (* a rough metal: the highlight is the blurred reflection *)
-          push m k_glossy (max3 kx ky kz) kx ky kz 0. 0. 0. (1. /. f.roughness)
+          push m k_glossy kx ky kz 0. 0. 0. (1. /. f.roughness)
         else begin
-          push m k_mirror (max3 kx ky kz) kx ky kz 0. 0. 0. 0.;
+          push m k_mirror kx ky kz 0. 0. 0. 0.;
           let s = f.specular and e = 1. /. f.roughness in
           let br = s *. hr and bg = s *. hg and bb = s *. hb in
-          push m k_blinn (8. *. max3 br bg bb /. (e +. 1.)) br bg bb 0. 0. 0. e
+          push m k_blinn br bg bb 0. 0. 0. e
         end;
         let ph = f.phong and e = f.phong_size in
         let pr = ph *. hr and pg = ph *. hg and pb = ph *. hb in
-        push m k_phong (2. *. max3 pr pg pb /. (e +. 1.)) pr pg pb 0. 0. 0. e;
+        push m k_phong pr pg pb 0. 0. 0. e;
         (* the transparent part *)
         if tr > 0. then begin
           let tr_r = (pc.filter *. pig.r) +. pc.transmit
           and tr_g = (pc.filter *. pig.g) +. pc.transmit
           and tr_b = (pc.filter *. pig.b) +. pc.transmit in
           let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
-          push m k_glass (fmax (max3 tr tr tr) (max3 tr_r tr_g tr_b)) tr_r tr_g tr_b tr tr tr eta
+          push m k_glass tr_r tr_g tr_b tr tr tr eta
         end
       end
 
