@@ -66,7 +66,8 @@ let ray_into c sx sy o d =
       span_into c c.direction sx sy true d
   | Orthographic ->
       span_into c c.location sx sy false o;
-      Vec3.load d (Vec3.normalize c.direction)
+      Vec3.load d c.direction;
+      Vec3.normalize_m d
 
 let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
   ray_into c sx sy o d;

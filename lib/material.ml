@@ -77,12 +77,13 @@ type lobes = {
   c2 : Float.Array.t;  (** 3 per lobe: glass's reflect *)
   e : Float.Array.t;  (** exponent, or glass's eta *)
   em : Color.acc;  (** emission *)
+  pig : Pigment.out;  (** the pigment at the point *)
 }
 
 let lobes () =
   { count = 0; kind = Array.make max_lobes 0; w = Float.Array.make max_lobes 0.;
     c = Float.Array.make (3 * max_lobes) 0.; c2 = Float.Array.make (3 * max_lobes) 0.;
-    e = Float.Array.make max_lobes 0.; em = Color.acc 0. }
+    e = Float.Array.make max_lobes 0.; em = Color.acc 0.; pig = Pigment.out () }
 
 let fset = Float.Array.unsafe_set
 let fget = Float.Array.unsafe_get
@@ -138,9 +139,9 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
   | [] -> Color.acc_set m.em 0. 0. 0.
   | (layer : Texture.layer) :: _ ->
       let f = layer.finish in
-      let pc = Pigment.eval_m layer.pigment p in
-      let pig = pc.c in
-      let tr = clamp01 (pc.filter +. pc.transmit) in
+      let pig = m.pig in
+      Pigment.into layer.pigment p pig;
+      let tr = clamp01 (pig.filter +. pig.transmit) in
       let alpha = 1. -. tr in
       let refracts = tr > 0. && inter.ior <> 1. in
       Color.acc_set m.em (alpha *. (pig.r *. f.emission.r)) (alpha *. (pig.g *. f.emission.g))
@@ -186,9 +187,9 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
         push m k_phong pr pg pb 0. 0. 0. e;
         (* the transparent part *)
         if tr > 0. then begin
-          let tr_r = (pc.filter *. pig.r) +. pc.transmit
-          and tr_g = (pc.filter *. pig.g) +. pc.transmit
-          and tr_b = (pc.filter *. pig.b) +. pc.transmit in
+          let tr_r = (pig.filter *. pig.r) +. pig.transmit
+          and tr_g = (pig.filter *. pig.g) +. pig.transmit
+          and tr_b = (pig.filter *. pig.b) +. pig.transmit in
           let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
           push m k_glass tr_r tr_g tr_b tr tr tr eta
         end

@@ -63,6 +63,7 @@ type lobes = {
   c2 : Float.Array.t;  (** 3 per lobe: Glass's [reflect] *)
   e : Float.Array.t;  (** the exponent, or Glass's [eta] *)
   em : Color.acc;  (** the emission *)
+  pig : Pigment.out;  (** the pigment at the point, as [into] read it *)
 }
 
 val lobes : unit -> lobes

@@ -29,11 +29,12 @@ let[@inline] grad h x y z =
   let v = if h < 4 then y else if h = 12 || h = 14 then x else z in
   (if h land 1 = 0 then u else -.u) +. if h land 2 = 0 then v else -.v
 
-let snoise (p : Vec3.t) =
-  let fx = Float.floor p.x and fy = Float.floor p.y and fz = Float.floor p.z in
+(* inlined where it is used: a call would box its arguments and result *)
+let[@inline] snoise3 x y z =
+  let fx = Float.floor x and fy = Float.floor y and fz = Float.floor z in
   let xi = int_of_float fx land 255 and yi = int_of_float fy land 255
   and zi = int_of_float fz land 255 in
-  let x = p.x -. fx and y = p.y -. fy and z = p.z -. fz in
+  let x = x -. fx and y = y -. fy and z = z -. fz in
   let u = fade x and v = fade y and w = fade z in
   let a = perm.(xi) + yi and b = perm.(xi + 1) + yi in
   let aa = perm.(a) + zi and ab = perm.(a + 1) + zi in
@@ -47,7 +48,9 @@ let snoise (p : Vec3.t) =
        (lerp u (grad perm.(aa + 1) x y z1) (grad perm.(ba + 1) x1 y z1))
        (lerp u (grad perm.(ab + 1) x y1 z1) (grad perm.(bb + 1) x1 y1 z1)))
 
-let noise p = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise p)))
+let snoise (p : Vec3.t) = snoise3 p.x p.y p.z
+let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
+let noise (p : Vec3.t) = noise3 p.x p.y p.z
 
 let off1 = Vec3.make 31.416 17.21 (-9.73)
 let off2 = Vec3.make (-23.1) 41.7 13.3
@@ -55,19 +58,34 @@ let off2 = Vec3.make (-23.1) 41.7 13.3
 let dnoise p =
   Vec3.make (snoise p) (snoise (Vec3.add p off1)) (snoise (Vec3.add p off2))
 
-let turbulence ~octaves ~omega ~lambda p =
-  let acc = ref Vec3.zero and amp = ref 1. and freq = ref 1. in
+let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
+  let ax = ref 0. and ay = ref 0. and az = ref 0. and amp = ref 1. and freq = ref 1. in
   for _ = 1 to Int.max 1 octaves do
-    acc := Vec3.madd !acc !amp (dnoise (Vec3.scale !freq p));
+    (* dnoise (freq p), the same sums as with vectors *)
+    let f = !freq and a = !amp in
+    let x = f *. p.mx and y = f *. p.my and z = f *. p.mz in
+    ax := !ax +. (a *. snoise3 x y z);
+    ay := !ay +. (a *. snoise3 (x +. off1.x) (y +. off1.y) (z +. off1.z));
+    az := !az +. (a *. snoise3 (x +. off2.x) (y +. off2.y) (z +. off2.z));
     amp := !amp *. omega;
     freq := !freq *. lambda
   done;
-  !acc
+  Vec3.set out !ax !ay !az
 
-let fractal ~octaves p =
+let turbulence ~octaves ~omega ~lambda p =
+  let out = Vec3.m () in
+  let pm = Vec3.m () in
+  Vec3.load pm p;
+  turbulence_m ~octaves ~omega ~lambda pm out;
+  Vec3.of_m out
+
+let[@inline] fractal3 octaves x y z =
   let acc = ref 0. and f = ref 1. in
   for _ = 1 to Int.max 1 octaves do
-    acc := !acc +. (Float.abs (snoise (Vec3.scale !f p)) /. !f);
-    f := !f *. 2.
+    let k = !f in
+    acc := !acc +. (Float.abs (snoise3 (k *. x) (k *. y) (k *. z)) /. k);
+    f := k *. 2.
   done;
   !acc
+
+let fractal ~octaves (p : Vec3.t) = fractal3 octaves p.x p.y p.z

@@ -11,12 +11,24 @@ val noise : Vec3.t -> float
 val snoise : Vec3.t -> float
 (** Signed noise, about [[-1, 1]], 0 at lattice points. *)
 
+val snoise3 : float -> float -> float -> float
+(** {!snoise} at [(x, y, z)]; inlined where it is called (a call would box
+    its floats), as are {!noise3} and {!fractal3}. *)
+
+val noise3 : float -> float -> float -> float
+
 val dnoise : Vec3.t -> Vec3.t
 (** Vector noise: three decorrelated signed noises. *)
 
 val turbulence : octaves:int -> omega:float -> lambda:float -> Vec3.t -> Vec3.t
 (** [sum_{i < octaves} omega^i dnoise(lambda^i p)]: the displacement
     POV-Ray's [turbulence] warp scales per axis. *)
+
+val turbulence_m : octaves:int -> omega:float -> lambda:float -> Vec3.m -> Vec3.m -> unit
+(** [turbulence_m ~octaves ~omega ~lambda p out]: {!turbulence} in place
+    (the same arithmetic). *)
+
+val fractal3 : int -> float -> float -> float -> float
 
 val fractal : octaves:int -> Vec3.t -> float
 (** [sum_i |snoise(2^i p)| / 2^i], in about [[0, 2]]: the scalar 1/f

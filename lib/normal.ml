@@ -19,16 +19,33 @@ let tetra =
   [| Vec3.make a (-1. /. 3.) 0.; Vec3.make (-.b) (-1. /. 3.) c; Vec3.make (-.b) (-1. /. 3.) (-.c);
      Vec3.make 0. 1. 0. |]
 
-let perturb nm point n =
-  let q = Transform.inv_point nm.xform point in
-  let g =
-    Array.fold_left
-      (fun acc v -> Vec3.madd acc (Pattern.value nm.pattern (Vec3.madd q delta v)) v)
-      Vec3.zero tetra
-  in
-  let g = Vec3.scale (3. /. (4. *. delta)) g in
+(* Per domain: the point in pattern space, a sample around it, the
+   pattern's work. *)
+type work = { q : Vec3.m; s : Vec3.m; pw : Pattern.work }
+
+let work_key = Scratch.key (fun () -> { q = Vec3.m (); s = Vec3.m (); pw = Pattern.work () })
+
+let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
+  let w = Scratch.get work_key in
+  let q = w.q in
+  Transform.inv_point_m nm.xform point q;
+  (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order *)
+  let gx = ref 0. and gy = ref 0. and gz = ref 0. in
+  for i = 0 to Array.length tetra - 1 do
+    let (v : Vec3.t) = Array.unsafe_get tetra i in
+    Vec3.set w.s (q.mx +. (delta *. v.x)) (q.my +. (delta *. v.y)) (q.mz +. (delta *. v.z));
+    Pattern.eval_m nm.pattern w.s w.pw;
+    let f = w.pw.r.v in
+    gx := !gx +. (f *. v.x);
+    gy := !gy +. (f *. v.y);
+    gz := !gz +. (f *. v.z)
+  done;
+  let c = 3. /. (4. *. delta) in
+  let gx = c *. !gx and gy = c *. !gy and gz = c *. !gz in
   (* as POV-Ray: tilt a unit normal in pattern space, then bring it back *)
-  let np = Vec3.normalize (Transform.normal (Transform.inverse nm.xform) n) in
+  Vec3.set out n.mx n.my n.mz;
+  Transform.normal_inverse_m nm.xform out;
+  Vec3.normalize_m out;
   (* POV-Ray computes bumps, dents, ripples, waves and wrinkles with
      formulas of their own, much stronger than the generic slope; these
      gains make camlray's look alike (set by eye: the noise differs) *)
@@ -40,6 +57,15 @@ let perturb nm point n =
     | _ -> 1.
   in
   (* the full slope, normal component included *)
-  let mp = Vec3.madd np (-.nm.amount *. strength *. gain) g in
-  let m = Transform.normal nm.xform mp in
-  if Vec3.length2 m = 0. then n else Vec3.normalize m
+  let k = -.nm.amount *. strength *. gain in
+  Vec3.set out (out.mx +. (k *. gx)) (out.my +. (k *. gy)) (out.mz +. (k *. gz));
+  Transform.normal_m nm.xform out;
+  if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
+  else Vec3.normalize_m out
+
+let perturb nm point n =
+  let p = Vec3.m () and nn = Vec3.m () and out = Vec3.m () in
+  Vec3.load p point;
+  Vec3.load nn n;
+  perturb_m nm p nn out;
+  Vec3.of_m out

@@ -13,3 +13,7 @@ val transform : Transform.t -> t -> t
 
 val perturb : t -> Vec3.t -> Vec3.t -> Vec3.t
 (** [perturb nm point n]: the perturbed unit normal at a world point. *)
+
+val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
+(** [perturb_m nm point n out]: {!perturb} in place (the same
+    arithmetic), into [out] (not [n]), allocating nothing. *)

@@ -38,6 +38,8 @@ type state = {
   sum : Color.acc;  (** a pixel's samples *)
   env_wi : Vec3.m;
   q : Vec3.m;  (** a shadow ray's crossing *)
+  pig : Pigment.out;  (** the pigment there *)
+  env : Color.acc;  (** the environment's light along a direction *)
   prev_p : Vec3.m;  (** the previous vertex, when [prev] is [smooth_v] *)
   prev_n : Vec3.m;
   num : nums;
@@ -55,7 +57,7 @@ let state_key =
   Scratch.key (fun () ->
       let v = Vec3.m and c () = Color.acc 0. in
       { o = v (); d = v (); p = v (); ng = v (); n = v (); wo = v (); thr = c (); acc = c (); dl = c ();
-        f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); prev_p = v (); prev_n = v ();
+        f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); pig = Pigment.out (); env = c (); prev_p = v (); prev_n = v ();
         num = { prev_pdf = 0. }; prev = camera_v; mat = Material.lobes (); bs = Bsdf.sampled ();
         ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
         sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0 })
@@ -79,14 +81,15 @@ let pass_through (o : Object.t) t =
       let st = Scratch.get state_key in
       let r = st.shadow in
       Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
-      let c = Pigment.eval_m layer.pigment st.q in
+      let c = st.pig in
+      Pigment.into layer.pigment st.q c;
       if c.filter +. c.transmit <= 0. || o.interior.ior <> 1. then false
       else begin
         let a = st.tr in
         Color.acc_set a
-          (a.ar *. ((c.filter *. c.c.r) +. c.transmit))
-          (a.ag *. ((c.filter *. c.c.g) +. c.transmit))
-          (a.ab *. ((c.filter *. c.c.b) +. c.transmit));
+          (a.ar *. ((c.filter *. c.r) +. c.transmit))
+          (a.ag *. ((c.filter *. c.g) +. c.transmit))
+          (a.ab *. ((c.filter *. c.b) +. c.transmit));
         not (Color.acc_is_black a)
       end
 
@@ -103,8 +106,13 @@ let transmittance (s : Scene.t) st (dir : Vec3.m) =
 let dims_per_bounce t = 8 + (2 * Array.length t.emitters)
 let d_lobe = 0 and d_dir = 1 and d_rr = 3 and d_env = 4 and d_light = 6
 
-let env_m (s : Scene.t) (d : Vec3.m) =
-  if Sky.is_empty s.sky then s.background else Sky.eval s.sky ~background:s.background (Vec3.of_m d)
+(* the environment's light along [d] into [st.env] *)
+let env_into (s : Scene.t) st (d : Vec3.m) =
+  let c = st.env in
+  if Sky.is_empty s.sky then (
+    let b = s.background in
+    Color.acc_set c b.r b.g b.b)
+  else Sky.eval_into s.sky ~background:s.background d c
 
 (* Next-event estimation at the vertex: every emitter, plus the
    environment, into [st.dl]. *)
@@ -166,12 +174,13 @@ let direct t (st : state) sampler base =
         transmittance s st wi;
         let tr = st.tr in
         if not (Color.acc_is_black tr) then begin
-          let c = env_m s wi in
+          env_into s st wi;
+          let c = st.env in
           let k = ci *. power pl pb /. pl in
           Color.acc_set dl
-            (dl.ar +. (k *. (f.ar *. (tr.ar *. c.r))))
-            (dl.ag +. (k *. (f.ag *. (tr.ag *. c.g))))
-            (dl.ab +. (k *. (f.ab *. (tr.ab *. c.b))))
+            (dl.ar +. (k *. (f.ar *. (tr.ar *. c.ar))))
+            (dl.ag +. (k *. (f.ag *. (tr.ag *. c.ag))))
+            (dl.ab +. (k *. (f.ab *. (tr.ab *. c.ab))))
         end
       end
     end
@@ -197,11 +206,12 @@ let li_into t sampler ~max_depth (st : state) =
             power st.num.prev_pdf (fmax 0. (dot st.prev_n d) /. Float.pi)
           else 1.
         in
-        let c = env_m s d in
+        env_into s st d;
+        let c = st.env in
         Color.acc_set acc
-          (acc.ar +. (w *. (thr.ar *. c.r)))
-          (acc.ag +. (w *. (thr.ag *. c.g)))
-          (acc.ab +. (w *. (thr.ab *. c.b)))
+          (acc.ar +. (w *. (thr.ar *. c.ar)))
+          (acc.ag +. (w *. (thr.ag *. c.ag)))
+          (acc.ab +. (w *. (thr.ab *. c.ab)))
       end
     end
     else begin

@@ -44,11 +44,11 @@ let eps = 1e-10
 let frac x = x -. Float.floor x
 let two_pi = 2. *. Float.pi
 
-let checker (p : Vec3.t) =
+(* Each pattern in scalars, inlined into [raw_m]: a call would box its
+   floats. The same arithmetic as with vectors (sums left to right). *)
+let[@inline] checker3 x y z =
   let s =
-    int_of_float (Float.floor (p.x +. eps))
-    + int_of_float (Float.floor (p.y +. eps))
-    + int_of_float (Float.floor (p.z +. eps))
+    int_of_float (Float.floor (x +. eps)) + int_of_float (Float.floor (y +. eps)) + int_of_float (Float.floor (z +. eps))
   in
   if s land 1 = 0 then 0. else 1.
 
@@ -57,30 +57,30 @@ let checker (p : Vec3.t) =
    POV-Ray does: (2q + r) mod 3 in axial coordinates. *)
 let sqrt3 = Float.sqrt 3.
 
-let hexagon (p : Vec3.t) =
+let[@inline] hexagon3 x z =
   (* axial coordinates of the nearest hexagon centre (pointy along x) *)
-  let q = p.x *. 2. /. 3. and r = ((-.p.x /. 3.) +. (sqrt3 /. 3. *. p.z)) in
+  let q = x *. 2. /. 3. and r = (-.x /. 3.) +. (sqrt3 /. 3. *. z) in
   let s = -.q -. r in
   let rq = Float.round q and rr = Float.round r and rs = Float.round s in
   let dq = Float.abs (rq -. q) and dr = Float.abs (rr -. r) and ds = Float.abs (rs -. s) in
-  let rq, rr =
-    if dq > dr && dq > ds then (-.rr -. rs, rr)
-    else if dr > ds then (rq, -.rq -. rs)
-    else (rq, rr)
-  in
-  let c = ((2 * int_of_float rq) + int_of_float rr) mod 3 in
+  (* the rounded coordinate furthest off is remade from the other two *)
+  let q_off = dq > dr && dq > ds in
+  let cq = if q_off then -.rr -. rs else rq in
+  let cr = if q_off then rr else if dr > ds then -.rq -. rs else rr in
+  let c = ((2 * int_of_float cq) + int_of_float cr) mod 3 in
   float_of_int (if c < 0 then c + 3 else c)
 
 (* Bricks of [size] with mortar of width [mortar] at the upper end of
    each cell; even rows (in y) shift z by half a brick, odd rows shift x
    (found by sampling POV-Ray's pattern). *)
-let brick (size : Vec3.t) mortar (p : Vec3.t) =
-  let row = Float.floor (p.y /. size.y) in
+let[@inline] in_mortar c s mortar = frac (c /. s) *. s >= s -. mortar
+
+let[@inline] brick3 (size : Vec3.t) mortar x y z =
+  let row = Float.floor (y /. size.y) in
   let odd = Float.rem (Float.abs row) 2. = 1. in
-  let x = if odd then p.x +. (size.x /. 2.) else p.x in
-  let z = if odd then p.z else p.z +. (size.z /. 2.) in
-  let in_mortar c s = frac (c /. s) *. s >= s -. mortar in
-  if in_mortar x size.x || in_mortar p.y size.y || in_mortar z size.z then 0. else 1.
+  let x = if odd then x +. (size.x /. 2.) else x in
+  let z = if odd then z else z +. (size.z /. 2.) in
+  if in_mortar x size.x mortar || in_mortar y size.y mortar || in_mortar z size.z mortar then 0. else 1.
 
 (* Wave sources of ripples and waves: fixed pseudo-random points. *)
 let sources =
@@ -91,94 +91,116 @@ let sources =
 let clamp01 x = Float.min 1. (Float.max 0. x)
 
 (* One feature point per unit cell, placed by hashing the cell with the
-   noise (camlray's own cellular noise: POV-Ray's points differ). *)
-let feature ix iy iz =
-  let c = Vec3.make (float_of_int ix) (float_of_int iy) (float_of_int iz) in
-  let h k = 0.5 +. (0.5 *. Noise.snoise (Vec3.make (c.x +. 0.31 +. k) (c.y +. 0.47) (c.z +. 0.73 -. k))) in
-  Vec3.add c (Vec3.make (h 0.) (h 17.3) (h 41.9))
+   noise (camlray's own cellular noise: POV-Ray's points differ):
+   coordinate [k] of the point for cell (cx, cy, cz), as floats. *)
+let[@inline] feature_h cx cy cz k = 0.5 +. (0.5 *. Noise.snoise3 (cx +. 0.31 +. k) (cy +. 0.47) (cz +. 0.73 -. k))
 
 (* crackle: distance to the second nearest feature point minus the
    nearest (POV-Ray's default form <-1, 1, 0>) *)
-let crackle (p : Vec3.t) =
-  let fx = int_of_float (Float.floor p.x) and fy = int_of_float (Float.floor p.y)
-  and fz = int_of_float (Float.floor p.z) in
+let[@inline] crackle3 x y z =
+  let fx = int_of_float (Float.floor x) and fy = int_of_float (Float.floor y) and fz = int_of_float (Float.floor z) in
   let d1 = ref infinity and d2 = ref infinity in
   for i = -1 to 1 do
     for j = -1 to 1 do
       for k = -1 to 1 do
-        let d = Vec3.dist p (feature (fx + i) (fy + j) (fz + k)) in
-        if d < !d1 then (d2 := !d1; d1 := d) else if d < !d2 then d2 := d
+        let cx = float_of_int (fx + i) and cy = float_of_int (fy + j) and cz = float_of_int (fz + k) in
+        let dx = x -. (cx +. feature_h cx cy cz 0.)
+        and dy = y -. (cy +. feature_h cx cy cz 17.3)
+        and dz = z -. (cz +. feature_h cx cy cz 41.9) in
+        let d = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+        if d < !d1 then (
+          d2 := !d1;
+          d1 := d)
+        else if d < !d2 then d2 := d
       done
     done
   done;
   clamp01 (!d2 -. !d1)
 
-let raw kind (p : Vec3.t) =
+(* The raw pattern at [w.p] into [w.r.v]. *)
+type result = { mutable v : float }
+
+(* the value in a record of its own, flat: a float field of a record with
+   other fields is boxed, and each store would allocate *)
+type work = { p : Vec3.m; d : Vec3.m; r : result }
+
+let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
+
+(* each case stores its value itself: a value joined from the cases
+   would be boxed *)
+let raw_m kind (w : work) =
+  let x = w.p.mx and y = w.p.my and z = w.p.mz in
   match kind with
-  | Checker -> checker p
-  | Hexagon -> hexagon p
-  | Brick { size; mortar } -> brick size mortar p
-  | Gradient v -> Vec3.dot p v
-  | Radial -> -.Float.atan2 p.z p.x /. two_pi
-  | Onion -> Vec3.length p
-  | Wood -> Float.sqrt ((p.x *. p.x) +. (p.y *. p.y))
-  | Marble -> p.x
+  | Checker -> w.r.v <- checker3 x y z
+  | Hexagon -> w.r.v <- hexagon3 x z
+  | Brick { size; mortar } -> w.r.v <- brick3 size mortar x y z
+  | Gradient v -> w.r.v <- (x *. v.x) +. (y *. v.y) +. (z *. v.z)
+  | Radial -> w.r.v <- -.Float.atan2 z x /. two_pi
+  | Onion -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y) +. (z *. z))
+  | Wood -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y))
+  | Marble -> w.r.v <- x
   | Leopard ->
-      let s = (Float.sin p.x +. Float.sin p.y +. Float.sin p.z) /. 3. in
-      s *. s
-  | Bozo | Spotted | Bumps -> Noise.noise p
+      let s = (Float.sin x +. Float.sin y +. Float.sin z) /. 3. in
+      w.r.v <- s *. s
+  | Bozo | Spotted | Bumps -> w.r.v <- Noise.noise3 x y z
   | Dents ->
-      let n = Noise.noise p in
-      n *. n *. n
+      let n = Noise.noise3 x y z in
+      w.r.v <- n *. n *. n
   | Granite ->
       (* affine-matched to the mean and spread of POV-Ray's granite values *)
-      clamp01 (0.015 +. (1.726 *. 0.5 *. Noise.fractal ~octaves:6 (Vec3.scale 4. p)))
+      w.r.v <- clamp01 (0.015 +. (1.726 *. 0.5 *. Noise.fractal3 6 (4. *. x) (4. *. y) (4. *. z)))
   | Agate turb ->
-      let t = Noise.fractal ~octaves:7 p in
-      let v = 0.5 +. (0.5 *. Float.sin (two_pi *. (p.z +. (turb *. t)))) in
-      Float.pow v 0.77
+      let t = Noise.fractal3 7 x y z in
+      let v = 0.5 +. (0.5 *. Float.sin (two_pi *. (z +. (turb *. t)))) in
+      w.r.v <- Float.pow v 0.77
   | Ripples | Waves ->
+      let ripples = kind = Ripples in
       let acc = ref 0. in
-      Array.iter
-        (fun c ->
-          let d = Vec3.dist p c in
-          acc :=
-            !acc
-            +.
-            match kind with
-            | Ripples -> 0.5 +. (0.5 *. Float.sin (two_pi *. d))
-            | _ -> 0.5 +. (0.5 *. Float.cos (two_pi *. d)))
-        sources;
-      !acc /. float_of_int (Array.length sources)
-  | Crackle -> crackle p
-  | Wrinkles -> clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal ~octaves:10 p))
+      for i = 0 to Array.length sources - 1 do
+        let (c : Vec3.t) = Array.unsafe_get sources i in
+        let dx = x -. c.x and dy = y -. c.y and dz = z -. c.z in
+        let d = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+        let wave = if ripples then Float.sin (two_pi *. d) else Float.cos (two_pi *. d) in
+        acc := !acc +. (0.5 +. (0.5 *. wave))
+      done;
+      w.r.v <- !acc /. float_of_int (Array.length sources)
+  | Crackle -> w.r.v <- crackle3 x y z
+  | Wrinkles -> w.r.v <- clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal3 10 x y z))
 
 let default_wave = function Wood | Marble -> Triangle | _ -> Ramp
 
-let shape wave v =
+(* the wave shaping of [v] into [w.r.v] (each case storing it) *)
+let shape_into (w : work) wave v =
   match wave with
-  | Ramp -> v
-  | Triangle -> if v < 0.5 then 2. *. v else 2. *. (1. -. v)
-  | Sine -> 0.5 +. (0.5 *. Float.sin (two_pi *. v))
-  | Scallop -> Float.abs (Float.sin (Float.pi *. v))
-  | Cubic -> v *. v *. (3. -. (2. *. v))
-  | Poly e -> Float.pow v e
+  | Ramp -> w.r.v <- v
+  | Triangle -> if v < 0.5 then w.r.v <- 2. *. v else w.r.v <- 2. *. (1. -. v)
+  | Sine -> w.r.v <- 0.5 +. (0.5 *. Float.sin (two_pi *. v))
+  | Scallop -> w.r.v <- Float.abs (Float.sin (Float.pi *. v))
+  | Cubic -> w.r.v <- v *. v *. (3. -. (2. *. v))
+  | Poly e -> w.r.v <- Float.pow v e
 
-let value t p =
-  let p =
-    match t.turbulence with
-    | None -> p
-    | Some tb ->
-        let d = Noise.turbulence ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda p in
-        Vec3.add p (Vec3.mul d tb.amount)
-  in
-  let v = raw t.kind p in
-  if is_block t.kind then v
-  else
-    let v = Float.rem ((v *. t.frequency) +. t.phase) 1.00001 in
-    let v = if v < 0. then v +. 1. else v in
-    let v = Float.min 1. v in
-    shape (Option.value ~default:(default_wave t.kind) t.wave) v
+(* The pattern at [q] into [w.r.v], allocating nothing: turbulence warp,
+   raw pattern, then frequency, phase and wave *)
+let eval_m t (q : Vec3.m) (w : work) =
+  (match t.turbulence with
+  | None -> Vec3.set w.p q.mx q.my q.mz
+  | Some tb ->
+      Noise.turbulence_m ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda q w.d;
+      let a = tb.amount and d = w.d in
+      Vec3.set w.p (q.mx +. (d.mx *. a.x)) (q.my +. (d.my *. a.y)) (q.mz +. (d.mz *. a.z)));
+  raw_m t.kind w;
+  if not (is_block t.kind) then begin
+    let r = Float.rem ((w.r.v *. t.frequency) +. t.phase) 1.00001 in
+    let v = if r < 0. then r +. 1. else r *. 1. in
+    let v = if v > 1. then 1. else v *. 1. in
+    shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
+  end
+
+let value t (p : Vec3.t) =
+  let w = work () and q = Vec3.m () in
+  Vec3.load q p;
+  eval_m t q w;
+  w.r.v
 
 (* [checker] at a point written in place: 0 or 1 *)
 let checker_m (p : Vec3.m) =

@@ -58,6 +58,19 @@ val value : t -> Vec3.t -> float
     pattern, then frequency, phase and wave shaping (block patterns:
     the cell index as a float, no shaping). *)
 
+type result = { mutable v : float }
+
+type work = { p : Vec3.m; d : Vec3.m; r : result }
+(** Where {!eval_m} works: the warped point, the turbulence, the value
+    (in a flat record: storing a float into a record with other fields
+    would allocate). *)
+
+val work : unit -> work
+
+val eval_m : t -> Vec3.m -> work -> unit
+(** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]
+    (the same arithmetic), allocating nothing. *)
+
 val checker_m : Vec3.m -> int
 (** The checker pattern's value (0 or 1) at a point written in place, as
     {!value} gives it for [make Checker]. *)

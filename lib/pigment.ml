@@ -56,22 +56,60 @@ let lerp (a : Color.rgbft) (b : Color.rgbft) k =
 
 let clear = Color.rgbft 0. 0. 0. 0. 1.
 
-let image_eval (im : image) (p : Vec3.t) =
-  let u = p.x and v = p.y in
-  if im.once && (u < 0. || u >= 1. || v < 0. || v >= 1.) then clear
+type out = {
+  mutable r : float;
+  mutable g : float;
+  mutable b : float;
+  mutable filter : float;
+  mutable transmit : float;
+}
+
+let out () = { r = 0.; g = 0.; b = 0.; filter = 0.; transmit = 0. }
+
+let[@inline] set (o : out) (c : Color.rgbft) =
+  o.r <- c.c.r;
+  o.g <- c.c.g;
+  o.b <- c.c.b;
+  o.filter <- c.filter;
+  o.transmit <- c.transmit
+
+let to_rgbft (o : out) = Color.rgbft o.r o.g o.b o.filter o.transmit
+
+let[@inline] lerp1 k x y = x +. (k *. (y -. x))
+
+(* o := lerp o t k, channel by channel *)
+let[@inline] lerp_into (o : out) (t : out) k =
+  o.r <- lerp1 k o.r t.r;
+  o.g <- lerp1 k o.g t.g;
+  o.b <- lerp1 k o.b t.b;
+  o.filter <- lerp1 k o.filter t.filter;
+  o.transmit <- lerp1 k o.transmit t.transmit
+
+let pixel (im : image) i j =
+  let i = ((i mod im.w) + im.w) mod im.w and j = ((j mod im.h) + im.h) mod im.h in
+  im.px.((j * im.w) + i)
+
+(* the image at [p] (in its own space) into [o]; interpolated: the lerp of
+   two lerps, as [lerp] makes it, channel by channel *)
+let image_into (im : image) (p : Vec3.m) (o : out) =
+  let u = p.mx and v = p.my in
+  if im.once && (u < 0. || u >= 1. || v < 0. || v >= 1.) then set o clear
   else
     let u = u -. Float.floor u and v = v -. Float.floor v in
     let fx = u *. float_of_int im.w and fy = (1. -. v) *. float_of_int im.h in
-    let get i j =
-      let i = ((i mod im.w) + im.w) mod im.w and j = ((j mod im.h) + im.h) mod im.h in
-      im.px.((j * im.w) + i)
-    in
-    if not im.interpolate then get (int_of_float fx) (int_of_float fy)
-    else
+    if not im.interpolate then set o (pixel im (int_of_float fx) (int_of_float fy))
+    else begin
       let x = fx -. 0.5 and y = fy -. 0.5 in
       let i = int_of_float (Float.floor x) and j = int_of_float (Float.floor y) in
       let a = x -. Float.floor x and b = y -. Float.floor y in
-      lerp (lerp (get i j) (get (i + 1) j) a) (lerp (get i (j + 1)) (get (i + 1) (j + 1)) a) b
+      let p00 = pixel im i j and p10 = pixel im (i + 1) j in
+      let p01 = pixel im i (j + 1) and p11 = pixel im (i + 1) (j + 1) in
+      o.r <- lerp1 b (lerp1 a p00.c.r p10.c.r) (lerp1 a p01.c.r p11.c.r);
+      o.g <- lerp1 b (lerp1 a p00.c.g p10.c.g) (lerp1 a p01.c.g p11.c.g);
+      o.b <- lerp1 b (lerp1 a p00.c.b p10.c.b) (lerp1 a p01.c.b p11.c.b);
+      o.filter <- lerp1 b (lerp1 a p00.filter p10.filter) (lerp1 a p01.filter p11.filter);
+      o.transmit <- lerp1 b (lerp1 a p00.transmit p10.transmit) (lerp1 a p01.transmit p11.transmit)
+    end
 
 (* Whether every point is opaque (filter and transmit 0): a shadow ray
    through such a pigment is blocked without evaluating it (asked at
@@ -85,41 +123,69 @@ let rec opaque = function
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
 
-let rec eval p point =
+(* Per domain: the point in a pattern's space, the pattern's work, and
+   per nesting depth a colour for the second of two entries blended. *)
+type work = { q : Vec3.m; pw : Pattern.work; mutable tmp : out array }
+
+let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Array.init 4 (fun _ -> out ()) })
+
+let tmp w d =
+  if d >= Array.length w.tmp then
+    w.tmp <- Array.init (2 * (d + 1)) (fun i -> if i < Array.length w.tmp then w.tmp.(i) else out ());
+  Array.unsafe_get w.tmp d
+
+(* the pattern's value at [point] moved into its space *)
+let[@inline] pattern_at w pattern xform (point : Vec3.m) =
+  Transform.inv_point_m xform point w.q;
+  Pattern.eval_m pattern w.q w.pw;
+  w.pw.r.v
+
+let rec into_d w p (point : Vec3.m) (o : out) d =
   match p with
-  | Solid c -> c
+  | Solid c -> set o c
   | Map { pattern; entries; xform } ->
-      let v = Pattern.value pattern (Transform.inv_point xform point) in
+      let v = pattern_at w pattern xform point in
       let n = Array.length entries in
-      if n = 0 then Color.opaque Color.black
+      if n = 0 then set o (Color.opaque Color.black)
       else
         let v0, p0 = entries.(0) in
-        if v <= v0 then eval p0 point
+        if v <= v0 then into_d w p0 point o d
         else begin
-          (* the first entry above v (a loop: no closure per point) *)
+          (* the first entry above v *)
           let i = ref 1 in
           while !i < n && not (v < fst entries.(!i)) do
             incr i
           done;
-          if !i >= n then eval (snd entries.(n - 1)) point
+          if !i >= n then into_d w (snd entries.(n - 1)) point o d
           else
             let vi, pi = entries.(!i) and vp, pp = entries.(!i - 1) in
-            if vi -. vp <= 0. then eval pi point
-            else lerp (eval pp point) (eval pi point) ((v -. vp) /. (vi -. vp))
+            if vi -. vp <= 0. then into_d w pi point o d
+            else begin
+              let k = (v -. vp) /. (vi -. vp) in
+              let t = tmp w d in
+              into_d w pp point o (d + 1);
+              into_d w pi point t (d + 1);
+              lerp_into o t k
+            end
         end
   | Blocks { pattern; cells; xform } ->
-      let i = int_of_float (Pattern.value pattern (Transform.inv_point xform point)) in
+      let i = int_of_float (pattern_at w pattern xform point) in
       let n = Array.length cells in
-      if n = 0 then Color.opaque Color.black else eval cells.(Int.min (n - 1) (Int.max 0 i)) point
-  | Image_map { image; xform } -> image_eval image (Transform.inv_point xform point)
+      if n = 0 then set o (Color.opaque Color.black) else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) point o d
+  | Image_map { image; xform } ->
+      Transform.inv_point_m xform point w.q;
+      image_into image w.q o
 
-(* a solid colour, or a plain checker of them, without making the point
-   a vector *)
-let rec eval_m p (point : Vec3.m) =
+let into p point o =
+  match p with
+  | Solid c -> set o c
+  | _ -> into_d (Scratch.get work_key) p point o 0
+
+let eval p point =
   match p with
   | Solid c -> c
-  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
-    when Transform.is_identity xform && Array.length cells > 0 ->
-      let n = Array.length cells in
-      eval_m cells.(Int.min (n - 1) (Pattern.checker_m point)) point
-  | _ -> eval p (Vec3.of_m point)
+  | _ ->
+      let o = out () and q = Vec3.m () in
+      Vec3.load q point;
+      into p q o;
+      to_rgbft o

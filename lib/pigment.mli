@@ -42,9 +42,21 @@ val opaque : t -> bool
 val eval : t -> Vec3.t -> Color.rgbft
 (** The colour at a point in world space. *)
 
-val eval_m : t -> Vec3.m -> Color.rgbft
-(** The same at a point written in place (made a vector only for
-    patterns). *)
+(** A colour written in place, flat: shading keeps one per nesting level. *)
+type out = {
+  mutable r : float;
+  mutable g : float;
+  mutable b : float;
+  mutable filter : float;
+  mutable transmit : float;
+}
+
+val out : unit -> out
+
+val into : t -> Vec3.m -> out -> unit
+(** [into p point o]: {!eval} at a point written in place, into [o] (the
+    same arithmetic), allocating nothing (per domain, the work of nested
+    maps is kept). *)
 
 val lerp : Color.rgbft -> Color.rgbft -> float -> Color.rgbft
 (** Interpolate all five channels. *)

@@ -14,3 +14,7 @@ val transform : Transform.t -> t -> t
 
 val eval : t -> background:Color.t -> Vec3.t -> Color.t
 (** Colour seen along a unit direction. *)
+
+val eval_into : t -> background:Color.t -> Vec3.m -> Color.acc -> unit
+(** {!eval} for a direction written in place, into a sum (the same
+    arithmetic), allocating nothing. *)

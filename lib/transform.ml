@@ -155,14 +155,17 @@ let inv_point_m t (p : Vec3.m) (out : Vec3.m) =
       ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
       ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
 
-let normal_m t (n : Vec3.m) =
-  if not t.id then begin
-    let m = t.inv and x = n.mx and y = n.my and z = n.mz in
-    Vec3.set n
-      ((g m 0 *. x) +. (g m 3 *. y) +. (g m 6 *. z))
-      ((g m 1 *. x) +. (g m 4 *. y) +. (g m 7 *. z))
-      ((g m 2 *. x) +. (g m 5 *. y) +. (g m 8 *. z))
-  end
+let[@inline] transpose_m m (n : Vec3.m) =
+  let x = n.mx and y = n.my and z = n.mz in
+  Vec3.set n
+    ((g m 0 *. x) +. (g m 3 *. y) +. (g m 6 *. z))
+    ((g m 1 *. x) +. (g m 4 *. y) +. (g m 7 *. z))
+    ((g m 2 *. x) +. (g m 5 *. y) +. (g m 8 *. z))
+
+let normal_m t n = if not t.id then transpose_m t.inv n
+
+(* [normal (inverse t)] in place *)
+let normal_inverse_m t n = if not t.id then transpose_m t.m n
 
 let determinant t = det3 t.m
 

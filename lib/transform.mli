@@ -47,5 +47,8 @@ val inv_point_m : t -> Vec3.m -> Vec3.m -> unit
 val normal_m : t -> Vec3.m -> unit
 (** {!normal} in place. *)
 
+val normal_inverse_m : t -> Vec3.m -> unit
+(** [normal (inverse t)] in place. *)
+
 val determinant : t -> float
 val to_string : t -> string

@@ -153,14 +153,15 @@ let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
       Color.acc_set w.acc c.ar c.ag c.ab
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees. *)
-let metallic_tint m cos_angle (pc : Color.t) =
-  if m = 0. then white
-  else
-    let x = Float.acos (Float.min 1. (Float.abs cos_angle)) /. (Float.pi /. 2.) in
-    let f = (0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903 in
-    let f = Float.min 1. (Float.max 0. f) in
-    let k = m *. (1. -. f) in
-    make (1. +. (k *. (pc.r -. 1.))) (1. +. (k *. (pc.g -. 1.))) (1. +. (k *. (pc.b -. 1.)))
+(* [m] > 0: the tint is 1 + k (c - 1) per channel c of the pigment, k
+   as follows; [m] = 0: no tint (1) *)
+let[@inline] metallic_k m cos_angle =
+  let x = Float.acos (Float.min 1. (Float.abs cos_angle)) /. (Float.pi /. 2.) in
+  let f = (0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903 in
+  let f = Float.min 1. (Float.max 0. f) in
+  m *. (1. -. f)
+
+let[@inline] tint m k c = if m = 0. then 1. else 1. +. (k *. (c -. 1.))
 
 let fresnel n c =
   let g2 = (n *. n) +. (c *. c) -. 1. in
@@ -193,7 +194,7 @@ let nums () = { eta = 1.; alpha = 1.; weight = 1.; refl = 1.; child = 1. }
    point lights). Scalars throughout: nothing is allocated unless the
    shadow ray crosses something transparent. [k.alpha]: the layer's
    opacity. *)
-let one_light s (f : Finish.t) (pc : Color.t) (k : nums) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
+let one_light s (f : Finish.t) (pc : Pigment.out) (k : nums) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
     (light : Light.t) (out : Color.acc) =
   let alpha = k.alpha in
   let w = Scratch.get shadow_key in
@@ -227,8 +228,9 @@ let one_light s (f : Finish.t) (pc : Color.t) (k : nums) (p : Vec3.m) (n : Vec3.
           cb := !cb +. (k *. (pc.b *. lb))
         end;
         if not light.shadowless then begin
-          let mt = metallic_tint f.metallic nl pc in
-          let mr = lr *. mt.r and mg = lg *. mt.g and mb = lb *. mt.b in
+          let m = f.metallic in
+          let mk = if m = 0. then 0. else metallic_k m nl in
+          let mr = lr *. tint m mk pc.r and mg = lg *. tint m mk pc.g and mb = lb *. tint m mk pc.b in
           if f.phong > 0. then begin
             (* r = d - 2 (d.n) n, the mirror direction *)
             let k = -2. *. dot d n in
@@ -266,7 +268,7 @@ let direct_key = Scratch.key (fun () -> Color.acc 0.)
 
 (* Diffuse and highlights of every light for one texture layer, added
    into [out]. *)
-let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Color.t) (k : nums) p n d out =
+let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Pigment.out) (k : nums) p n d out =
   for j = 0 to Array.length s.lights - 1 do
     let light = Array.unsafe_get s.lights j in
     match light.area with
@@ -308,12 +310,13 @@ type frame = {
   rd : Vec3.m;
   rc : Color.acc;
   k : nums;
+  pig : Pigment.out;  (** the pigment of the layer being shaded *)
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
-    k = nums () }
+    k = nums (); pig = Pigment.out () }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
@@ -358,6 +361,9 @@ let next_media (inner : Interior.t) media =
 
 let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
 
+(* a ray's direction made unit, to look up the sky (per domain) *)
+let sky_key = Scratch.key Vec3.m
+
 (* a surface's own light [c] and, through it ([tr], faded), the light [rc]
    from beyond *)
 let[@inline] through (out : Color.acc) (c : Color.acc) (tr : Color.acc) (fade : Color.t) (rc : Color.acc) =
@@ -378,7 +384,12 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
     let h, f = Scene.hit_records () in
     if not (Scene.intersect_into s o d tmin infinity h f) then
       if Sky.is_empty s.sky then set_color out s.background
-      else set_color out (Sky.eval s.sky ~background:s.background (Vec3.normalize (Vec3.of_m d)))
+      else begin
+        let u = Scratch.get sky_key in
+        Vec3.set u d.mx d.my d.mz;
+        Vec3.normalize_m u;
+        Sky.eval_into s.sky ~background:s.background u out
+      end
     else begin
       let t = h.t and obj = f.leaf in
       let fr = enter () in
@@ -387,7 +398,11 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       Scene.hit_normal_into s f h p fr.n0;
       (* POV-Ray fades what comes through the far side of a medium, not
          the far surface's own shading *)
-      let fade = match media with (i : Interior.t) :: _ -> Interior.fade i t | [] -> white in
+      let fade =
+        match media with
+        | (i : Interior.t) :: _ when i.fade_distance <> 0. -> Interior.fade i h.t
+        | _ -> white (* as [Interior.fade] without fading, and without boxing [t] for the call *)
+      in
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
       leave ()
@@ -476,23 +491,29 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
             match layer.normal with
             | None -> n0
             | Some nm ->
-                let dv = Vec3.of_m d in
-                let m = Normal.perturb nm (Vec3.of_m p) (Vec3.of_m n0) in
-                Vec3.load fr.pn
-                  (if Vec3.dot m dv > 0. then Vec3.madd m (-2. *. Vec3.dot m dv) dv |> Vec3.normalize else m);
-                fr.pn
+                (* a normal tilted away from the eye is mirrored back *)
+                let pn = fr.pn in
+                Normal.perturb_m nm p n0 pn;
+                let md = dot pn d in
+                if md > 0. then begin
+                  let k = -2. *. md in
+                  Vec3.set pn (pn.mx +. (k *. d.mx)) (pn.my +. (k *. d.my)) (pn.mz +. (k *. d.mz));
+                  Vec3.normalize_m pn
+                end;
+                pn
           in
           if not fr.top_set then begin
             fr.top_set <- true;
             Vec3.set fr.top n.mx n.my n.mz
           end;
           let f = layer.finish in
-          let pig = Pigment.eval_m layer.pigment p in
-          let pc = pig.c in
+          let pig = fr.pig in
+          Pigment.into layer.pigment p pig;
+          let pc = pig in
           let k = fr.k in
           k.alpha <-
             (if s.Scene.settings.legacy_alpha then
-               1. -. ((pig.filter *. Color.max_channel pc) +. pig.transmit)
+               1. -. ((pig.filter *. Float.max pc.r (Float.max pc.g pc.b)) +. pig.transmit)
              else 1. -. pig.filter -. pig.transmit);
           let alpha = k.alpha in
           (* this layer's own colour: lights, then ambient and emission *)
@@ -523,7 +544,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
    starts at the frame's point along its [rd], weighs [fr.k.refl] times
    the reflection's, and brings its light back into its [rc] *)
-and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level media (fr : frame) (out : Color.acc) =
+and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) level media (fr : frame) (out : Color.acc) =
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else
     let rf = f.reflection in
@@ -542,8 +563,9 @@ and reflection s (f : Finish.t) pc (n : Vec3.m) (d : Vec3.m) level media (fr : f
       if rf.fresnel then Float.max kr (Float.max kg kb)
       else Float.max (max_channel lo) (max_channel hi)
     in
-    let mt = metallic_tint rf.rmetallic cos_i pc in
-    let kr = kr *. mt.r and kg = kg *. mt.g and kb = kb *. mt.b in
+    let m = rf.rmetallic in
+    let mk = if m = 0. then 0. else metallic_k m cos_i in
+    let kr = kr *. tint m mk pc.r and kg = kg *. tint m mk pc.g and kb = kb *. tint m mk pc.b in
     if kr = 0. && kg = 0. && kb = 0. then Color.acc_set out 0. 0. 0.
     else begin
       let m = 2. *. cos_i in

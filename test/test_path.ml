@@ -392,7 +392,24 @@ let allocation () =
   let img = Render.image_into ~domains:1 ~width ~height pixel in
   let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
   Alcotest.(check bool) "lit by area lights" true (mean img > 0.05);
-  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with area lights (at most 0.1)" words
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with area lights (at most 0.1)" words;
+  (* pattern pigments (a map, blocks, turbulence) and a sky_sphere as the
+     environment light, seen and sampled *)
+  let s =
+    Helpers.compile_string
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       sky_sphere { pigment { gradient y color_map { [0 rgb <0.9, 0.8, 0.7>] [1 rgb <0.3, 0.4, 0.8>] } } }\n\
+       plane { y, 0 pigment { checker rgb 0.8, rgb 0.3 rotate y*30 } }\n\
+       sphere { <0, 1, 0>, 1 pigment { bozo turbulence 0.4 color_map { [0 rgb <0.8, 0.3, 0.2>] [1 rgb 0.9] } } }\n\
+       sphere { <1.5, 0.5, -1>, 0.5 pigment { hexagon rgb 1, rgb 0.5, rgb <0.2, 0.6, 0.3> scale 0.2 } }"
+  in
+  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let before = Gc.minor_words () in
+  let img = Render.image_into ~domains:1 ~width ~height pixel in
+  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  Alcotest.(check bool) "lit by the sky" true (mean img > 0.05);
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with patterns and a sky (at most 0.1)" words
 
 let tests =
   ( "path",

@@ -314,6 +314,37 @@ let allocation () =
       ("fading", "fade_distance 4 fade_power 2") ];
   if disc > 0.1 then Alcotest.failf "%.2f words per camera ray with a circular area light (at most 0.1)" disc
 
+(* The same with textures as POV-Ray scenes write them: pattern pigments
+   through colour maps, pigment maps and blocks (with turbulence and
+   waves), normal perturbation, a metallic finish and a sky_sphere, for
+   camera rays that end on the sky and rays that start inside an object
+   (the camera in a big sphere). *)
+let allocation_textures () =
+  let s =
+    Scn.compile
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       light_source { <-4, 6, -5>, rgb 1 }\n\
+       sky_sphere { pigment { gradient y color_map { [0 rgb <0.6, 0.7, 1>] [1 rgb <0.1, 0.2, 0.6>] } } }\n\
+       sphere { 0, 100 hollow pigment { rgbt 1 } }\n\
+       plane { y, 0 pigment { hexagon rgb 1, rgb <0.2, 0.3, 0.5>, rgb <0.7, 0.2, 0.1> scale 0.5 }\n\
+         normal { bumps 0.4 scale 0.3 } }\n\
+       sphere { <-1, 1, 0>, 1 pigment { bozo turbulence 0.5 octaves 4 color_map { [0 rgb 1] [1 rgb <0.8, 0.2, 0.1>] } }\n\
+         normal { ripples 0.5 } finish { specular 0.5 } }\n\
+       sphere { <1.2, 0.8, 0.5>, 0.8 pigment { granite pigment_map { [0 rgb 0.9] [1 onion color_map { [0 rgb 0] [1 rgb 1] }] } }\n\
+         finish { reflection 0.4 metallic } }\n\
+       box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { brick rgb 0.8, rgb <0.6, 0.2, 0.1> scale 0.05 }\n\
+         normal { dents 0.5 scale 0.1 } }\n\
+       sphere { <2, 0.4, -1.5>, 0.4 pigment { marble sine_wave frequency 3 turbulence 0.3\n\
+         color_map { [0 rgb 1] [0.5 rgb <0.3, 0.5, 0.2>] [1 rgb 0] } } normal { wrinkles 0.6 } }"
+  in
+  let width = 64 and height = 48 in
+  let pixel = Whitted.pixel_into s ~width ~height in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let before = Gc.minor_words () in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let words = (Gc.minor_words () -. before) /. Float.of_int (width * height) in
+  if words > 0.1 then Alcotest.failf "%.2f words per camera ray with patterns, normals and a sky (at most 0.1)" words
+
 let tests =
   ( "whitted",
     [
@@ -329,4 +360,5 @@ let tests =
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
       Alcotest.test_case "the common case allocates nothing" `Quick allocation;
+      Alcotest.test_case "patterns, normals and skies allocate nothing" `Quick allocation_textures;
     ] )
