@@ -354,9 +354,44 @@ let[@inline] relative_ior (inner : Interior.t) media =
     (match media with (i : Interior.t) :: _ -> i.ior | [] -> 1.) /. inner.ior
   else inner.ior /. ior_beyond inner media
 
+(* Lists of media entered, made once per domain: [inner :: media] for
+   the last pairs met (a ray entering glass would otherwise make a list
+   cell at every refraction) *)
+let entered_size = 16
+
+type entered = {
+  inners : Interior.t array;
+  outers : Interior.t list array;
+  lists : Interior.t list array;
+  mutable filled : int;
+  mutable next : int;
+}
+
+let entered_key =
+  Scratch.key (fun () ->
+      { inners = Array.make entered_size Interior.default; outers = Array.make entered_size [];
+        lists = Array.make entered_size []; filled = 0; next = 0 })
+
+let enter_medium (inner : Interior.t) media =
+  let e = Scratch.get entered_key in
+  let i = ref 0 in
+  while !i < e.filled && not (Array.unsafe_get e.inners !i == inner && Array.unsafe_get e.outers !i == media) do
+    incr i
+  done;
+  if !i < e.filled then Array.unsafe_get e.lists !i
+  else begin
+    let l = inner :: media and k = e.next in
+    e.inners.(k) <- inner;
+    e.outers.(k) <- media;
+    e.lists.(k) <- l;
+    e.next <- (k + 1) mod entered_size;
+    if e.filled < entered_size then e.filled <- e.filled + 1;
+    l
+  end
+
 (* the media beyond that surface *)
 let next_media (inner : Interior.t) media =
-  if not (List.memq inner media) then inner :: media
+  if not (List.memq inner media) then enter_medium inner media
   else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
 
 let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
