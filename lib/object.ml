@@ -162,10 +162,14 @@ let next_tmin (r : Ray.t) t =
   let step = 1e-9 *. (1. +. (Float.abs t *. dl)) /. dl in
   Float.max (t +. step) (Float.succ t)
 
+(* [Float.succ] is a function of the standard library (its argument
+   would be boxed); the primitive under it is called directly *)
+external next_after : float -> float -> float = "caml_nextafter_float" "caml_nextafter" [@@unboxed] [@@noalloc]
+
 let[@inline] next_tmin_s (r : Ray.scratch) t =
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let step = 1e-9 *. (1. +. (Float.abs t *. dl)) /. dl in
-  Float.max (t +. step) (Float.succ t)
+  Float.max (t +. step) (next_after t infinity)
 
 (* [r]'s origin taken into the primitive's own space, into [l] *)
 let[@inline] local_origin o (r : Ray.scratch) (l : Ray.scratch) =
@@ -357,8 +361,8 @@ let any_mesh o m (r : Ray.scratch) tmin (h : Hit.t) (f : found) =
 (* [crossings_s o ray tmin h f shadow opaque g]: with [h] and [f] as
    scratch. A shadow ray through a mesh that [g] stops at wherever it is
    crossed ([opaque]) needs one crossing, not the nearest: an any-hit walk
-   of the mesh's BVH. [g] is not called where [opaque] already answers: a
-   crossing's distance passed to it is boxed. *)
+   of the mesh's BVH. [g] is not called where [opaque] already answers.
+   [g] reads the crossing's distance in [h] (passed, it would be boxed). *)
 let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
   match o.geom with
   | Prim _ when shadow && o.no_shadow ->
@@ -373,8 +377,8 @@ let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
     let got = if !first then hit_s o r tmin h fd else hit_s o r !tm h fd in
     first := false;
     if got then begin
-      let leaf = fd.leaf and t = h.t in
-      if (shadow && leaf.no_shadow) || ((not (opaque leaf)) && g leaf t) then tm := next_tmin_s r t
+      let leaf = fd.leaf in
+      if (shadow && leaf.no_shadow) || ((not (opaque leaf)) && g leaf h) then tm := next_tmin_s r h.t
       else (
         ok := false;
         go := false)
@@ -388,7 +392,7 @@ let never _ = false
 let crossings o r tmin tmax f =
   let s = Ray.of_ray r in
   s.far <- tmax;
-  crossings_s o s tmin (Hit.create tmax) (found o) false never f
+  crossings_s o s tmin (Hit.create tmax) (found o) false never (fun leaf (h : Hit.t) -> f leaf h.t)
 
 (* A leaf's world normal at [p], into [out]: nothing allocated *)
 let normal_into o (p : Vec3.m) h out =

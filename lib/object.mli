@@ -82,9 +82,11 @@ val never : t -> bool
 (** No object: the [opaque] of {!crossings_s} when nothing is known. *)
 
 val crossings_s :
-  t -> Ray.scratch -> float -> Hit.t -> found -> bool -> (t -> bool) -> (t -> float -> bool) -> bool
+  t -> Ray.scratch -> float -> Hit.t -> found -> bool -> (t -> bool) -> (t -> Hit.t -> bool) -> bool
 (** [crossings_s o ray tmin h f shadow opaque g]: {!crossings} within
-    [(tmin, ray.far)] on a scratch ray, with [h] and [f] as scratch; with
+    [(tmin, ray.far)] on a scratch ray, with [h] and [f] as scratch, [g
+    leaf h] reading the crossing's distance in [h.t] (which it leaves as
+    it is: a distance passed would be boxed); with
     [shadow], leaves marked [no_shadow] are skipped. [opaque leaf] says that
     [g leaf t] is [false] at every crossing of that leaf: [g] is then not
     called there (the walk stops), and a mesh so marked is asked for any one

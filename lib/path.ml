@@ -74,7 +74,8 @@ let blocks (o : Object.t) =
   o.interior.ior <> 1.
   || match o.texture with [] -> true | (layer : Texture.layer) :: _ -> Pigment.opaque layer.pigment
 
-let pass_through (o : Object.t) t =
+let pass_through (o : Object.t) (h : Hit.t) =
+  let t = h.t in
   match o.texture with
   | [] -> false
   | (layer : Texture.layer) :: _ ->

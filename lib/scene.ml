@@ -148,7 +148,7 @@ type scratch = {
   ray : Ray.scratch;
   h : Hit.t;
   f : Object.found;
-  mutable occ : Object.t -> float -> bool;
+  mutable occ : Object.t -> Hit.t -> bool;
   mutable opaque : Object.t -> bool;  (** [occ] is false at every crossing *)
   mutable busy : bool;
 }
@@ -261,12 +261,16 @@ let occluder_leaf a sc (r : Ray.scratch) tmin i =
     t = infinity
     ||
     let o = Array.unsafe_get a.finite i in
-    (* an opaque sphere stops the walk without [occ] (its distance would
-       be boxed to be passed) *)
-    (not (sc.opaque o)) && sc.occ o t
+    (* an opaque sphere stops the walk without [occ]; [occ] reads the
+       distance in the hit record *)
+    (not (sc.opaque o))
+    && (sc.h.t <- t;
+        sc.occ o sc.h)
     &&
     let t' = sphere_root sp i rad r (Object.next_tmin_s r t) tmax in
-    t' = infinity || sc.occ o t'
+    t' = infinity
+    || (sc.h.t <- t';
+        sc.occ o sc.h)
 
 (* within (tmin, sc.ray.far) *)
 let occluders_in s sc tmin opaque g =
@@ -289,7 +293,7 @@ let occluders s r tmin tmax opaque g =
   let sc = take () in
   Ray.load sc.ray r;
   sc.ray.far <- tmax;
-  occluders_in s sc tmin opaque g
+  occluders_in s sc tmin opaque (fun o (h : Hit.t) -> g o h.t)
 
 (* the same from a ray in a scratch record of the caller's, up to its [far] *)
 let occluders_s s (r : Ray.scratch) tmin opaque g =

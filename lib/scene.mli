@@ -95,7 +95,8 @@ val occluders :
     {!Object.never} when nothing is known. *)
 
 val occluders_s :
-  t -> Ray.scratch -> float -> (Object.t -> bool) -> (Object.t -> float -> bool) -> bool
+  t -> Ray.scratch -> float -> (Object.t -> bool) -> (Object.t -> Hit.t -> bool) -> bool
 (** [occluders_s s ray tmin opaque f]: [occluders] of a ray held in a
-    scratch record, within [(tmin, ray.far)]. With [opaque] and [f] closed
-    functions, a walk that crosses only opaque objects allocates nothing. *)
+    scratch record, within [(tmin, ray.far)], [f obj h] reading the
+    crossing's distance in [h.t] (a distance passed would be boxed). With
+    [opaque] and [f] closed functions, a walk allocates nothing. *)

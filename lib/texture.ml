@@ -16,29 +16,57 @@ let patterned pattern entries =
   { (layer Pigment.black Finish.default) with
     tmap = Some { pattern; entries; xform = Transform.identity } }
 
-let blend m point =
-  let v = Pattern.value m.pattern (Transform.inv_point m.xform point) in
+type weights = { mutable k0 : float; mutable k1 : float }
+type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
+
+let pick () = { n = 0; t0 = []; t1 = []; w = { k0 = 0.; k1 = 0. } }
+
+let[@inline] one pk t =
+  pk.n <- 1;
+  pk.t0 <- t;
+  pk.w.k0 <- 1.
+
+(* per domain: the point in the pattern's space and the pattern's work *)
+type work = { q : Vec3.m; pw : Pattern.work }
+
+let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work () })
+
+let blend_m m (point : Vec3.m) pk =
+  let w = Scratch.get work_key in
+  Transform.inv_point_m m.xform point w.q;
+  Pattern.eval_m m.pattern w.q w.pw;
+  let v = w.pw.r.v in
   let n = Array.length m.entries in
-  if n = 0 then [ (1., default) ]
-  else if Pattern.is_block m.pattern.kind then
-    [ (1., snd m.entries.(Int.max 0 (Int.min (n - 1) (int_of_float v)))) ]
+  if n = 0 then one pk default
+  else if Pattern.is_block m.pattern.kind then one pk (snd m.entries.(Int.max 0 (Int.min (n - 1) (int_of_float v))))
   else
     let v0, t0 = m.entries.(0) in
-    if v <= v0 then [ (1., t0) ]
-    else
-      let rec find i =
-        if i >= n then [ (1., snd m.entries.(n - 1)) ]
-        else
-          let vi, ti = m.entries.(i) in
-          if v < vi then
-            let vp, tp = m.entries.(i - 1) in
-            if vi -. vp <= 0. then [ (1., ti) ]
-            else
-              let k = (v -. vp) /. (vi -. vp) in
-              [ (1. -. k, tp); (k, ti) ]
-          else find (i + 1)
-      in
-      find 1
+    if v <= v0 then one pk t0
+    else begin
+      (* the first entry above v *)
+      let i = ref 1 in
+      while !i < n && not (v < fst m.entries.(!i)) do
+        incr i
+      done;
+      if !i >= n then one pk (snd m.entries.(n - 1))
+      else
+        let vi, ti = m.entries.(!i) and vp, tp = m.entries.(!i - 1) in
+        if vi -. vp <= 0. then one pk ti
+        else begin
+          let k = (v -. vp) /. (vi -. vp) in
+          pk.n <- 2;
+          pk.t0 <- tp;
+          pk.t1 <- ti;
+          pk.w.k0 <- 1. -. k;
+          pk.w.k1 <- k
+        end
+    end
+
+let blend m point =
+  let pk = pick () and p = Vec3.m () in
+  Vec3.load p point;
+  blend_m m p pk;
+  if pk.n = 1 then [ (pk.w.k0, pk.t0) ] else [ (pk.w.k0, pk.t0); (pk.w.k1, pk.t1) ]
 
 (* A layer that lets no light through makes the whole texture block it. *)
 let blocks_light (t : t) =

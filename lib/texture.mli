@@ -35,6 +35,18 @@ val blend : tmap -> Vec3.t -> (float * t) list
 (** The textures to shade at a world point with their weights (summing
     to 1): one, or the two around the pattern's value. *)
 
+type weights = { mutable k0 : float; mutable k1 : float }
+
+type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
+(** [n] (1 or 2) textures with their weights (flat: storing them
+    allocates nothing). *)
+
+val pick : unit -> pick
+
+val blend_m : tmap -> Vec3.m -> pick -> unit
+(** {!blend} at a point written in place, into a pick (the same values),
+    allocating nothing. *)
+
 val blocks_light : t -> bool
 (** Some unpatterned layer is opaque everywhere: no light passes. *)
 

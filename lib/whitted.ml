@@ -2,20 +2,56 @@ open Color
 
 let light_min_cos = 1e-10
 
-(* (f*P + t) of a texture at a point: what a surface lets through. *)
-let rec texture_filter (tex : Texture.t) q =
-  List.fold_left
-    (fun acc (layer : Texture.layer) ->
-      match layer.tmap with
-      | Some m ->
-          let f =
-            List.fold_left (fun f (k, t) -> madd f k (texture_filter t q)) black (Texture.blend m q)
-          in
-          mul acc f
-      | None ->
-          let c = Pigment.eval layer.pigment q in
-          mul acc (add (scale c.filter c.c) (gray c.transmit)))
-    white tex
+(* (f*P + t) of a texture at a point, what a surface lets through, into
+   [out]: the product over its layers; a texture map's layer blends its
+   textures' own. Per domain and nesting depth: the textures picked, their
+   sum, the one being summed, a pigment. *)
+type filter_level = { fpick : Texture.pick; fsum : Color.acc; fsub : Color.acc; fpig : Pigment.out }
+
+type filter_levels = { mutable flevels : filter_level array }
+
+let filter_key =
+  Scratch.key (fun () ->
+      { flevels = Array.init 2 (fun _ ->
+            { fpick = Texture.pick (); fsum = Color.acc 0.; fsub = Color.acc 0.; fpig = Pigment.out () }) })
+
+let filter_level d =
+  let fl = Scratch.get filter_key in
+  if d >= Array.length fl.flevels then
+    fl.flevels <-
+      Array.init (2 * (d + 1)) (fun i ->
+          if i < Array.length fl.flevels then fl.flevels.(i)
+          else { fpick = Texture.pick (); fsum = Color.acc 0.; fsub = Color.acc 0.; fpig = Pigment.out () });
+  Array.unsafe_get fl.flevels d
+
+let rec filter_into (tex : Texture.t) (q : Vec3.m) (out : Color.acc) d =
+  Color.acc_set out 1. 1. 1.;
+  let rest = ref tex and go = ref true in
+  while !go do
+    match !rest with
+    | [] -> go := false
+    | (layer : Texture.layer) :: tl ->
+        rest := tl;
+        let lv = filter_level d in
+        (match layer.tmap with
+        | Some m ->
+            let pk = lv.fpick and f = lv.fsum and sub = lv.fsub in
+            Texture.blend_m m q pk;
+            Color.acc_set f 0. 0. 0.;
+            for j = 0 to pk.n - 1 do
+              filter_into (if j = 0 then pk.t0 else pk.t1) q sub (d + 1);
+              let k = if j = 0 then pk.w.k0 else pk.w.k1 in
+              Color.acc_set f (f.ar +. (k *. sub.ar)) (f.ag +. (k *. sub.ag)) (f.ab +. (k *. sub.ab))
+            done;
+            Color.acc_set out (out.ar *. f.ar) (out.ag *. f.ag) (out.ab *. f.ab)
+        | None ->
+            let c = lv.fpig in
+            Pigment.into layer.pigment q c;
+            Color.acc_set out
+              (out.ar *. ((c.filter *. c.r) +. c.transmit))
+              (out.ag *. ((c.filter *. c.g) +. c.transmit))
+              (out.ab *. ((c.filter *. c.b) +. c.transmit)))
+  done
 
 (* shadow rays fade only with a fade_power (povray 3.7: fade_power 0 fades
    what the eye sees through, by 1/2, but not the light) *)
@@ -41,15 +77,19 @@ type shadow_walk = {
   lp : Vec3.m;
   q : Vec3.m;
   mean : Color.acc;
+  cross : Vec3.m;  (** a crossing of the shadow ray *)
+  filter : Color.acc;  (** what the surface there lets through *)
 }
 
 let shadow_key =
   Scratch.key (fun () ->
       { acc = Color.acc 1.; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
-        ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0. })
+        ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
+        filter = Color.acc 0. })
 
-let shadow_hit (o : Object.t) t =
+let shadow_hit (o : Object.t) (h : Hit.t) =
+  let t = h.t in
   let w = Scratch.get shadow_key in
   let a = w.acc in
   if Texture.blocks_light o.texture then begin
@@ -57,20 +97,11 @@ let shadow_hit (o : Object.t) t =
     false
   end
   else begin
-    (match o.texture with
-    | [ { tmap = None; pigment = Pigment.Solid c; _ } ] ->
-        (* one layer of a solid colour: [texture_filter] without the point
-           or a colour made (white times (f P + t), the same floats) *)
-        Color.acc_set a
-          (a.ar *. ((c.filter *. c.c.r) +. c.transmit))
-          (a.ag *. ((c.filter *. c.c.g) +. c.transmit))
-          (a.ab *. ((c.filter *. c.c.b) +. c.transmit))
-    | tex ->
-        let r = w.ray in
-        let q = Vec3.make (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz)) in
-        let f = texture_filter tex q in
-        Color.acc_set a (a.ar *. f.r) (a.ag *. f.g) (a.ab *. f.b));
-    if has_fade o.interior then w.faders <- (o, t) :: w.faders;
+    let r = w.ray and q = w.cross and f = w.filter in
+    Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+    filter_into o.texture q f 0;
+    Color.acc_set a (a.ar *. f.ar) (a.ag *. f.ag) (a.ab *. f.ab);
+    if has_fade o.interior then w.faders <- (o, h.t) :: w.faders;
     not (Color.acc_is_black a)
   end
 
@@ -338,6 +369,30 @@ let leave () =
   let fs = Scratch.get frames_key in
   fs.depth <- fs.depth - 1
 
+(* The same for texture maps being blended (nested in one another, or in
+   what the rays of their textures' reflections meet): the textures
+   picked, their sum, and the one being shaded. *)
+type tmap_level = { pick : Texture.pick; c : Color.acc; f : Color.acc; c1 : Color.acc; f1 : Color.acc }
+
+type tmap_levels = { mutable level : int; mutable levels : tmap_level array }
+
+let new_tmap_level () =
+  { pick = Texture.pick (); c = Color.acc 0.; f = Color.acc 0.; c1 = Color.acc 0.; f1 = Color.acc 1. }
+
+let tmaps_key = Scratch.key (fun () -> { level = 0; levels = Array.init 4 (fun _ -> new_tmap_level ()) })
+
+let tmap_enter () =
+  let ts = Scratch.get tmaps_key in
+  let k = ts.level in
+  if k = Array.length ts.levels then
+    ts.levels <- Array.init (2 * k) (fun i -> if i < k then ts.levels.(i) else new_tmap_level ());
+  ts.level <- k + 1;
+  Array.unsafe_get ts.levels k
+
+let tmap_leave () =
+  let ts = Scratch.get tmaps_key in
+  ts.level <- ts.level - 1
+
 (* Relative index of refraction across a surface of [inner] for a ray
    inside [media]: entering or leaving is decided as POV-Ray does, by
    whether the ray is already inside this interior, not by the side of
@@ -509,16 +564,23 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
       match layer.tmap with
       | Some m ->
           (* a patterned layer: blend the textures around the value *)
-          let c = Color.acc 0. and f = Color.acc 0. in
-          List.iter
-            (fun (k, t) ->
-              let c' = Color.acc 0. and f' = Color.acc 1. in
-              layers s d level media fr refl c' f' t;
-              Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
-              Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab)))
-            (Texture.blend m (Vec3.of_m fr.p));
+          let lv = tmap_enter () in
+          let pk = lv.pick and c = lv.c and f = lv.f in
+          Texture.blend_m m fr.p pk;
+          Color.acc_set c 0. 0. 0.;
+          Color.acc_set f 0. 0. 0.;
+          for j = 0 to pk.n - 1 do
+            let c' = lv.c1 and f' = lv.f1 in
+            Color.acc_set c' 0. 0. 0.;
+            Color.acc_set f' 1. 1. 1.;
+            layers s d level media fr refl c' f' (if j = 0 then pk.t0 else pk.t1);
+            let k = if j = 0 then pk.w.k0 else pk.w.k1 in
+            Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
+            Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab))
+          done;
           Color.acc_set acc (acc.ar +. (w.ar *. c.ar)) (acc.ag +. (w.ag *. c.ag)) (acc.ab +. (w.ab *. c.ab));
           Color.acc_set w (w.ar *. f.ar) (w.ag *. f.ag) (w.ab *. f.ab);
+          tmap_leave ();
           if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest
       | None ->
           let p = fr.p and n0 = fr.n0 in

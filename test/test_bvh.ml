@@ -122,7 +122,8 @@ let any_hit_props =
             let sr = Ray.of_ray r in
             sr.far <- 30.;
             let any =
-              Scene.occluders_s s sr 1e-9 is_mesh (fun o t ->
+              Scene.occluders_s s sr 1e-9 is_mesh (fun o (h : Hit.t) ->
+                  let t = h.t in
                   incr calls;
                   if is_mesh o then QCheck.Test.fail_report "called on an opaque mesh";
                   if not (t > 1e-9 && t < 30.) then QCheck.Test.fail_reportf "crossing at t=%g" t;
@@ -246,7 +247,7 @@ let units =
   ]
 
 let opaque_all (_ : Object.t) = true
-let no_light (_ : Object.t) (_ : float) = false
+let no_light (_ : Object.t) (_ : Hit.t) = false
 
 (* The traversal and intersection kernel allocates nothing: every leaf
    kind, transforms, a union with its own BVH, a mesh, CSG and a clip

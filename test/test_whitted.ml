@@ -316,9 +316,12 @@ let allocation () =
 
 (* The same with textures as POV-Ray scenes write them: pattern pigments
    through colour maps, pigment maps and blocks (with turbulence and
-   waves), normal perturbation, a metallic finish and a sky_sphere, for
-   camera rays that end on the sky and rays that start inside an object
-   (the camera in a big sphere). *)
+   waves), normal perturbation, a metallic finish, a texture map, shadows
+   through patterned transparent spheres (other shapes box the distance of
+   each crossing after the first, see [Object.crossings_s]) and a
+   sky_sphere, for camera
+   rays that end on the sky and rays that start inside an object (the
+   camera in a big sphere). *)
 let allocation_textures () =
   let s =
     Scn.compile
@@ -335,7 +338,10 @@ let allocation_textures () =
        box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { brick rgb 0.8, rgb <0.6, 0.2, 0.1> scale 0.05 }\n\
          normal { dents 0.5 scale 0.1 } }\n\
        sphere { <2, 0.4, -1.5>, 0.4 pigment { marble sine_wave frequency 3 turbulence 0.3\n\
-         color_map { [0 rgb 1] [0.5 rgb <0.3, 0.5, 0.2>] [1 rgb 0] } } normal { wrinkles 0.6 } }"
+         color_map { [0 rgb 1] [0.5 rgb <0.3, 0.5, 0.2>] [1 rgb 0] } } normal { wrinkles 0.6 } }\n\
+       sphere { <-2.2, 0.6, -1>, 0.6 texture { gradient x texture_map {\n\
+         [0 pigment { rgbf <1, 0.2, 0.2, 0.7> }] [1 pigment { rgb <0.2, 0.2, 1> } finish { phong 1 }] } scale 0.4 } }\n\
+       sphere { <1, 0.5, -2.8>, 0.5 pigment { checker rgbf <1, 1, 1, 0.8>, rgbt <0.5, 1, 0.5, 0.6> scale 0.3 } }"
   in
   let width = 64 and height = 48 in
   let pixel = Whitted.pixel_into s ~width ~height in
@@ -343,7 +349,7 @@ let allocation_textures () =
   let before = Gc.minor_words () in
   ignore (Render.image_into ~domains:1 ~width ~height pixel);
   let words = (Gc.minor_words () -. before) /. Float.of_int (width * height) in
-  if words > 0.1 then Alcotest.failf "%.2f words per camera ray with patterns, normals and a sky (at most 0.1)" words
+  if words > 0.1 then Alcotest.failf "%.2f words per camera ray with patterns, normals, texture maps and a sky (at most 0.1)" words
 
 let tests =
   ( "whitted",
