@@ -10,6 +10,11 @@ type t = {
 val default : t
 (** ior 1, no fade. *)
 
+val fade_channel : t -> float -> float -> float
+(** [fade_channel i c d]: {!fade}'s channel of fade colour [c] (1 when
+    [fade_distance] is 0), inlined where it is used (the distance is not
+    boxed). *)
+
 val fade : t -> float -> Color.t
 (** Attenuation after travelling a distance inside (pov-facts.md 5.6);
     white when [fade_distance] is 0. [fade_power 0] gives a constant

@@ -226,8 +226,12 @@ let li_into t sampler ~max_depth (st : state) =
       (* a ray leaving a solid travelled inside it: interior fade (white,
          which changes nothing, without a fade distance) *)
       if (not entering) && obj.interior.fade_distance <> 0. then begin
-        let c = Interior.fade obj.interior th in
-        Color.acc_set thr (thr.ar *. c.r) (thr.ag *. c.g) (thr.ab *. c.b)
+        let i = obj.interior in
+        let c = i.fade_color in
+        Color.acc_set thr
+          (thr.ar *. Interior.fade_channel i c.r th)
+          (thr.ag *. Interior.fade_channel i c.g th)
+          (thr.ab *. Interior.fade_channel i c.b th)
       end;
       let m = st.mat in
       Material.into m obj.texture obj.interior p n wo ~entering;

@@ -65,7 +65,13 @@ type length = { mutable len : float }
 
 type shadow_walk = {
   acc : Color.acc;  (** the light let through so far *)
-  mutable faders : (Object.t * float) list;
+  (* the crossings of fading objects, in the order met: the objects and
+     their distances *)
+  mutable fobjs : Object.t array;
+  mutable fts : Float.Array.t;
+  mutable nf : int;
+  mutable sorted : Float.Array.t;  (** one object's distances, sorted *)
+  inside_f : Object.found;  (** a point tested for being inside *)
   ray : Ray.scratch;
   l : Light.dir;
   seg : length;  (** how far the shadow ray goes *)
@@ -83,10 +89,27 @@ type shadow_walk = {
 
 let shadow_key =
   Scratch.key (fun () ->
-      { acc = Color.acc 1.; faders = []; ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
+      { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0; sorted = Float.Array.create 0;
+        inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0. })
+
+(* a crossing of a fading object, kept in growing arrays *)
+let add_fader w (o : Object.t) (h : Hit.t) =
+  let k = w.nf in
+  if k = Array.length w.fobjs then begin
+    let n = max 4 (2 * k) in
+    let objs = Array.make n o and ts = Float.Array.create n in
+    Array.blit w.fobjs 0 objs 0 k;
+    Float.Array.blit w.fts 0 ts 0 k;
+    w.fobjs <- objs;
+    w.fts <- ts;
+    w.sorted <- Float.Array.create n
+  end;
+  w.fobjs.(k) <- o;
+  Float.Array.set w.fts k h.t;
+  w.nf <- k + 1
 
 let shadow_hit (o : Object.t) (h : Hit.t) =
   let t = h.t in
@@ -101,7 +124,7 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
     Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
     filter_into o.texture q f 0;
     Color.acc_set a (a.ar *. f.ar) (a.ag *. f.ag) (a.ab *. f.ab);
-    if has_fade o.interior then w.faders <- (o, h.t) :: w.faders;
+    if has_fade o.interior then add_fader w o h;
     not (Color.acc_is_black a)
   end
 
@@ -114,43 +137,60 @@ let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
    when something opaque blocks. Left in [w.acc]: stored in the walk's
    own fields, nothing is allocated or written through [caml_modify]
    unless a crossing lets light through. *)
+(* Each object crossed, taken last crossed first: the segments between
+   its crossings (and the ray's ends) whose middle is inside it fade what
+   passes. Distances of one object sorted in place. *)
+let fade_segments (w : shadow_walk) dist =
+  let r = w.ray and f = w.inside_f in
+  let n = w.nf in
+  for k = n - 1 downto 0 do
+    let o = w.fobjs.(k) in
+    (* an object met again later was taken there *)
+    let later = ref false in
+    for j = k + 1 to n - 1 do
+      if w.fobjs.(j) == o then later := true
+    done;
+    if not !later then begin
+      let ts = w.sorted and m = ref 0 in
+      for j = n - 1 downto 0 do
+        if w.fobjs.(j) == o then begin
+          (* insertion, ascending *)
+          let t = Float.Array.get w.fts j in
+          let i = ref !m in
+          while !i > 0 && Float.Array.get ts (!i - 1) > t do
+            Float.Array.set ts !i (Float.Array.get ts (!i - 1));
+            decr i
+          done;
+          Float.Array.set ts !i t;
+          incr m
+        end
+      done;
+      let inner = o.interior and fc = o.interior.fade_color and a = w.acc in
+      for j = 0 to !m do
+        let lo = if j = 0 then 0. else Float.Array.get ts (j - 1) in
+        let hi = if j = !m then dist else Float.Array.get ts j in
+        if hi > lo then begin
+          let mid = 0.5 *. (lo +. hi) in
+          let p = f.pt in
+          p.ox <- r.ox +. (mid *. r.dx);
+          p.oy <- r.oy +. (mid *. r.dy);
+          p.oz <- r.oz +. (mid *. r.dz);
+          if Object.inside_s o f then begin
+            let d = hi -. lo in
+            Color.acc_set a (a.ar *. Interior.fade_channel inner fc.r d) (a.ag *. Interior.fade_channel inner fc.g d) (a.ab *. Interior.fade_channel inner fc.b d)
+          end
+        end
+      done
+    end
+  done
+
 let shadow_into (s : Scene.t) (w : shadow_walk) =
   let dist = w.seg.len in
   Color.acc_set w.acc 1. 1. 1.;
-  if w.faders != [] then w.faders <- [];
+  w.nf <- 0;
   w.ray.far <- dist;
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
-  let faders = w.faders in
-  match faders with
-  | [] -> if not visible then Color.acc_set w.acc 0. 0. 0.
-  | _ :: _ when not visible ->
-      w.faders <- [];
-      Color.acc_set w.acc 0. 0. 0.
-  | _ :: _ ->
-      w.faders <- [];
-      let acc = ref (Color.of_acc w.acc) in
-      let r = w.ray in
-      let ray = Ray.make (Vec3.make r.ox r.oy r.oz) (Vec3.make r.dx r.dy r.dz) in
-      (* group crossings by object; inside segments between them get faded *)
-      let seen = ref [] in
-      List.iter
-        (fun ((o : Object.t), _) ->
-          if not (List.memq o !seen) then begin
-            seen := o :: !seen;
-            let ts = List.filter_map (fun (o', t) -> if o' == o then Some t else None) faders in
-            let ts = List.sort Float.compare ts in
-            let bounds = (0. :: ts) @ [ dist ] in
-            let rec segs = function
-              | a :: (b :: _ as rest) ->
-                  if b > a && Object.inside o (Ray.at ray (0.5 *. (a +. b))) then
-                    acc := mul !acc (Interior.fade o.interior (b -. a));
-                  segs rest
-              | _ -> ()
-            in
-            segs bounds
-          end)
-        faders;
-      Color.acc_set w.acc !acc.r !acc.g !acc.b
+  if not visible then Color.acc_set w.acc 0. 0. 0. else if w.nf > 0 then fade_segments w dist
 
 (* Sample (i, j) of the area light in [w]: the shadow colour from its
    point, seen from [w.lp] *)
@@ -342,12 +382,13 @@ type frame = {
   rc : Color.acc;
   k : nums;
   pig : Pigment.out;  (** the pigment of the layer being shaded *)
+  fade : Color.acc;  (** the fade of the medium the ray came through *)
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
-    k = nums (); pig = Pigment.out () }
+    k = nums (); pig = Pigment.out (); fade = Color.acc 1. }
 
 type frames = { mutable depth : int; mutable stack : frame array }
 
@@ -456,11 +497,11 @@ let sky_key = Scratch.key Vec3.m
 
 (* a surface's own light [c] and, through it ([tr], faded), the light [rc]
    from beyond *)
-let[@inline] through (out : Color.acc) (c : Color.acc) (tr : Color.acc) (fade : Color.t) (rc : Color.acc) =
+let[@inline] through (out : Color.acc) (c : Color.acc) (tr : Color.acc) (fade : Color.acc) (rc : Color.acc) =
   Color.acc_set out
-    (c.ar +. ((tr.ar *. fade.r) *. rc.ar))
-    (c.ag +. ((tr.ag *. fade.g) *. rc.ag))
-    (c.ab +. ((tr.ab *. fade.b) *. rc.ab))
+    (c.ar +. ((tr.ar *. fade.ar) *. rc.ar))
+    (c.ag +. ((tr.ag *. fade.ag) *. rc.ag))
+    (c.ab +. ((tr.ab *. fade.ab) *. rc.ab))
 
 (* The ray from [o] along [d], hits beyond [tmin], its radiance into
    [out]; its ADC weight is [from.child]; [media]: the interiors the ray
@@ -488,11 +529,12 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       Scene.hit_normal_into s f h p fr.n0;
       (* POV-Ray fades what comes through the far side of a medium, not
          the far surface's own shading *)
-      let fade =
-        match media with
-        | (i : Interior.t) :: _ when i.fade_distance <> 0. -> Interior.fade i h.t
-        | _ -> white (* as [Interior.fade] without fading, and without boxing [t] for the call *)
-      in
+      let fade = fr.fade in
+      (match media with
+      | (i : Interior.t) :: _ when i.fade_distance <> 0. ->
+          let c = i.fade_color in
+          Color.acc_set fade (Interior.fade_channel i c.r t) (Interior.fade_channel i c.g t) (Interior.fade_channel i c.b t)
+      | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
       leave ()
@@ -500,7 +542,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
 
 (* [fr.n0] holds the surface's normal, turned to face the ray here;
    [fr.k.weight] the ray's weight *)
-and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out : Color.acc) =
+and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out : Color.acc) =
   let weight = fr.k.weight in
   let n0 = fr.n0 in
   let entering = dot n0 d < 0. in
@@ -541,7 +583,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.t) (out :
         Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
         fr.k.child <- weight;
         trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k media rc;
-        Color.acc_set out (c.ar +. (fade.r *. rc.ar)) (c.ag +. (fade.g *. rc.ag)) (c.ab +. (fade.b *. rc.ab))
+        Color.acc_set out (c.ar +. (fade.ar *. rc.ar)) (c.ag +. (fade.ag *. rc.ag)) (c.ab +. (fade.ab *. rc.ab))
       end
       else begin
         let m = (eta *. cos_i) -. Float.sqrt k in

@@ -318,8 +318,8 @@ let allocation () =
    through colour maps, pigment maps and blocks (with turbulence and
    waves), normal perturbation, a metallic finish, a texture map, shadows
    through patterned transparent spheres (other shapes box the distance of
-   each crossing after the first, see [Object.crossings_s]) and a
-   sky_sphere, for camera
+   each crossing after the first, see [Object.crossings_s]), a fading
+   interior seen through and casting shadows, and a sky_sphere, for camera
    rays that end on the sky and rays that start inside an object (the
    camera in a big sphere). *)
 let allocation_textures () =
@@ -341,7 +341,9 @@ let allocation_textures () =
          color_map { [0 rgb 1] [0.5 rgb <0.3, 0.5, 0.2>] [1 rgb 0] } } normal { wrinkles 0.6 } }\n\
        sphere { <-2.2, 0.6, -1>, 0.6 texture { gradient x texture_map {\n\
          [0 pigment { rgbf <1, 0.2, 0.2, 0.7> }] [1 pigment { rgb <0.2, 0.2, 1> } finish { phong 1 }] } scale 0.4 } }\n\
-       sphere { <1, 0.5, -2.8>, 0.5 pigment { checker rgbf <1, 1, 1, 0.8>, rgbt <0.5, 1, 0.5, 0.6> scale 0.3 } }"
+       sphere { <1, 0.5, -2.8>, 0.5 pigment { checker rgbf <1, 1, 1, 0.8>, rgbt <0.5, 1, 0.5, 0.6> scale 0.3 } }\n\
+       sphere { <-0.3, 0.45, -3.2>, 0.45 pigment { rgbf <0.9, 0.9, 1, 0.9> }\n\
+         interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }"
   in
   let width = 64 and height = 48 in
   let pixel = Whitted.pixel_into s ~width ~height in
