@@ -12,9 +12,3 @@ let[@inline] fade_channel i c d =
   if i.fade_distance = 0. then 1.
   else if i.fade_power >= 1000. then Float.exp (-.(1. -. c) *. d /. i.fade_distance)
   else c +. ((1. -. c) /. (1. +. Float.pow (d /. i.fade_distance) i.fade_power))
-
-let fade i d =
-  if i.fade_distance = 0. then Color.white
-  else
-    let c = i.fade_color in
-    Color.make (fade_channel i c.r d) (fade_channel i c.g d) (fade_channel i c.b d)

@@ -11,12 +11,9 @@ val default : t
 (** ior 1, no fade. *)
 
 val fade_channel : t -> float -> float -> float
-(** [fade_channel i c d]: {!fade}'s channel of fade colour [c] (1 when
-    [fade_distance] is 0), inlined where it is used (the distance is not
-    boxed). *)
-
-val fade : t -> float -> Color.t
-(** Attenuation after travelling a distance inside (pov-facts.md 5.6);
-    white when [fade_distance] is 0. [fade_power 0] gives a constant
-    [fade_color + (1 - fade_color)/2] (povray 3.7 does so for what is seen
-    through; its shadow rays do not fade then, see {!Whitted}). *)
+(** [fade_channel i c d]: the attenuation of a channel whose fade colour
+    is [c] after travelling [d] inside (pov-facts.md 5.6); 1 when
+    [fade_distance] is 0. [fade_power 0] gives a constant [c + (1 - c)/2]
+    (povray 3.7 does so for what is seen through; its shadow rays do not
+    fade then, see {!Whitted}). Inlined where it is used (the distance is
+    not boxed). *)

@@ -50,13 +50,9 @@ let[@inline] snoise3 x y z =
 
 let snoise (p : Vec3.t) = snoise3 p.x p.y p.z
 let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
-let noise (p : Vec3.t) = noise3 p.x p.y p.z
 
 let off1 = Vec3.make 31.416 17.21 (-9.73)
 let off2 = Vec3.make (-23.1) 41.7 13.3
-
-let dnoise p =
-  Vec3.make (snoise p) (snoise (Vec3.add p off1)) (snoise (Vec3.add p off2))
 
 let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
   let ax = ref 0. and ay = ref 0. and az = ref 0. and amp = ref 1. and freq = ref 1. in
@@ -72,13 +68,6 @@ let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
   done;
   Vec3.set out !ax !ay !az
 
-let turbulence ~octaves ~omega ~lambda p =
-  let out = Vec3.m () in
-  let pm = Vec3.m () in
-  Vec3.load pm p;
-  turbulence_m ~octaves ~omega ~lambda pm out;
-  Vec3.of_m out
-
 let[@inline] fractal3 octaves x y z =
   let acc = ref 0. and f = ref 1. in
   for _ = 1 to Int.max 1 octaves do
@@ -87,5 +76,3 @@ let[@inline] fractal3 octaves x y z =
     f := k *. 2.
   done;
   !acc
-
-let fractal ~octaves (p : Vec3.t) = fractal3 octaves p.x p.y p.z

@@ -3,33 +3,25 @@
     permutation table made by a fixed shuffle. It is NOT POV-Ray's noise
     (whose tables are not reproduced), so noise-based patterns (bozo,
     granite, marble with turbulence, ...) look alike but differ pixel by
-    pixel from POV-Ray's. Deterministic and thread-safe. *)
-
-val noise : Vec3.t -> float
-(** Scalar noise in [[0, 1]], 0.5 at lattice points. *)
+    pixel from POV-Ray's. Deterministic and thread-safe. The functions
+    taking coordinates are inlined where they are called: a call would box
+    their floats. *)
 
 val snoise : Vec3.t -> float
 (** Signed noise, about [[-1, 1]], 0 at lattice points. *)
 
 val snoise3 : float -> float -> float -> float
-(** {!snoise} at [(x, y, z)]; inlined where it is called (a call would box
-    its floats), as are {!noise3} and {!fractal3}. *)
+(** {!snoise} at [(x, y, z)]. *)
 
 val noise3 : float -> float -> float -> float
-
-val dnoise : Vec3.t -> Vec3.t
-(** Vector noise: three decorrelated signed noises. *)
-
-val turbulence : octaves:int -> omega:float -> lambda:float -> Vec3.t -> Vec3.t
-(** [sum_{i < octaves} omega^i dnoise(lambda^i p)]: the displacement
-    POV-Ray's [turbulence] warp scales per axis. *)
+(** Scalar noise in [[0, 1]], 0.5 at lattice points. *)
 
 val turbulence_m : octaves:int -> omega:float -> lambda:float -> Vec3.m -> Vec3.m -> unit
-(** [turbulence_m ~octaves ~omega ~lambda p out]: {!turbulence} in place
-    (the same arithmetic). *)
+(** [turbulence_m ~octaves ~omega ~lambda p out]: [sum_{i < octaves}
+    omega^i dnoise(lambda^i p)] into [out], where [dnoise] is three
+    decorrelated signed noises: the displacement POV-Ray's [turbulence]
+    warp scales per axis. *)
 
 val fractal3 : int -> float -> float -> float -> float
-
-val fractal : octaves:int -> Vec3.t -> float
-(** [sum_i |snoise(2^i p)| / 2^i], in about [[0, 2]]: the scalar 1/f
-    noise used by granite, wrinkles, agate. *)
+(** [fractal3 octaves x y z]: [sum_i |snoise(2^i p)| / 2^i], in about
+    [[0, 2]]: the scalar 1/f noise used by granite, wrinkles, agate. *)

@@ -62,10 +62,3 @@ let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   Transform.normal_m nm.xform out;
   if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
   else Vec3.normalize_m out
-
-let perturb nm point n =
-  let p = Vec3.m () and nn = Vec3.m () and out = Vec3.m () in
-  Vec3.load p point;
-  Vec3.load nn n;
-  perturb_m nm p nn out;
-  Vec3.of_m out

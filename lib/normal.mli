@@ -11,9 +11,6 @@ type t = { pattern : Pattern.t; amount : float; xform : Transform.t }
 val make : Pattern.kind -> float -> t
 val transform : Transform.t -> t -> t
 
-val perturb : t -> Vec3.t -> Vec3.t -> Vec3.t
-(** [perturb nm point n]: the perturbed unit normal at a world point. *)
-
 val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
-(** [perturb_m nm point n out]: {!perturb} in place (the same
-    arithmetic), into [out] (not [n]), allocating nothing. *)
+(** [perturb_m nm point n out]: the perturbed unit normal at a world
+    point, into [out] (not [n]), allocating nothing. *)

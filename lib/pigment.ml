@@ -46,14 +46,6 @@ let rec transform t p =
       Blocks { b with xform = Transform.then_ b.xform t; cells = Array.map (transform t) b.cells }
   | Image_map i -> Image_map { i with xform = Transform.then_ i.xform t }
 
-let lerp (a : Color.rgbft) (b : Color.rgbft) k =
-  let l x y = x +. (k *. (y -. x)) in
-  {
-    Color.c = Color.make (l a.c.r b.c.r) (l a.c.g b.c.g) (l a.c.b b.c.b);
-    filter = l a.filter b.filter;
-    transmit = l a.transmit b.transmit;
-  }
-
 let clear = Color.rgbft 0. 0. 0. 0. 1.
 
 type out = {

@@ -58,5 +58,4 @@ val into : t -> Vec3.m -> out -> unit
     same arithmetic), allocating nothing (per domain, the work of nested
     maps is kept). *)
 
-val lerp : Color.rgbft -> Color.rgbft -> float -> Color.rgbft
-(** Interpolate all five channels. *)
+

@@ -34,9 +34,3 @@ let eval_into s ~(background : Color.t) (dir : Vec3.m) (out : Color.acc) =
         if !wr = 0. && !wg = 0. && !wb = 0. then go := false else rest := tl
   done;
   Color.acc_set out !ar !ag !ab
-
-let eval s ~background dir =
-  let d = Vec3.m () and out = Color.acc 0. in
-  Vec3.load d dir;
-  eval_into s ~background d out;
-  Color.of_acc out

@@ -12,9 +12,6 @@ val transform : Transform.t -> t -> t
 (** As POV-Ray: the pigments are evaluated at the direction moved like a
     point (so a translation shifts the sky). *)
 
-val eval : t -> background:Color.t -> Vec3.t -> Color.t
-(** Colour seen along a unit direction. *)
-
 val eval_into : t -> background:Color.t -> Vec3.m -> Color.acc -> unit
-(** {!eval} for a direction written in place, into a sum (the same
-    arithmetic), allocating nothing. *)
+(** [eval_into s ~background dir out]: the colour seen along a unit
+    direction, into [out], allocating nothing. *)

@@ -62,12 +62,6 @@ let blend_m m (point : Vec3.m) pk =
         end
     end
 
-let blend m point =
-  let pk = pick () and p = Vec3.m () in
-  Vec3.load p point;
-  blend_m m p pk;
-  if pk.n = 1 then [ (pk.w.k0, pk.t0) ] else [ (pk.w.k0, pk.t0); (pk.w.k1, pk.t1) ]
-
 (* A layer that lets no light through makes the whole texture block it. *)
 let blocks_light (t : t) =
   List.exists (fun l -> match l.tmap with None -> Pigment.opaque l.pigment | Some _ -> false) t

@@ -31,10 +31,6 @@ val patterned : Pattern.t -> (float * t) array -> layer
 (** A texture_map layer (entries sorted by value), or a block pattern's
     textures (entry [i] for cell [i]). *)
 
-val blend : tmap -> Vec3.t -> (float * t) list
-(** The textures to shade at a world point with their weights (summing
-    to 1): one, or the two around the pattern's value. *)
-
 type weights = { mutable k0 : float; mutable k1 : float }
 
 type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
@@ -44,8 +40,9 @@ type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
 val pick : unit -> pick
 
 val blend_m : tmap -> Vec3.m -> pick -> unit
-(** {!blend} at a point written in place, into a pick (the same values),
-    allocating nothing. *)
+(** [blend_m m point pk]: the textures to shade at a world point with
+    their weights (summing to 1), one or the two around the pattern's
+    value, into [pk], allocating nothing. *)
 
 val blocks_light : t -> bool
 (** Some unpatterned layer is opaque everywhere: no light passes. *)
