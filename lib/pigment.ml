@@ -117,14 +117,9 @@ and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && 
 
 (* Per domain: the point in a pattern's space, the pattern's work, and
    per nesting depth a colour for the second of two entries blended. *)
-type work = { q : Vec3.m; pw : Pattern.work; mutable tmp : out array }
+type work = { q : Vec3.m; pw : Pattern.work; tmp : out Scratch.levels }
 
-let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Array.init 4 (fun _ -> out ()) })
-
-let tmp w d =
-  if d >= Array.length w.tmp then
-    w.tmp <- Array.init (2 * (d + 1)) (fun i -> if i < Array.length w.tmp then w.tmp.(i) else out ());
-  Array.unsafe_get w.tmp d
+let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out })
 
 (* the pattern's value at [point] moved into its space *)
 let[@inline] pattern_at w pattern xform (point : Vec3.m) =
@@ -154,12 +149,16 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
             if vi -. vp <= 0. then into_d w pi point o d
             else begin
               let k = (v -. vp) /. (vi -. vp) in
-              let t = tmp w d in
+              let t = Scratch.level w.tmp d in
               into_d w pp point o (d + 1);
               into_d w pi point t (d + 1);
               lerp_into o t k
             end
         end
+  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
+    when Transform.is_identity xform && Array.length cells > 0 ->
+      (* the commonest pattern, read without the pattern's work *)
+      into_d w cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point)) point o d
   | Blocks { pattern; cells; xform } ->
       let i = int_of_float (pattern_at w pattern xform point) in
       let n = Array.length cells in
@@ -168,9 +167,16 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       Transform.inv_point_m xform point w.q;
       image_into image w.q o
 
+(* a solid colour, or a plain checker of solid colours, without the
+   domain's work *)
 let into p point o =
   match p with
   | Solid c -> set o c
+  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
+    when Transform.is_identity xform && Array.length cells > 0 -> (
+      match cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point)) with
+      | Solid c -> set o c
+      | q -> into_d (Scratch.get work_key) q point o 0)
   | _ -> into_d (Scratch.get work_key) p point o 0
 
 let eval p point =

@@ -64,3 +64,24 @@ let set_apart () =
   List.iter (fun make -> make ()) !makers;
   Gc.minor ();
   pad ()
+
+(* Records by nesting depth (a domain's frames of nested rays, of nested
+   maps), made as deeper ones are first asked for *)
+type 'a levels = { make_level : unit -> 'a; mutable items : 'a array; mutable depth : int }
+
+let levels ?(initial = 4) make_level = { make_level; items = Array.init initial (fun _ -> make_level ()); depth = 0 }
+
+let level l d =
+  if d >= Array.length l.items then begin
+    let old = l.items in
+    l.items <- Array.init (2 * (d + 1)) (fun i -> if i < Array.length old then old.(i) else l.make_level ())
+  end;
+  Array.unsafe_get l.items d
+
+let push l =
+  let x = level l l.depth in
+  l.depth <- l.depth + 1;
+  x
+
+let pop l = l.depth <- l.depth - 1
+let reset l = l.depth <- 0

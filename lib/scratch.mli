@@ -15,3 +15,22 @@ val get : 'a key -> 'a
 val set_apart : unit -> unit
 (** Make the calling domain's scratch now, padded on both sides: call it
     from the main domain before the scene is built. *)
+
+(** Records by nesting depth, kept per domain (in a key's value): a ray's
+    frame and the frames of the rays it traces, nested maps' colours. *)
+type 'a levels
+
+val levels : ?initial:int -> (unit -> 'a) -> 'a levels
+(** [initial] (default 4) made at once, the others when first asked for. *)
+
+val level : 'a levels -> int -> 'a
+(** The record at a depth (0 the outermost). *)
+
+val push : 'a levels -> 'a
+(** The record at the current depth, which then goes one deeper. *)
+
+val pop : 'a levels -> unit
+(** Back one level ([push] and [pop] pair up). *)
+
+val reset : 'a levels -> unit
+(** Back to depth 0. *)

@@ -8,21 +8,12 @@ let light_min_cos = 1e-10
    sum, the one being summed, a pigment. *)
 type filter_level = { fpick : Texture.pick; fsum : Color.acc; fsub : Color.acc; fpig : Pigment.out }
 
-type filter_levels = { mutable flevels : filter_level array }
-
 let filter_key =
   Scratch.key (fun () ->
-      { flevels = Array.init 2 (fun _ ->
-            { fpick = Texture.pick (); fsum = Color.acc 0.; fsub = Color.acc 0.; fpig = Pigment.out () }) })
+      Scratch.levels ~initial:2 (fun () ->
+          { fpick = Texture.pick (); fsum = Color.acc 0.; fsub = Color.acc 0.; fpig = Pigment.out () }))
 
-let filter_level d =
-  let fl = Scratch.get filter_key in
-  if d >= Array.length fl.flevels then
-    fl.flevels <-
-      Array.init (2 * (d + 1)) (fun i ->
-          if i < Array.length fl.flevels then fl.flevels.(i)
-          else { fpick = Texture.pick (); fsum = Color.acc 0.; fsub = Color.acc 0.; fpig = Pigment.out () });
-  Array.unsafe_get fl.flevels d
+let filter_level d = Scratch.level (Scratch.get filter_key) d
 
 let rec filter_into (tex : Texture.t) (q : Vec3.m) (out : Color.acc) d =
   Color.acc_set out 1. 1. 1.;
@@ -390,49 +381,29 @@ let new_frame () =
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); pig = Pigment.out (); fade = Color.acc 1. }
 
-type frames = { mutable depth : int; mutable stack : frame array }
-
-let frames_key = Scratch.key (fun () -> { depth = 0; stack = Array.init 8 (fun _ -> new_frame ()) })
+let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
 let enter () =
-  let fs = Scratch.get frames_key in
-  let k = fs.depth in
-  if k = Array.length fs.stack then
-    fs.stack <- Array.init (2 * k) (fun i -> if i < k then fs.stack.(i) else new_frame ());
-  fs.depth <- k + 1;
-  let f = Array.unsafe_get fs.stack k in
+  let f = Scratch.push (Scratch.get frames_key) in
   Color.acc_set f.c 0. 0. 0.;
   Color.acc_set f.tr 1. 1. 1.;
   f.top_set <- false;
   f
 
-let leave () =
-  let fs = Scratch.get frames_key in
-  fs.depth <- fs.depth - 1
+let leave () = Scratch.pop (Scratch.get frames_key)
 
 (* The same for texture maps being blended (nested in one another, or in
    what the rays of their textures' reflections meet): the textures
    picked, their sum, and the one being shaded. *)
 type tmap_level = { pick : Texture.pick; c : Color.acc; f : Color.acc; c1 : Color.acc; f1 : Color.acc }
 
-type tmap_levels = { mutable level : int; mutable levels : tmap_level array }
+let tmaps_key =
+  Scratch.key (fun () ->
+      Scratch.levels (fun () ->
+          { pick = Texture.pick (); c = Color.acc 0.; f = Color.acc 0.; c1 = Color.acc 0.; f1 = Color.acc 1. }))
 
-let new_tmap_level () =
-  { pick = Texture.pick (); c = Color.acc 0.; f = Color.acc 0.; c1 = Color.acc 0.; f1 = Color.acc 1. }
-
-let tmaps_key = Scratch.key (fun () -> { level = 0; levels = Array.init 4 (fun _ -> new_tmap_level ()) })
-
-let tmap_enter () =
-  let ts = Scratch.get tmaps_key in
-  let k = ts.level in
-  if k = Array.length ts.levels then
-    ts.levels <- Array.init (2 * k) (fun i -> if i < k then ts.levels.(i) else new_tmap_level ());
-  ts.level <- k + 1;
-  Array.unsafe_get ts.levels k
-
-let tmap_leave () =
-  let ts = Scratch.get tmaps_key in
-  ts.level <- ts.level - 1
+let tmap_enter () = Scratch.push (Scratch.get tmaps_key)
+let tmap_leave () = Scratch.pop (Scratch.get tmaps_key)
 
 (* Relative index of refraction across a surface of [inner] for a ray
    inside [media]: entering or leaving is decided as POV-Ray does, by
@@ -747,7 +718,7 @@ let camera_key = Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = 
 
 (* the radiance along [r] into [out] *)
 let trace_camera_ray s (r : camera_ray) out =
-  (Scratch.get frames_key).depth <- 0;
+  Scratch.reset (Scratch.get frames_key);
   trace_ray s 0. r.o r.d 1 r.k (start_media s r.o) out
 
 let trace s (ray : Ray.t) =
