@@ -302,23 +302,35 @@ let paeth a b c =
   let pa = abs (p - a) and pb = abs (p - b) and pc = abs (p - c) in
   if pa <= pb && pa <= pc then a else if pb <= pc then b else c
 
+(* |v| of a residual as a signed byte (v mod 256 in [-128, 127]), without
+   a branch: the cost of a filtered byte *)
+let[@inline] cost v =
+  let v = v land 0xFF in
+  if v < 128 then v else 256 - v
+
 (* Filters one scanline into [out] at [y * (stride + 1)]: the filter (None,
    Sub, Up, Average, Paeth) with the smallest sum of absolute signed
-   residuals (the first such, in that order), the usual libpng heuristic. *)
+   residuals (the first such, in that order), the usual libpng heuristic.
+   The row above the first is zeros; the bytes left of the first pixel
+   too (the first pixel's loop apart, so that the others test nothing). *)
 let filter_row (im : rgb8) out y =
   let stride = im.w * 3 in
   let d = im.data in
-  let row = y * stride and prev = (y - 1) * stride in
-  let[@inline] cur i = Char.code (Bytes.unsafe_get d (row + i)) in
-  let[@inline] up i = if y = 0 then 0 else Char.code (Bytes.unsafe_get d (prev + i)) in
-  let[@inline] cost v =
-    let v = v land 0xFF in
-    if v < 128 then v else 256 - v
-  in
+  let row = y * stride in
+  let above, prev = if y = 0 then (Bytes.make stride '\000', 0) else (d, (y - 1) * stride) in
+  let first = min 3 stride in
   let c0 = ref 0 and c1 = ref 0 and c2 = ref 0 and c3 = ref 0 and c4 = ref 0 in
-  for i = 0 to stride - 1 do
-    let x = cur i and b = up i in
-    let a = if i >= 3 then cur (i - 3) else 0 and c = if i >= 3 then up (i - 3) else 0 in
+  for i = 0 to first - 1 do
+    let x = Char.code (Bytes.unsafe_get d (row + i)) and b = Char.code (Bytes.unsafe_get above (prev + i)) in
+    c0 := !c0 + cost x;
+    c1 := !c1 + cost x;
+    c2 := !c2 + cost (x - b);
+    c3 := !c3 + cost (x - (b / 2));
+    c4 := !c4 + cost (x - paeth 0 b 0)
+  done;
+  for i = first to stride - 1 do
+    let x = Char.code (Bytes.unsafe_get d (row + i)) and b = Char.code (Bytes.unsafe_get above (prev + i)) in
+    let a = Char.code (Bytes.unsafe_get d (row + i - 3)) and c = Char.code (Bytes.unsafe_get above (prev + i - 3)) in
     c0 := !c0 + cost x;
     c1 := !c1 + cost (x - a);
     c2 := !c2 + cost (x - b);
@@ -331,13 +343,14 @@ let filter_row (im : rgb8) out y =
   pick 2 !c2;
   pick 3 !c3;
   pick 4 !c4;
-  let ft = !ft and o = y * (stride + 1) in
-  Bytes.unsafe_set out o (Char.unsafe_chr ft);
+  let ft = !ft and o = y * (stride + 1) + 1 in
+  Bytes.unsafe_set out (o - 1) (Char.unsafe_chr ft);
   for i = 0 to stride - 1 do
-    let x = cur i and b = up i in
-    let a = if i >= 3 then cur (i - 3) else 0 and c = if i >= 3 then up (i - 3) else 0 in
+    let x = Char.code (Bytes.unsafe_get d (row + i)) and b = Char.code (Bytes.unsafe_get above (prev + i)) in
+    let a = if i >= 3 then Char.code (Bytes.unsafe_get d (row + i - 3)) else 0
+    and c = if i >= 3 then Char.code (Bytes.unsafe_get above (prev + i - 3)) else 0 in
     let pred = match ft with 0 -> 0 | 1 -> a | 2 -> b | 3 -> (a + b) / 2 | _ -> paeth a b c in
-    Bytes.unsafe_set out (o + 1 + i) (Char.unsafe_chr ((x - pred) land 0xFF))
+    Bytes.unsafe_set out (o + i) (Char.unsafe_chr ((x - pred) land 0xFF))
   done
 
 (* The PNG image data: the filtered scanlines, compressed in bands of
