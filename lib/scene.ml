@@ -304,21 +304,42 @@ let occluders_s s (r : Ray.scratch) tmin opaque g =
 (* Inside tests at one point: the objects that reach beyond their boxes,
    then those whose box holds the point (a walk of the BVH along a ray of
    no length); per domain, nothing allocated unless something holds it *)
-type probe = { at : Ray.scratch; pf : Object.found; mutable hits : Object.t list }
+(* objects held in a growing array *)
+type objects = { mutable items : Object.t array; mutable n : int }
 
-let probe_key = Scratch.key (fun () -> { at = Ray.scratch (); pf = Object.found dummy; hits = [] })
+let objects () = { items = [||]; n = 0 }
 
-let[@inline] probe_test pr o =
-  if Object.inside_s o pr.pf && not (List.memq o pr.hits) then pr.hits <- o :: pr.hits
+let[@inline] mem_objects (l : objects) o =
+  let i = ref 0 in
+  while !i < l.n && Array.unsafe_get l.items !i != o do
+    incr i
+  done;
+  !i < l.n
+
+let add_object (l : objects) o =
+  if l.n = Array.length l.items then begin
+    let a = Array.make (max 4 (2 * l.n)) o in
+    Array.blit l.items 0 a 0 l.n;
+    l.items <- a
+  end;
+  l.items.(l.n) <- o;
+  l.n <- l.n + 1
+
+type probe = { at : Ray.scratch; pf : Object.found; hits : objects }
+
+let probe_key = Scratch.key (fun () -> { at = Ray.scratch (); pf = Object.found dummy; hits = objects () })
+
+let[@inline] probe_test pr o = if Object.inside_s o pr.pf && not (mem_objects pr.hits o) then add_object pr.hits o
 
 let probe_leaf a pr _ _ i =
   probe_test pr (Array.unsafe_get a.finite i);
   true
 
-let containing_m s (p : Vec3.m) =
+let containing_into s (p : Vec3.m) (out : objects) =
   let a = s.accel in
   let pr = Scratch.get probe_key in
-  let r = pr.at in
+  let r = pr.at and hits = pr.hits in
+  hits.n <- 0;
   Ray.set pr.pf.pt p 0. 0. 1.;
   Ray.set r p 1. 0. 0.;
   r.far <- 0.;
@@ -326,14 +347,19 @@ let containing_m s (p : Vec3.m) =
     probe_test pr (Array.unsafe_get a.reach i)
   done;
   ignore (Bvh.iter_s a.bvh r 0. a pr probe_leaf);
-  match pr.hits with
-  | [] -> []
-  | [ _ ] as l ->
-      pr.hits <- [];
-      l
-  | l ->
-      pr.hits <- [];
-      Array.fold_left (fun acc o -> if List.memq o l then o :: acc else acc) [] s.objects
+  out.n <- 0;
+  if hits.n = 1 then add_object out hits.items.(0)
+  else if hits.n > 1 then
+    (* the scene's order, last first *)
+    for i = Array.length s.objects - 1 downto 0 do
+      let o = s.objects.(i) in
+      if mem_objects hits o then add_object out o
+    done
+
+let containing_m s p =
+  let out = objects () in
+  containing_into s p out;
+  List.init out.n (fun i -> out.items.(i))
 
 let containing s (p : Vec3.t) =
   let pm = Vec3.m () in

@@ -72,9 +72,18 @@ val hit_normal_into : t -> Object.found -> Hit.t -> Vec3.m -> Vec3.m -> unit
     allocates nothing for spheres of the flat array and untransformed
     planes, discs, boxes, triangles and meshes. *)
 
+(** Objects in a growing array: the first [n] of [items]. *)
+type objects = { mutable items : Object.t array; mutable n : int }
+
+val objects : unit -> objects
+val add_object : objects -> Object.t -> unit
+
+val containing_into : t -> Vec3.m -> objects -> unit
+(** {!containing} of a point written in place, into [out] (allocating
+    only to grow it). *)
+
 val containing_m : t -> Vec3.m -> Object.t list
-(** {!containing} of a point written in place: nothing allocated when no
-    object holds it. *)
+(** {!containing} of a point written in place. *)
 
 val containing : t -> Vec3.t -> Object.t list
 (** The objects whose inside (POV-Ray's test) holds the point, the last

@@ -692,9 +692,26 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:
    the camera location is the same for every ray of a pinhole camera. *)
-type start = { mutable scene : Scene.t option; at : Vec3.m; mutable media : Interior.t list }
+type start = {
+  mutable scene : Scene.t option;
+  at : Vec3.m;
+  mutable media : Interior.t list;
+  now : Scene.objects;  (** the objects holding [at] *)
+  held : Scene.objects;  (** those [media] was made from *)
+}
 
-let start_key = Scratch.key (fun () -> { scene = None; at = Vec3.m (); media = [] })
+let start_key =
+  Scratch.key (fun () ->
+      { scene = None; at = Vec3.m (); media = []; now = Scene.objects (); held = Scene.objects () })
+
+let same_objects (a : Scene.objects) (b : Scene.objects) =
+  a.n = b.n
+  &&
+  let i = ref 0 in
+  while !i < a.n && a.items.(!i) == b.items.(!i) do
+    incr i
+  done;
+  !i = a.n
 
 (* per domain: a cache shared by domains would be written from both when
    the origin changes at every ray (orthographic camera, focal blur); a
@@ -705,16 +722,36 @@ let start_media (s : Scene.t) (o : Vec3.m) =
   match c.scene with
   | Some s' when s' == s && at.mx = o.mx && at.my = o.my && at.mz = o.mz -> c.media
   | _ ->
-      (match c.scene with Some s' when s' == s -> () | _ -> c.scene <- Some s);
+      let same_scene = match c.scene with Some s' -> s' == s | None -> false in
+      if not same_scene then c.scene <- Some s;
       Vec3.set at o.mx o.my o.mz;
-      let m = match Scene.containing_m s o with [] -> [] | l -> List.map (fun (o : Object.t) -> o.interior) l in
-      if c.media != m then c.media <- m;
-      m
+      Scene.containing_into s o c.now;
+      (* a new origin held by the same objects (lens rays, an
+         orthographic camera): the same list *)
+      if same_scene && same_objects c.now c.held then c.media
+      else begin
+        let now = c.now and held = c.held in
+        let m = List.init now.n (fun i -> (now.items.(i) : Object.t).interior) in
+        held.n <- 0;
+        for i = 0 to now.n - 1 do
+          Scene.add_object held now.items.(i)
+        done;
+        c.media <- m;
+        m
+      end
 
 (* A camera ray, per domain: its origin and direction, and its light. *)
-type camera_ray = { o : Vec3.m; d : Vec3.m; light : Color.acc; k : nums  (** [child] 1 *) }
+type camera_ray = {
+  o : Vec3.m;
+  d : Vec3.m;
+  light : Color.acc;
+  k : nums;  (** [child] 1 *)
+  at : Vec3.m;  (** an image point (x, y) being sampled by a lens *)
+  cam : Vec3.m;  (** its coordinates on the camera (x, y) *)
+}
 
-let camera_key = Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0.; k = nums () })
+let camera_key =
+  Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0.; k = nums (); at = Vec3.m (); cam = Vec3.m () })
 
 (* the radiance along [r] into [out] *)
 let trace_camera_ray s (r : camera_ray) out =
@@ -745,14 +782,16 @@ let[@inline] radical_inverse k =
 (* per domain: the lens points' sampler and the sum of their light *)
 let blur_key = Scratch.key (fun () -> (Sampler.create ~seed:0 ~pixel:0 ~sample:0, Color.acc 0.))
 
-let focal_blur_into (s : Scene.t) sx sy px py out =
+(* for the image point in [r.at] (its camera coordinates in [r.cam]): read
+   from the record, the four coordinates passed would be boxed *)
+let focal_blur_into (s : Scene.t) (r : camera_ray) out =
+  let px = r.at.mx and py = r.at.my and sx = r.cam.mx and sy = r.cam.my in
   let cam = s.camera in
   let n = if cam.blur_samples > 0 then cam.blur_samples else 10 (* camlray's default *) in
   let key = (int_of_float (Float.floor py) * 65599) + int_of_float (Float.floor px) in
   let sampler, sum = Scratch.get blur_key in
   Sampler.reset sampler ~seed:0 ~pixel:key ~sample:0;
   let du = Sampler.get sampler 0 and dv = Sampler.get sampler 1 in
-  let r = Scratch.get camera_key in
   Color.acc_set sum 0. 0. 0.;
   for k = 0 to n - 1 do
     let u = Float.rem (((float_of_int k +. 0.5) /. float_of_int n) +. du) 1. in
@@ -770,9 +809,13 @@ let focal_blur_into (s : Scene.t) sx sy px py out =
 let[@inline] sample_in (s : Scene.t) ~width ~height px py out =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
-  if cam.aperture > 0. then focal_blur_into s sx sy px py out
+  let r = Scratch.get camera_key in
+  if cam.aperture > 0. then begin
+    Vec3.set r.at px py 0.;
+    Vec3.set r.cam sx sy 0.;
+    focal_blur_into s r out
+  end
   else begin
-    let r = Scratch.get camera_key in
     Camera.ray_into cam sx sy r.o r.d;
     trace_camera_ray s r out
   end

@@ -253,7 +253,7 @@ let no_light (_ : Object.t) (_ : Hit.t) = false
    kind, transforms, a union with its own BVH, a mesh, CSG and a clip
    (whose rejected crossings alone may box a float). *)
 let no_alloc =
-  Alcotest.test_case "Scene.nearest, the shadow walk and containing_m allocate nothing" `Quick (fun () ->
+  Alcotest.test_case "Scene.nearest, the shadow walk and containing_into allocate nothing" `Quick (fun () ->
       let s =
         Helpers.compile_string
           {|camera { location <0, 3, -12> look_at <0, 0, 0> }
@@ -300,11 +300,12 @@ union { #for (I, 0, 9) sphere { <I - 5, 2, 3>, 0.3 scale <1, 1.2, 1> } #end pigm
       (* where camera rays start (focal blur moves the origin at every
          ray): points among the objects, outside all of them and in front
          of the disc (whose inside is the half-space behind it) *)
-      let p = Vec3.m () and none = ref true in
+      let p = Vec3.m () and none = ref true and held = Scene.objects () in
       let probe () =
         for i = 0 to 999 do
           Vec3.set p (float (i mod 12) -. 6.) 1.5 (-2.8 -. (float (i mod 7) *. 0.001));
-          if Scene.containing_m s p <> [] then none := false
+          Scene.containing_into s p held;
+          if held.n > 0 then none := false
         done
       in
       probe ();

@@ -323,9 +323,10 @@ let allocation () =
    rays that end on the sky and rays that start inside an object (the
    camera in a big sphere). *)
 let allocation_textures () =
+  let words camera =
   let s =
     Scn.compile
-      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+      (camera ^ "\n\
        light_source { <-4, 6, -5>, rgb 1 }\n\
        sky_sphere { pigment { gradient y color_map { [0 rgb <0.6, 0.7, 1>] [1 rgb <0.1, 0.2, 0.6>] } } }\n\
        sphere { 0, 100 hollow pigment { rgbt 1 } }\n\
@@ -343,15 +344,23 @@ let allocation_textures () =
          [0 pigment { rgbf <1, 0.2, 0.2, 0.7> }] [1 pigment { rgb <0.2, 0.2, 1> } finish { phong 1 }] } scale 0.4 } }\n\
        sphere { <1, 0.5, -2.8>, 0.5 pigment { checker rgbf <1, 1, 1, 0.8>, rgbt <0.5, 1, 0.5, 0.6> scale 0.3 } }\n\
        sphere { <-0.3, 0.45, -3.2>, 0.45 pigment { rgbf <0.9, 0.9, 1, 0.9> }\n\
-         interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }"
+         interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }")
   in
   let width = 64 and height = 48 in
   let pixel = Whitted.pixel_into s ~width ~height in
   ignore (Render.image_into ~domains:1 ~width ~height pixel);
   let before = Gc.minor_words () in
   ignore (Render.image_into ~domains:1 ~width ~height pixel);
-  let words = (Gc.minor_words () -. before) /. Float.of_int (width * height) in
-  if words > 0.1 then Alcotest.failf "%.2f words per camera ray with patterns, normals, texture maps and a sky (at most 0.1)" words
+  (Gc.minor_words () -. before) /. Float.of_int (width * height)
+  in
+  let plain = words "camera { location <0, 2, -6> look_at <0, 0.8, 0> }" in
+  if plain > 0.1 then
+    Alcotest.failf "%.2f words per camera ray with patterns, normals, texture maps and a sky (at most 0.1)" plain;
+  (* and through a lens: 8 rays a pixel *)
+  let blur =
+    words "camera { location <0, 2, -6> look_at <0, 0.8, 0> aperture 0.4 focal_point <0, 1, 0> blur_samples 8 }"
+  in
+  if blur > 0.1 then Alcotest.failf "%.2f words per pixel with focal blur (at most 0.1)" blur
 
 let tests =
   ( "whitted",
