@@ -1,6 +1,6 @@
-type t = { mutable t : float; mutable u : float; mutable v : float; mutable id : float }
+type t = { mutable t : float; mutable u : float; mutable v : float; mutable id : float; mutable floor : float }
 
-let create tmax = { t = tmax; u = 0.; v = 0.; id = 0. }
+let create tmax = { t = tmax; u = 0.; v = 0.; id = 0.; floor = neg_infinity }
 
 let copy_into s d =
   d.t <- s.t;

@@ -10,6 +10,11 @@ type t = {
   mutable id : float;
       (** which part was hit: box face, cylinder cap, triangle index
           (an integer stored as a float) *)
+  mutable floor : float;
+      (** a further lower bound: crossings at or before it are not
+          accepted ([neg_infinity] but while a walk over an object's
+          crossings, which raises it past each crossing it passes, is
+          under way: a bound passed to the query instead would be boxed) *)
 }
 
 val create : float -> t

@@ -40,7 +40,7 @@ let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.
       if v < 0. || u +. v > 1. then false
       else
         let t = ((e2x *. qx) +. (e2y *. qy) +. (e2z *. qz)) *. inv in
-        if t > tmin && t < h.t then (
+        if t > tmin && t > h.floor && t < h.t then (
           h.t <- t;
           h.u <- u;
           h.v <- v;

@@ -310,12 +310,12 @@ and csg cs r tmin h f kind =
    crossing is kept. [raw]: query [o] without its clip (the clip is the
    rule); otherwise [o] is child [i] of [cs]. *)
 and first_accepted raw o r tmin h f kind cs i =
-  let t0 = h.t and u0 = h.u and v0 = h.v and id0 = h.id and leaf0 = f.leaf in
-  let result = ref false and go = ref true and first = ref true and tm = ref 0. in
+  let t0 = h.t and u0 = h.u and v0 = h.v and id0 = h.id and leaf0 = f.leaf and floor0 = h.floor in
+  let result = ref false and go = ref true in
   while !go do
-    (* the first query passes [tmin] as it came: no float to box *)
-    let got = if !first then query raw o r tmin h f else query raw o r !tm h f in
-    first := false;
+    (* each query passes [tmin] as it came (no float to box); the
+       crossings passed are below [h.floor] *)
+    let got = query raw o r tmin h f in
     if got then begin
       let t = h.t in
       let p = f.pt in
@@ -336,11 +336,12 @@ and first_accepted raw o r tmin h f kind cs i =
         h.v <- v0;
         h.id <- id0;
         f.leaf <- leaf0;
-        tm := next_tmin_s r t
+        h.floor <- next_tmin_s r t
       end
     end
     else go := false
   done;
+  h.floor <- floor0;
   !result
 
 and query raw o r tm h f = if raw then raw_hit o r tm h f else hit_s o r tm h f
@@ -370,21 +371,21 @@ let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
       true
   | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && opaque o -> not (any_mesh o m r tmin h fd)
   | _ ->
-  let tmax = r.far in
-  let ok = ref true and go = ref true and first = ref true and tm = ref 0. in
+  let tmax = r.far and floor0 = h.floor in
+  let ok = ref true and go = ref true in
   while !go do
     h.t <- tmax;
-    let got = if !first then hit_s o r tmin h fd else hit_s o r !tm h fd in
-    first := false;
-    if got then begin
+    (* [tmin] as it came, the crossings passed below [h.floor] *)
+    if hit_s o r tmin h fd then begin
       let leaf = fd.leaf in
-      if (shadow && leaf.no_shadow) || ((not (opaque leaf)) && g leaf h) then tm := next_tmin_s r h.t
+      if (shadow && leaf.no_shadow) || ((not (opaque leaf)) && g leaf h) then h.floor <- next_tmin_s r h.t
       else (
         ok := false;
         go := false)
     end
     else go := false
   done;
+  h.floor <- floor0;
   !ok
 
 let never _ = false

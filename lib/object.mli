@@ -67,8 +67,8 @@ val hit : t -> Ray.t -> float -> Hit.t -> found -> bool
 
 val hit_s : t -> Ray.scratch -> float -> Hit.t -> found -> bool
 (** {!hit} on a scratch ray (which must not be [f.local] or [f.pt]);
-    allocates nothing, except a boxed float per crossing that a CSG or a
-    clip rejects. *)
+    allocates nothing: the crossings a CSG or a clip rejects are passed
+    over by raising [h.floor], not by a new bound. *)
 
 val intersect : t -> Ray.t -> float -> float -> float
 (** Nearest distance in [(tmin, tmax)], or [infinity]. *)

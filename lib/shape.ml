@@ -42,7 +42,7 @@ let smooth_triangle a na b nb c nc =
   Smooth_triangle { a; b; c; na = Vec3.normalize na; nb = Vec3.normalize nb; nc = Vec3.normalize nc }
 
 let[@inline] accept (h : Hit.t) tmin t id =
-  if t > tmin && t < h.t then (
+  if t > tmin && t > h.floor && t < h.t then (
     h.t <- t;
     h.id <- id;
     true)
@@ -153,6 +153,8 @@ let hit_cone ~(base : Vec3.t) ~(axis : Vec3.t) ~(u : Vec3.t) ~(v : Vec3.t) ~leng
   else side
 
 let hit_torus major minor (r : Ray.scratch) tmin (h : Hit.t) =
+  (* the search starts past the floor: the first root after it *)
+  let tmin = if h.floor > tmin then h.floor else tmin in
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let nx = r.dx /. dl and ny = r.dy /. dl and nz = r.dz /. dl in
   (* restart from the point of the ray nearest the centre: small, well

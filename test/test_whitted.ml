@@ -271,7 +271,9 @@ let declared () =
 
 (* The hot path allocates nothing in the common case: solid pigments, a
    plain checker, point lights, reflection, spheres of the flat array,
-   planes, boxes and meshes. Minor words per camera ray over a
+   planes, boxes, meshes, a difference, and a glass intersection casting
+   shadows (crossings that a CSG rule rejects, and crossings a shadow
+   passes through). Minor words per camera ray over a
    one-domain render as [camlray render] runs it ([Render.image_into]):
    none, with shadows or without. *)
 let allocation () =
@@ -285,7 +287,11 @@ let allocation () =
             sphere { <-1, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } finish { specular 0.5 } }\n\
             sphere { <1.2, 0.8, 0.5>, 0.8 pigment { rgb 0.9 } finish { reflection 0.6 } }\n\
             box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { rgb <0.2, 0.7, 0.3> } }\n\
-            mesh { triangle { <1, 0, -2>, <2, 0, -2>, <1.5, 1, -1.8> } pigment { rgb 0.5 } }"
+            mesh { triangle { <1, 0, -2>, <2, 0, -2>, <1.5, 1, -1.8> } pigment { rgb 0.5 } }\n\
+            difference { box { <-2.6, 0, -1.2>, <-1.8, 0.8, -0.4> } sphere { <-2.2, 0.8, -1.2>, 0.5 }\n\
+              pigment { rgb <0.7, 0.6, 0.2> } }\n\
+            intersection { sphere { <2.2, 0.5, -1>, 0.5 } sphere { <2.6, 0.5, -1>, 0.5 }\n\
+              pigment { rgbf <0.8, 1, 0.8, 0.8> } interior { ior 1.3 } }"
            light)
     in
     let width = 64 and height = 48 in
@@ -317,9 +323,8 @@ let allocation () =
 (* The same with textures as POV-Ray scenes write them: pattern pigments
    through colour maps, pigment maps and blocks (with turbulence and
    waves), normal perturbation, a metallic finish, a texture map, shadows
-   through patterned transparent spheres (other shapes box the distance of
-   each crossing after the first, see [Object.crossings_s]), a fading
-   interior seen through and casting shadows, and a sky_sphere, for camera
+   through patterned transparent spheres, a fading interior seen through
+   and casting shadows, and a sky_sphere, for camera
    rays that end on the sky and rays that start inside an object (the
    camera in a big sphere). *)
 let allocation_textures () =
