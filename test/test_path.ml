@@ -348,6 +348,17 @@ let mc_scenes () =
       if mean img <= 0. then Alcotest.failf "%s is black" f)
     files
 
+(* The image of a 48x36 one-domain render at 4 spp as [camlray render]
+   runs it ([Render.image_into]), the second of two (the first makes the
+   domain's scratch), and the minor words per sample it took *)
+let words_per_sample s =
+  let width = 48 and height = 36 and spp = 4 in
+  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
+  let before = Gc.minor_words () in
+  let img = Render.image_into ~domains:1 ~width ~height pixel in
+  (img, (Gc.minor_words () -. before) /. float_of_int (width * height * spp))
+
 (* A sample walks its path in per-domain records: solid pigments, a
    point light and the background, matte, metal and glass surfaces,
    spheres, a transformed sphere, a box and a plane, nothing allocated.
@@ -366,12 +377,7 @@ let allocation () =
        sphere { 0, 1 scale <0.3, 0.6, 0.3> translate <2, 0.6, -1> pigment { rgb <0.2, 0.7, 0.3> } }\n\
        box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> rotate y*20 pigment { rgb <0.2, 0.3, 0.8> } }"
   in
-  let width = 48 and height = 36 and spp = 4 in
-  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
-  ignore (Render.image_into ~domains:1 ~width ~height pixel);
-  let before = Gc.minor_words () in
-  let img = Render.image_into ~domains:1 ~width ~height pixel in
-  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  let img, words = words_per_sample s in
   (* the picture is not black: paths found light *)
   Alcotest.(check bool) "lit" true (mean img > 0.05);
   if words > 0.1 then Alcotest.failf "%.2f minor words per sample (at most 0.1)" words;
@@ -386,11 +392,7 @@ let allocation () =
        plane { y, 0 pigment { rgb <0.8, 0.8, 0.7> } }\n\
        sphere { <0, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } }"
   in
-  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
-  ignore (Render.image_into ~domains:1 ~width ~height pixel);
-  let before = Gc.minor_words () in
-  let img = Render.image_into ~domains:1 ~width ~height pixel in
-  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  let img, words = words_per_sample s in
   Alcotest.(check bool) "lit by area lights" true (mean img > 0.05);
   if words > 0.1 then Alcotest.failf "%.2f minor words per sample with area lights (at most 0.1)" words;
   (* pattern pigments (a map, blocks, turbulence) and a sky_sphere as the
@@ -403,11 +405,7 @@ let allocation () =
        sphere { <0, 1, 0>, 1 pigment { bozo turbulence 0.4 color_map { [0 rgb <0.8, 0.3, 0.2>] [1 rgb 0.9] } } }\n\
        sphere { <1.5, 0.5, -1>, 0.5 pigment { hexagon rgb 1, rgb 0.5, rgb <0.2, 0.6, 0.3> scale 0.2 } }"
   in
-  let pixel = Path.pixel_into (Path.prepare s) ~width ~height ~seed:1 ~spp ~max_depth:8 in
-  ignore (Render.image_into ~domains:1 ~width ~height pixel);
-  let before = Gc.minor_words () in
-  let img = Render.image_into ~domains:1 ~width ~height pixel in
-  let words = (Gc.minor_words () -. before) /. float_of_int (width * height * spp) in
+  let img, words = words_per_sample s in
   Alcotest.(check bool) "lit by the sky" true (mean img > 0.05);
   if words > 0.1 then Alcotest.failf "%.2f minor words per sample with patterns and a sky (at most 0.1)" words
 
