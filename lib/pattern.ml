@@ -117,7 +117,6 @@ let[@inline] crackle3 x y z =
   done;
   clamp01 (!d2 -. !d1)
 
-(* The raw pattern at [w.p] into [w.r.v]. *)
 type result = { mutable v : float }
 
 (* the value in a record of its own, flat: a float field of a record with
@@ -126,8 +125,8 @@ type work = { p : Vec3.m; d : Vec3.m; r : result }
 
 let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
 
-(* each case stores its value itself: a value joined from the cases
-   would be boxed *)
+(* The raw pattern at [w.p] into [w.r.v]: each case stores its value
+   itself (a value joined from the cases would be boxed). *)
 let raw_m kind (w : work) =
   let x = w.p.mx and y = w.p.my and z = w.p.mz in
   match kind with
