@@ -122,12 +122,6 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
 (* where [shadow_hit] is false whatever the crossing *)
 let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
 
-(* Light reaching the origin of the walk's ray from [w.seg.len] along its
-   unit direction: the product of (f*P + t) of every surface crossed, with
-   interior fade over the lengths travelled inside fading objects; black
-   when something opaque blocks. Left in [w.acc]: stored in the walk's
-   own fields, nothing is allocated or written through [caml_modify]
-   unless a crossing lets light through. *)
 (* Each object crossed, taken last crossed first: the segments between
    its crossings (and the ray's ends) whose middle is inside it fade what
    passes. Distances of one object sorted in place. *)
@@ -175,6 +169,12 @@ let fade_segments (w : shadow_walk) dist =
     end
   done
 
+(* Light reaching the origin of the walk's ray from [w.seg.len] along its
+   unit direction: the product of (f*P + t) of every surface crossed, with
+   interior fade over the lengths travelled inside fading objects; black
+   when something opaque blocks. Left in [w.acc]: stored in the walk's
+   own fields, nothing is allocated or written through [caml_modify]
+   unless a crossing lets light through. *)
 let shadow_into (s : Scene.t) (w : shadow_walk) =
   let dist = w.seg.len in
   Color.acc_set w.acc 1. 1. 1.;
