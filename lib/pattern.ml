@@ -48,7 +48,9 @@ let two_pi = 2. *. Float.pi
    floats. The same arithmetic as with vectors (sums left to right). *)
 let[@inline] checker3 x y z =
   let s =
-    int_of_float (Float.floor (x +. eps)) + int_of_float (Float.floor (y +. eps)) + int_of_float (Float.floor (z +. eps))
+    int_of_float (Float.floor (x +. eps))
+    + int_of_float (Float.floor (y +. eps))
+    + int_of_float (Float.floor (z +. eps))
   in
   if s land 1 = 0 then 0. else 1.
 

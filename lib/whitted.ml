@@ -80,8 +80,9 @@ type shadow_walk = {
 
 let shadow_key =
   Scratch.key (fun () ->
-      { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0; sorted = Float.Array.create 0;
-        inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
+      { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0;
+        sorted = Float.Array.create 0; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
+        ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0. })
@@ -162,7 +163,10 @@ let fade_segments (w : shadow_walk) dist =
           p.oz <- r.oz +. (mid *. r.dz);
           if Object.inside_s o f then begin
             let d = hi -. lo in
-            Color.acc_set a (a.ar *. Interior.fade_channel inner fc.r d) (a.ag *. Interior.fade_channel inner fc.g d) (a.ab *. Interior.fade_channel inner fc.b d)
+            Color.acc_set a
+              (a.ar *. Interior.fade_channel inner fc.r d)
+              (a.ag *. Interior.fade_channel inner fc.g d)
+              (a.ab *. Interior.fade_channel inner fc.b d)
           end
         end
       done
