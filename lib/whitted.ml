@@ -202,13 +202,15 @@ let area_sample (w : shadow_walk) i j (out : Color.acc) =
 
 (* Shadow colour of one light at [p], whose direction is in [w.l], into
    [w.acc]: area lights average their samples. *)
+let point_shadow s (w : shadow_walk) (p : Vec3.m) =
+  let l = w.l in
+  Ray.set w.ray p l.lx l.ly l.lz;
+  w.seg.len <- l.dist;
+  shadow_into s w
+
 let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
   match light.area with
-  | None ->
-      let l = w.l in
-      Ray.set w.ray p l.lx l.ly l.lz;
-      w.seg.len <- l.dist;
-      shadow_into s w
+  | None -> point_shadow s w p
   | Some a ->
       if w.alight != light then w.alight <- light;
       if w.aarea != a then w.aarea <- a;
@@ -261,19 +263,24 @@ let nums () = { eta = 1.; alpha = 1.; weight = 1.; refl = 1.; child = 1. }
    shadow ray crosses something transparent. [k.alpha]: the layer's
    opacity. *)
 let one_light s (f : Finish.t) (pc : Pigment.out) (k : nums) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
-    (light : Light.t) (out : Color.acc) =
+    (light : Light.t) (lp : Vec3.m) sampled (out : Color.acc) =
   let alpha = k.alpha in
   let w = Scratch.get shadow_key in
   let l = w.l in
-  Light.direction_into light p l;
+  (* [sampled]: a sample of an area light at [lp], as a point light *)
+  if sampled then Light.direction_at light lp.mx lp.my lp.mz p l else Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
-  let att = if front || back then Light.attenuation_m light p else 0. in
+  let att =
+    if not (front || back) then 0.
+    else if sampled then Light.attenuation_at light lp.mx lp.my lp.mz p
+    else Light.attenuation_m light p
+  in
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
-    if not light.shadowless then light_shadow s w light p;
+    if not light.shadowless then if sampled then point_shadow s w p else light_shadow s w light p;
     let sh = w.acc in
     let lr = if light.shadowless then lr else lr *. sh.ar
     and lg = if light.shadowless then lg else lg *. sh.ag
@@ -332,26 +339,66 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : nums) (p : Vec3.m) (n : V
 (* the sum of [direct], per domain: nothing in it traces *)
 let direct_key = Scratch.key (fun () -> Color.acc 0.)
 
+(* Per domain: what an area light that shades per sample
+   (area_illumination) needs for each: the scene, the light, the shaded
+   point's finish, pigment, numbers, point, normal and ray, a sample's
+   position *)
+type illum = {
+  mutable iscene : Scene.t option;
+  mutable ilight : Light.t;
+  mutable iarea : Light.area;
+  mutable ifinish : Finish.t;
+  mutable ipc : Pigment.out;
+  mutable ik : nums;
+  mutable ip : Vec3.m;
+  mutable inn : Vec3.m;
+  mutable id : Vec3.m;
+  ipos : Vec3.m;
+  isum : Color.acc;
+}
+
+let illum_key =
+  Scratch.key (fun () ->
+      { iscene = None; ilight = Light.point Vec3.zero Color.black;
+        iarea = Light.area Vec3.unit_x Vec3.unit_z 1 1; ifinish = Finish.default; ipc = Pigment.out ();
+        ik = nums (); ip = Vec3.m (); inn = Vec3.m (); id = Vec3.m (); ipos = Vec3.m (); isum = Color.acc 0. })
+
+(* sample (i, j) of the area light in [il] shading as a point light there *)
+let illum_sample (il : illum) i j (o : Color.acc) =
+  let light = il.ilight and a = il.iarea in
+  Light.position_into light a il.ip (Light.offset a.n1 i) (Light.offset a.n2 j) il.ipos;
+  Color.acc_set o 0. 0. 0.;
+  match il.iscene with
+  | Some s -> one_light s il.ifinish il.ipc il.ik il.ip il.inn il.id light il.ipos true o
+  | None -> ()
+
 (* Diffuse and highlights of every light for one texture layer, added
    into [out]. *)
+(* [one_light]'s position when the light is where it stands (unread) *)
+let own_position = Vec3.m ()
+
 let[@inline] direct (s : Scene.t) (f : Finish.t) (pc : Pigment.out) (k : nums) p n d out =
   for j = 0 to Array.length s.lights - 1 do
     let light = Array.unsafe_get s.lights j in
     match light.area with
     | Some a when a.area_illumination ->
         (* every sample shades as a point light; averaged like shadows *)
-        let pv = Vec3.of_m p in
-        let c =
-          Light.average_area a (fun i j ->
-              let q = Light.sample_position light a pv i j in
-              let one = Color.acc 0. in
-              one_light s f pc k p n d { light with position = q; area = None } one;
-              Color.of_acc one)
-        in
-        out.ar <- out.ar +. c.r;
-        out.ag <- out.ag +. c.g;
-        out.ab <- out.ab +. c.b
-    | _ -> one_light s f pc k p n d light out
+        let il = Scratch.get illum_key in
+        (match il.iscene with Some s' when s' == s -> () | _ -> il.iscene <- Some s);
+        il.ilight <- light;
+        il.iarea <- a;
+        il.ifinish <- f;
+        il.ipc <- pc;
+        il.ik <- k;
+        il.ip <- p;
+        il.inn <- n;
+        il.id <- d;
+        let c = il.isum in
+        Light.average_area_into a il illum_sample c;
+        out.ar <- out.ar +. c.ar;
+        out.ag <- out.ag +. c.ag;
+        out.ab <- out.ab +. c.ab
+    | _ -> one_light s f pc k p n d light own_position false out
   done
 
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)

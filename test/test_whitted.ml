@@ -323,7 +323,8 @@ let allocation () =
       if w > 0.1 then Alcotest.failf "%.2f words per camera ray with a %s light (at most 0.1)" w what)
     [ ("spot", "spotlight point_at <0, 0, 0> radius 15 falloff 25 tightness 10");
       ("parallel", "parallel point_at <0, 0, 0>");
-      ("fading", "fade_distance 4 fade_power 2") ];
+      ("fading", "fade_distance 4 fade_power 2");
+      ("per-sample area", "area_light <2, 0, 0>, <0, 0, 2>, 3, 3 area_illumination on") ];
   if disc > 0.1 then Alcotest.failf "%.2f words per camera ray with a circular area light (at most 0.1)" disc
 
 (* The same with textures as POV-Ray scenes write them: pattern pigments
