@@ -197,6 +197,8 @@ let[@inline] nearest_loaded s sc tmin tmax (h : Hit.t) f =
   h.u <- 0.;
   h.v <- 0.;
   h.id <- 0.;
+  (* a query of the scene starts with no floor (walks restore theirs) *)
+  h.floor <- neg_infinity;
   let found = nearest_in s sc.ray tmin h f in
   sc.busy <- false;
   found
@@ -280,6 +282,7 @@ let occluders_in s sc tmin opaque g =
      stay until the next query *)
   if sc.occ != g then sc.occ <- g;
   if sc.opaque != opaque then sc.opaque <- opaque;
+  sc.h.floor <- neg_infinity;
   let ok = ref true and i = ref 0 in
   while !ok && !i < Array.length a.infinite do
     ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin sc.h sc.f true opaque g;
