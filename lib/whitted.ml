@@ -200,14 +200,16 @@ let area_sample (w : shadow_walk) i j (out : Color.acc) =
   (match w.ascene with Some s -> shadow_into s w | None -> ());
   Color.acc_set out w.acc.ar w.acc.ag w.acc.ab
 
-(* Shadow colour of one light at [p], whose direction is in [w.l], into
-   [w.acc]: area lights average their samples. *)
+(* The shadow colour at [p] of a point light whose direction is in [w.l],
+   into [w.acc] *)
 let point_shadow s (w : shadow_walk) (p : Vec3.m) =
   let l = w.l in
   Ray.set w.ray p l.lx l.ly l.lz;
   w.seg.len <- l.dist;
   shadow_into s w
 
+(* Shadow colour of one light at [p], whose direction is in [w.l], into
+   [w.acc]: area lights average their samples. *)
 let light_shadow s (w : shadow_walk) (light : Light.t) (p : Vec3.m) =
   match light.area with
   | None -> point_shadow s w p
