@@ -197,6 +197,28 @@ let eval_m t (q : Vec3.m) (w : work) =
     shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
   end
 
+(* The pattern at [point] taken into its space by [xform]'s inverse
+   (inlined: the value is not boxed). [eval_m] reads its point before
+   writing [w.p], which may therefore hold it. *)
+let[@inline] eval_at t xform (point : Vec3.m) (w : work) =
+  Transform.inv_point_m xform point w.p;
+  eval_m t w.p w;
+  w.r.v
+
+(* Where [v] falls in a map's entries, sorted by value (n > 0): 0 when at
+   or below the first, n past the last, else the i in 1..n-1 with the
+   entries i-1 and i around it. *)
+let around (entries : (float * 'a) array) v =
+  let n = Array.length entries in
+  if v <= fst entries.(0) then 0
+  else begin
+    let i = ref 1 in
+    while !i < n && not (v < fst entries.(!i)) do
+      incr i
+    done;
+    !i
+  end
+
 let value t (p : Vec3.t) =
   let w = work () and q = Vec3.m () in
   Vec3.load q p;

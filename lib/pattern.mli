@@ -71,6 +71,18 @@ val eval_m : t -> Vec3.m -> work -> unit
 (** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]
     (the same arithmetic), allocating nothing. *)
 
+val eval_at : t -> Transform.t -> Vec3.m -> work -> float
+(** [eval_at t xform point w]: {!eval_m} at a world point taken into the
+    pattern's space by [xform]'s inverse; the value is also left in
+    [w.r.v]. Inlined where it is called (its result is not boxed). *)
+
+val around : (float * 'a) array -> float -> int
+(** [around entries v], for entries sorted by value (at least one): 0
+    when [v] is at or below the first entry's value, [n] when it is past
+    the last one's, else the [i] in [1 .. n-1] such that entries [i-1]
+    and [i] are around it. The search colour, pigment and texture maps
+    share. *)
+
 val checker_m : Vec3.m -> int
 (** The checker pattern's value (0 or 1) at a point written in place, as
     {!value} gives it for [make Checker]. *)

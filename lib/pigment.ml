@@ -115,52 +115,46 @@ let rec opaque = function
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
 
-(* Per domain: the point in a pattern's space, the pattern's work, and
+(* Per domain: the point in an image's space, the pattern's work, and
    per nesting depth a colour for the second of two entries blended. *)
 type work = { q : Vec3.m; pw : Pattern.work; tmp : out Scratch.levels }
 
 let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out })
 
-(* the pattern's value at [point] moved into its space *)
-let[@inline] pattern_at w pattern xform (point : Vec3.m) =
-  Transform.inv_point_m xform point w.q;
-  Pattern.eval_m pattern w.q w.pw;
-  w.pw.r.v
-
-let rec into_d w p (point : Vec3.m) (o : out) d =
+(* The commonest pattern, a checker of the pattern space itself, read
+   without the pattern's work: the cell at [point] (any other pigment is
+   itself) *)
+let[@inline] checker_cell p point =
   match p with
-  | Solid c -> set o c
-  | Map { pattern; entries; xform } ->
-      let v = pattern_at w pattern xform point in
-      let n = Array.length entries in
-      if n = 0 then set o (Color.opaque Color.black)
-      else
-        let v0, p0 = entries.(0) in
-        if v <= v0 then into_d w p0 point o d
-        else begin
-          (* the first entry above v *)
-          let i = ref 1 in
-          while !i < n && not (v < fst entries.(!i)) do
-            incr i
-          done;
-          if !i >= n then into_d w (snd entries.(n - 1)) point o d
-          else
-            let vi, pi = entries.(!i) and vp, pp = entries.(!i - 1) in
-            if vi -. vp <= 0. then into_d w pi point o d
-            else begin
-              let k = (v -. vp) /. (vi -. vp) in
-              let t = Scratch.level w.tmp d in
-              into_d w pp point o (d + 1);
-              into_d w pi point t (d + 1);
-              lerp_into o t k
-            end
-        end
   | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
     when Transform.is_identity xform && Array.length cells > 0 ->
-      (* the commonest pattern, read without the pattern's work *)
-      into_d w cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point)) point o d
+      cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point))
+  | _ -> p
+
+let rec into_d w p (point : Vec3.m) (o : out) d =
+  match checker_cell p point with
+  | Solid c -> set o c
+  | Map { pattern; entries; xform } ->
+      let v = Pattern.eval_at pattern xform point w.pw in
+      let n = Array.length entries in
+      if n = 0 then set o (Color.opaque Color.black)
+      else begin
+        let i = Pattern.around entries v in
+        if i = 0 then into_d w (snd entries.(0)) point o d
+        else if i >= n then into_d w (snd entries.(n - 1)) point o d
+        else
+          let vi, pi = entries.(i) and vp, pp = entries.(i - 1) in
+          if vi -. vp <= 0. then into_d w pi point o d
+          else begin
+            let k = (v -. vp) /. (vi -. vp) in
+            let t = Scratch.level w.tmp d in
+            into_d w pp point o (d + 1);
+            into_d w pi point t (d + 1);
+            lerp_into o t k
+          end
+      end
   | Blocks { pattern; cells; xform } ->
-      let i = int_of_float (pattern_at w pattern xform point) in
+      let i = int_of_float (Pattern.eval_at pattern xform point w.pw) in
       let n = Array.length cells in
       if n = 0 then set o (Color.opaque Color.black) else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) point o d
   | Image_map { image; xform } ->
@@ -170,14 +164,9 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
 (* a solid colour, or a plain checker of solid colours, without the
    domain's work *)
 let into p point o =
-  match p with
+  match checker_cell p point with
   | Solid c -> set o c
-  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
-    when Transform.is_identity xform && Array.length cells > 0 -> (
-      match cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point)) with
-      | Solid c -> set o c
-      | q -> into_d (Scratch.get work_key) q point o 0)
-  | _ -> into_d (Scratch.get work_key) p point o 0
+  | q -> into_d (Scratch.get work_key) q point o 0
 
 let eval p point =
   match p with

@@ -26,41 +26,30 @@ let[@inline] one pk t =
   pk.t0 <- t;
   pk.w.k0 <- 1.
 
-(* per domain: the point in the pattern's space and the pattern's work *)
-type work = { q : Vec3.m; pw : Pattern.work }
-
-let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work () })
+(* per domain: the pattern's work *)
+let work_key = Scratch.key Pattern.work
 
 let blend_m m (point : Vec3.m) pk =
-  let w = Scratch.get work_key in
-  Transform.inv_point_m m.xform point w.q;
-  Pattern.eval_m m.pattern w.q w.pw;
-  let v = w.pw.r.v in
+  let v = Pattern.eval_at m.pattern m.xform point (Scratch.get work_key) in
   let n = Array.length m.entries in
   if n = 0 then one pk default
   else if Pattern.is_block m.pattern.kind then one pk (snd m.entries.(Int.max 0 (Int.min (n - 1) (int_of_float v))))
-  else
-    let v0, t0 = m.entries.(0) in
-    if v <= v0 then one pk t0
-    else begin
-      (* the first entry above v *)
-      let i = ref 1 in
-      while !i < n && not (v < fst m.entries.(!i)) do
-        incr i
-      done;
-      if !i >= n then one pk (snd m.entries.(n - 1))
-      else
-        let vi, ti = m.entries.(!i) and vp, tp = m.entries.(!i - 1) in
-        if vi -. vp <= 0. then one pk ti
-        else begin
-          let k = (v -. vp) /. (vi -. vp) in
-          pk.n <- 2;
-          pk.t0 <- tp;
-          pk.t1 <- ti;
-          pk.w.k0 <- 1. -. k;
-          pk.w.k1 <- k
-        end
-    end
+  else begin
+    let i = Pattern.around m.entries v in
+    if i = 0 then one pk (snd m.entries.(0))
+    else if i >= n then one pk (snd m.entries.(n - 1))
+    else
+      let vi, ti = m.entries.(i) and vp, tp = m.entries.(i - 1) in
+      if vi -. vp <= 0. then one pk ti
+      else begin
+        let k = (v -. vp) /. (vi -. vp) in
+        pk.n <- 2;
+        pk.t0 <- tp;
+        pk.t1 <- ti;
+        pk.w.k0 <- 1. -. k;
+        pk.w.k1 <- k
+      end
+  end
 
 (* A layer that lets no light through makes the whole texture block it. *)
 let blocks_light (t : t) =
