@@ -304,9 +304,6 @@ let occluders_s s (r : Ray.scratch) tmin opaque g =
   Ray.copy r sc.ray;
   occluders_in s sc tmin opaque g
 
-(* Inside tests at one point: the objects that reach beyond their boxes,
-   then those whose box holds the point (a walk of the BVH along a ray of
-   no length); per domain, nothing allocated unless something holds it *)
 (* objects held in a growing array *)
 type objects = { mutable items : Object.t array; mutable n : int }
 
@@ -328,6 +325,18 @@ let add_object (l : objects) o =
   l.items.(l.n) <- o;
   l.n <- l.n + 1
 
+let same_objects (a : objects) (b : objects) =
+  a.n = b.n
+  &&
+  let i = ref 0 in
+  while !i < a.n && a.items.(!i) == b.items.(!i) do
+    incr i
+  done;
+  !i = a.n
+
+(* Inside tests at one point: the objects that reach beyond their boxes,
+   then those whose box holds the point (a walk of the BVH along a ray of
+   no length); per domain, nothing allocated but to grow the arrays *)
 type probe = { at : Ray.scratch; pf : Object.found; hits : objects }
 
 let probe_key = Scratch.key (fun () -> { at = Ray.scratch (); pf = Object.found dummy; hits = objects () })

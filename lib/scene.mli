@@ -78,6 +78,9 @@ type objects = { mutable items : Object.t array; mutable n : int }
 val objects : unit -> objects
 val add_object : objects -> Object.t -> unit
 
+val same_objects : objects -> objects -> bool
+(** The same objects (physically), in the same order. *)
+
 val containing_into : t -> Vec3.m -> objects -> unit
 (** {!containing} of a point written in place, into [out] (allocating
     only to grow it). *)

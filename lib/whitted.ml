@@ -757,14 +757,6 @@ let start_key =
   Scratch.key (fun () ->
       { scene = None; at = Vec3.m (); media = []; now = Scene.objects (); held = Scene.objects () })
 
-let same_objects (a : Scene.objects) (b : Scene.objects) =
-  a.n = b.n
-  &&
-  let i = ref 0 in
-  while !i < a.n && a.items.(!i) == b.items.(!i) do
-    incr i
-  done;
-  !i = a.n
 
 (* per domain: a cache shared by domains would be written from both when
    the origin changes at every ray (orthographic camera, focal blur); a
@@ -781,7 +773,7 @@ let start_media (s : Scene.t) (o : Vec3.m) =
       Scene.containing_into s o c.now;
       (* a new origin held by the same objects (lens rays, an
          orthographic camera): the same list *)
-      if same_scene && same_objects c.now c.held then c.media
+      if same_scene && Scene.same_objects c.now c.held then c.media
       else begin
         let now = c.now and held = c.held in
         let m = List.init now.n (fun i -> (now.items.(i) : Object.t).interior) in
