@@ -313,6 +313,7 @@ type plan = {
   names : string array;  (** the float names it reads, each once ([Var i] is [names.(i)]) *)
   mutable hows : how array;
   mutable gen : int;  (** the {!Env.generation} [hows] were found in; -1: none *)
+  values : float array;  (** the names' values while the run is evaluated, reused *)
 }
 
 type Toks.memo += Plans of (int, plan) Hashtbl.t
@@ -363,7 +364,7 @@ let keep t st cs span =
         let comps = Array.of_list (List.map named cs) in
         let plan =
           { len; comps; plain = Array.map plain comps; span; names = names_once;
-            hows = [||]; gen = -1 }
+            hows = [||]; gen = -1; values = Array.make (Array.length names_once) 0. }
         in
         Hashtbl.replace (plans f) p0 plan
       end
@@ -403,26 +404,40 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
                   true
                 end
               in
-              let values = Array.make n 0. in
+              (* the values are read before any is used: a component
+                 calls no declared function, which could replay this run *)
+              let values = p.values in
               let rec resolve i =
                 i >= n
-                || match value_of (Array.unsafe_get p.hows i) with
-                   | Some v -> Array.unsafe_set values i v; resolve (i + 1)
-                   | None -> false
+                || (match Array.unsafe_get p.hows i with
+                   | Named c -> (
+                       match Env.binding c with
+                       | Env.Decl (Decl.Value (Value.Float f)) -> Array.unsafe_set values i f; true
+                       | _ -> false)
+                   | h -> (
+                       match value_of h with
+                       | Some v -> Array.unsafe_set values i v; true
+                       | None -> false))
+                   && resolve (i + 1)
               in
               if not (found && resolve 0) then None
               else begin
                 f.pos <- p0 + p.len;
                 t.supplied <- t.supplied + p.len - 1;
-                let v = Array.make (Array.length p.comps) 0. in
-                for i = 0 to Array.length v - 1 do
-                  Array.unsafe_set v i
-                    (match Array.unsafe_get p.plain i with
-                    | Some f -> eval_float values f
-                    | None ->
-                        let e = Array.unsafe_get p.comps i in
-                        Value.to_float e.loc (eval_with values e))
-                done;
+                let comp i =
+                  match Array.unsafe_get p.plain i with
+                  | Some f -> eval_float values f
+                  | None ->
+                      let e = Array.unsafe_get p.comps i in
+                      Value.to_float e.loc (eval_with values e)
+                in
+                let v =
+                  if Array.length p.comps = 3 then
+                    let x = comp 0 in
+                    let y = comp 1 in
+                    [| x; y; comp 2 |]
+                  else Array.init (Array.length p.comps) comp
+                in
                 Some ((if ends then Parser.VECTOR_END v else Parser.VECTOR v), p.span)
               end)
           | _ -> None)

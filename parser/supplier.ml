@@ -226,12 +226,14 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
           (* a run is read only where the parser takes its first token:
              nothing is read past where the parser would stop *)
           let (tok, loc), orig =
-            if from_raw && t.config.fold && Fold.may_start t last tok && I.acceptable cp tok first.start
-            then
+            if from_raw && t.config.fold && Fold.may_start t last tok then
               let accepts v = I.acceptable cp v first.start in
+              (* a run read before is replayed where the parser takes the
+                 vector it makes (which it can only where it takes the
+                 '<' too): the '<' itself need not be tried *)
               match Fold.replay t ~accepts x with
               | Some y -> (y, [])
-              | None -> Fold.run t ~next ~accepts x
+              | None -> if accepts tok then Fold.run t ~next ~accepts x else (x, [])
             else (x, [])
           in
           t.last <- loc;
