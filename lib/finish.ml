@@ -50,3 +50,29 @@ let default =
 
 let has_reflection f =
   (not (Color.is_black f.reflection.rmin)) || not (Color.is_black f.reflection.rmax)
+
+(* comparisons as OCaml compiles them, no call: the same as Float.min
+   and Float.max for the values here (NaN passes through both) *)
+let[@inline] fmin (a : float) b = if a <= b then a else b
+let[@inline] fmax (a : float) b = if a >= b then a else b
+
+(* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees:
+   [m] > 0, the tint is 1 + k (c - 1) per channel c of the pigment, k as
+   follows; [m] = 0, no tint (1) *)
+let[@inline] metallic_k m cos_angle =
+  let x = Float.acos (fmin 1. (Float.abs cos_angle)) /. (Float.pi /. 2.) in
+  let f = (0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903 in
+  let f = fmin 1. (fmax 0. f) in
+  m *. (1. -. f)
+
+let[@inline] tint m k c = if m = 0. then 1. else 1. +. (k *. (c -. 1.))
+
+(* Unpolarised Fresnel reflectance for a relative index n = n_t / n_i
+   (POV-Ray's formula, pov-facts 5.5); 1 past the critical angle. *)
+let fresnel n c =
+  let g2 = (n *. n) +. (c *. c) -. 1. in
+  if g2 <= 0. then 1.
+  else
+    let g = Float.sqrt g2 in
+    let a = (g -. c) /. (g +. c) and b = ((c *. (g +. c)) -. 1.) /. ((c *. (g -. c)) +. 1.) in
+    0.5 *. a *. a *. (1. +. (b *. b))

@@ -28,3 +28,18 @@ type t = {
 val default : t
 val no_reflection : reflection
 val has_reflection : t -> bool
+
+val metallic_k : float -> float -> float
+(** [metallic_k m cos]: how far [metallic m] tints a highlight or a
+    reflection toward the pigment at an angle of cosine [cos] to the
+    normal (POV-Ray's approximate Fresnel term; 0 when [m] is 0). Inlined
+    where it is used (its floats are not boxed). *)
+
+val tint : float -> float -> float -> float
+(** [tint m k c]: the factor of a channel whose pigment is [c], [k] from
+    {!metallic_k}: [1 + k (c - 1)], or 1 when [m] is 0. *)
+
+val fresnel : float -> float -> float
+(** [fresnel n c]: POV-Ray's unpolarised Fresnel reflectance for a
+    relative index [n] (transmitted side over incident side) and an
+    incident cosine [c] (pov-facts.md 5.5); 1 past the critical angle. *)

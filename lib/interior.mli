@@ -17,3 +17,26 @@ val fade_channel : t -> float -> float -> float
     (povray 3.7 does so for what is seen through; its shadow rays do not
     fade then, see {!Whitted}). Inlined where it is used (the distance is
     not boxed). *)
+
+val fades_light : t -> bool
+(** Whether a shadow ray fades inside: a fade distance and a fade power
+    (POV-Ray 3.7 leaves light unfaded by [fade_power 0]). *)
+
+(** {2 The interiors a ray is inside}
+
+    A ray's media are the interiors it is inside, innermost first, each
+    once. *)
+
+val relative_ior : t -> t list -> float
+(** [relative_ior inner media]: the relative index of refraction across a
+    surface of [inner] for a ray inside [media]. Entering or leaving is
+    decided as POV-Ray does, by whether the ray is already inside
+    [inner], not by the side of the surface (the children of a CSG share
+    their parent's interior: in the overlap of a union of glass spheres
+    the inner walls bend light as glass to air). Inlined where it is used
+    (its result is not boxed). *)
+
+val beyond : t -> t list -> t list
+(** [beyond inner media]: the media past a surface of [inner], [inner]
+    entered or left. An entered list is made once per domain for each of
+    the last 16 pairs met: refracting through glass allocates nothing. *)

@@ -40,21 +40,6 @@ let weight = function
   | Glass { reflect; transmit; _ } ->
       weight_of k_glass transmit.r transmit.g transmit.b reflect.r reflect.g reflect.b 0.
 
-(* Unpolarised Fresnel reflectance for a relative index n = n_t / n_i
-   (POV-Ray's formula, pov-facts 5.5); 1 past the critical angle. *)
-let fresnel_pov n c =
-  let g2 = (n *. n) +. (c *. c) -. 1. in
-  if g2 <= 0. then 1.
-  else
-    let g = Float.sqrt g2 in
-    let a = (g -. c) /. (g +. c) and b = ((c *. (g +. c)) -. 1.) /. ((c *. (g -. c)) +. 1.) in
-    0.5 *. a *. a *. (1. +. (b *. b))
-
-(* POV-Ray's metallic factor F, x = angle / 90 degrees. *)
-let metallic_f c =
-  let x = Float.acos (fmin 1. (Float.abs c)) /. (Float.pi /. 2.) in
-  fmin 1. (fmax 0. ((0.014567225 /. ((x -. 1.12) ** 2.)) -. 0.011612903))
-
 let clamp01 x = fmin 1. (fmax 0. x)
 
 (* No reflection, highlight or metal: a matte surface (most of a Monte
@@ -156,11 +141,11 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
         (* [reflectivity], tinted for metals ([tint 1.]), scaled by alpha
            where the glass part's Fresnel replaces it *)
         let r = f.reflection in
-        let t = if r.fresnel then fresnel_pov inter.ior cos_o else Float.pow (fmax 0. (1. -. cos_o)) r.falloff in
+        let t = if r.fresnel then Finish.fresnel inter.ior cos_o else Float.pow (fmax 0. (1. -. cos_o)) r.falloff in
         let kx = r.rmin.r +. (t *. (r.rmax.r +. (-1. *. r.rmin.r)))
         and ky = r.rmin.g +. (t *. (r.rmax.g +. (-1. *. r.rmin.g)))
         and kz = r.rmin.b +. (t *. (r.rmax.b +. (-1. *. r.rmin.b))) in
-        let mk = if metal then 1. *. (1. -. metallic_f cos_o) else 0. in
+        let mk = if metal then Finish.metallic_k 1. cos_o else 0. in
         let kx = if metal then kx *. (1. +. (mk *. (pig.r -. 1.))) else kx
         and ky = if metal then ky *. (1. +. (mk *. (pig.g -. 1.))) else ky
         and kz = if metal then kz *. (1. +. (mk *. (pig.b -. 1.))) else kz in
@@ -169,7 +154,7 @@ let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o en
         and kz = if refracts then alpha *. kz else kz in
         (* [tint f.metallic cos_o pig] for the highlights *)
         let plainh = f.metallic = 0. in
-        let hk = if plainh then 0. else f.metallic *. (1. -. metallic_f cos_o) in
+        let hk = if plainh then 0. else Finish.metallic_k f.metallic cos_o in
         let hr = if plainh then 1. else 1. +. (hk *. (pig.r -. 1.))
         and hg = if plainh then 1. else 1. +. (hk *. (pig.g -. 1.))
         and hb = if plainh then 1. else 1. +. (hk *. (pig.b -. 1.)) in

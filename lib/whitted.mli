@@ -5,7 +5,9 @@
     (with interior fade), area lights, reflection (constant, falloff,
     Fresnel, exponent, metallic), refraction with nested interiors and
     total internal reflection, trace level and ADC bailout, background and
-    sky_sphere.
+    sky_sphere. Lights and highlights are {!Direct}'s, shadow rays
+    {!Shadow}'s, the relative index across nested interiors
+    {!Interior.relative_ior}.
 
     Rules found by cross-rendering with POV-Ray 3.7 (beyond pov-facts.md):
     - interior fade multiplies what comes through the far side of a medium

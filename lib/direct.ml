@@ -1,0 +1,144 @@
+(* Direct lighting in POV-Ray 3.7's classic model (see direct.mli). *)
+
+(* a light this close to the surface's plane lights nothing *)
+let light_min_cos = 1e-10
+
+type opacity = { mutable alpha : float }
+
+(* Diffuse and highlights of one light seen from [p], added into [out];
+   the shadow is {!Shadow.light} (an area light's samples come here as
+   point lights). Scalars throughout: nothing is allocated unless the
+   shadow ray crosses something transparent. *)
+let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
+    (light : Light.t) (lp : Vec3.m) sampled (out : Color.acc) =
+  let alpha = k.alpha in
+  let w = Shadow.walk () in
+  let l = Shadow.toward w in
+  (* [sampled]: a sample of an area light at [lp], as a point light *)
+  if sampled then Light.direction_at light lp.mx lp.my lp.mz p l else Light.direction_into light p l;
+  let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
+  let front = nl >= light_min_cos in
+  let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
+  let att =
+    if not (front || back) then 0.
+    else if sampled then Light.attenuation_at light lp.mx lp.my lp.mz p
+    else Light.attenuation_m light p
+  in
+  if att > 0. then begin
+    let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
+    (* no tuple: the channels stay unboxed *)
+    if not light.shadowless then if sampled then Shadow.point s w p else Shadow.light s w light p;
+    let sh = Shadow.passed w in
+    let lr = if light.shadowless then lr else lr *. sh.ar
+    and lg = if light.shadowless then lg else lg *. sh.ag
+    and lb = if light.shadowless then lb else lb *. sh.ab in
+    if not (lr = 0. && lg = 0. && lb = 0.) then
+      if back then begin
+        let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
+        out.ar <- out.ar +. (k *. (pc.r *. lr));
+        out.ag <- out.ag +. (k *. (pc.g *. lg));
+        out.ab <- out.ab +. (k *. (pc.b *. lb))
+      end
+      else begin
+        let cr = ref 0. and cg = ref 0. and cb = ref 0. in
+        if f.diffuse > 0. then begin
+          let k = alpha *. f.diffuse *. (if f.brilliance = 1. then nl else Float.pow nl f.brilliance) in
+          cr := !cr +. (k *. (pc.r *. lr));
+          cg := !cg +. (k *. (pc.g *. lg));
+          cb := !cb +. (k *. (pc.b *. lb))
+        end;
+        if not light.shadowless then begin
+          let m = f.metallic in
+          let mk = if m = 0. then 0. else Finish.metallic_k m nl in
+          let mr = lr *. Finish.tint m mk pc.r and mg = lg *. Finish.tint m mk pc.g and mb = lb *. Finish.tint m mk pc.b in
+          if f.phong > 0. then begin
+            (* r = d - 2 (d.n) n, the mirror direction *)
+            let k = -2. *. Vec3.dot_m d n in
+            let rx = d.mx +. (k *. n.mx) and ry = d.my +. (k *. n.my) and rz = d.mz +. (k *. n.mz) in
+            let rl = (rx *. l.lx) +. (ry *. l.ly) +. (rz *. l.lz) in
+            if rl > 0. then begin
+              let k = f.phong *. Float.pow rl f.phong_size in
+              cr := !cr +. (k *. mr);
+              cg := !cg +. (k *. mg);
+              cb := !cb +. (k *. mb)
+            end
+          end;
+          if f.specular > 0. then begin
+            (* h = (l - d) / |l - d|, the half vector *)
+            let hx = l.lx -. d.mx and hy = l.ly -. d.my and hz = l.lz -. d.mz in
+            let len = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+            let k = if len > 0. then 1. /. len else 1. in
+            let nh = (n.mx *. (k *. hx)) +. (n.my *. (k *. hy)) +. (n.mz *. (k *. hz)) in
+            if nh > 0. then begin
+              let k = f.specular *. Float.pow nh (1. /. f.roughness) in
+              cr := !cr +. (k *. mr);
+              cg := !cg +. (k *. mg);
+              cb := !cb +. (k *. mb)
+            end
+          end
+        end;
+        out.ar <- out.ar +. !cr;
+        out.ag <- out.ag +. !cg;
+        out.ab <- out.ab +. !cb
+      end
+  end
+
+(* Per domain: what an area light that shades per sample
+   (area_illumination) needs for each: the scene, the light, the shaded
+   point's finish, pigment, numbers, point, normal and ray, a sample's
+   position *)
+type illum = {
+  mutable iscene : Scene.t option;
+  mutable ilight : Light.t;
+  mutable iarea : Light.area;
+  mutable ifinish : Finish.t;
+  mutable ipc : Pigment.out;
+  mutable ik : opacity;
+  mutable ip : Vec3.m;
+  mutable inn : Vec3.m;
+  mutable id : Vec3.m;
+  ipos : Vec3.m;
+  isum : Color.acc;
+}
+
+let illum_key =
+  Scratch.key (fun () ->
+      { iscene = None; ilight = Light.point Vec3.zero Color.black;
+        iarea = Light.area Vec3.unit_x Vec3.unit_z 1 1; ifinish = Finish.default; ipc = Pigment.out ();
+        ik = { alpha = 1. }; ip = Vec3.m (); inn = Vec3.m (); id = Vec3.m (); ipos = Vec3.m (); isum = Color.acc 0. })
+
+(* sample (i, j) of the area light in [il] shading as a point light there *)
+let illum_sample (il : illum) i j (o : Color.acc) =
+  let light = il.ilight and a = il.iarea in
+  Light.position_into light a il.ip (Light.offset a.n1 i) (Light.offset a.n2 j) il.ipos;
+  Color.acc_set o 0. 0. 0.;
+  match il.iscene with
+  | Some s -> one_light s il.ifinish il.ipc il.ik il.ip il.inn il.id light il.ipos true o
+  | None -> ()
+
+(* [one_light]'s position when the light is where it stands (unread) *)
+let own_position = Vec3.m ()
+
+let lights (s : Scene.t) (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d (out : Color.acc) =
+  for j = 0 to Array.length s.lights - 1 do
+    let light = Array.unsafe_get s.lights j in
+    match light.area with
+    | Some a when a.area_illumination ->
+        (* every sample shades as a point light; averaged like shadows *)
+        let il = Scratch.get illum_key in
+        (match il.iscene with Some s' when s' == s -> () | _ -> il.iscene <- Some s);
+        il.ilight <- light;
+        il.iarea <- a;
+        il.ifinish <- f;
+        il.ipc <- pc;
+        il.ik <- k;
+        il.ip <- p;
+        il.inn <- n;
+        il.id <- d;
+        let c = il.isum in
+        Light.average_area_into a il illum_sample c;
+        out.ar <- out.ar +. c.ar;
+        out.ag <- out.ag +. c.ag;
+        out.ab <- out.ab +. c.ab
+    | _ -> one_light s f pc k p n d light own_position false out
+  done

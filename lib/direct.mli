@@ -1,0 +1,19 @@
+(** Direct lighting in POV-Ray 3.7's classic model (pov-facts.md 5): the
+    light each light source gives a point of a texture layer, with its
+    shadow ({!Shadow}): diffuse with brilliance, back-side diffuse,
+    Phong and Blinn (specular) highlights, metallic tints; an area light
+    averages its shadow samples, or with [area_illumination] shades each
+    sample as a point light. Ambient, emission, reflection and what passes
+    through are {!Whitted}'s. *)
+
+type opacity = { mutable alpha : float }
+(** The layer's opacity: what its pigment does not filter or transmit
+    (the factor of its diffuse light), stored flat so that passing it
+    boxes nothing. *)
+
+val lights :
+  Scene.t -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
+(** [lights s f pc a p n d out]: the diffuse light and highlights of every
+    light of [s] at point [p] of normal [n] (facing the ray [d]), for the
+    finish [f] and pigment [pc], added into [out]. Allocates nothing
+    unless a shadow ray crosses something transparent. *)

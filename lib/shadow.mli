@@ -1,0 +1,33 @@
+(** Shadow rays in POV-Ray 3.7's classic model: the light that reaches a
+    point from a light, through what lies between. A surface crossed lets
+    through (f*P + t) of its pigment (a texture's layers multiply, a
+    texture map blends its textures'); an opaque one blocks (the walk
+    stops there); inside an object with a fading interior and a fade power
+    the light fades over every stretch travelled inside, including the
+    stretch from a lit point that is itself inside. An area light is the
+    average of its samples (adaptive where it says so).
+
+    The walk's state is a record per domain, reused from ray to ray:
+    nothing is allocated unless the shadow ray crosses something
+    transparent, and walks never nest (nothing here traces further). *)
+
+type walk
+
+val walk : unit -> walk
+(** The calling domain's walk. *)
+
+val toward : walk -> Light.dir
+(** The direction and distance to the light being shaded, which the
+    caller sets ({!Light.direction_into}) before {!point} or {!light}. *)
+
+val point : Scene.t -> walk -> Vec3.m -> unit
+(** [point s w p]: the light let through from the point light whose
+    direction is in [toward w] to [p], into [passed w]. *)
+
+val light : Scene.t -> walk -> Light.t -> Vec3.m -> unit
+(** [light s w l p]: the same for light [l] at [p] (its direction in
+    [toward w]); an area light averages its samples. *)
+
+val passed : walk -> Color.acc
+(** What the last {!point} or {!light} let through, per channel (0 where
+    something opaque blocks, 1 where nothing is crossed). *)
