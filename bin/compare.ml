@@ -166,10 +166,10 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
               let a = Image.read pov_png and b = Image.read cam_png in
               if a.w <> b.w || a.h <> b.h then row "image sizes differ"
               else begin
-                let d = Image.diff_image a b in
+                let d = Metrics.diff_image a b in
                 Image.write_png (path ".diff.png") d;
-                Image.write_png (path ".side.png") (Image.side_by_side [ a; b; d ]);
-                { name; noise; psnr = Image.psnr a b; ssim = Image.ssim a b; max_diff = Image.max_diff a b;
+                Image.write_png (path ".side.png") (Metrics.side_by_side [ a; b; d ]);
+                { name; noise; psnr = Metrics.psnr a b; ssim = Metrics.ssim a b; max_diff = Metrics.max_diff a b;
                   pov_s; cam_s; note = "" }
               end
           in

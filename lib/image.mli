@@ -1,6 +1,6 @@
 (** Images: a linear floating-point RGB frame buffer, its 8-bit encodings,
-    file formats (PNG, PPM, PFM; atomic writes), and image metrics (PSNR,
-    SSIM) for comparing renders. *)
+    and their files (PNG, PPM, PFM; atomic writes). PNG bytes are
+    {!Png_codec}'s; comparing renders is {!Metrics}'. *)
 
 type t
 (** A [width] x [height] image of linear RGB floats, row 0 at the top. *)
@@ -38,12 +38,16 @@ type encoding =
 val srgb_encode : float -> float
 (** The sRGB opto-electronic transfer function on [0,1]. *)
 
-type par = int -> (int -> unit) -> unit
+type par = Png_codec.par
 (** [par n f] runs [f 0] ... [f (n-1)] in any order, perhaps at once on
     several domains ([Render.parallel]); the encoders below cut their work
     into parts of fixed size, so their output does not depend on it. *)
 
 val sequential : par
+
+val check_rgb8 : string -> rgb8 -> unit
+(** [check_rgb8 fn im] raises [Invalid_argument "fn: malformed rgb8
+    image"] unless [im]'s size is positive and its bytes are 3 a pixel. *)
 
 val quantize : encoding -> float -> int
 (** The 8-bit value of one channel by the formula: clip to [0,1] (NaN
@@ -64,19 +68,10 @@ val write_atomic : string -> (out_channel -> unit) -> unit
     by [f] pass through unchanged. *)
 
 val write_png : ?par:par -> ?text:(string * string) list -> string -> rgb8 -> unit
-(** Non-interlaced 8-bit RGB PNG, written atomically; [text] becomes tEXt
-    chunks (key, value). Raises [Invalid_argument] for a keyword that is
-    empty, longer than 79 bytes or contains NUL, or a value with NUL.
-    The scanlines are filtered and compressed in bands of 64 rows, each
-    band its own deflate run ending in a sync flush (bands in parallel
-    under [par]). *)
-
-val adler32 : string -> int -> int -> int
-(** [adler32 s pos len]: the Adler-32 checksum of RFC 1950. *)
-
-val adler32_combine : int -> int -> int -> int
-(** [adler32_combine a b len_b]: the checksum of a concatenation from the
-    checksums of its parts. *)
+(** Non-interlaced 8-bit RGB PNG ({!Png_codec.encode}), written
+    atomically; [text] becomes tEXt chunks (key, value). Raises
+    [Invalid_argument] for a keyword that is empty, longer than 79 bytes or
+    contains NUL, or a value with NUL, before the file is touched. *)
 
 val write_ppm : string -> rgb8 -> unit
 (** Binary PPM (P6), written atomically. *)
@@ -95,29 +90,3 @@ val read : string -> rgb8
 val png_text : string -> (string * string) list
 (** The tEXt chunks of a PNG file, in file order, as raw (Latin-1) bytes.
     Raises [Failure] naming the file if it is not a well-formed PNG. *)
-
-(** {1 Metrics}
-
-    The functions taking two images raise [Invalid_argument] when their
-    sizes differ. *)
-
-val psnr : rgb8 -> rgb8 -> float
-(** PSNR in dB over the R, G, B bytes; [infinity] for identical images.
-    Requires equal sizes. *)
-
-val ssim : rgb8 -> rgb8 -> float
-(** Mean SSIM on the luma Y = 0.2126 R + 0.7152 G + 0.0722 B of the 8-bit
-    values, Gaussian window 11x11 with sigma 1.5, K1 = 0.01, K2 = 0.03,
-    L = 255, averaged over the windows that fit inside the image (as
-    scikit-image's [structural_similarity] with [gaussian_weights=True],
-    [use_sample_covariance=False], [data_range=255]). Requires equal sizes
-    of at least 11x11. *)
-
-val max_diff : rgb8 -> rgb8 -> int
-(** Largest absolute difference of any channel. *)
-
-val diff_image : ?gain:int -> rgb8 -> rgb8 -> rgb8
-(** Per-channel absolute difference times [gain] (default 4), clipped. *)
-
-val side_by_side : rgb8 list -> rgb8
-(** The images placed left to right (heights padded with black). *)

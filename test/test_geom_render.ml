@@ -134,7 +134,7 @@ let compare_with_pov dir name src =
   run (Printf.sprintf "cd %s && povray +I%s +O%s +W160 +H120 -D -A +FN > /dev/null 2>&1" (Filename.quote dir)
          (Filename.quote pov) (Filename.quote theirs));
   let a = Image.read ours and b = Image.read theirs in
-  let frac = within2 a b and psnr = Image.psnr a b in
+  let frac = within2 a b and psnr = Metrics.psnr a b in
   if frac < 0.99 || psnr < 35. then
     Alcotest.failf "%s: %.2f%% of pixels within 2/255, PSNR %.1f dB (files in %s)" name (100. *. frac) psnr dir
 

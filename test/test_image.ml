@@ -205,9 +205,9 @@ let props =
       ~name:"adler32_combine of two parts = adler32 of the whole"
       (fun (a, b) ->
         let whole = a ^ b in
-        Image.adler32_combine (Image.adler32 a 0 (String.length a)) (Image.adler32 b 0 (String.length b))
+        Png_codec.adler32_combine (Png_codec.adler32 a 0 (String.length a)) (Png_codec.adler32 b 0 (String.length b))
           (String.length b)
-        = Image.adler32 whole 0 (String.length whole));
+        = Png_codec.adler32 whole 0 (String.length whole));
     QCheck.Test.make ~count:2000
       QCheck.(pair (oneof_list [ Image.Srgb; Image.Identity; Image.Gamma_srgb 2.2; Image.Gamma_srgb 0.45 ])
                 (make ~print:string_of_float Gen.(oneof [ float_range (-0.1) 1.1; float; float_range 0. 0.01 ])))
@@ -278,13 +278,13 @@ let encoding_tests =
           [ 0; 255; 0; 188; 124; 168; 255; 0; 218 ]
           (reds (Image.to_rgb8 Srgb img)));
     Alcotest.test_case "Adler-32 known values (RFC 1950)" `Quick (fun () ->
-        Alcotest.(check int) "Wikipedia" 0x11E60398 (Image.adler32 "Wikipedia" 0 9);
-        Alcotest.(check int) "empty" 1 (Image.adler32 "" 0 0);
+        Alcotest.(check int) "Wikipedia" 0x11E60398 (Png_codec.adler32 "Wikipedia" 0 9);
+        Alcotest.(check int) "empty" 1 (Png_codec.adler32 "" 0 0);
         (* past the 5552-byte reduction step: 10^5 bytes of 0xFF, by the
            definition: s1 = 1 + 255 n, s2 = n + 255 n (n+1) / 2, mod 65521 *)
         let n = 100_000 in
         let s1 = (1 + (255 * n)) mod 65521 and s2 = (n + (255 * n * (n + 1) / 2)) mod 65521 in
-        Alcotest.(check int) "10^5 x 0xFF" ((s2 lsl 16) lor s1) (Image.adler32 (String.make n '\xff') 0 n));
+        Alcotest.(check int) "10^5 x 0xFF" ((s2 lsl 16) lor s1) (Png_codec.adler32 (String.make n '\xff') 0 n));
     Alcotest.test_case "to_rgb8 layout: row-major, row 0 at the top" `Quick
       (fun () ->
         let img = Image.create 2 2 in
@@ -512,55 +512,55 @@ let metric_tests =
   [
     Alcotest.test_case "PSNR hand-computed" `Quick (fun () ->
         let a = rgb8 4 3 (List.init 36 (fun i -> i * 7)) in
-        Alcotest.(check (float 0.)) "identical" Float.infinity (Image.psnr a a);
+        Alcotest.(check (float 0.)) "identical" Float.infinity (Metrics.psnr a a);
         let b = { a with data = Bytes.copy a.data } in
         Bytes.set_uint8 b.data 5 (Bytes.get_uint8 b.data 5 + 1);
         Alcotest.(check (float 1e-9))
           "one byte off by one"
           (10. *. log10 (255. *. 255. /. (1. /. 36.)))
-          (Image.psnr a b);
+          (Metrics.psnr a b);
         let black = rgb8 1 1 [ 0; 0; 0 ] and white = rgb8 1 1 [ 255; 255; 255 ] in
-        Alcotest.(check (float 1e-12)) "black/white" 0. (Image.psnr black white);
+        Alcotest.(check (float 1e-12)) "black/white" 0. (Metrics.psnr black white);
         Alcotest.check_raises "size mismatch"
-          (Invalid_argument "Image.psnr: sizes differ (1x1 vs 4x3)") (fun () ->
-            ignore (Image.psnr black a)));
+          (Invalid_argument "Metrics.psnr: sizes differ (1x1 vs 4x3)") (fun () ->
+            ignore (Metrics.psnr black a)));
     Alcotest.test_case "SSIM of identical images is 1" `Quick (fun () ->
         let a, b = ssim_pair 1 in
-        Alcotest.(check (float 1e-12)) "a a" 1. (Image.ssim a a);
-        Alcotest.(check (float 1e-12)) "b b" 1. (Image.ssim b b));
+        Alcotest.(check (float 1e-12)) "a a" 1. (Metrics.ssim a a);
+        Alcotest.(check (float 1e-12)) "b b" 1. (Metrics.ssim b b));
     Alcotest.test_case "SSIM is symmetric" `Quick (fun () ->
         List.iter
           (fun k ->
             let a, b = ssim_pair k in
-            Alcotest.(check (float 1e-12)) "sym" (Image.ssim a b) (Image.ssim b a))
+            Alcotest.(check (float 1e-12)) "sym" (Metrics.ssim a b) (Metrics.ssim b a))
           [ 1; 2; 3 ]);
     Alcotest.test_case "SSIM matches scikit-image" `Quick (fun () ->
         List.iter
           (fun (k, expected) ->
             let a, b = ssim_pair k in
             Alcotest.(check (float 1e-9))
-              (Printf.sprintf "pair %d" k) expected (Image.ssim a b))
+              (Printf.sprintf "pair %d" k) expected (Metrics.ssim a b))
           skimage_ssim);
     Alcotest.test_case "SSIM needs 11x11" `Quick (fun () ->
         let a = rgb8 10 11 (List.init 330 (fun _ -> 0)) in
-        match Image.ssim a a with
+        match Metrics.ssim a a with
         | _ -> Alcotest.fail "accepted 10x11"
         | exception Invalid_argument _ -> ());
     Alcotest.test_case "max_diff and diff_image" `Quick (fun () ->
         let a = rgb8 2 1 [ 0; 100; 200; 50; 50; 50 ]
         and b = rgb8 2 1 [ 10; 90; 255; 50; 0; 51 ] in
-        Alcotest.(check int) "max_diff" 55 (Image.max_diff a b);
-        Alcotest.(check int) "max_diff self" 0 (Image.max_diff a a);
+        Alcotest.(check int) "max_diff" 55 (Metrics.max_diff a b);
+        Alcotest.(check int) "max_diff self" 0 (Metrics.max_diff a a);
         Alcotest.(check (list int))
           "gain 4" [ 40; 40; 220; 0; 200; 4 ]
-          (bytes_of (Image.diff_image a b));
+          (bytes_of (Metrics.diff_image a b));
         Alcotest.(check (list int))
           "gain 10 clips" [ 100; 100; 255; 0; 255; 10 ]
-          (bytes_of (Image.diff_image ~gain:10 a b)));
+          (bytes_of (Metrics.diff_image ~gain:10 a b)));
     Alcotest.test_case "side_by_side pads heights with black" `Quick (fun () ->
         let a = rgb8 1 2 [ 1; 1; 1; 2; 2; 2 ]
         and b = rgb8 2 1 [ 3; 3; 3; 4; 4; 4 ] in
-        let s = Image.side_by_side [ a; b ] in
+        let s = Metrics.side_by_side [ a; b ] in
         Alcotest.(check (pair int int)) "size" (3, 2) (s.w, s.h);
         Alcotest.(check (list int))
           "pixels"

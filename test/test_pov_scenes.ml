@@ -42,7 +42,7 @@ let tests =
             let c, _, err = Helpers.run [ "render"; scene; "-W"; "320"; "-H"; "240"; "-o"; ours; "-q" ] in
             Alcotest.(check int) ("camlray: " ^ err) 0 c;
             let a = Camlray.Image.read pov and b = Camlray.Image.read ours in
-            let psnr = Camlray.Image.psnr a b and ssim = Camlray.Image.ssim a b in
+            let psnr = Camlray.Metrics.psnr a b and ssim = Camlray.Metrics.ssim a b in
             Printf.printf "default scene vs POV-Ray: PSNR %.2f dB, SSIM %.5f\n" psnr ssim;
             if psnr < 40. then Alcotest.failf "PSNR %.2f dB < 40" psnr;
             if ssim < 0.99 then Alcotest.failf "SSIM %.5f < 0.99" ssim);
