@@ -1,5 +1,5 @@
 (** Bounding volume hierarchies over primitives given only by their
-    axis-aligned boxes: a binned SAH build, flattened depth first (a node's
+    axis-aligned boxes: a binned SAH build ({!Sah}), flattened depth first (a node's
     first child follows it) into one float32 array, 32 bytes per node (box
     rounded outward, and links), so a node visit touches one cache line.
     At most 2^23 primitives. The primitives themselves stay with the caller: a
