@@ -1,6 +1,7 @@
-(** Scene size against trace time: spheres (written in the scene language
-    and parsed) and triangle meshes (a subdivided sphere, a heightfield
-    terrain, generated in code), from 10 to 10^6 objects filling the same
+(** Scene size against trace time: spheres filling a cube (written in the
+    scene language and parsed), spheres covering a sphere's surface and
+    triangle meshes (a subdivided sphere, a heightfield terrain), these
+    three generated in code, from 10 to 10^6 objects filling the same
     volume and the same part of the screen, at a fixed resolution. Parse,
     BVH build and trace times are reported separately. *)
 

@@ -18,7 +18,10 @@ let whole =
 let objects =
   Alcotest.test_case "object-count benchmark smoke run" `Quick (fun () ->
       let rows = Camlray_bench.Bench.run ~sizes:[ 10; 1000 ] ~width:32 ~height:24 () in
-      Alcotest.(check int) "rows" 6 (List.length rows);
+      Alcotest.(check int) "rows: 4 workloads at 2 sizes" 8 (List.length rows);
+      Alcotest.(check (list string)) "workloads"
+        [ "sphere mesh"; "sphere shell"; "spheres"; "terrain mesh" ]
+        (List.sort_uniq compare (List.map (fun (r : Camlray_bench.Bench.row) -> r.kind) rows));
       List.iter
         (fun (r : Camlray_bench.Bench.row) ->
           if not (Float.is_finite r.trace_s && r.count > 0) then Alcotest.failf "bad row %s" r.kind)
