@@ -30,6 +30,8 @@ let () =
       Test_lang.tests;
       Test_sampler.tests;
       Test_bsdf.tests;
+      Test_finish.tests;
+      Test_interior.tests;
       Test_path.tests;
       Test_whitted.tests;
       Test_light.tests;
