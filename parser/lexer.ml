@@ -233,6 +233,59 @@ let number =
                   | ('.', Plus digit, Opt exponent)]
 let ident = [%sedlex.regexp? ('a' .. 'z' | 'A' .. 'Z' | '_'), Star ('a' .. 'z' | 'A' .. 'Z' | '0' .. '9' | '_')]
 
+(* Powers of ten that are exact doubles *)
+let exact_tens = Array.init 23 (fun k -> float_of_string ("1e" ^ string_of_int k))
+
+(* The value of the [number] just matched, as [float_of_string] gives it.
+   Most numbers in a scene have at most 15 significant digits and a small
+   power of ten: their digits, an integer below 2^53, times or divided by
+   an exact power of ten up to 10^22 is one correctly rounded operation,
+   so the result is the nearest double, as strtod's (Clinger's fast path);
+   others go through the lexeme's text. *)
+let number_value buf =
+  let n = Sedlexing.lexeme_length buf in
+  let c i = Uchar.to_int (Sedlexing.lexeme_char buf i) in
+  let m = ref 0 and sig_digits = ref 0 and scale = ref 0 and i = ref 0 in
+  let digits ~after_point =
+    while !i < n && c !i >= 48 && c !i <= 57 do
+      let d = c !i - 48 in
+      if !sig_digits > 0 || d > 0 then begin
+        m := (!m * 10) + d;
+        incr sig_digits
+      end;
+      if after_point then decr scale;
+      incr i
+    done
+  in
+  digits ~after_point:false;
+  if !i < n && c !i = 46 (* . *) then begin
+    incr i;
+    digits ~after_point:true
+  end;
+  let exp_ok =
+    if !i < n then begin
+      (* e or E, a sign, digits *)
+      incr i;
+      let neg = !i < n && c !i = 45 in
+      if !i < n && (c !i = 45 || c !i = 43) then incr i;
+      let e = ref 0 and k = ref 0 in
+      while !i < n do
+        e := (!e * 10) + (c !i - 48);
+        incr k;
+        incr i
+      done;
+      scale := !scale + if neg then - !e else !e;
+      !k <= 4
+    end
+    else true
+  in
+  if exp_ok && !sig_digits <= 15 then
+    if !m = 0 then 0.
+    else if !scale >= 0 && !scale <= 22 then float_of_int !m *. Array.unsafe_get exact_tens !scale
+    else if !scale < 0 && !scale >= -22 then float_of_int !m /. Array.unsafe_get exact_tens (- !scale)
+    else float_of_string (Sedlexing.Utf8.lexeme buf)
+  else float_of_string (Sedlexing.Utf8.lexeme buf)
+
 let rec next buf : raw =
   match%sedlex buf with
   | Plus (' ' | '\t' | '\r' | '\n' | '\012' | 0xfeff) -> next buf
@@ -241,7 +294,7 @@ let rec next buf : raw =
       let s, e = Sedlexing.lexing_positions buf in
       (try comment 1 buf with Lex_error m -> raise (Unclosed (m, s, e)));
       next buf
-  | number -> Tok (FLOAT (float_of_string (Sedlexing.Utf8.lexeme buf)))
+  | number -> Tok (FLOAT (number_value buf))
   | '"' ->
       let s, e = Sedlexing.lexing_positions buf in
       Tok (STRING (try string_body buf with Lex_error m -> raise (Unclosed (m, s, e))))

@@ -16,6 +16,7 @@ let () =
       Test_access.tests;
       Test_image.tests;
       Test_value.tests;
+      Test_lexer.tests;
       Test_supplier.tests;
       Test_fn.tests;
       Test_shape.tests;
