@@ -183,22 +183,26 @@ let item_loc { store = b; _ } i =
   Loc.make (at (p 0) (p 1) (p 2)) (at (p 3) (p 4) (p 5))
 
 (* [f i v] on every item in order, [v] as the parser gave it *)
+(* item [i] as the parser gave it, its floats at [off] of [b.nums] *)
+let item_value b i off =
+  match Char.code (Bytes.unsafe_get b.arity i) with
+  | 0 -> Value.Float (Float.Array.get b.nums off)
+  | 255 -> List.assoc i b.others
+  | k -> Value.Vector (Array.init k (fun j -> Float.Array.get b.nums (off + j)))
+
+(* how many floats item [i] holds in [b.nums] *)
+let width b i = match Char.code (Bytes.unsafe_get b.arity i) with 0 -> 1 | 255 -> 0 | k -> k
+
 let iter_items ({ store = b; count; _ } : items) f =
   let off = ref 0 in
   for i = 0 to count - 1 do
-    let v =
-      match Char.code (Bytes.unsafe_get b.arity i) with
-      | 0 ->
-          incr off;
-          Value.Float (Float.Array.get b.nums (!off - 1))
-      | 255 -> List.assoc i b.others
-      | k ->
-          let o = !off in
-          off := o + k;
-          Value.Vector (Array.init k (fun j -> Float.Array.get b.nums (o + j)))
-    in
-    f i v
+    f i (item_value b i !off);
+    off := !off + width b i
   done
+
+(* A vector of three read straight from the store (the common item: no
+   value made for it), others through their value *)
+let is_triple b i = Bytes.unsafe_get b.arity i = '\003'
 
 let count loc what n k =
   let n = Value.to_int loc n in
@@ -206,14 +210,23 @@ let count loc what n k =
 
 let vectors loc what n b =
   count loc what n b.count;
-  let a = Float.Array.create (3 * b.count) in
-  iter_items b (fun i v ->
+  let { store; count = k; _ } = b in
+  let a = Float.Array.create (3 * k) in
+  let off = ref 0 in
+  for i = 0 to k - 1 do
+    let o = !off in
+    if is_triple store i then Float.Array.blit store.nums o a (3 * i) 3
+    else begin
+      let v = item_value store i o in
       (* the location only where to_vec3 needs it, for its message *)
       let loc = match v with Value.Float _ | Value.Vector _ -> Loc.none | _ -> item_loc b i in
       let p = Value.to_vec3 loc v in
       Float.Array.set a (3 * i) p.x;
       Float.Array.set a ((3 * i) + 1) p.y;
-      Float.Array.set a ((3 * i) + 2) p.z);
+      Float.Array.set a ((3 * i) + 2) p.z
+    end;
+    off := o + width store i
+  done;
   a
 
 let vertex_vectors loc n items = Verts (vectors loc "vertex_vectors" n items)
@@ -232,18 +245,32 @@ let index_triple b i v into at =
 
 (* face_indices items: a vector, optionally followed by 1 or 3 texture indices *)
 let face_indices loc n b =
-  let k = b.count in
+  let { store; count = k; _ } = b in
   let f = Array.make (3 * k) 0 and t = Array.make k (-1) and nf = ref 0 in
-  iter_items b (fun i v ->
-      match v with
-      | Value.Float x ->
-          (* the first texture index after a face is its texture; the
-             second and third (per vertex) are ignored *)
-          if !nf > 0 && t.(!nf - 1) = -1 then t.(!nf - 1) <- int_of_float x
-      | _ ->
-          index_triple b i v f (3 * !nf);
-          t.(!nf) <- -1;
-          incr nf);
+  let off = ref 0 in
+  for i = 0 to k - 1 do
+    let o = !off in
+    (if is_triple store i then begin
+       for j = 0 to 2 do
+         let x = Float.Array.get store.nums (o + j) in
+         if Float.of_int (int_of_float x) <> x then Diag.error (item_loc b i) "face index %g is not an integer" x;
+         f.((3 * !nf) + j) <- int_of_float x
+       done;
+       t.(!nf) <- -1;
+       incr nf
+     end
+     else
+       match item_value store i o with
+       | Value.Float x ->
+           (* the first texture index after a face is its texture; the
+              second and third (per vertex) are ignored *)
+           if !nf > 0 && t.(!nf - 1) = -1 then t.(!nf - 1) <- int_of_float x
+       | v ->
+           index_triple b i v f (3 * !nf);
+           t.(!nf) <- -1;
+           incr nf);
+    off := o + width store i
+  done;
   count loc "face_indices" n !nf;
   let t = Array.sub t 0 !nf in
   Faces (loc, Array.sub f 0 (3 * !nf), if Array.exists (fun x -> x >= 0) t then t else [||])

@@ -207,6 +207,24 @@ let declared_use () =
   | Ok _ -> Alcotest.fail "unexpected scene"
   | Error d -> Alcotest.fail (Diag.to_string d)
 
+(* mesh2 items: vectors of three are read straight from the block's
+   store, every other form through its value; both give the same mesh *)
+let mesh2_items () =
+  let text =
+    "mesh2 { vertex_vectors { 5, <0, 0, 0>, 2, <1, 2, 3, 4>, <0.5, 0.25, 0.125>, <9, 8, 7> }\n\
+     face_indices { 3, <0, 1, 2>, 1, <2, 3, 4, 0>, <4, 0, 1>, 2, 0, 0 }\n\
+     texture_list { 3, texture { pigment { rgb 1 } } texture { pigment { rgb 0.5 } } texture { pigment { rgb 0 } } } }\n"
+  in
+  match Parse.string text with
+  | Ok { Sdl.items = [ Sdl.Object { shape = Sdl.Mesh m; _ } ]; _ } ->
+      Alcotest.(check (list (float 0.))) "vertices: triples, a float made a vector, a 4-vector cut to 3"
+        [ 0.; 0.; 0.; 2.; 2.; 2.; 1.; 2.; 3.; 0.5; 0.25; 0.125; 9.; 8.; 7. ]
+        (Float.Array.to_list m.verts);
+      Alcotest.(check (array int)) "faces: triples and a 4-vector's first three" [| 0; 1; 2; 2; 3; 4; 4; 0; 1 |] m.faces;
+      Alcotest.(check (array int)) "texture indices after faces" [| 1; -1; 2 |] m.face_textures
+  | Ok _ -> Alcotest.fail "unexpected scene"
+  | Error d -> Alcotest.fail (Diag.to_string d)
+
 let tests =
   ( "lang",
     [
@@ -219,6 +237,10 @@ let tests =
            "Swirl uses spiral1");
       Alcotest.test_case "unsupported keyword named" `Quick
         (expect_error "fog { distance 3 }\n" "fog is not supported by camlray");
+      Alcotest.test_case "mesh2 items of every form" `Quick mesh2_items;
+      Alcotest.test_case "a face index that is not an integer" `Quick
+        (expect_error "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\nface_indices { 1, <0, 1, 2.5> } }\n"
+           "<string>:2:19: error: face index 2.5 is not an integer");
       Alcotest.test_case "include cycle" `Quick
         (expect_error "#include \"/dev/null/x\"\n" "cannot find include file");
     ]
