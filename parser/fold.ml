@@ -96,7 +96,7 @@ let peek st =
    and its arithmetic is done once, when it is whole, in the parser's
    order. *)
 (* where a float name the run may read silently is read, as [ident]
-   reads it (None: not a name the run may read silently); [value_of]:
+   reads it (None: not a name the run may read silently); [value_into]:
    its value, if it is still a float *)
 type how = Builtin of float | Version | Named of Env.cell
 
@@ -108,15 +108,20 @@ let how t name =
     | None when String.equal name "version" -> Some Version
     | None -> Option.map (fun c -> Named c) (Env.lookup t.env name)
 
-let value_of = function
-  | Builtin v -> Some v
-  | Version -> Some (Defaults.version ())
+(* the value written into [a.(i)] (no option: a run read again in a
+   loop reads its names at every turn); false when it is no float *)
+let value_into h (a : float array) i =
+  match h with
+  | Builtin v -> Array.unsafe_set a i v; true
+  | Version -> Array.unsafe_set a i (Defaults.version ()); true
   | Named c -> (
-      match Env.binding c with Env.Decl (Decl.Value (Value.Float f)) -> Some f | _ -> None)
+      match Env.binding c with
+      | Env.Decl (Decl.Value (Value.Float f)) -> Array.unsafe_set a i f; true
+      | _ -> false)
 
 let silent_float t =
   match (raw_peek t).raw with
-  | Ident name -> ( match how t name with Some h -> value_of h <> None | None -> false)
+  | Ident name -> ( match how t name with Some h -> value_into h (Array.make 1 0.) 0 | None -> false)
   | _ -> false
 
 let take st =
@@ -407,19 +412,7 @@ let replay t ~accepts (tok, (loc : Loc.t)) =
               (* the values are read before any is used: a component
                  calls no declared function, which could replay this run *)
               let values = p.values in
-              let rec resolve i =
-                i >= n
-                || (match Array.unsafe_get p.hows i with
-                   | Named c -> (
-                       match Env.binding c with
-                       | Env.Decl (Decl.Value (Value.Float f)) -> Array.unsafe_set values i f; true
-                       | _ -> false)
-                   | h -> (
-                       match value_of h with
-                       | Some v -> Array.unsafe_set values i v; true
-                       | None -> false))
-                   && resolve (i + 1)
-              in
+              let rec resolve i = i >= n || (value_into (Array.unsafe_get p.hows i) values i && resolve (i + 1)) in
               if not (found && resolve 0) then None
               else begin
                 f.pos <- p0 + p.len;

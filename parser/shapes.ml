@@ -232,14 +232,17 @@ let vectors loc what n b =
 let vertex_vectors loc n items = Verts (vectors loc "vertex_vectors" n items)
 let normal_vectors loc n items = Normals (vectors loc "normal_vectors" n items)
 
+(* [x], an index of item [i], a face, as an integer *)
+let face_index b i x =
+  if Float.of_int (int_of_float x) <> x then Diag.error (item_loc b i) "face index %g is not an integer" x;
+  int_of_float x
+
 (* the three indices of item [i], a face, written at [at] *)
 let index_triple b i v into at =
   match v with
   | Value.Vector a when Array.length a >= 3 ->
       for j = 0 to 2 do
-        let x = a.(j) in
-        if Float.of_int (int_of_float x) <> x then Diag.error (item_loc b i) "face index %g is not an integer" x;
-        into.(at + j) <- int_of_float x
+        into.(at + j) <- face_index b i a.(j)
       done
   | v -> Diag.error (item_loc b i) "expected a vector of three indices <a, b, c>, found %s" (Value.type_name v)
 
@@ -252,9 +255,7 @@ let face_indices loc n b =
     let o = !off in
     (if is_triple store i then begin
        for j = 0 to 2 do
-         let x = Float.Array.get store.nums (o + j) in
-         if Float.of_int (int_of_float x) <> x then Diag.error (item_loc b i) "face index %g is not an integer" x;
-         f.((3 * !nf) + j) <- int_of_float x
+         f.((3 * !nf) + j) <- face_index b i (Float.Array.get store.nums (o + j))
        done;
        t.(!nf) <- -1;
        incr nf
