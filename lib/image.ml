@@ -110,11 +110,9 @@ let[@inline] lookup t v =
   else if v >= 1. then 255
   else search t.th v
 
-(* Rows per band of the encoder's parallel parts: fixed, so that the file
-   does not depend on the number of domains. *)
-let band_rows = 64
-
-let bands h = (h + band_rows - 1) / band_rows
+(* quantized in the PNG encoder's bands of rows *)
+let band_rows = Png_codec.band_rows
+let bands = Png_codec.bands
 
 let to_rgb8 ?(par = sequential) enc (img : t) =
   let data = Bytes.create (img.w * img.h * 3) in

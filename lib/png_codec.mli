@@ -9,6 +9,13 @@ type par = int -> (int -> unit) -> unit
 val sequential : par
 (** Runs them in turn. *)
 
+val band_rows : int
+(** 64: the encoder filters and compresses its rows in bands of this
+    many, fixed, so that the file does not depend on [par]. *)
+
+val bands : int -> int
+(** How many bands an image of that height has. *)
+
 val signature : string
 (** The 8 bytes every PNG file starts with. *)
 
