@@ -55,13 +55,15 @@ let trace ~width ~height ~domains (s : Scene.t) =
   List.fold_left Float.min infinity
     (List.init 7 (fun _ -> snd (time (fun () -> Render.image_into ~domains ~width ~height pixel))))
 
+(* the spheres' colour, as the text workload writes it *)
+let sphere_texture =
+  Texture.plain (Pigment.Solid { c = Color.make 0.9 0.5 0.2; filter = 0.; transmit = 0. }) Finish.default
+
 let direct_spheres ?(domains = 1) n =
   let base = compile header in
   let rng = Random.State.make [| 1; n |] in
   let r = 0.5 *. (float n ** (-1. /. 3.)) in
-  let texture =
-    Texture.plain (Pigment.Solid { c = Color.make 0.9 0.5 0.2; filter = 0.; transmit = 0. }) Finish.default
-  in
+  let texture = sphere_texture in
   let objects = Array.init n (fun _ ->
       let c () = Random.State.float rng 2. -. 1. in
       let x = c () in let y = c () in let z = c () in
@@ -76,9 +78,7 @@ let direct_spheres ?(domains = 1) n =
 let shell_spheres ~width ~height ~domains n =
   let base = compile header in
   let r = 1.2 *. 0.5 *. Float.sqrt (4. *. Float.pi /. float n) in
-  let texture =
-    Texture.plain (Pigment.Solid { c = Color.make 0.9 0.5 0.2; filter = 0.; transmit = 0. }) Finish.default
-  in
+  let texture = sphere_texture in
   let turn = Float.pi *. (3. -. Float.sqrt 5.) in
   let objects =
     Array.init n (fun i ->
