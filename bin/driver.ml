@@ -102,12 +102,27 @@ let with_signals f =
       Sys.set_signal Sys.sigint old_int;
       Sys.set_signal Sys.sigterm old_term)
 
-let write_image ~domains path (scene : Scene.t) img =
+(* A render's pixels: linear floats, or the 8-bit values of a PNG or PPM
+   made as the pixels are (an eighth of the memory). *)
+type frame = Floats of Image.t | Bytes of Image.rgb8
+
+let is_pfm path = String.lowercase_ascii (Filename.extension path) = ".pfm"
+
+let frame_size = function
+  | Floats img -> (Image.width img, Image.height img)
+  | Bytes im -> (im.w, im.h)
+
+let rgb8 ~par (scene : Scene.t) = function
+  | Bytes im -> im
+  | Floats img -> Image.to_rgb8 ~par scene.settings.encoding img
+
+let write_image ~domains path (scene : Scene.t) frame =
   let par = Render.parallel ~domains in
-  match String.lowercase_ascii (Filename.extension path) with
-  | ".pfm" -> Image.write_pfm path img
-  | ".ppm" -> Image.write_ppm path (Image.to_rgb8 ~par scene.settings.encoding img)
-  | _ -> Image.write_png ~par path (Image.to_rgb8 ~par scene.settings.encoding img)
+  match (frame, String.lowercase_ascii (Filename.extension path)) with
+  | Floats img, ".pfm" -> Image.write_pfm path img
+  | Bytes _, ".pfm" -> invalid_arg "Driver.write_image: a PFM needs the linear values"
+  | _, ".ppm" -> Image.write_ppm path (rgb8 ~par scene frame)
+  | _ -> Image.write_png ~par path (rgb8 ~par scene frame)
 
 let frame_name out ~first ~last f =
   ignore first;
@@ -213,10 +228,15 @@ let render_frame o ~clock ~frame ~out ~t0 =
                   Aa.render_into ~domains ~progress ~cancelled ~width ~height ~threshold
                     ~depth:o.aa_depth (Whitted.sample_into scene ~width ~height)
                 in
-                Option.fold ~none:full ~some:(crop full) region
+                Floats (Option.fold ~none:full ~some:(crop full) region)
+            | _ when is_pfm out ->
+                Floats
+                  (Render.image_into ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
+                     ~width ~height pixel)
             | _ ->
-                Render.image_into ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
-                  ~width ~height pixel)
+                Bytes
+                  (Render.rgb8_into ~domains ~progress ~cancelled ?order_seed:o.tile_order_seed ?region
+                     ~width ~height scene.settings.encoding pixel))
       in
       if tty then prerr_newline ();
       let t2 = Unix.gettimeofday () in
@@ -228,12 +248,11 @@ let render_frame o ~clock ~frame ~out ~t0 =
              let par = Render.parallel ~domains in
              Image.write_png ~par
                ~text:(Part.text { Part.region = r; width; height; id })
-               out
-               (Image.to_rgb8 ~par scene.settings.encoding img)
+               out (rgb8 ~par scene img)
        with Sys_error e | Failure e -> fail "cannot write %s: %s" out e);
       let t3 = Unix.gettimeofday () in
       if not o.quiet then begin
-        let pixels = Image.width img * Image.height img in
+        let pixels = let w, h = frame_size img in w * h in
         let samples = float_of_int (pixels * match o.mode with Whitted -> 1 | Monte_carlo -> spp) in
         Printf.eprintf
           "camlray: wrote %s (%dx%d%s, %s, %d domain%s) in %.3f s (parse %.3f s, render %.3f s, %.2f M samples/s, write %.3f s)\n%!"

@@ -94,9 +94,9 @@ let search (th : float array) v =
    the rest take the search: the same count in every case. *)
 let buckets = 8192
 
-type table = { th : float array; start : Bytes.t }
+type quantizer = { th : float array; start : Bytes.t }
 
-let table enc =
+let quantizer enc =
   let th = thresholds enc in
   { th; start = Bytes.init buckets (fun b -> Char.chr (search th (float b /. float buckets))) }
 
@@ -114,9 +114,19 @@ let[@inline] lookup t v =
 let band_rows = Png_codec.band_rows
 let bands = Png_codec.bands
 
+let create_rgb8 w h =
+  if w <= 0 || h <= 0 then invalid_arg "Image.create_rgb8";
+  { w; h; data = Bytes.create (w * h * 3) }
+
+let set_rgb8 q (im : rgb8) x y r g b =
+  let i = 3 * ((y * im.w) + x) in
+  Bytes.set im.data i (Char.unsafe_chr (lookup q r));
+  Bytes.set im.data (i + 1) (Char.unsafe_chr (lookup q g));
+  Bytes.set im.data (i + 2) (Char.unsafe_chr (lookup q b))
+
 let to_rgb8 ?(par = sequential) enc (img : t) =
   let data = Bytes.create (img.w * img.h * 3) in
-  let th = table enc in
+  let th = quantizer enc in
   let row = img.w * 3 in
   par (bands img.h) (fun b ->
       let i0 = b * band_rows * row and i1 = min img.h ((b + 1) * band_rows) * row in

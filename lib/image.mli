@@ -53,6 +53,19 @@ val quantize : encoding -> float -> int
 (** The 8-bit value of one channel by the formula: clip to [0,1] (NaN
     becomes 0), encode, round to nearest. *)
 
+type quantizer
+(** {!quantize} of one encoding, by table (see {!to_rgb8}). *)
+
+val quantizer : encoding -> quantizer
+
+val create_rgb8 : int -> int -> rgb8
+(** [create_rgb8 w h] is an 8-bit image whose pixels are unspecified until
+    set. Requires [w > 0] and [h > 0]. *)
+
+val set_rgb8 : quantizer -> rgb8 -> int -> int -> float -> float -> float -> unit
+(** [set_rgb8 q im x y r g b] stores the 8-bit values of a linear colour
+    at column [x], row [y]: the bytes {!to_rgb8} would give it. *)
+
 val to_rgb8 : ?par:par -> encoding -> t -> rgb8
 (** [quantize] of every channel (by a table of the 255 thresholds between
     8-bit values, equal to the formula for every float). *)

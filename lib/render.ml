@@ -139,11 +139,13 @@ let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
 (* the sum a pixel function writes into, per domain *)
 let pixel_key = Scratch.key (fun () -> Color.acc 0.)
 
-let image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
+(* The pixels of [region] (default: the whole image), each stored by
+   [store] at its place in the region. *)
+let pixels ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f ~frame ~store =
   let r = match region with Some r -> r | None -> { x0 = 0; y0 = 0; x1 = width; y1 = height } in
   if r.x0 < 0 || r.y0 < 0 || r.x1 > width || r.y1 > height || r.x0 >= r.x1 || r.y0 >= r.y1 then
     invalid_arg "Render.image: region outside the image";
-  let img = Image.create_unset (r.x1 - r.x0) (r.y1 - r.y0) in
+  let img = frame (r.x1 - r.x0) (r.y1 - r.y0) in
   let cancelled = Option.value cancelled ~default:(fun () -> false) in
   run_tiles ~domains ?progress ~cancelled ?order_seed ~width ~height ~size:16 (fun t ->
       let c = Scratch.get pixel_key in
@@ -152,10 +154,19 @@ let image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height 
           (* a pixel can take long (mc, many samples): stop between pixels *)
           if cancelled () then raise Cancelled;
           f x y c;
-          Image.set img (x - r.x0) (y - r.y0) c.ar c.ag c.ab
+          store img (x - r.x0) (y - r.y0) c
         done
       done);
   img
+
+let image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
+  pixels ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f ~frame:Image.create_unset
+    ~store:(fun img x y (c : Color.acc) -> Image.set img x y c.ar c.ag c.ab)
+
+let rgb8_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height encoding f =
+  let q = Image.quantizer encoding in
+  pixels ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f ~frame:Image.create_rgb8
+    ~store:(fun img x y (c : Color.acc) -> Image.set_rgb8 q img x y c.ar c.ag c.ab)
 
 let image ~domains ?progress ?cancelled ?order_seed ?region ~width ~height f =
   image_into ~domains ?progress ?cancelled ?order_seed ?region ~width ~height (fun x y out ->

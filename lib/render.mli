@@ -41,6 +41,14 @@ val image_into :
     (one per tile, overwritten at every pixel): no colour record per
     pixel. *)
 
+val rgb8_into :
+  domains:int -> ?progress:(done_:int -> total:int -> unit) ->
+  ?cancelled:(unit -> bool) -> ?order_seed:int -> ?region:tile -> width:int -> height:int ->
+  Image.encoding -> (int -> int -> Color.acc -> unit) -> Image.rgb8
+(** {!image_into} quantized as the pixels are made: the bytes
+    [Image.to_rgb8 encoding (image_into ...)] holds, without the frame of
+    floats (24 bytes a pixel, 3 here). *)
+
 val parallel : domains:int -> Image.par
 (** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
     [domains] workers (in turn when [domains <= 1]): the image encoders'

@@ -124,4 +124,32 @@ let heap_policy () =
   Alcotest.(check bool) "grown for an allocating pixel function" true (busy >= 1024 * 1024);
   Alcotest.(check int) "the calling domain's size back" own (Gc.get ()).minor_heap_size
 
-let tests = ("render", units @ [ Alcotest.test_case "minor heaps grow only where pixels allocate" `Quick heap_policy ])
+(* The 8-bit frame a PNG or PPM render fills: the bytes of the float
+   frame quantized afterwards, for any value a pixel may hold (NaN,
+   below 0, above 1, the default scene's), any encoding, whole images
+   and regions, one domain or two. *)
+let rgb8_frame () =
+  let odd x y c =
+    let h = Hashtbl.hash (x, y) in
+    let v k = match (h lsr k) land 7 with 0 -> nan | 1 -> -0.25 | 2 -> 1.5 | 3 -> 1. | 4 -> 0. | _ -> float ((h lsr (k + 3)) land 1023) /. 1023. in
+    Color.acc_set c (v 0) (v 13) (v 26)
+  in
+  let scene = Helpers.compile_string (default_scene ()) in
+  let width = 37 and height = 29 in
+  let shaded = Whitted.pixel_into scene ~width ~height in
+  List.iter
+    (fun (name, f) ->
+      List.iter
+        (fun enc ->
+          List.iter
+            (fun (domains, region) ->
+              let a = Image.to_rgb8 enc (Render.image_into ~domains ?region ~width ~height f) in
+              let b = Render.rgb8_into ~domains ?region ~width ~height enc f in
+              if a.w <> b.w || a.h <> b.h || not (Bytes.equal a.data b.data) then
+                Alcotest.failf "%s, %d domains%s: the 8-bit frame differs" name domains
+                  (if region = None then "" else ", region"))
+            [ (1, None); (2, None); (2, Some { Render.x0 = 5; y0 = 17; x1 = 36; y1 = 29 }) ])
+        [ Image.Srgb; Image.Identity; Image.Gamma_srgb 2.2 ])
+    [ ("arbitrary values", odd); ("default scene", shaded) ]
+
+let tests = ("render", units @ [ Alcotest.test_case "8-bit frame = the float frame quantized" `Quick rgb8_frame; Alcotest.test_case "minor heaps grow only where pixels allocate" `Quick heap_policy ])
