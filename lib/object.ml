@@ -6,6 +6,7 @@ type t = {
   no_shadow : bool;
   inverted : bool;
   clip : t array;
+  bound : t array;
   bounds : (Vec3.t * Vec3.t) option;
   index : index option;
   inv : Float.Array.t;
@@ -92,7 +93,8 @@ let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior =
   let xform, shape = fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
   let inv = if Transform.is_identity xform then identity_matrix else inverse_matrix xform in
-  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bounds = clip_box clip b; index = None; inv }
+  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bound = [||]; bounds = clip_box clip b;
+    index = None; inv }
 
 let node geom clip b =
   {
@@ -103,6 +105,7 @@ let node geom clip b =
     no_shadow = false;
     inverted = false;
     clip;
+    bound = [||];
     bounds = clip_box clip b;
     index = None;
     inv = identity_matrix;
@@ -145,17 +148,27 @@ let with_clip o clip =
   let clip = Array.append o.clip clip in
   { o with clip; bounds = clip_box clip o.bounds }
 
+(* A ray-level test (see [in_bound]): the object's box stays its own,
+   since its crossings need not lie inside the bound. *)
+let with_bound o bound = { o with bound = Array.append o.bound bound }
+
 let rec invert o =
   match o.geom with
   | Prim s ->
       let b = if o.inverted then world_box o.xform (Shape.bounds s) else None in
       { o with inverted = not o.inverted; bounds = clip_box o.clip b }
-  | Union cs | Merge cs -> intersection ~clip:o.clip (Array.map invert cs)
-  | Intersection cs -> merge ~clip:o.clip (Array.map invert cs)
+  | Union cs | Merge cs -> with_bound (intersection ~clip:o.clip (Array.map invert cs)) o.bound
+  | Intersection cs -> with_bound (merge ~clip:o.clip (Array.map invert cs)) o.bound
 
 type found = { mutable leaf : t; local : Ray.scratch; pt : Ray.scratch }
 
 let found o = { leaf = o; local = Ray.scratch (); pt = Ray.scratch () }
+
+(* per domain, by nesting depth (a bound may have a bound): the query
+   space of a bound's test *)
+let bound_scratch =
+  let any = make (Shape.sphere Vec3.zero 1.) in
+  Scratch.key (fun () -> Scratch.levels ~initial:1 (fun () -> (Hit.create infinity, found any)))
 
 let next_tmin (r : Ray.t) t =
   let dl = Vec3.length r.dir in
@@ -267,7 +280,31 @@ let[@inline] local o (r : Ray.scratch) (f : found) =
   end
 
 let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
-  if Array.length o.clip = 0 then raw_hit o r tmin h f else first_accepted true o r tmin h f by_clip [||] 0
+  if Array.length o.bound > 0 && not (in_bound o.bound r tmin 0) then false
+  else if Array.length o.clip = 0 then raw_hit o r tmin h f
+  else first_accepted true o r tmin h f by_clip [||] 0
+
+(* POV-Ray's [bounded_by]: the object is looked at only by rays that
+   meet every bounding object, or start inside it; its crossings are then
+   taken wherever they are. *)
+and in_bound bs r tmin i =
+  i >= Array.length bs
+  ||
+  let b = Array.unsafe_get bs i in
+  let lv = Scratch.get bound_scratch in
+  let h, f = Scratch.push lv in
+  h.t <- infinity;
+  h.floor <- neg_infinity;
+  let met =
+    hit_s b r tmin h f
+    ||
+    (f.pt.ox <- r.ox;
+     f.pt.oy <- r.oy;
+     f.pt.oz <- r.oz;
+     inside_s b f)
+  in
+  Scratch.pop lv;
+  met && in_bound bs r tmin (i + 1)
 
 and raw_hit o r tmin h f =
   match o.geom with
@@ -369,7 +406,8 @@ let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
   | Prim _ when shadow && o.no_shadow ->
       (* every crossing would be passed over (a light's looks_like) *)
       true
-  | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && opaque o -> not (any_mesh o m r tmin h fd)
+  | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && Array.length o.bound = 0 && opaque o ->
+      not (any_mesh o m r tmin h fd)
   | _ ->
   let tmax = r.far and floor0 = h.floor in
   let ok = ref true and go = ref true in

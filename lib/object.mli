@@ -16,6 +16,9 @@ type t = private {
   no_shadow : bool;
   inverted : bool;  (** leaf: inside and outside swapped, normal flipped *)
   clip : t array;  (** [clipped_by]: surfaces outside any of these are removed *)
+  bound : t array;
+      (** [bounded_by]: only rays that meet all of these (or start inside
+          them) see the object, wherever they cross it *)
   bounds : (Vec3.t * Vec3.t) option;  (** world box; [None] when infinite *)
   index : index option;  (** a BVH over the children of a large union *)
   inv : Float.Array.t;  (** leaves: the inverse of [xform], 3x4 row-major, translation last *)
@@ -47,6 +50,11 @@ val merge : ?clip:t array -> t array -> t
 
 val with_clip : t -> t array -> t
 (** Add [clipped_by] objects (world space). *)
+
+val with_bound : t -> t array -> t
+(** Add [bounded_by] objects (world space). The object's box is not
+    narrowed: a ray that meets the bound crosses the object wherever it
+    does. *)
 
 val invert : t -> t
 (** POV-Ray's [inverse]: flips a leaf; De Morgan on CSG nodes (a union or

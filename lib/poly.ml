@@ -107,3 +107,125 @@ let first_quartic_root a b c d e lo hi =
     done;
     !result
   end
+
+(* Polynomials of any degree, by their derivatives: the roots of the
+   (k+1)-th derivative cut the line into pieces where the k-th is
+   monotone, so each piece holds at most one of its roots, bracketed by a
+   change of sign. Level k's coefficients (ascending) are at k * w. *)
+type scratch = { d : Float.Array.t; r : Float.Array.t; nr : int array; w : int; root : Float.Array.t }
+
+let scratch max_degree =
+  let w = max_degree + 1 in
+  { d = Float.Array.make (w * w) 0.; r = Float.Array.make (w * w) 0.; nr = Array.make w 0; w;
+    root = Float.Array.make 1 0. }
+
+let root sc = Float.Array.unsafe_get sc.root 0
+
+let[@inline] horner d base deg t =
+  let acc = ref (Float.Array.unsafe_get d (base + deg)) in
+  for m = deg - 1 downto 0 do
+    acc := (!acc *. t) +. Float.Array.unsafe_get d (base + m)
+  done;
+  !acc
+
+(* A root of level [k] (degree [deg]) in [lo, hi], where its values [fl]
+   at [lo] and the other end differ in sign: Newton steps on its
+   derivative (level k+1) kept inside the shrinking bracket, bisection
+   when a step leaves it. *)
+let root_between sc k deg lo hi fl =
+  let d = sc.d and w = sc.w in
+  let lo = ref lo and hi = ref hi and fl = ref fl in
+  let t = ref (0.5 *. (!lo +. !hi)) and n = ref 0 in
+  while !n < 100 && !hi -. !lo > 1e-14 *. (1. +. Float.abs !t) do
+    incr n;
+    let f = horner d (k * w) deg !t in
+    if f = 0. then (lo := !t; hi := !t)
+    else begin
+      if (f < 0.) = (!fl < 0.) then (lo := !t; fl := f) else hi := !t;
+      let df = horner d ((k + 1) * w) (deg - 1) !t in
+      let tn = if df <> 0. then !t -. (f /. df) else nan in
+      t := if tn > !lo && tn < !hi then tn else 0.5 *. (!lo +. !hi)
+    end
+  done;
+  !t
+
+(* Roots farther than this are not looked for (POV-Ray's largest
+   intersection distance) *)
+let reach = 1e7
+
+let[@inline] g a i = Float.Array.unsafe_get a i
+
+(* The sum of |c_i| reach^i below degree m, over reach^m (how far the
+   terms below m can go where roots are looked for, in units of c_m's) *)
+let below (eqn : Float.Array.t) m =
+  let s = ref 0. and p = ref 1. in
+  for i = m - 1 downto 0 do
+    p := !p /. reach;
+    s := !s +. (Float.abs (g eqn i) *. !p)
+  done;
+  !s
+
+let first_root sc (eqn : Float.Array.t) degree lo =
+  (* a leading term below the rounding of the others wherever a root is
+     looked for is dropped: a direction component that is zero but for
+     rounding (a rotation by 90 degrees) leaves such terms, whose roots,
+     far out, are not the surface's *)
+  let n = ref degree in
+  while !n > 0 && Float.abs (g eqn !n) <= 1e-16 *. below eqn !n do decr n done;
+  let n = !n in
+  if n = 0 then false
+  else begin
+    (* every root lies within Cauchy's bound *)
+    let lead = g eqn n in
+    let bound = ref 0. in
+    for m = 0 to n - 1 do
+      bound := Float.max !bound (Float.abs (g eqn m /. lead))
+    done;
+    let hi = Float.min reach (1. +. !bound) in
+    let lo = Float.max lo (-.hi) in
+    if not (lo < hi) then false
+    else begin
+      let d = sc.d and w = sc.w and r = sc.r in
+      for m = 0 to n do
+        Float.Array.unsafe_set d m (g eqn m)
+      done;
+      for k = 1 to n - 1 do
+        for m = 0 to n - k do
+          Float.Array.unsafe_set d ((k * w) + m) (float (m + 1) *. g d (((k - 1) * w) + m + 1))
+        done
+      done;
+      (* level n-1 is linear *)
+      let base = (n - 1) * w in
+      let t = -.g d base /. g d (base + 1) in
+      sc.nr.(n - 1) <- 0;
+      if t > lo && t < hi then (Float.Array.unsafe_set r base t; sc.nr.(n - 1) <- 1);
+      let k = ref (n - 2) in
+      while !k >= 0 do
+        let lv = !k and deg = n - !k in
+        let crit = (lv + 1) * w and ncrit = sc.nr.(lv + 1) in
+        let count = ref 0 and prev = ref lo in
+        let fp = ref (horner d (lv * w) deg lo) in
+        let i = ref 0 in
+        (* at level 0 only the first root is wanted *)
+        while !i <= ncrit && not (lv = 0 && !count > 0) do
+          let c = if !i < ncrit then g r (crit + !i) else hi in
+          let fc = horner d (lv * w) deg c in
+          if fc = 0. && !i < ncrit then begin
+            Float.Array.unsafe_set r ((lv * w) + !count) c;
+            incr count
+          end
+          else if !fp <> 0. && (!fp < 0.) <> (fc < 0.) then begin
+            Float.Array.unsafe_set r ((lv * w) + !count) (root_between sc lv deg !prev c !fp);
+            incr count
+          end;
+          prev := c;
+          fp := fc;
+          incr i
+        done;
+        sc.nr.(lv) <- !count;
+        decr k
+      done;
+      Float.Array.unsafe_set sc.root 0 (g r 0);
+      sc.nr.(0) > 0
+    end
+  end

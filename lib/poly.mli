@@ -14,3 +14,25 @@ val first_quartic_root : float -> float -> float -> float -> float -> float -> f
     [(lo, hi)], or [infinity]. Roots of even multiplicity (tangency) are
     found only when the polynomial reaches zero or below in floating
     point. *)
+
+type scratch
+(** Room for {!first_root}'s work (one per domain). *)
+
+val scratch : int -> scratch
+(** [scratch max_degree]. *)
+
+val first_root : scratch -> Float.Array.t -> int -> float -> bool
+(** [first_root sc c degree lo]: whether [c.(0) + c.(1) t + ... +
+    c.(degree) t^degree] has a real root above [lo]; the smallest is then
+    [root sc].
+    Only roots below [1e7] (POV-Ray's largest intersection distance) are
+    looked for; a leading term that stays below the rounding of the others
+    up to there is dropped (a direction component zero but for rounding
+    leaves such terms, with spurious roots far out). Roots are bracketed between the roots of the
+    polynomial's derivatives, found the same way, and polished by Newton
+    steps kept in their bracket, so no closed formula's cancellation
+    enters. Double roots are found where the polynomial reaches zero in
+    floating point. Allocates nothing. *)
+
+val root : scratch -> float
+(** The root {!first_root} found. *)

@@ -43,19 +43,24 @@ let default_settings =
 let flat_sphere (o : Object.t) =
   match o.geom with
   | Object.Prim (Shape.Sphere _) ->
-      Transform.is_identity o.xform && Array.length o.clip = 0 && (not o.inverted) && not o.no_shadow
+      Transform.is_identity o.xform && Array.length o.clip = 0 && Array.length o.bound = 0 && (not o.inverted)
+      && not o.no_shadow
   | _ -> false
 
 let test_cost (o : Object.t) =
   if flat_sphere o then 1.
   else
-    let own = if Transform.is_identity o.xform && Array.length o.clip = 0 then 0. else 1. in
+    let own =
+      (if Transform.is_identity o.xform && Array.length o.clip = 0 then 0. else 1.)
+      +. float (2 * Array.length o.bound)
+    in
     own
     +.
     match o.geom with
     | Object.Prim (Shape.Sphere _ | Shape.Plane _ | Shape.Box _ | Shape.Disc _ | Shape.Triangle _) -> 2.
     | Object.Prim (Shape.Cone _ | Shape.Smooth_triangle _) -> 3.
     | Object.Prim (Shape.Torus _) -> 16.
+    | Object.Prim (Shape.Algebraic a) -> 8. *. float (Algebraic.order a)
     | Object.Prim (Shape.Mesh _) | Object.Union _ | Object.Merge _ | Object.Intersection _ -> 8.
 
 let accelerate ?par objects =

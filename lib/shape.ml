@@ -17,6 +17,7 @@ type t =
   | Triangle of { a : Vec3.t; b : Vec3.t; c : Vec3.t; n : Vec3.t }
   | Smooth_triangle of { a : Vec3.t; b : Vec3.t; c : Vec3.t; na : Vec3.t; nb : Vec3.t; nc : Vec3.t }
   | Mesh of Mesh.t
+  | Algebraic of Algebraic.t
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -213,6 +214,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
       && (h.id <- 0.;
           true)
   | Mesh m -> Mesh.hit_s m r tmin h
+  | Algebraic a -> Algebraic.hit_s a r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -269,6 +271,10 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       end
   | Smooth_triangle { na; nb; nc; _ } -> Mesh.smooth_normal_into na nb nc h out
   | Mesh m -> Mesh.normal_into m h out
+  | Algebraic a ->
+      Algebraic.gradient_into a p.mx p.my p.mz out;
+      (* POV-Ray's normal where the gradient vanishes *)
+      if out.mx = 0. && out.my = 0. && out.mz = 0. then Vec3.load out Vec3.unit_x else Vec3.normalize_m out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -297,6 +303,7 @@ let[@inline] inside_xyz s x y z =
   | Disc { center = c; normal = n; _ } -> ((x -. c.x) *. n.x) +. ((y -. c.y) *. n.y) +. ((z -. c.z) *. n.z) < 0.
   | Triangle _ | Smooth_triangle _ -> false
   | Mesh m -> Mesh.inside m (Vec3.make x y z)
+  | Algebraic a -> Algebraic.inside a x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -323,3 +330,4 @@ let bounds = function
   | Triangle { a; b; c; _ } | Smooth_triangle { a; b; c; _ } ->
       Some (Vec3.min a (Vec3.min b c), Vec3.max a (Vec3.max b c))
   | Mesh m -> Some (Mesh.bounds m)
+  | Algebraic _ -> None

@@ -25,6 +25,8 @@ type t =
   | Triangle of { a : Vec3.t; b : Vec3.t; c : Vec3.t; n : Vec3.t }  (** [n] unit *)
   | Smooth_triangle of { a : Vec3.t; b : Vec3.t; c : Vec3.t; na : Vec3.t; nb : Vec3.t; nc : Vec3.t }
   | Mesh of Mesh.t
+  | Algebraic of Algebraic.t
+      (** POV-Ray's [poly], [cubic], [quartic], [quadric]: unbounded *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

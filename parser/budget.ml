@@ -24,7 +24,7 @@ let rec nodes acc (o : Sdl.obj) =
     match o.shape with
     | Sdl.Csg (_, cs) -> List.fold_left nodes acc cs
     | Inverse c -> nodes acc c
-    | Clipped (c, cs) -> List.fold_left nodes (nodes acc c) cs
+    | Clipped (c, cs) | Bounded (c, cs) -> List.fold_left nodes (nodes acc c) cs
     | Light { looks_like = Some c; _ } -> nodes acc c
     | _ -> acc
 

@@ -172,7 +172,12 @@ let shape (o : Sdl.obj) =
         Shape.triangle a b c)
       else Shape.smooth_triangle a na b nb c nc
   | Sdl.Mesh m -> mesh o m
-  | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Light _ -> assert false
+  | Sdl.Algebraic a ->
+      if Array.for_all (fun c -> c = 0.) a.coef then Diag.warning o.loc "every coefficient is zero: no surface";
+      (* POV-Ray's quadric is inside where its value is <= 0, its poly below 1e-4 *)
+      let inside_below = if a.quadric then Some (Float.succ 0.) else None in
+      Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
+  | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ -> assert false
 
 (* What a CSG node hands down to its children: its world transform, the
    texture and interior for children without one, no_shadow. *)
@@ -216,6 +221,9 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   | Sdl.Clipped (inner, clips) ->
       let clips = children clips in
       Option.map (fun i -> Object.with_clip i clips) (obj ctx' inner)
+  | Sdl.Bounded (inner, bounds) ->
+      let bounds = children bounds in
+      Option.map (fun i -> Object.with_bound i bounds) (obj ctx' inner)
   | Sdl.Mesh m when Array.length m.textures > 0 && Array.length m.face_textures > 0 ->
       (* mesh2 with a texture_list: one mesh per texture, in a union *)
       let groups = Hashtbl.create 8 in

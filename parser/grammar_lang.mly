@@ -195,7 +195,10 @@ open Gram
       { let cs = List.rev cs in
         let n = List.length cs in
         (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
-        if (n < 2 || n > 5) && n <> 12 then
+        (* and the coefficients of a poly, cubic or quartic: 10, 20, 35 ... *)
+        if (n < 2 || n > 5) && n <> 12
+           && not (List.exists (fun k -> Algebraic.terms k = n) (List.init (Algebraic.max_order - 1) (fun k -> k + 2)))
+        then
           Diag.error (loc $loc) "a vector has 2 to 5 components, this one has %d" n;
         Value.Vector (Array.of_list (List.map (fun c -> match c with
           | Value.Float f -> f

@@ -6,6 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
+%token QUARTIC CUBIC POLY QUADRIC
 
 %%
 
@@ -45,6 +46,14 @@
       { Shapes.obj (loc $loc) (Shapes.mesh (loc $loc) ts) ms }
   | MESH2 LBRACE bs = nonempty_list(mesh2_block) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.mesh2 (loc $loc) bs) ms }
+  | QUARTIC LBRACE c = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.algebraic (loc $loc(c)) "quartic" 4 c) ms }
+  | CUBIC LBRACE c = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.algebraic (loc $loc(c)) "cubic" 3 c) ms }
+  | POLY LBRACE n = param COMMA? c = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.poly (loc $loc(n)) (loc $loc(c)) n c) ms }
+  | QUADRIC LBRACE a = param COMMA? b = param COMMA? c = param COMMA? j = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.quadric (v3 $loc(a) a) (v3 $loc(b) b) (v3 $loc(c) c) (fl $loc(j) j)) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
@@ -111,4 +120,6 @@ items_rev:
   | INVERSE { Shapes.inverse }
   | INSIDE_VECTOR v = param { Shapes.inside_vector (loc $loc) (v3 $loc(v) v) }
   | CLIPPED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.clipped cs }
-  | BOUNDED_BY LBRACE nonempty_list(object_) RBRACE { fun o -> o }
+  | BOUNDED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.bounded cs }
+  | BOUNDED_BY LBRACE CLIPPED_BY RBRACE { Shapes.bound_by_clip (loc $loc) }
+  | CLIPPED_BY LBRACE BOUNDED_BY RBRACE { Shapes.clip_by_bound (loc $loc) }

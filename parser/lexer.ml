@@ -45,7 +45,8 @@ let object_keywords =
     ("normal_indices", NORMAL_INDICES); ("uv_indices", UV_INDICES); ("texture_list", TEXTURE_LIST);
     ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
     ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
-    ("bounded_by", BOUNDED_BY);
+    ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
+    ("quadric", QUADRIC);
   ]
 
 (* grammar_texture.mly *)

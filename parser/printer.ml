@@ -112,6 +112,13 @@ let rec parts (o : Sdl.obj) =
       in
       ( "mesh2 { " ^ String.concat " " blocks,
         (match m.inside_vector with Some v -> [ "inside_vector " ^ vec v ] | None -> []) @ mods )
+  | Sdl.Algebraic { order = 2; coef = c; quadric = true } ->
+      simple
+        (Printf.sprintf "quadric { %s, %s, %s, %s" (vec (Vec3.make c.(0) c.(4) c.(7)))
+           (vec (Vec3.make c.(1) c.(2) c.(5))) (vec (Vec3.make c.(3) c.(6) c.(8))) (float c.(9)))
+  | Sdl.Algebraic a ->
+      simple
+        (Printf.sprintf "poly { %d, <%s>" a.order (String.concat ", " (Array.to_list (Array.map float a.coef))))
   | Sdl.Csg (k, children) ->
       let kw =
         match k with
@@ -126,6 +133,9 @@ let rec parts (o : Sdl.obj) =
   | Sdl.Clipped (inner, cs) ->
       let head, inner_mods = parts inner in
       (head, inner_mods @ [ "clipped_by { " ^ String.concat " " (List.map obj cs) ^ " }" ] @ mods)
+  | Sdl.Bounded (inner, cs) ->
+      let head, inner_mods = parts inner in
+      (head, inner_mods @ [ "bounded_by { " ^ String.concat " " (List.map obj cs) ^ " }" ] @ mods)
 
 and obj o =
   let head, mods = parts o in

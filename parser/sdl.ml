@@ -11,6 +11,8 @@ type shape =
   | Smooth_triangle of Vec3.t * Vec3.t * Vec3.t * Vec3.t * Vec3.t * Vec3.t
       (** points and normals: p1, p2, p3, n1, n2, n3 *)
   | Mesh of mesh
+  | Algebraic of algebraic
+      (** [poly], [cubic], [quartic], [quadric] *)
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj
@@ -19,11 +21,19 @@ type shape =
   | Clipped of obj * obj list
       (** [clipped_by]: the object and the clipping objects; later
           transforms move both *)
+  | Bounded of obj * obj list
+      (** [bounded_by]: the object and its bounding objects (the same way) *)
   | Light of light
 
 and csg = Union | Intersection | Difference | Merge
 
 and cone = { base : Vec3.t; base_r : float; top : Vec3.t; top_r : float; open_ : bool; cylinder : bool }
+
+and algebraic = {
+  order : int;
+  coef : float array;  (** POV-Ray's term order (see {!Camlray.Algebraic.make}) *)
+  quadric : bool;  (** a [quadric]: inside where the polynomial is <= 0 *)
+}
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }
 

@@ -45,6 +45,38 @@ let wrap (o : Sdl.obj) shape =
 let strip (o : Sdl.obj) = { o with texture = None; interior = None }
 let inverse (o : Sdl.obj) = wrap o (Sdl.Inverse (strip o))
 let clipped clips (o : Sdl.obj) = wrap o (Sdl.Clipped (strip o, clips))
+let bounded bounds (o : Sdl.obj) = wrap o (Sdl.Bounded (strip o, bounds))
+
+(* [bounded_by { clipped_by }], [clipped_by { bounded_by }]: the other
+   list, moved by what came after it *)
+let bound_by_clip loc (o : Sdl.obj) =
+  match o.shape with
+  | Sdl.Clipped (_, cs) -> bounded (List.map (Sdl.transform_obj o.xform) cs) o
+  | _ -> Diag.error loc "bounded_by { clipped_by } needs a clipped_by before it"
+
+let clip_by_bound loc (o : Sdl.obj) =
+  match o.shape with
+  | Sdl.Bounded (_, bs) -> clipped (List.map (Sdl.transform_obj o.xform) bs) o
+  | _ -> Diag.error loc "clipped_by { bounded_by } needs a bounded_by before it"
+
+let algebraic loc what order (v : Value.t) =
+  let need = Algebraic.terms order in
+  match v with
+  | Value.Vector a when Array.length a = need -> Sdl.Algebraic { order; coef = Array.copy a; quadric = false }
+  | Value.Vector a -> Diag.error loc "a %s needs %d coefficients, this one has %d" what need (Array.length a)
+  | v -> Diag.error loc "a %s needs a vector of %d coefficients, found %s" what need (Value.type_name v)
+
+let poly order_loc loc order v =
+  let n = Value.to_float order_loc order in
+  if Float.of_int (Float.to_int n) <> n || n < 2. || n > float Algebraic.max_order then
+    Diag.error order_loc "a poly's order is a whole number from 2 to %d, found %g" Algebraic.max_order n;
+  algebraic loc (Printf.sprintf "poly of order %d" (Float.to_int n)) (Float.to_int n) v
+
+(* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in
+   the terms of an order-2 poly: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1 *)
+let quadric (abc : Vec3.t) (def : Vec3.t) (ghi : Vec3.t) j =
+  Sdl.Algebraic
+    { order = 2; coef = [| abc.x; def.x; def.y; ghi.x; abc.y; def.z; ghi.y; abc.z; ghi.z; j |]; quadric = true }
 
 type mesh_tri = { p : Vec3.t array; tex : Texture.t option }
 

@@ -23,6 +23,28 @@ val inverse : Sdl.obj -> Sdl.obj
 val clipped : Sdl.obj list -> Sdl.obj -> Sdl.obj
 (** Wrap in an {!Sdl.Clipped} node (the same way as {!inverse}). *)
 
+val bounded : Sdl.obj list -> Sdl.obj -> Sdl.obj
+(** Wrap in an {!Sdl.Bounded} node (the same way as {!inverse}). *)
+
+val bound_by_clip : Loc.t -> Sdl.obj -> Sdl.obj
+(** [bounded_by { clipped_by }]: the clipping objects as bounds too. *)
+
+val clip_by_bound : Loc.t -> Sdl.obj -> Sdl.obj
+(** [clipped_by { bounded_by }]: the bounding objects as clips too. *)
+
+val algebraic : Loc.t -> string -> int -> Value.t -> Sdl.shape
+(** [algebraic loc what order coefficients]: a [cubic] (3) or [quartic] (4),
+    the coefficients a vector of their number ([what] names the shape in
+    the error otherwise). *)
+
+val poly : Loc.t -> Loc.t -> Value.t -> Value.t -> Sdl.shape
+(** [poly order_loc loc order coefficients]: orders 2 to
+    {!Camlray.Algebraic.max_order}. *)
+
+val quadric : Camlray.Vec3.t -> Camlray.Vec3.t -> Camlray.Vec3.t -> float -> Sdl.shape
+(** [quadric <A,B,C> <D,E,F> <G,H,I> J]: A x^2 + B y^2 + C z^2 + D xy +
+    E xz + F yz + G x + H y + I z + J. *)
+
 type mesh_tri
 (** A triangle of a [mesh] block. *)
 

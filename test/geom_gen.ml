@@ -10,6 +10,66 @@ let gdir =
   QCheck.Gen.(
     map (fun d -> if Vec3.length d < 1e-3 then Vec3.unit_z else Vec3.normalize d) (gvec 1.))
 
+(* POV-Ray's documented order of a quartic's 35 terms (the powers of x,
+   y, z written out); lower orders follow the same rule *)
+let quartic_terms =
+  [ "x4"; "x3y"; "x3z"; "x3"; "x2y2"; "x2yz"; "x2y"; "x2z2"; "x2z"; "x2"; "xy3"; "xy2z"; "xy2"; "xyz2";
+    "xyz"; "xy"; "xz3"; "xz2"; "xz"; "x"; "y4"; "y3z"; "y3"; "y2z2"; "y2z"; "y2"; "yz3"; "yz2"; "yz";
+    "y"; "z4"; "z3"; "z2"; "z"; "" ]
+
+(* the powers of x, y, z in a term's name *)
+let powers name =
+  let p = [| 0; 0; 0 |] and n = String.length name in
+  String.iteri
+    (fun i c ->
+      let e = if i + 1 < n && name.[i + 1] >= '0' && name.[i + 1] <= '9' then Char.code name.[i + 1] - 48 else 1 in
+      match c with 'x' -> p.(0) <- e | 'y' -> p.(1) <- e | 'z' -> p.(2) <- e | _ -> ())
+    name;
+  (p.(0), p.(1), p.(2))
+
+(* A quartic's coefficients from its monomials ((powers of x, y, z), c) *)
+let quartic monos =
+  let a = Array.make 35 0. in
+  List.iter
+    (fun (e, c) ->
+      let rec find i = function [] -> invalid_arg "quartic" | t :: r -> if powers t = e then i else find (i + 1) r in
+      let i = find 0 quartic_terms in
+      a.(i) <- a.(i) +. c)
+    monos;
+  a
+
+(* The torus of radii r1, r2 (axis y) as a quartic:
+   (x^2 + y^2 + z^2 + r1^2 - r2^2)^2 - 4 r1^2 (x^2 + z^2) *)
+let torus_quartic r1 r2 =
+  let k = (r1 *. r1) -. (r2 *. r2) and r4 = 4. *. r1 *. r1 in
+  Algebraic.make 4
+    (quartic
+       [ ((4, 0, 0), 1.); ((0, 4, 0), 1.); ((0, 0, 4), 1.); ((2, 2, 0), 2.); ((2, 0, 2), 2.); ((0, 2, 2), 2.);
+         ((2, 0, 0), (2. *. k) -. r4); ((0, 2, 0), 2. *. k); ((0, 0, 2), (2. *. k) -. r4); ((0, 0, 0), k *. k) ])
+
+(* The quadric x^2/a^2 + y^2/b^2 + z^2/c^2 + e = 0 as an order-2 polynomial
+   (terms x^2, xy, xz, x, y^2, yz, y, z^2, z, 1) *)
+let quadric a b c e =
+  Algebraic.make 2 [| 1. /. (a *. a); 0.; 0.; 0.; 1. /. (b *. b); 0.; 0.; 1. /. (c *. c); 0.; e |]
+
+let galgebraic =
+  let open QCheck.Gen in
+  oneof
+    [
+      map2 (fun r1 r2 -> Shape.Algebraic (torus_quartic r1 r2)) (fr 0.5 1.5) (fr 0.1 0.5);
+      map3 (fun a b c -> Shape.Algebraic (quadric a b c (-1.))) (fr 0.3 1.5) (fr 0.3 1.5) (fr 0.3 1.5);
+      (* a hyperboloid of one sheet: unbounded *)
+      map2 (fun a b -> Shape.Algebraic (quadric a (-.b) a (-1.))) (fr 0.3 1.) (fr 0.3 1.);
+      (* a rounded cube x^4 + y^4 + z^4 = s^4 *)
+      map (fun s -> Shape.Algebraic (Algebraic.make 4 (quartic [ ((4, 0, 0), 1.); ((0, 4, 0), 1.); ((0, 0, 4), 1.);
+                                                                  ((0, 0, 0), -.(s ** 4.)) ])))
+        (fr 0.4 1.2);
+      (* a monkey saddle y = k (x^3 - 3 x z^2): a cubic, unbounded *)
+      map (fun k -> Shape.Algebraic (Algebraic.make 3
+                                       (Array.init 20 (fun i -> match i with 0 -> -.k | 7 -> 3. *. k | 15 -> 1. | _ -> 0.))))
+        (fr 0.1 1.);
+    ]
+
 (* A non-degenerate shape around the origin (within ~2 units). *)
 let gshape =
   let open QCheck.Gen in
@@ -25,6 +85,7 @@ let gshape =
       map2 Shape.torus (fr 0.5 1.5) (fr 0.1 0.5);
       map3 (fun c n (r, h) -> Shape.disc ~hole:(h *. r) c n r) (gvec 0.5) gdir (pair (fr 0.3 1.5) (fr 0. 0.8));
       map3 Shape.triangle (gvec 1.5) (gvec 1.5) (gvec 1.5);
+      galgebraic;
     ]
 
 let gxform =
@@ -72,9 +133,15 @@ let residual (s : Shape.t) (p : Vec3.t) =
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
   | Shape.Mesh _ -> 0.
+  | Shape.Algebraic a ->
+      (* the value over the gradient's length: the distance to first order *)
+      let g = Vec3.m () in
+      Algebraic.gradient_into a p.x p.y p.z g;
+      Float.abs (Algebraic.eval a p.x p.y p.z) /. Vec3.length (Vec3.of_m g)
 
 let closed = function
   | Shape.Sphere _ | Shape.Box _ | Shape.Torus _ -> true
+  | Shape.Algebraic _ -> false (* inside up to 1e-4 of its value: see test_shape *)
   | Shape.Cone { open_; _ } -> not open_
   | _ -> false
 
@@ -83,6 +150,7 @@ let shape_name (s : Shape.t) =
   | Shape.Sphere _ -> "sphere" | Shape.Plane _ -> "plane" | Shape.Box _ -> "box"
   | Shape.Cone _ -> "cone" | Shape.Torus _ -> "torus" | Shape.Disc _ -> "disc"
   | Shape.Triangle _ -> "triangle" | Shape.Smooth_triangle _ -> "smooth_triangle" | Shape.Mesh _ -> "mesh"
+  | Shape.Algebraic a -> Printf.sprintf "algebraic of order %d" (Algebraic.order a)
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =

@@ -155,7 +155,30 @@ let degenerate =
       Alcotest.(check bool) "flat triangle never hit" true
         (Scene.intersect s (Ray.make (Vec3.make 1.5 0. (-1.)) Vec3.unit_z) 0. 10. = None))
 
+(* bounded_by, as POV-Ray: a ray-level test. The plane y = 0 bounded by a
+   sphere of radius 0.5 at <0, 1, 0> (which it does not touch) is seen by
+   rays that pass through the sphere, wherever they meet the plane, and
+   by rays starting inside it; not by others. Its inside is its own. *)
+let bounded_by =
+  Alcotest.test_case "bounded_by: rays through the bound see the object, wherever they cross it" `Quick (fun () ->
+      let o = one "plane { y, 0 bounded_by { sphere { <0, 1, 0>, 0.5 } } translate 2*x }" in
+      let t origin target = Object.intersect o (Ray.make origin (Vec3.sub target origin)) 1e-9 infinity in
+      let v = Vec3.make in
+      (* through the sphere's centre <2, 1, 0>, on to the plane at x = 2.5, outside the sphere *)
+      Alcotest.(check (float 1e-12)) "through the bound" 1.25 (t (v 0. 5. 0.) (v 2. 1. 0.));
+      Alcotest.(check (float 0.)) "beside the bound" infinity (t (v 5. 5. 0.) (v 5. 0. 0.));
+      Alcotest.(check (float 1e-12)) "from inside the bound" 1. (t (v 2. 1. 0.) (v 2. 0. 0.));
+      Alcotest.(check bool) "inside below the plane, far from the bound" true (Object.inside o (v 40. (-1.) 3.));
+      (* the same object with clipped_by instead keeps only what lies in the sphere: nothing *)
+      let c = one "plane { y, 0 clipped_by { sphere { <0, 1, 0>, 0.5 } } }" in
+      Alcotest.(check (float 0.)) "clipped" infinity
+        (Object.intersect c (Ray.make (v 0. 5. 0.) (v 0. (-1.) 0.)) 1e-9 infinity);
+      (* bounded_by { clipped_by } takes the clip as bound as well *)
+      let both = one "sphere { 0, 1 clipped_by { plane { y, 0 } } bounded_by { clipped_by } }" in
+      Alcotest.(check int) "bounds" 1 (Array.length both.bound);
+      Alcotest.(check int) "clips" 1 (Array.length both.clip))
+
 let tests =
   ( "object",
-    [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures ] @ errors
+    [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by ] @ errors
     @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props) )

@@ -62,6 +62,12 @@ let gen_obj =
                   Sdl.Cone { base = a; base_r = r; top = Vec3.add a (Vec3.add d (Vec3.make 0. 20. 0.));
                              top_r = r; open_ = o; cylinder = true })
                 gen_vec gen_vec (pair gen_pos gen_bool);
+              (* poly, cubic, quartic (printed as poly) and quadric *)
+              (int_range 2 5 >>= fun k ->
+               map (fun cs -> Sdl.Algebraic { order = k; coef = Array.of_list cs; quadric = false })
+                 (list_size (return (Algebraic.terms k)) gen_float));
+              map (fun cs -> Sdl.Algebraic { order = 2; coef = Array.of_list cs; quadric = true })
+                (list_size (return 10) gen_float);
               map3
                 (fun p c (fd, fp, sh) ->
                   Sdl.Light
@@ -108,7 +114,11 @@ let fixpoint () =
      difference { cylinder { 0, y, 1 open } cone { 0, 1, y, 0.5 } rotate 30*z }\n\
      sphere { 0, 1 clipped_by { plane { y, 0 } } translate 3*z }\n\
      mesh2 { vertex_vectors { 3, 0, x, y } face_indices { 1, <0, 1, 2> } }\n\
-     disc { 0, y, 2, 0.5 } smooth_triangle { 0, y, x, y, z, y } torus { 2, 0.5 }\n"
+     disc { 0, y, 2, 0.5 } smooth_triangle { 0, y, x, y, z, y } torus { 2, 0.5 }\n\
+     quartic { <1,0,0,0,0,0,0,0,0,-1, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,1,0,0,0,0, 0,0,1,0,0> sturm\n\
+       bounded_by { sphere { 0, 2 } } scale 2 }\n\
+     cubic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,-1> clipped_by { box { -1, 1 } } bounded_by { clipped_by } }\n\
+     quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 clipped_by { plane { y, 1 } } }\n"
   in
   let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
   let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
@@ -118,4 +128,4 @@ let fixpoint () =
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, mesh2 print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials print back to themselves" `Quick fixpoint ] )

@@ -125,6 +125,36 @@ let props =
             (* a step along the normal leaves the solid (a step against it may
                leave too near an edge, so it is not checked) *)
             not (Object.inside o (Vec3.madd p e n)));
+    QCheck.Test.make ~name:"algebraic: the normal points where the polynomial grows" ~count:2000
+      (QCheck.make ~print QCheck.Gen.(triple galgebraic gxform gray))
+      (fun (s, xf, r) ->
+        match (s, hit_of s xf r) with
+        | Shape.Algebraic a, Some (_, _, p, n) ->
+            let value w = let q = Transform.inv_point xf w in Algebraic.eval a q.x q.y q.z in
+            value (Vec3.madd p 1e-5 n) > value (Vec3.madd p (-1e-5) n)
+        | _ -> true);
+    QCheck.Test.make ~name:"algebraic: a torus as a quartic is hit where the torus is" ~count:3000
+      (QCheck.make ~print:(fun ((r1, r2), xf, (r : Ray.t)) ->
+           Printf.sprintf "%g %g %s ray %s -> %s" r1 r2 (Transform.to_string xf) (Vec3.to_string r.origin)
+             (Vec3.to_string r.dir))
+         QCheck.Gen.(triple (pair (fr 0.5 1.5) (fr 0.1 0.5)) gxform gray))
+      (fun ((r1, r2), xf, r) ->
+        let t s = Object.intersect (Object.make ~xform:xf s) r 1e-9 infinity in
+        let a = t (Shape.torus r1 r2) and b = t (Shape.Algebraic (torus_quartic r1 r2)) in
+        if a = infinity && b = infinity then true
+        else if Float.abs (a -. b) <= 1e-7 *. Float.max 1. a then true
+        else QCheck.Test.fail_reportf "torus %g, quartic %g" a b);
+    QCheck.Test.make ~name:"algebraic: an ellipsoid as a quadric is hit where the scaled sphere is" ~count:3000
+      (QCheck.make ~print:(fun ((a, b, c), (r : Ray.t)) ->
+           Printf.sprintf "%g %g %g ray %s -> %s" a b c (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+         QCheck.Gen.(pair (triple (fr 0.3 1.5) (fr 0.3 1.5) (fr 0.3 1.5)) gray))
+      (fun ((a, b, c), r) ->
+        let sphere = Object.make ~xform:(Transform.scale (v a b c)) (Shape.sphere Vec3.zero 1.) in
+        let t o = Object.intersect o r 1e-9 infinity in
+        let x = t sphere and y = t (Object.make (Shape.Algebraic (quadric a b c (-1.)))) in
+        if x = infinity && y = infinity then true
+        else if Float.abs (x -. y) <= 1e-7 *. Float.max 1. x then true
+        else QCheck.Test.fail_reportf "sphere %g, quadric %g" x y);
     QCheck.Test.make ~name:"every crossing found in order (sphere: 0 or 2)" ~count:1000
       QCheck.(make ~print:(fun (_, r) -> Vec3.to_string r.Ray.origin) Gen.(pair gxform gray))
       (fun (xf, r) ->
@@ -140,6 +170,57 @@ let props =
         | _ -> false);
   ]
 
+let algebraic_units =
+  [
+    Alcotest.test_case "quartic: term k of POV-Ray's table is its monomial" `Quick (fun () ->
+        List.iteri
+          (fun k name ->
+            let i, j, l = powers name in
+            let a = Algebraic.make 4 (Array.init 35 (fun m -> if m = k then 1. else 0.)) in
+            Alcotest.(check (float 0.)) name (2. ** float i *. (3. ** float j) *. (5. ** float l))
+              (Algebraic.eval a 2. 3. 5.))
+          quartic_terms);
+    Alcotest.test_case "quadric inside: POV-Ray's <= 0, poly's < 1e-4" `Quick (fun () ->
+        let unit_sphere below = Algebraic.make ~inside_below:below 2 [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 1.; 0.; -1. |] in
+        Alcotest.(check bool) "poly: just outside counts" true (Algebraic.inside (unit_sphere 1e-4) 1.00001 0. 0.);
+        Alcotest.(check bool) "quadric: on the surface" true
+          (Algebraic.inside (unit_sphere (Float.succ 0.)) 1. 0. 0.);
+        Alcotest.(check bool) "quadric: just outside" false
+          (Algebraic.inside (unit_sphere (Float.succ 0.)) 1.00001 0. 0.));
+    Alcotest.test_case "a ray along which the quartic drops to a quadratic" `Quick (fun () ->
+        (* x^4 + y^2 + z^2 - 1: along z, only z^2 - 1 is left *)
+        let a = Algebraic.make 4 (quartic [ ((4, 0, 0), 1.); ((0, 2, 0), 1.); ((0, 0, 2), 1.); ((0, 0, 0), -1.) ]) in
+        Alcotest.(check (float 1e-12)) "distance" 4. (Algebraic.first_hit a 0. 0. (-5.) 0. 0. 1. 0.));
+  ]
+
+(* Roots of polynomials made from their roots: the first above [lo] *)
+let roots_prop =
+  QCheck.Test.make ~name:"Poly.first_root: the first root above lo of a product of (t - r_i)" ~count:3000
+    QCheck.(make ~print:(fun (rs, (k, lo)) ->
+                Printf.sprintf "roots [%s] scale %g lo %g" (String.concat "; " (List.map string_of_float rs)) k lo)
+              Gen.(pair (list_size (int_range 1 6) (fr (-5.) 5.)) (pair (fr (-3.) 3.) (fr (-6.) 6.))))
+    (fun (rs, (k, lo)) ->
+      QCheck.assume (Float.abs k > 0.01);
+      (* roots closer than 1e-3 make a near-double root: found or not *)
+      let sorted = List.sort compare rs in
+      let rec spaced = function a :: (b :: _ as r) -> b -. a > 1e-3 && spaced r | _ -> true in
+      QCheck.assume (spaced sorted && List.for_all (fun r -> Float.abs (r -. lo) > 1e-6) rs);
+      let c = List.fold_left (fun c r ->
+        (* c * (t - r) *)
+        let n = Array.length c in
+        Array.init (n + 1) (fun m -> (if m > 0 then c.(m - 1) else 0.) -. (if m < n then r *. c.(m) else 0.)))
+        [| k |] rs in
+      let degree = List.length rs in
+      let sc = Poly.scratch 8 in
+      let got =
+        if Poly.first_root sc (Float.Array.init (degree + 1) (fun m -> c.(m))) degree lo then Poly.root sc
+        else infinity
+      in
+      let want = List.fold_left (fun a r -> if r > lo && r < a then r else a) infinity sorted in
+      if want = infinity then got = infinity
+      else if Float.abs (got -. want) <= 1e-8 *. (1. +. Float.abs want) then true
+      else QCheck.Test.fail_reportf "got %.17g, want %.17g" got want)
+
 let folded =
   Alcotest.test_case "a sphere under a similarity is stored moved" `Quick (fun () ->
       let xf = Transform.then_ (Transform.then_ (Transform.scale (v 2. 2. 2.)) (Transform.rotate (v 10. 20. 30.)))
@@ -150,4 +231,5 @@ let folded =
       let o' = Object.make ~xform:(Transform.scale (v 2. 1. 1.)) (Shape.sphere Vec3.zero 1.) in
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
-let tests = ("shape", folded :: hand @ inside_cases @ List.map QCheck_alcotest.to_alcotest props)
+let tests =
+  ("shape", folded :: hand @ inside_cases @ algebraic_units @ List.map QCheck_alcotest.to_alcotest (roots_prop :: props))
