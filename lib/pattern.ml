@@ -7,6 +7,8 @@ type kind =
   | Gradient of Vec3.t
   | Radial
   | Onion
+  | Planar
+  | Spherical
   | Wood
   | Marble
   | Leopard
@@ -138,6 +140,12 @@ let raw_m kind (w : work) =
   | Gradient v -> w.r.v <- (x *. v.x) +. (y *. v.y) +. (z *. v.z)
   | Radial -> w.r.v <- -.Float.atan2 z x /. two_pi
   | Onion -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y) +. (z *. z))
+  | Planar ->
+      let r = Float.abs y in
+      w.r.v <- (if r > 1. then 0. else 1. -. r)
+  | Spherical ->
+      let r = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      w.r.v <- (if r > 1. then 0. else 1. -. r)
   | Wood -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y))
   | Marble -> w.r.v <- x
   | Leopard ->

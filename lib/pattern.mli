@@ -15,6 +15,8 @@ type kind =
   | Gradient of Vec3.t  (** normalised by {!gradient} *)
   | Radial
   | Onion
+  | Planar  (** 1 - |y|, 0 beyond 1 *)
+  | Spherical  (** 1 - |p|, 0 beyond 1 *)
   | Wood
   | Marble
   | Leopard

@@ -38,6 +38,7 @@
   | t = transformation { Sdl.Cam_transform t }
   (* camera words camlray knows elsewhere, named when met here *)
   | CYLINDER { Diag.error (loc $loc) "cylinder (a camera type) is not supported by camlray" }
+  | SPHERICAL { Diag.error (loc $loc) "spherical (a camera type) is not supported by camlray" }
   | NORMAL { Diag.error (loc $loc) "normal in a camera is not supported by camlray" }
 
 %public global_item:
