@@ -3,10 +3,11 @@ type t = {
   fade_distance : float;
   fade_power : float;
   fade_color : Color.t;
+  hollow : bool;
 }
 
 let default =
-  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black }
+  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black; hollow = false }
 
 let[@inline] fade_channel i c d =
   if i.fade_distance = 0. then 1.

@@ -5,10 +5,13 @@ type t = {
   fade_distance : float;
   fade_power : float;
   fade_color : Color.t;
+  hollow : bool;
+      (** the object's [hollow]: a ray inside only hollow solids is in the
+          open, where fog is seen *)
 }
 
 val default : t
-(** ior 1, no fade. *)
+(** ior 1, no fade, not hollow. *)
 
 val fade_channel : t -> float -> float -> float
 (** [fade_channel i c d]: the attenuation of a channel whose fade colour

@@ -24,6 +24,7 @@ type t = {
   camera : Camera.t;
   background : Color.t;
   sky : Sky.t;
+  fog : Fog.t list;
   settings : settings;
   accel : accel;
 }
@@ -123,8 +124,8 @@ let accelerate ?par objects =
   let reach = List.filter (fun o -> (not (in_bvh o)) || beyond o) (Array.to_list objects) in
   { finite; bvh; infinite = Array.of_list infinite; spheres; reach = Array.of_list reach }
 
-let make ?(sky = Sky.none) ~objects ~lights ~camera ~background ~settings () =
-  { objects; lights; camera; background; sky; settings; accel = accelerate objects }
+let make ?(sky = Sky.none) ?(fog = []) ~objects ~lights ~camera ~background ~settings () =
+  { objects; lights; camera; background; sky; fog; settings; accel = accelerate objects }
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 

@@ -21,6 +21,7 @@ type t = {
   camera : Camera.t;
   background : Color.t;
   sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
+  fog : Fog.t list;  (** in source order; whitted mode draws them *)
   settings : settings;
   accel : accel;  (** built from [objects] by {!accelerate}; rebuild it when
                       replacing [objects] *)
@@ -31,7 +32,7 @@ val accelerate : ?par:(int -> (int -> unit) -> unit) -> Object.t array -> accel
     in parallel (see {!Bvh.build}; the same tree). *)
 
 val make :
-  ?sky:Sky.t -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
+  ?sky:Sky.t -> ?fog:Fog.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
   background:Color.t -> settings:settings -> unit -> t
 (** A scene with its acceleration structure built. *)
 

@@ -92,6 +92,25 @@ let[@inline] through (out : Color.acc) (c : Color.acc) (tr : Color.acc) (fade : 
     (c.ag +. ((tr.ag *. fade.ag) *. rc.ag))
     (c.ab +. ((tr.ab *. fade.ab) *. rc.ab))
 
+(* What a ray in the open (inside no solid but hollow ones: POV-Ray's
+   hollow ray) brings back through the scene's fogs: from the sky, or
+   from the point [p] it hit (its distance found here, not carried: a
+   float live across the shading would be boxed for every ray). *)
+let[@inline] in_open media = List.for_all (fun (i : Interior.t) -> i.hollow) media
+
+let[@inline] fogged_sky (s : Scene.t) o d media out =
+  match s.fog with [] -> () | fogs -> if in_open media then Fog.apply fogs o d infinity out
+
+let[@inline] fogged_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
+  match s.fog with
+  | [] -> ()
+  | fogs ->
+      if in_open media then begin
+        let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
+        let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
+        Fog.apply fogs o d t out
+      end
+
 (* The ray from [o] along [d], hits beyond [tmin], its radiance into
    [out]; its ADC weight is [from.child]; [media]: the interiors the ray
    is inside, innermost first. [o] and [d] belong to the caller and are
@@ -102,14 +121,16 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
   else
     (* read at once, before shading traces anything else *)
     let h, f = Scene.hit_records () in
-    if not (Scene.intersect_into s o d tmin infinity h f) then
+    if not (Scene.intersect_into s o d tmin infinity h f) then begin
       if Sky.is_empty s.sky then set_color out s.background
       else begin
         let u = Scratch.get sky_key in
         Vec3.set u d.mx d.my d.mz;
         Vec3.normalize_m u;
         Sky.eval_into s.sky ~background:s.background u out
-      end
+      end;
+      fogged_sky s o d media out
+    end
     else begin
       let t = h.t and obj = f.leaf in
       let fr = enter () in
@@ -126,6 +147,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
+      fogged_hit s o d p media out;
       leave ()
     end
 

@@ -189,10 +189,22 @@ type ctx = {
   lights : Light.t list ref;
 }
 
+(* The interior an object hands down: its own or its parent's; [hollow]
+   (on it, or on a parent, as POV-Ray sets it on a CSG's children) marks it:
+   a ray inside only hollow solids sees fog. *)
+let interior_of ctx (o : Sdl.obj) =
+  let inter = match o.interior with Some _ -> o.interior | None -> ctx.inter in
+  let parent_hollow = match ctx.inter with Some (i : Interior.t) -> i.hollow | None -> false in
+  if o.hollow || parent_hollow then
+    match inter with
+    | Some (i : Interior.t) when i.hollow -> inter
+    | _ -> Some { (Option.value ~default:Interior.default inter) with hollow = true }
+  else inter
+
 let rec obj ctx (o : Sdl.obj) : Object.t option =
   let o = Sdl.transform_obj ctx.xf o in
   let tex = match o.texture with Some _ -> o.texture | None -> ctx.tex in
-  let inter = match o.interior with Some _ -> o.interior | None -> ctx.inter in
+  let inter = interior_of ctx o in
   let ctx' = { ctx with xf = o.xform; tex; inter; no_shadow = ctx.no_shadow || o.no_shadow } in
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
@@ -259,7 +271,7 @@ let rec top ctx (o : Sdl.obj) acc =
   | Sdl.Csg (Sdl.Union, l) ->
       let o' = Sdl.transform_obj ctx.xf o in
       let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
-      let inter = match o'.interior with Some _ -> o'.interior | None -> ctx.inter in
+      let inter = interior_of ctx o' in
       let ctx' = { ctx with xf = o'.xform; tex; inter; no_shadow = ctx.no_shadow || o'.no_shadow } in
       List.fold_left (fun acc c -> top ctx' c acc) acc l
   | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
@@ -274,7 +286,7 @@ and scene_ (s : Sdl.scene) =
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
-    let sky = ref Sky.none in
+    let sky = ref Sky.none and fog = ref [] in
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
@@ -283,6 +295,7 @@ and scene_ (s : Sdl.scene) =
             let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; lights } in
             objects := top ctx o !objects
         | Sdl.Sky_sphere k -> sky := k
+        | Sdl.Fog f -> fog := f :: !fog
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
         | Sdl.Global_settings (_, gs) ->
@@ -314,6 +327,7 @@ and scene_ (s : Sdl.scene) =
         camera;
         background = !background;
         sky = !sky;
+        fog = List.rev !fog;
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }
   with Diag.Error d -> Error d

@@ -4,6 +4,7 @@
 %token CAMERA PERSPECTIVE ORTHOGRAPHIC LOCATION LOOK_AT ANGLE RIGHT UP DIRECTION SKY
 %token APERTURE FOCAL_POINT BLUR_SAMPLES
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT
+%token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
 
 %start <Sdl.item list> scene
 
@@ -17,6 +18,24 @@
   | BACKGROUND LBRACE c = color_value RBRACE
       { Sdl.Background (Value.to_color (loc $loc(c)) c) }
   | GLOBAL_SETTINGS LBRACE g = list(global_item) RBRACE { Sdl.Global_settings (loc $loc, g) }
+  | FOG LBRACE fs = list(fog_item) RBRACE
+      { Sdl.Fog (Fogdesc.fog (loc $loc) (List.fold_left (fun d f -> f d) Fogdesc.empty fs)) }
+
+fog_item:
+  | v = param { Fogdesc.value (loc $loc(v)) v }
+  | COLOR v = param ms = list(channel)
+      { Fogdesc.color (Value.to_color (loc $loc(v)) (List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) v ms)) }
+  | DISTANCE e = param { Fogdesc.distance (fl $loc(e) e) }
+  | FOG_TYPE e = param { Fogdesc.kind (loc $loc(e)) (Value.to_int (loc $loc(e)) e) }
+  | FOG_OFFSET e = param { Fogdesc.offset (fl $loc(e) e) }
+  | FOG_ALT e = param { Fogdesc.alt (fl $loc(e) e) }
+  | UP e = param { Fogdesc.up (v3 $loc(e) e) }
+  | TURBULENCE e = param { Fogdesc.turbulence (v3 $loc(e) e) }
+  | TURB_DEPTH e = param { Fogdesc.turb_depth (fl $loc(e) e) }
+  | OCTAVES e = param { Fogdesc.octaves (loc $loc(e)) (Value.to_int (loc $loc(e)) e) }
+  | OMEGA e = param { Fogdesc.omega (fl $loc(e) e) }
+  | LAMBDA e = param { Fogdesc.lambda (fl $loc(e) e) }
+  | t = transformation { Fogdesc.transform t }
 
 %public camera_body:
   | c = ioption(CAMERA_ID) items = list(camera_item)

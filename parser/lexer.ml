@@ -31,7 +31,8 @@ let scene_keywords =
     ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
     ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
     ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
-    ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
+    ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT); ("fog", FOG); ("fog_type", FOG_TYPE);
+    ("fog_offset", FOG_OFFSET); ("fog_alt", FOG_ALT); ("turb_depth", TURB_DEPTH); ("distance", DISTANCE);
   ]
 
 (* grammar_objects.mly *)

@@ -170,6 +170,21 @@ let item = function
   | Sdl.Background c -> Printf.sprintf "background { %s }" (rgbft c)
   | Sdl.Global_settings (_, gs) -> "global_settings { " ^ String.concat " " (List.map global gs) ^ " }"
   | Sdl.Sky_sphere _ -> invalid_arg "Printer: sky_sphere is not printed"
+  | Sdl.Fog f ->
+      let kind =
+        match f.kind with
+        | Fog.Constant -> "fog_type 1"
+        | Fog.Ground { offset; alt; up } ->
+            Printf.sprintf "fog_type 2 fog_offset %s fog_alt %s up %s" (float offset) (float alt) (vec up)
+      in
+      let turb =
+        match f.turbulence with
+        | None -> ""
+        | Some u ->
+            Printf.sprintf " turbulence %s turb_depth %s octaves %d omega %s lambda %s" (vec u.amount)
+              (float u.depth) u.octaves (float u.omega) (float u.lambda)
+      in
+      Printf.sprintf "fog { %s distance %s color %s%s }" kind (float f.distance) (rgbft f.color) turb
 
 let scene (s : Sdl.scene) =
   let version = match s.version with Some v -> Printf.sprintf "#version %s;\n" (float v) | None -> "" in

@@ -97,6 +97,7 @@ type item =
   | Background of Color.rgbft
   | Global_settings of Loc.t * global list
   | Sky_sphere of Sky.t
+  | Fog of Fog.t
 
 type scene = { items : item list; version : float option; file : string }
 

@@ -101,6 +101,7 @@ type item =
   | Background of Color.rgbft
   | Global_settings of Loc.t * global list
   | Sky_sphere of Sky.t
+  | Fog of Fog.t
 
 type scene = {
   items : item list;  (** in source order *)

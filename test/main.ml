@@ -32,6 +32,7 @@ let () =
       Test_sampler.tests;
       Test_bsdf.tests;
       Test_finish.tests;
+      Test_fog.tests;
       Test_interior.tests;
       Test_path.tests;
       Test_whitted.tests;

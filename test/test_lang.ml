@@ -236,7 +236,7 @@ let tests =
            "#declare Swirl = pigment { spiral1 3 color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
            "Swirl uses spiral1");
       Alcotest.test_case "unsupported keyword named" `Quick
-        (expect_error "fog { distance 3 }\n" "fog is not supported by camlray");
+        (expect_error "rainbow { distance 3 }\n" "rainbow is not supported by camlray");
       Alcotest.test_case "mesh2 items of every form" `Quick mesh2_items;
       Alcotest.test_case "a face index that is not an integer" `Quick
         (expect_error "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\nface_indices { 1, <0, 1, 2.5> } }\n"

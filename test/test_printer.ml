@@ -40,7 +40,7 @@ let gen_layer =
 
 let gen_interior =
   QCheck.Gen.(
-    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc })
+    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc; hollow = false })
       (quad gen_pos gen_pos gen_pos gen_col))
 
 let gen_obj =
@@ -118,7 +118,9 @@ let fixpoint () =
      quartic { <1,0,0,0,0,0,0,0,0,-1, 0,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,1,0,0,0,0, 0,0,1,0,0> sturm\n\
        bounded_by { sphere { 0, 2 } } scale 2 }\n\
      cubic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,-1> clipped_by { box { -1, 1 } } bounded_by { clipped_by } }\n\
-     quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 clipped_by { plane { y, 1 } } }\n"
+     quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 clipped_by { plane { y, 1 } } }\n\
+     fog { rgb <0.5, 0.6, 0.7> 30 } fog { fog_type 2 distance 4 fog_alt 0.5 fog_offset 1 up <0, 0, 1>\n\
+       color rgbft <1, 1, 1, 0.2, 0.1> turbulence 0.3 turb_depth 0.4 octaves 4 omega 0.6 lambda 2.5 }\n"
   in
   let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
   let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
@@ -128,4 +130,4 @@ let fixpoint () =
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog print back to themselves" `Quick fixpoint ] )

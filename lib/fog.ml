@@ -1,0 +1,87 @@
+(* POV-Ray's fog (see fog.mli). *)
+
+type kind = Constant | Ground of { offset : float; alt : float; up : Vec3.t }
+type turbulence = { amount : Vec3.t; depth : float; octaves : int; omega : float; lambda : float }
+type t = { kind : kind; distance : float; color : Color.rgbft; turbulence : turbulence option }
+
+let missed = 2e10
+
+(* POV-Ray's scalar turbulence: noise in [0, 1] summed over octaves, each
+   read lambda times farther out and weighted omega times less *)
+let[@inline] noise_sum (u : turbulence) x y z =
+  let v = ref (Noise.noise3 x y z) and l = ref u.lambda and o = ref u.omega in
+  for _ = 2 to u.octaves do
+    v := !v +. (!o *. Noise.noise3 (!l *. x) (!l *. y) (!l *. z));
+    l := !l *. u.lambda;
+    o := !o *. u.omega
+  done;
+  !v
+
+(* [width] thinned by the turbulence at the point [at] along the ray
+   (scaled by the turbulence's amount): the farther, the less *)
+let[@inline] thinned f (o : Vec3.m) (d : Vec3.m) width at =
+  match f.turbulence with
+  | None -> width
+  | Some u ->
+      let a = u.amount in
+      let x = (o.mx +. (at *. d.mx)) *. a.x and y = (o.my +. (at *. d.my)) *. a.y
+      and z = (o.mz +. (at *. d.mz)) *. a.z in
+      let k = Float.exp (-.width /. f.distance) in
+      width *. (1. -. (k *. Float.min 1. (noise_sum u x y z *. u.depth)))
+
+(* the mean density of a ground fog between the altitudes [s] and [e]
+   (in units of [alt] above [offset]): 1 below 0, 1 / (1 + h^2) above,
+   whose integral is atan *)
+let[@inline] mean_density s e =
+  if s <= 0. then if e <= 0. then 1. else (Float.atan e -. s) /. (e -. s)
+  else if e <= 0. then (Float.atan s -. e) /. (s -. e)
+  else
+    let delta = s -. e in
+    if Float.abs delta > 1e-10 then (Float.atan s -. Float.atan e) /. delta else 1. /. ((s *. s) +. 1.)
+
+let[@inline] transmittance f (o : Vec3.m) (d : Vec3.m) width =
+  match f.kind with
+  | Constant ->
+      let w = thinned f o d width (width /. 2.) in
+      Float.exp (-.w /. f.distance)
+  | Ground { offset; alt; up } ->
+      let y1 = (o.mx *. up.x) +. (o.my *. up.y) +. (o.mz *. up.z) in
+      let y2 = y1 +. (width *. ((d.mx *. up.x) +. (d.my *. up.y) +. (d.mz *. up.z))) in
+      let density = mean_density ((y1 -. offset) /. alt) ((y2 -. offset) /. alt) in
+      let w = thinned f o d width (width /. 2.) in
+      Float.exp (-.w *. density /. f.distance)
+
+(* per domain: the ray's unit direction, and the fogs' running product
+   of attenuations and sum of colours (r, g, b each) *)
+type work = { u : Vec3.m; sums : Float.Array.t }
+
+let work_key = Scratch.key (fun () -> { u = Vec3.m (); sums = Float.Array.make 6 0. })
+
+let rec through fogs (o : Vec3.m) (w : work) width =
+  match fogs with
+  | [] -> ()
+  | f :: rest ->
+      if Float.abs f.distance > 1e-10 then begin
+        let fc = f.color and s = w.sums in
+        let a = Float.max fc.transmit (transmittance f o w.u width) in
+        let flt = fc.filter in
+        for i = 0 to 2 do
+          let c = match i with 0 -> fc.c.r | 1 -> fc.c.g | _ -> fc.c.b in
+          Float.Array.set s i (Float.Array.get s i *. a *. (1. -. flt +. (flt *. c)));
+          Float.Array.set s (i + 3) (Float.Array.get s (i + 3) +. ((1. -. a) *. c))
+        done
+      end;
+      through rest o w width
+
+let apply fogs (o : Vec3.m) (d : Vec3.m) t (c : Color.acc) =
+  let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
+  let w = Scratch.get work_key in
+  Vec3.set w.u (d.mx /. dl) (d.my /. dl) (d.mz /. dl);
+  let s = w.sums in
+  Float.Array.fill s 0 3 1.;
+  Float.Array.fill s 3 3 0.;
+  through fogs o w (if t = infinity then missed else t *. dl);
+  Color.acc_set c
+    (Float.Array.get s 3 +. (Float.Array.get s 0 *. c.ar))
+    (Float.Array.get s 4 +. (Float.Array.get s 1 *. c.ag))
+    (Float.Array.get s 5 +. (Float.Array.get s 2 *. c.ab))

@@ -1,0 +1,39 @@
+(** POV-Ray 3.7's [fog]: along a ray in the open (inside no solid, or only
+    hollow ones) the colour seen is blended with the fog's colour by the
+    fog's transmittance over the distance travelled. Several fogs combine
+    as POV-Ray combines them. *)
+
+type kind =
+  | Constant  (** [fog_type 1]: transmittance [exp (-d / distance)] *)
+  | Ground of { offset : float; alt : float; up : Vec3.t }
+      (** [fog_type 2]: density 1 below [offset] along [up] (unit), [1 /
+          (1 + h^2)] at [h] altitudes above it *)
+
+type turbulence = {
+  amount : Vec3.t;  (** scales the point where the noise is read *)
+  depth : float;  (** [turb_depth] (0.5) *)
+  octaves : int;  (** 6 *)
+  omega : float;  (** 0.5 *)
+  lambda : float;  (** 2 *)
+}
+
+type t = { kind : kind; distance : float; color : Color.rgbft; turbulence : turbulence option }
+
+val missed : float
+(** The distance a ray that meets nothing travels through fog: POV-Ray's
+    [2e10] (so the sky is fogged through and through, except where a
+    ground fog thins out above its altitude). *)
+
+val transmittance : t -> Vec3.m -> Vec3.m -> float -> float
+(** [transmittance f origin dir width]: the fraction of the light that
+    crosses [width] units of [f] from [origin] along the unit vector
+    [dir], before the fog's transmit floor (with turbulence, camlray's
+    own noise thins it, as POV-Ray's does with its noise). *)
+
+val apply : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> unit
+(** [apply fogs origin dir t c]: the colour [c] seen at distance [t] (in
+    units of [dir], any length; [infinity] for a ray that met nothing)
+    along the ray, as it arrives through every fog: [c] is attenuated by
+    each fog's transmittance [a] (at least its [transmit]), tinted by its
+    [filter], and [(1 - a)] of its colour is added. Fogs of zero distance
+    are skipped. *)
