@@ -18,6 +18,7 @@ type t =
   | Smooth_triangle of { a : Vec3.t; b : Vec3.t; c : Vec3.t; na : Vec3.t; nb : Vec3.t; nc : Vec3.t }
   | Mesh of Mesh.t
   | Algebraic of Algebraic.t
+  | Text of Text.t
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -215,6 +216,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
           true)
   | Mesh m -> Mesh.hit_s m r tmin h
   | Algebraic a -> Algebraic.hit_s a r tmin h
+  | Text t -> Text.hit_s t r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -275,6 +277,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       Algebraic.gradient_into a p.mx p.my p.mz out;
       (* POV-Ray's normal where the gradient vanishes *)
       if out.mx = 0. && out.my = 0. && out.mz = 0. then Vec3.load out Vec3.unit_x else Vec3.normalize_m out
+  | Text t -> Text.normal_into t h out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -304,6 +307,7 @@ let[@inline] inside_xyz s x y z =
   | Triangle _ | Smooth_triangle _ -> false
   | Mesh m -> Mesh.inside m (Vec3.make x y z)
   | Algebraic a -> Algebraic.inside a x y z
+  | Text t -> Text.inside t x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -331,3 +335,4 @@ let bounds = function
       Some (Vec3.min a (Vec3.min b c), Vec3.max a (Vec3.max b c))
   | Mesh m -> Some (Mesh.bounds m)
   | Algebraic _ -> None
+  | Text t -> Some (Text.bounds t)

@@ -27,6 +27,7 @@ type t =
   | Mesh of Mesh.t
   | Algebraic of Algebraic.t
       (** POV-Ray's [poly], [cubic], [quartic], [quadric]: unbounded *)
+  | Text of Text.t  (** POV-Ray's [text] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

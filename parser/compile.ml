@@ -177,6 +177,7 @@ let shape (o : Sdl.obj) =
       (* POV-Ray's quadric is inside where its value is <= 0, its poly below 1e-4 *)
       let inside_below = if a.quadric then Some (Float.succ 0.) else None in
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
+  | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ -> assert false
 
 (* What a CSG node hands down to its children: its world transform, the

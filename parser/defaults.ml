@@ -31,3 +31,7 @@ let texture_set () = !tex_set
 let set_finish f = tex_set := true; tex := { !tex with finish = f }
 let set_pigment p = tex_set := true; tex := { !tex with pigment = p }
 let set_normal n = tex_set := true; tex := { !tex with normal = n }
+
+let finder : (Loc.t -> string -> string option) ref = ref (fun _ _ -> None)
+let set_finder f = finder := f
+let find_file loc name = !finder loc name

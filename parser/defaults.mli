@@ -26,3 +26,11 @@ val texture_set : unit -> bool
 val set_finish : Camlray.Finish.t -> unit
 val set_pigment : Camlray.Pigment.t -> unit
 val set_normal : Camlray.Normal.t option -> unit
+
+val set_finder : (Loc.t -> string -> string option) -> unit
+(** How the parse finds a file a scene names outside [#include] (a
+    font): the include path, within the reads the scene is allowed. *)
+
+val find_file : Loc.t -> string -> string option
+(** The file found by the finder set for this parse ([None] before one
+    is set). *)

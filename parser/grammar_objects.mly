@@ -6,7 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
-%token QUARTIC CUBIC POLY QUADRIC
+%token QUARTIC CUBIC POLY QUADRIC TEXT TTF
 
 %%
 
@@ -54,6 +54,8 @@
       { Shapes.obj (loc $loc) (Shapes.poly (loc $loc(n)) (loc $loc(c)) n c) ms }
   | QUADRIC LBRACE a = param COMMA? b = param COMMA? c = param COMMA? j = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.quadric (v3 $loc(a) a) (v3 $loc(b) b) (v3 $loc(c) c) (fl $loc(j) j)) ms }
+  | TEXT LBRACE TTF f = string_arg COMMA? s = string_arg COMMA? th = param COMMA? off = param ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.text (loc $loc(f)) f s (fl $loc(th) th) (v3 $loc(off) off)) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }

@@ -47,7 +47,7 @@ let object_keywords =
     ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
     ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
-    ("quadric", QUADRIC);
+    ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF);
   ]
 
 (* grammar_texture.mly *)

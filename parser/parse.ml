@@ -17,6 +17,9 @@ let default_options =
 
 let pov_include_dir = "/usr/share/povray-3.7/include"
 
+(* where Debian's povray puts the fonts its include folder links to *)
+let pov_font_dir = "/usr/share/fonts/truetype/povray"
+
 let run options ~name text =
   Defaults.reset ();
   Shapes.forget_textures ();
@@ -33,7 +36,9 @@ let run options ~name text =
     let access =
       if options.confine_reads then
         Access.create
-          (Sys.getcwd () :: Filename.dirname name :: (include_dirs @ options.allow_read))
+          (Sys.getcwd () :: Filename.dirname name
+          :: (include_dirs @ options.allow_read
+             @ if Sys.file_exists pov_font_dir then [ pov_font_dir ] else []))
       else Access.unrestricted
     in
     let config =
@@ -51,6 +56,7 @@ let run options ~name text =
       }
     in
     let sup = Supplier.create config (Env.create ()) ~file:name toks in
+    Defaults.set_finder (Supplier.find_readable sup);
     let items =
       Fun.protect ~finally:(fun () -> Supplier.close_files sup) (fun () ->
           Supplier.parse sup Parser.Incremental.scene)

@@ -119,6 +119,9 @@ let rec parts (o : Sdl.obj) =
   | Sdl.Algebraic a ->
       simple
         (Printf.sprintf "poly { %d, <%s>" a.order (String.concat ", " (Array.to_list (Array.map float a.coef))))
+  | Sdl.Text t ->
+      let str x = "\"" ^ String.concat "" (List.map (function '"' -> "\\\"" | '\\' -> "\\\\" | c -> String.make 1 c) (List.of_seq (String.to_seq x))) ^ "\"" in
+      simple (Printf.sprintf "text { ttf %s %s %s, %s" (str t.font) (str t.chars) (float t.thickness) (vec t.offset))
   | Sdl.Csg (k, children) ->
       let kw =
         match k with

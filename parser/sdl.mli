@@ -17,6 +17,7 @@ type shape =
   | Mesh of mesh
   | Algebraic of algebraic
       (** [poly], [cubic], [quartic], [quadric] *)
+  | Text of text
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj
@@ -37,6 +38,14 @@ and algebraic = {
   order : int;
   coef : float array;  (** POV-Ray's term order (see {!Camlray.Algebraic.make}) *)
   quadric : bool;  (** a [quadric]: inside where the polynomial is <= 0 *)
+}
+
+and text = {
+  font : string;  (** as written *)
+  chars : string;
+  thickness : float;
+  offset : Vec3.t;
+  glyphs : Text.t;  (** set with the font found *)
 }
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }

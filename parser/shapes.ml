@@ -72,6 +72,32 @@ let poly order_loc loc order v =
     Diag.error order_loc "a poly's order is a whole number from 2 to %d, found %g" Algebraic.max_order n;
   algebraic loc (Printf.sprintf "poly of order %d" (Float.to_int n)) (Float.to_int n) v
 
+(* fonts read in this process, by path *)
+let fonts : (string, Ttf.t) Hashtbl.t = Hashtbl.create 4
+
+let text loc font chars thickness offset =
+  (* POV-Ray also tries the name with .ttf added *)
+  let path =
+    match Defaults.find_file loc font with
+    | Some p -> p
+    | None -> (
+        match Defaults.find_file loc (font ^ ".ttf") with
+        | Some p -> p
+        | None -> Diag.error loc "cannot find font %s (looked in the scene's folder and the include path)" font)
+  in
+  let f =
+    match Hashtbl.find_opt fonts path with
+    | Some f -> f
+    | None -> (
+        match Ttf.read path with
+        | f ->
+            Hashtbl.replace fonts path f;
+            f
+        | exception Failure m -> Diag.error loc "cannot read font %s" m)
+  in
+  if thickness < 0. then Diag.error loc "a text's thickness must be >= 0, found %g" thickness;
+  Sdl.Text { font; chars; thickness; offset; glyphs = Text.make f chars ~thickness ~offset }
+
 (* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in
    the terms of an order-2 poly: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1 *)
 let quadric (abc : Vec3.t) (def : Vec3.t) (ghi : Vec3.t) j =

@@ -41,6 +41,11 @@ val poly : Loc.t -> Loc.t -> Value.t -> Value.t -> Sdl.shape
 (** [poly order_loc loc order coefficients]: orders 2 to
     {!Camlray.Algebraic.max_order}. *)
 
+val text : Loc.t -> string -> string -> float -> Camlray.Vec3.t -> Sdl.shape
+(** [text loc font chars thickness offset]: [text { ttf font chars
+    thickness, offset }], the font found as an include file ([loc] names
+    it in errors). *)
+
 val quadric : Camlray.Vec3.t -> Camlray.Vec3.t -> Camlray.Vec3.t -> float -> Sdl.shape
 (** [quadric <A,B,C> <D,E,F> <G,H,I> J]: A x^2 + B y^2 + C z^2 + D xy +
     E xz + F yz + G x + H y + I z + J. *)

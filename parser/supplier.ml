@@ -605,3 +605,10 @@ let create config env ~file toks =
 (* The entry point: an unsupported feature met outside a #declare is an
    error like any other. *)
 let parse t start = try parse t start with Unsupported_use (d, _) -> raise (Diag.Error d)
+
+let find_readable t loc name =
+  match find_file t name with
+  | Some p ->
+      allowed t loc p;
+      Some p
+  | None -> None

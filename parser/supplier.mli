@@ -48,3 +48,8 @@ val close_files : t -> unit
 
 val files_read : t -> string list
 (** Every file read so far (the scene and its includes), absolute paths. *)
+
+val find_readable : t -> Loc.t -> string -> string option
+(** A file the scene names, found as an include file is (the current
+    folder, the scene's, the include path), when the scene may read it
+    (a located error otherwise). *)

@@ -132,7 +132,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       let n = if Vec3.length n = 0. then n else Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a)) in
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
-  | Shape.Mesh _ -> 0.
+  | Shape.Mesh _ | Shape.Text _ -> 0.
   | Shape.Algebraic a ->
       (* the value over the gradient's length: the distance to first order *)
       let g = Vec3.m () in
@@ -151,6 +151,7 @@ let shape_name (s : Shape.t) =
   | Shape.Cone _ -> "cone" | Shape.Torus _ -> "torus" | Shape.Disc _ -> "disc"
   | Shape.Triangle _ -> "triangle" | Shape.Smooth_triangle _ -> "smooth_triangle" | Shape.Mesh _ -> "mesh"
   | Shape.Algebraic a -> Printf.sprintf "algebraic of order %d" (Algebraic.order a)
+  | Shape.Text _ -> "text"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =

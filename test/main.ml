@@ -33,6 +33,7 @@ let () =
       Test_bsdf.tests;
       Test_finish.tests;
       Test_fog.tests;
+      Test_text.tests;
       Test_interior.tests;
       Test_path.tests;
       Test_whitted.tests;

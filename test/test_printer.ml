@@ -122,6 +122,11 @@ let fixpoint () =
      fog { rgb <0.5, 0.6, 0.7> 30 } fog { fog_type 2 distance 4 fog_alt 0.5 fog_offset 1 up <0, 0, 1>\n\
        color rgbft <1, 1, 1, 0.2, 0.1> turbulence 0.3 turb_depth 0.4 octaves 4 omega 0.6 lambda 2.5 }\n"
   in
+  let text =
+    if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then
+      text ^ "text { ttf \"timrom.ttf\" \"say \\\"hi\\\"\" 0.5, <0.1, 0, 0> rotate 20*y }\n"
+    else text
+  in
   let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
   let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
   let once = print (parse text) in

@@ -1,0 +1,94 @@
+(* TrueType text: the font's tables against facts read from the file
+   independently (unitsPerEm, glyph ids, kerning, metrics), outlines'
+   winding, hits on the extruded glyphs' surfaces with outward normals,
+   and damaged font files refused with a message. Runs where Debian's
+   povray fonts are installed. *)
+open Camlray
+
+let font_file = "/usr/share/povray-3.7/include/timrom.ttf"
+let have_font () = Sys.file_exists font_file
+let font = lazy (Ttf.read font_file)
+
+let with_font f () = if have_font () then f (Lazy.force font) else print_endline "no timrom.ttf: skipped"
+
+let facts =
+  Alcotest.test_case "timrom.ttf: units, glyph ids, kerning, metrics" `Quick
+    (with_font (fun f ->
+         Alcotest.(check int) "unitsPerEm" 1000 (Ttf.units_per_em f);
+         Alcotest.(check int) "A" 34 (Ttf.glyph_index f (Char.code 'A'));
+         Alcotest.(check int) "V" 55 (Ttf.glyph_index f (Char.code 'V'));
+         Alcotest.(check int) "kerning A V" (-187) (Ttf.kerning f 34 55);
+         Alcotest.(check int) "kerning V O" (-56) (Ttf.kerning f 55 48);
+         Alcotest.(check int) "no kerning A A" 0 (Ttf.kerning f 34 34);
+         Alcotest.(check int) "advance of A" 750 (Ttf.advance f 34);
+         Alcotest.(check int) "lsb of A" 6 (Ttf.lsb f 34)))
+
+let o_ring =
+  Alcotest.test_case "O: its ring is inside, its hole and the outside are not" `Quick
+    (with_font (fun f ->
+         let t = Text.make f "O" ~thickness:1. ~offset:Vec3.zero in
+         let lo, hi = Text.bounds t in
+         let cx = (lo.x +. hi.x) /. 2. and cy = (lo.y +. hi.y) /. 2. in
+         Alcotest.(check int) "hole" 0 (Text.winding t cx cy);
+         Alcotest.(check bool) "ring" true (Text.winding t (lo.x +. 0.03) cy <> 0);
+         Alcotest.(check int) "outside" 0 (Text.winding t (hi.x +. 0.1) cy);
+         Alcotest.(check bool) "inside between the faces" true (Text.inside t (lo.x +. 0.03) cy 0.5);
+         Alcotest.(check bool) "not beyond the back face" false (Text.inside t (lo.x +. 0.03) cy 1.5)))
+
+(* a ray from in front of "AVTo" aimed at a random point near it *)
+let gray =
+  QCheck.Gen.(
+    map2
+      (fun (ox, oy, oz) (tx, ty, tz) ->
+        Ray.make (Vec3.make ox oy oz) (Vec3.sub (Vec3.make tx ty tz) (Vec3.make ox oy oz)))
+      (triple (float_range (-2.) 4.) (float_range (-2.) 3.) (float_range (-5.) (-1.)))
+      (triple (float_range (-0.2) 2.6) (float_range (-0.3) 1.) (float_range 0. 0.3)))
+
+let surface =
+  QCheck.Test.make ~name:"text: hits lie on the boundary, normals point out" ~count:2000
+    (QCheck.make ~print:(fun (r : Ray.t) -> Vec3.to_string r.origin ^ " -> " ^ Vec3.to_string r.dir) gray)
+    (fun r ->
+      if not (have_font ()) then true
+      else begin
+        let t = Text.make (Lazy.force font) "AVTo" ~thickness:0.25 ~offset:Vec3.zero in
+        let s = Shape.Text t in
+        let h = Hit.create infinity in
+        if not (Shape.hit s r 1e-9 h) then true
+        else begin
+          let p = Ray.at r h.t in
+          let n = Shape.normal s p h in
+          let e = 1e-6 in
+          let a = Vec3.madd p e n and b = Vec3.madd p (-.e) n in
+          (* a step out along the normal leaves the solid, a step in enters
+             it (an edge may have neither side within the step: skipped) *)
+          let out_ok = not (Text.inside t a.x a.y a.z) and in_ok = Text.inside t b.x b.y b.z in
+          if out_ok && in_ok then true
+          else if Float.abs (Vec3.dot n r.dir) < 1e-3 *. Vec3.length r.dir then true
+          else QCheck.Test.fail_reportf "at %s (id %g) normal %s: outside %b inside %b" (Vec3.to_string p) h.id
+              (Vec3.to_string n) out_ok in_ok
+        end
+      end)
+
+(* damaged fonts: cut short or with bytes overwritten, then every glyph
+   read: a Failure with a message, nothing else *)
+let damaged =
+  QCheck.Test.make ~name:"damaged font files fail with a message" ~count:300
+    QCheck.(pair (int_bound 40000) (list_size (Gen.int_bound 8) (pair (int_bound 40000) (int_bound 255))))
+    (fun (cut, pokes) ->
+      if not (have_font ()) then true
+      else begin
+        let d = In_channel.with_open_bin font_file In_channel.input_all in
+        let b = Bytes.of_string (String.sub d 0 (min cut (String.length d))) in
+        List.iter (fun (i, v) -> if i < Bytes.length b then Bytes.set b i (Char.chr v)) pokes;
+        match Ttf.parse (Bytes.to_string b) with
+        | exception Failure _ -> true
+        | f -> (
+            try
+              for c = 0 to 255 do
+                ignore (Text.make f (String.make 1 (Char.chr c)) ~thickness:0.1 ~offset:Vec3.zero)
+              done;
+              true
+            with Failure _ -> true)
+      end)
+
+let tests = ("text", [ facts; o_ring ] @ List.map QCheck_alcotest.to_alcotest [ surface; damaged ])
