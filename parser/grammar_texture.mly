@@ -21,6 +21,11 @@
 %%
 
 %public object_:
+  | LIGHT_SOURCE LBRACE o = OBJECT_ID ms = list(light_mod) RBRACE
+      { (match o.Sdl.shape with
+         | Sdl.Light _ -> ()
+         | _ -> Diag.error (loc $loc(o)) "light_source { NAME }: NAME must be a declared light_source");
+        List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | LIGHT_SOURCE LBRACE p = param COMMA? c = color_value ms = list(light_mod) RBRACE
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
                   kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
@@ -74,6 +79,7 @@
         List.fold_left (fun l f -> f l) base ms }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
+  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
   | k = block_kind ts = list(block_texture) ms = list(tmap_mod)
       { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
         [ List.fold_left (fun l f -> f l) l ms ] }
@@ -133,6 +139,7 @@
   | k = block_kind cs = block_cells ms = list(pigment_mod)
       { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
   | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
+  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
   | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         Texdesc.(pigment (apply ms (of_pigment p))) }
@@ -322,6 +329,7 @@
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | ms = list(normal_mod) { ignore ms; None }
   | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
+  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
 
 (* normal { PATTERN [,] BUMP_SIZE ... } *)
 bump_size: COMMA? a = param { a }

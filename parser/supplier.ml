@@ -135,6 +135,27 @@ and ident t name loc =
           end
           else if name = "defined" || name = "dimensions" || name = "dimension_size" then
             (Parser.FLOAT (Arrays.query t name loc), loc)
+          else if name = "radiosity" && (raw_peek t).raw = Tok Parser.LBRACE then begin
+            (* global_settings { radiosity { ... } } and an object's
+               radiosity { importance ... }: read past, with a warning once *)
+            ignore (raw_next t);
+            let rec skip depth =
+              if depth > 0 then
+                match (raw_next t).raw with
+                | Tok Parser.LBRACE -> skip (depth + 1)
+                | Tok Parser.RBRACE -> skip (depth - 1)
+                | Eof -> fail t loc "radiosity { is not closed"
+                | _ -> skip depth
+            in
+            skip 1;
+            if not t.radiosity_warned then begin
+              t.radiosity_warned <- true;
+              Diag.warning loc
+                "radiosity is read and ignored: whitted mode computes none (ambient stands in for it); mc mode \
+                 computes global illumination by path tracing"
+            end;
+            next t
+          end
           else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
             (* a POV-Ray word camlray does not know: inside a #declare the
