@@ -79,7 +79,7 @@ type t = {
       (** hand the parser a ';' when this frame reaches this position
           (ends a value that has no terminator, see {!Splread}) *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
-  mutable radiosity_warned : bool;  (** a [radiosity] block has been read past *)
+  mutable skipped : string list;  (** the blocks read past ([radiosity], [photons]), warned once *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)
@@ -111,7 +111,7 @@ let create config env ~file toks =
   { config; builtins; env; runner = { run = (fun _ -> invalid_arg "Cursor: no runner") }; frames = [ { toks; pos = 0; kind = Main; file; ctrl = []; scoped = false;
                  byref = [] } ];
     pending = []; last = Loc.none; files = [ abs ];
-    deprecated = Hashtbl.create 8; braces = []; radiosity_warned = false; context = None; stop_at = None;
+    deprecated = Hashtbl.create 8; braces = []; skipped = []; context = None; stop_at = None;
     handles = Hashtbl.create 4; supplied = 0; depth = 0; optional_sep = None;
     semi_probe = None }
 

@@ -78,7 +78,7 @@ type t = {
       (** hand the parser a ';' when this frame reaches this position
           (ends a value that has no terminator, see {!Splread}) *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
-  mutable radiosity_warned : bool;  (** a [radiosity] block has been read past *)
+  mutable skipped : string list;  (** the blocks read past ([radiosity], [photons]), warned once *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)

@@ -135,24 +135,30 @@ and ident t name loc =
           end
           else if name = "defined" || name = "dimensions" || name = "dimension_size" then
             (Parser.FLOAT (Arrays.query t name loc), loc)
-          else if name = "radiosity" && (raw_peek t).raw = Tok Parser.LBRACE then begin
-            (* global_settings { radiosity { ... } } and an object's
-               radiosity { importance ... }: read past, with a warning once *)
+          else if (name = "radiosity" || name = "photons") && (raw_peek t).raw = Tok Parser.LBRACE then begin
+            (* global_settings { radiosity { ... } }, an object's
+               radiosity { importance ... }, photons { ... } in global
+               settings, objects and lights: read past, a warning once
+               for each *)
             ignore (raw_next t);
             let rec skip depth =
               if depth > 0 then
                 match (raw_next t).raw with
                 | Tok Parser.LBRACE -> skip (depth + 1)
                 | Tok Parser.RBRACE -> skip (depth - 1)
-                | Eof -> fail t loc "radiosity { is not closed"
+                | Eof -> fail t loc "%s { is not closed" name
                 | _ -> skip depth
             in
             skip 1;
-            if not t.radiosity_warned then begin
-              t.radiosity_warned <- true;
+            if not (List.mem name t.skipped) then begin
+              t.skipped <- name :: t.skipped;
               Diag.warning loc
-                "radiosity is read and ignored: whitted mode computes none (ambient stands in for it); mc mode \
-                 computes global illumination by path tracing"
+                (if name = "radiosity" then
+                   "radiosity is read and ignored: whitted mode computes none (ambient stands in for it); mc \
+                    mode computes global illumination by path tracing"
+                 else
+                   "photons are read and ignored: whitted mode draws no caustics; mc mode finds them by \
+                    path tracing (slowly)")
             end;
             next t
           end
