@@ -165,7 +165,7 @@ let below (eqn : Float.Array.t) m =
   done;
   !s
 
-let first_root sc (eqn : Float.Array.t) degree lo =
+let first_root_in sc (eqn : Float.Array.t) degree lo hi =
   (* a leading term below the rounding of the others wherever a root is
      looked for is dropped: a direction component that is zero but for
      rounding (a rotation by 90 degrees) leaves such terms, whose roots,
@@ -181,7 +181,7 @@ let first_root sc (eqn : Float.Array.t) degree lo =
     for m = 0 to n - 1 do
       bound := Float.max !bound (Float.abs (g eqn m /. lead))
     done;
-    let hi = Float.min reach (1. +. !bound) in
+    let hi = Float.min hi (Float.min reach (1. +. !bound)) in
     let lo = Float.max lo (-.hi) in
     if not (lo < hi) then false
     else begin
@@ -229,3 +229,5 @@ let first_root sc (eqn : Float.Array.t) degree lo =
       sc.nr.(0) > 0
     end
   end
+
+let first_root sc eqn degree lo = first_root_in sc eqn degree lo infinity

@@ -34,5 +34,8 @@ val first_root : scratch -> Float.Array.t -> int -> float -> bool
     enters. Double roots are found where the polynomial reaches zero in
     floating point. Allocates nothing. *)
 
+val first_root_in : scratch -> Float.Array.t -> int -> float -> float -> bool
+(** {!first_root} of the roots below a bound too: in [(lo, hi)]. *)
+
 val root : scratch -> float
 (** The root {!first_root} found. *)

@@ -63,6 +63,7 @@ let test_cost (o : Object.t) =
     | Object.Prim (Shape.Torus _) -> 16.
     | Object.Prim (Shape.Algebraic a) -> 8. *. float (Algebraic.order a)
     | Object.Prim (Shape.Text t) -> 8. *. float (Text.glyph_count t)
+    | Object.Prim (Shape.Blob _) -> 32.
     | Object.Prim (Shape.Mesh _) | Object.Union _ | Object.Merge _ | Object.Intersection _ -> 8.
 
 let accelerate ?par objects =

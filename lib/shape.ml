@@ -19,6 +19,7 @@ type t =
   | Mesh of Mesh.t
   | Algebraic of Algebraic.t
   | Text of Text.t
+  | Blob of Blob.t
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -217,6 +218,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Mesh m -> Mesh.hit_s m r tmin h
   | Algebraic a -> Algebraic.hit_s a r tmin h
   | Text t -> Text.hit_s t r tmin h
+  | Blob b -> Blob.hit_s b r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -278,6 +280,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       (* POV-Ray's normal where the gradient vanishes *)
       if out.mx = 0. && out.my = 0. && out.mz = 0. then Vec3.load out Vec3.unit_x else Vec3.normalize_m out
   | Text t -> Text.normal_into t h out
+  | Blob b -> Blob.normal_into b p out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -308,6 +311,7 @@ let[@inline] inside_xyz s x y z =
   | Mesh m -> Mesh.inside m (Vec3.make x y z)
   | Algebraic a -> Algebraic.inside a x y z
   | Text t -> Text.inside t x y z
+  | Blob b -> Blob.inside b x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -336,3 +340,4 @@ let bounds = function
   | Mesh m -> Some (Mesh.bounds m)
   | Algebraic _ -> None
   | Text t -> Some (Text.bounds t)
+  | Blob b -> Blob.bounds b

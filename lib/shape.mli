@@ -28,6 +28,7 @@ type t =
   | Algebraic of Algebraic.t
       (** POV-Ray's [poly], [cubic], [quartic], [quadric]: unbounded *)
   | Text of Text.t  (** POV-Ray's [text] *)
+  | Blob of Blob.t  (** POV-Ray's [blob] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

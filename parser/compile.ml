@@ -178,6 +178,7 @@ let shape (o : Sdl.obj) =
       let inside_below = if a.quadric then Some (Float.succ 0.) else None in
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
   | Sdl.Text t -> Shape.Text t.glyphs
+  | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
   | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ -> assert false
 
 (* What a CSG node hands down to its children: its world transform, the

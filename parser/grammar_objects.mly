@@ -6,7 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
-%token QUARTIC CUBIC POLY QUADRIC TEXT TTF
+%token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY
 
 %%
 
@@ -56,6 +56,10 @@
       { Shapes.obj (loc $loc) (Shapes.quadric (v3 $loc(a) a) (v3 $loc(b) b) (v3 $loc(c) c) (fl $loc(j) j)) ms }
   | TEXT LBRACE TTF f = string_arg COMMA? s = string_arg COMMA? th = param COMMA? off = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.text (loc $loc(f)) f s (fl $loc(th) th) (v3 $loc(off) off)) ms }
+  | BLOB LBRACE items = list(blob_item) ms = list(object_mod) RBRACE
+      { let threshold = List.fold_left (fun t i -> match i with `Threshold x -> x | `Comp _ -> t) 1. items in
+        let comps = List.filter_map (function `Comp c -> Some c | `Threshold _ -> None) items in
+        Shapes.obj (loc $loc) (Sdl.Blob (threshold, comps)) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
@@ -63,6 +67,15 @@
   | OBJECT LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | OBJECT LBRACE o = object_ ms = list(object_mod) RBRACE { List.fold_left (fun o f -> f o) o ms }
+
+blob_item:
+  | THRESHOLD e = param { `Threshold (fl $loc(e) e) }
+  | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param RBRACE
+      { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }
+  | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param COMMA? STRENGTH? s = param RBRACE
+      { `Comp (Shapes.blob_cylinder (loc $loc) (v3 $loc(a) a) (v3 $loc(b) b) (fl $loc(r) r) (fl $loc(s) s)) }
+  | COMPONENT s = param COMMA? r = param COMMA? c = param
+      { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }
 
 (* children and modifiers, in any order (POV-Ray wants the children
    first; modifiers apply in order to the whole CSG) *)
@@ -119,6 +132,8 @@ items_rev:
   | HOLLOW b = param { let h = Value.to_bool (loc $loc) b in fun (o : Sdl.obj) -> { o with hollow = h } }
   | OPEN { Shapes.set_open (loc $loc) }
   | STURM { fun o -> o }
+  | HIERARCHY %prec below_shift { fun o -> o }
+  | HIERARCHY e = param { ignore e; fun o -> o }
   | INVERSE { Shapes.inverse }
   | INSIDE_VECTOR v = param { Shapes.inside_vector (loc $loc) (v3 $loc(v) v) }
   | CLIPPED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.clipped cs }

@@ -47,7 +47,8 @@ let object_keywords =
     ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
     ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
-    ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF);
+    ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
+    ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
   ]
 
 (* grammar_texture.mly *)

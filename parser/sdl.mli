@@ -18,6 +18,7 @@ type shape =
   | Algebraic of algebraic
       (** [poly], [cubic], [quartic], [quadric] *)
   | Text of text
+  | Blob of float * Blob.component list  (** threshold, components *)
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj

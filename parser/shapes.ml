@@ -98,6 +98,15 @@ let text loc font chars thickness offset =
   if thickness < 0. then Diag.error loc "a text's thickness must be >= 0, found %g" thickness;
   Sdl.Text { font; chars; thickness; offset; glyphs = Text.make f chars ~thickness ~offset }
 
+let blob_sphere loc center radius strength =
+  if not (radius > 0.) then Diag.error loc "a blob component's radius must be positive, found %g" radius;
+  Blob.Sphere { center; radius; strength }
+
+let blob_cylinder loc a b radius strength =
+  if not (radius > 0.) then Diag.error loc "a blob component's radius must be positive, found %g" radius;
+  if Vec3.dist a b = 0. then Diag.error loc "a blob cylinder's two end points must differ";
+  Blob.Cylinder { a; b; radius; strength }
+
 (* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in
    the terms of an order-2 poly: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1 *)
 let quadric (abc : Vec3.t) (def : Vec3.t) (ghi : Vec3.t) j =

@@ -46,6 +46,12 @@ val text : Loc.t -> string -> string -> float -> Camlray.Vec3.t -> Sdl.shape
     thickness, offset }], the font found as an include file ([loc] names
     it in errors). *)
 
+val blob_sphere : Loc.t -> Camlray.Vec3.t -> float -> float -> Camlray.Blob.component
+(** A blob's [sphere { centre, radius, [strength] s }] (or [component s,
+    r, centre]); a radius that is not positive is an error. *)
+
+val blob_cylinder : Loc.t -> Camlray.Vec3.t -> Camlray.Vec3.t -> float -> float -> Camlray.Blob.component
+
 val quadric : Camlray.Vec3.t -> Camlray.Vec3.t -> Camlray.Vec3.t -> float -> Sdl.shape
 (** [quadric <A,B,C> <D,E,F> <G,H,I> J]: A x^2 + B y^2 + C z^2 + D xy +
     E xz + F yz + G x + H y + I z + J. *)

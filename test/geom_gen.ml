@@ -70,6 +70,19 @@ let galgebraic =
         (fr 0.1 1.);
     ]
 
+(* blobs of two or three components of positive strength, threshold 0.25 *)
+let gblob =
+  let open QCheck.Gen in
+  let comp =
+    oneof
+      [
+        map3 (fun center radius strength -> Blob.Sphere { center; radius; strength }) (gvec 0.8) (fr 0.5 1.2) (fr 0.5 1.5);
+        map3 (fun a d (radius, strength) -> Blob.Cylinder { a; b = Vec3.madd a 1.2 d; radius; strength })
+          (gvec 0.8) gdir (pair (fr 0.4 1.) (fr 0.5 1.5));
+      ]
+  in
+  map (fun cs -> Shape.Blob (Blob.make ~threshold:0.25 cs)) (list_size (int_range 2 3) comp)
+
 (* A non-degenerate shape around the origin (within ~2 units). *)
 let gshape =
   let open QCheck.Gen in
@@ -86,6 +99,7 @@ let gshape =
       map3 (fun c n (r, h) -> Shape.disc ~hole:(h *. r) c n r) (gvec 0.5) gdir (pair (fr 0.3 1.5) (fr 0. 0.8));
       map3 Shape.triangle (gvec 1.5) (gvec 1.5) (gvec 1.5);
       galgebraic;
+      gblob;
     ]
 
 let gxform =
@@ -133,6 +147,14 @@ let residual (s : Shape.t) (p : Vec3.t) =
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
   | Shape.Mesh _ | Shape.Text _ -> 0.
+  | Shape.Blob b ->
+      (* the field's distance from the generator's threshold over its slope *)
+      let f x y z = Blob.field b x y z in
+      let e = 1e-6 in
+      let gx = (f (p.x +. e) p.y p.z -. f (p.x -. e) p.y p.z) /. (2. *. e)
+      and gy = (f p.x (p.y +. e) p.z -. f p.x (p.y -. e) p.z) /. (2. *. e)
+      and gz = (f p.x p.y (p.z +. e) -. f p.x p.y (p.z -. e)) /. (2. *. e) in
+      Float.abs (f p.x p.y p.z -. 0.25) /. Float.sqrt ((gx *. gx) +. (gy *. gy) +. (gz *. gz))
   | Shape.Algebraic a ->
       (* the value over the gradient's length: the distance to first order *)
       let g = Vec3.m () in
@@ -142,6 +164,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
 let closed = function
   | Shape.Sphere _ | Shape.Box _ | Shape.Torus _ -> true
   | Shape.Algebraic _ -> false (* inside up to 1e-4 of its value: see test_shape *)
+  | Shape.Blob _ -> true
   | Shape.Cone { open_; _ } -> not open_
   | _ -> false
 
@@ -152,6 +175,7 @@ let shape_name (s : Shape.t) =
   | Shape.Triangle _ -> "triangle" | Shape.Smooth_triangle _ -> "smooth_triangle" | Shape.Mesh _ -> "mesh"
   | Shape.Algebraic a -> Printf.sprintf "algebraic of order %d" (Algebraic.order a)
   | Shape.Text _ -> "text"
+  | Shape.Blob _ -> "blob"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =

@@ -120,7 +120,9 @@ let fixpoint () =
      cubic { <1,0,0,0,0,0,0,0,0,0, 0,0,0,0,0,0,0,0,0,-1> clipped_by { box { -1, 1 } } bounded_by { clipped_by } }\n\
      quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 clipped_by { plane { y, 1 } } }\n\
      fog { rgb <0.5, 0.6, 0.7> 30 } fog { fog_type 2 distance 4 fog_alt 0.5 fog_offset 1 up <0, 0, 1>\n\
-       color rgbft <1, 1, 1, 0.2, 0.1> turbulence 0.3 turb_depth 0.4 octaves 4 omega 0.6 lambda 2.5 }\n"
+       color rgbft <1, 1, 1, 0.2, 0.1> turbulence 0.3 turb_depth 0.4 octaves 4 omega 0.6 lambda 2.5 }\n\
+     blob { threshold 0.4 sphere { 0, 1, 1 } cylinder { -x, x, 0.5, strength -2 } component 1, 1, y sturm\n\
+       hierarchy off pigment { rgb 1 } rotate 10*z }\n"
   in
   let text =
     if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then
@@ -135,4 +137,4 @@ let fixpoint () =
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob print back to themselves" `Quick fixpoint ] )

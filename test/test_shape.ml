@@ -193,6 +193,36 @@ let algebraic_units =
         Alcotest.(check (float 1e-12)) "distance" 4. (Algebraic.first_hit a 0. 0. (-5.) 0. 0. 1. 0.));
   ]
 
+(* Blobs: one component of strength 1 and radius 1 at threshold 1/4
+   meets (1 - d^2)^2 = 1/4 at d = sqrt(1/2), from its centre or from its
+   segment (round ends); two components add. *)
+let blob_units =
+  let r = Float.sqrt 0.5 in
+  let hit b o d = Shape.intersect (Shape.Blob b) (Ray.make o d) 1e-9 infinity in
+  [
+    Alcotest.test_case "blob: one sphere's surface at sqrt(1/2)" `Quick (fun () ->
+        let b = Blob.make ~threshold:0.25 [ Blob.Sphere { center = Vec3.zero; radius = 1.; strength = 1. } ] in
+        Alcotest.(check (float 1e-12)) "from the front" (5. -. r) (hit b (v 0. 0. (-5.)) z);
+        Alcotest.(check (float 1e-12)) "from inside" r (hit b Vec3.zero x));
+    Alcotest.test_case "blob: a cylinder's side and round end" `Quick (fun () ->
+        let b =
+          Blob.make ~threshold:0.25
+            [ Blob.Cylinder { a = v (-1.) 0. 0.; b = v 1. 0. 0.; radius = 1.; strength = 1. } ]
+        in
+        Alcotest.(check (float 1e-12)) "side" (5. -. r) (hit b (v 0.3 0. (-5.)) z);
+        Alcotest.(check (float 1e-12)) "end" (4. -. r) (hit b (v (-5.) 0. 0.) x);
+        (* 0.3 off the axis: the round end at d^2 = (x + 1)^2 + 0.09 = 1/2 *)
+        Alcotest.(check (float 1e-12)) "off-axis end" (4. -. Float.sqrt 0.41) (hit b (v (-5.) 0.3 0.) x));
+    Alcotest.test_case "blob: fields add, a negative strength subtracts" `Quick (fun () ->
+        let s c k = Blob.Sphere { center = c; radius = 1.; strength = k } in
+        let b = Blob.make ~threshold:0.6 [ s (v (-0.5) 0. 0.) 1.; s (v 0.5 0. 0.) 1. ] in
+        (* at the midpoint each adds (1 - 1/4)^2 *)
+        Alcotest.(check (float 1e-15)) "sum" (2. *. 0.5625) (Blob.field b 0. 0. 0.);
+        Alcotest.(check bool) "inside where the sum passes" true (Blob.inside b 0. 0. 0.);
+        let c = Blob.make ~threshold:0.6 [ s (v (-0.5) 0. 0.) 1.; s (v 0.5 0. 0.) (-1.) ] in
+        Alcotest.(check (float 1e-15)) "cancelled" 0. (Blob.field c 0. 0. 0.));
+  ]
+
 (* Roots of polynomials made from their roots: the first above [lo] *)
 let roots_prop =
   QCheck.Test.make ~name:"Poly.first_root: the first root above lo of a product of (t - r_i)" ~count:3000
@@ -232,4 +262,4 @@ let folded =
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
 let tests =
-  ("shape", folded :: hand @ inside_cases @ algebraic_units @ List.map QCheck_alcotest.to_alcotest (roots_prop :: props))
+  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ List.map QCheck_alcotest.to_alcotest (roots_prop :: props))

@@ -1,0 +1,246 @@
+(* Blobs (see blob.mli). *)
+
+type component =
+  | Sphere of { center : Vec3.t; radius : float; strength : float }
+  | Cylinder of { a : Vec3.t; b : Vec3.t; radius : float; strength : float }
+
+type t = { threshold : float; comps : component array }
+
+let make ~threshold comps = { threshold; comps = Array.of_list comps }
+
+(* the squared distance from (x, y, z) to a component, and the nearest
+   point of it, into [q] *)
+let[@inline] dist2 c x y z (q : Vec3.m) =
+  match c with
+  | Sphere { center = p; _ } ->
+      Vec3.set q p.x p.y p.z;
+      let dx = x -. p.x and dy = y -. p.y and dz = z -. p.z in
+      (dx *. dx) +. (dy *. dy) +. (dz *. dz)
+  | Cylinder { a; b; _ } ->
+      let wx = b.x -. a.x and wy = b.y -. a.y and wz = b.z -. a.z in
+      let l2 = (wx *. wx) +. (wy *. wy) +. (wz *. wz) in
+      let ex = x -. a.x and ey = y -. a.y and ez = z -. a.z in
+      let s = ((ex *. wx) +. (ey *. wy) +. (ez *. wz)) /. l2 in
+      let s = if s < 0. then 0. else if s > 1. then 1. else s in
+      Vec3.set q (a.x +. (s *. wx)) (a.y +. (s *. wy)) (a.z +. (s *. wz));
+      let dx = x -. q.mx and dy = y -. q.my and dz = z -. q.mz in
+      (dx *. dx) +. (dy *. dy) +. (dz *. dz)
+
+let radius = function Sphere { radius; _ } | Cylinder { radius; _ } -> radius
+let strength = function Sphere { strength; _ } | Cylinder { strength; _ } -> strength
+
+let near_key = Scratch.key Vec3.m
+
+let field b x y z =
+  let q = Scratch.get near_key in
+  let sum = ref 0. in
+  for i = 0 to Array.length b.comps - 1 do
+    let c = Array.unsafe_get b.comps i in
+    let r2 = radius c *. radius c in
+    let d2 = dist2 c x y z q in
+    if d2 < r2 then begin
+      let u = 1. -. (d2 /. r2) in
+      sum := !sum +. (strength c *. u *. u)
+    end
+  done;
+  !sum
+
+let inside b x y z = field b x y z > b.threshold
+
+let normal_into b (p : Vec3.m) (out : Vec3.m) =
+  let q = Scratch.get near_key in
+  let x = p.mx and y = p.my and z = p.mz in
+  let gx = ref 0. and gy = ref 0. and gz = ref 0. in
+  for i = 0 to Array.length b.comps - 1 do
+    let c = Array.unsafe_get b.comps i in
+    let r2 = radius c *. radius c in
+    let d2 = dist2 c x y z q in
+    if d2 < r2 then begin
+      (* the field falls away from the component: the gradient of
+         -s (1 - d^2/r^2)^2 is 4 s (1 - d^2/r^2) (p - q) / r^2 *)
+      let k = 4. *. strength c *. (1. -. (d2 /. r2)) /. r2 in
+      gx := !gx +. (k *. (x -. q.mx));
+      gy := !gy +. (k *. (y -. q.my));
+      gz := !gz +. (k *. (z -. q.mz))
+    end
+  done;
+  if !gx = 0. && !gy = 0. && !gz = 0. then Vec3.set out 0. 1. 0.
+  else begin
+    Vec3.set out !gx !gy !gz;
+    Vec3.normalize_m out
+  end
+
+let bounds b =
+  let box = ref None in
+  let add (lo : Vec3.t) (hi : Vec3.t) =
+    box := Some (match !box with None -> (lo, hi) | Some (l, h) -> (Vec3.min l lo, Vec3.max h hi))
+  in
+  Array.iter
+    (fun c ->
+      if strength c > 0. then
+        let r = radius c in
+        let e = Vec3.make r r r in
+        match c with
+        | Sphere { center; _ } -> add (Vec3.sub center e) (Vec3.add center e)
+        | Cylinder { a; b; _ } -> add (Vec3.sub (Vec3.min a b) e) (Vec3.add (Vec3.max a b) e))
+    b.comps;
+  !box
+
+(* {2 Along a ray} *)
+
+(* Per domain: the stretches where components count (7 floats each: from,
+   to, and the quartic's coefficients, constant first), the stretches'
+   ends sorted, the quartic summed over a stretch. *)
+type work = {
+  mutable pieces : Float.Array.t;
+  mutable n : int;
+  mutable ends : Float.Array.t;
+  sum : Float.Array.t;
+  roots : Poly.scratch;
+  dir : Vec3.m;  (* the ray's unit direction *)
+}
+
+let work_key =
+  Scratch.key (fun () ->
+      { pieces = Float.Array.make 70 0.; n = 0; ends = Float.Array.make 20 0.; sum = Float.Array.make 5 0.;
+        roots = Poly.scratch 4; dir = Vec3.m () })
+
+let[@inline] add_piece w t0 t1 s r2 a b c =
+  if t1 > t0 then begin
+    if 7 * (w.n + 1) > Float.Array.length w.pieces then begin
+      let p = Float.Array.make (2 * Float.Array.length w.pieces) 0. in
+      Float.Array.blit w.pieces 0 p 0 (7 * w.n);
+      w.pieces <- p
+    end;
+    (* s (1 - q / r^2)^2 = s / r^4 (q^2 - 2 r^2 q + r^4), q = a t^2 + b t + c *)
+    let k = s /. (r2 *. r2) and o = 7 * w.n and p = w.pieces in
+    Float.Array.unsafe_set p o t0;
+    Float.Array.unsafe_set p (o + 1) t1;
+    Float.Array.unsafe_set p (o + 2) (k *. ((c *. c) -. (2. *. r2 *. c) +. (r2 *. r2)));
+    Float.Array.unsafe_set p (o + 3) (k *. ((2. *. b *. c) -. (2. *. r2 *. b)));
+    Float.Array.unsafe_set p (o + 4) (k *. ((b *. b) +. (2. *. a *. c) -. (2. *. r2 *. a)));
+    Float.Array.unsafe_set p (o + 5) (k *. 2. *. a *. b);
+    Float.Array.unsafe_set p (o + 6) (k *. a *. a);
+    w.n <- w.n + 1
+  end
+
+(* where a t^2 + b t + c < r2, clipped to (lo, hi): the stretch added *)
+let[@inline] within w s r2 a b c lo hi =
+  if a > 1e-12 then begin
+    let disc = (b *. b) -. (4. *. a *. (c -. r2)) in
+    if disc > 0. then begin
+      let sq = Float.sqrt disc in
+      add_piece w (Float.max lo ((-.b -. sq) /. (2. *. a))) (Float.min hi ((-.b +. sq) /. (2. *. a))) s r2 a b c
+    end
+  end
+  else if c < r2 then add_piece w lo hi s r2 0. 0. c
+
+let collect b w (r : Ray.scratch) =
+  let ox = r.ox and oy = r.oy and oz = r.oz and nx = w.dir.mx and ny = w.dir.my and nz = w.dir.mz in
+  w.n <- 0;
+  for ci = 0 to Array.length b.comps - 1 do
+      let comp = Array.unsafe_get b.comps ci in
+      let r = radius comp and s = strength comp in
+      let r2 = r *. r in
+      match comp with
+      | Sphere { center = p; _ } ->
+          let ex = ox -. p.x and ey = oy -. p.y and ez = oz -. p.z in
+          within w s r2 1. (2. *. ((ex *. nx) +. (ey *. ny) +. (ez *. nz))) ((ex *. ex) +. (ey *. ey) +. (ez *. ez))
+            neg_infinity infinity
+      | Cylinder { a = pa; b = pb; _ } ->
+          let wx = pb.x -. pa.x and wy = pb.y -. pa.y and wz = pb.z -. pa.z in
+          let len = Float.sqrt ((wx *. wx) +. (wy *. wy) +. (wz *. wz)) in
+          let wx = wx /. len and wy = wy /. len and wz = wz /. len in
+          let ex = ox -. pa.x and ey = oy -. pa.y and ez = oz -. pa.z in
+          let h0 = (ex *. wx) +. (ey *. wy) +. (ez *. wz) and hw = (nx *. wx) +. (ny *. wy) +. (nz *. wz) in
+          let en = (ex *. nx) +. (ey *. ny) +. (ez *. nz) and e2 = (ex *. ex) +. (ey *. ey) +. (ez *. ez) in
+          (* where the ray is beside the segment (0 <= h <= len), before
+             its start (h < 0) and past its end (h > len) *)
+          let lo_in, hi_in, before_hi, after_lo, before_lo, after_hi =
+            if hw = 0. then
+              if h0 < 0. then (1., 0., infinity, infinity, neg_infinity, neg_infinity)
+              else if h0 > len then (1., 0., neg_infinity, neg_infinity, neg_infinity, infinity)
+              else (neg_infinity, infinity, neg_infinity, infinity, neg_infinity, neg_infinity)
+            else
+              let t0 = -.h0 /. hw and t1 = (len -. h0) /. hw in
+              if hw > 0. then (t0, t1, t0, t1, neg_infinity, infinity)
+              else (t1, t0, infinity, neg_infinity, t0, t1)
+          in
+          ignore after_lo;
+          (* beside: the distance to the axis *)
+          within w s r2 (1. -. (hw *. hw)) (2. *. (en -. (h0 *. hw))) (e2 -. (h0 *. h0)) lo_in hi_in;
+          (* round ends: the distance to each end point *)
+          let fx = ox -. pb.x and fy = oy -. pb.y and fz = oz -. pb.z in
+          let fn = (fx *. nx) +. (fy *. ny) +. (fz *. nz) and f2 = (fx *. fx) +. (fy *. fy) +. (fz *. fz) in
+          if hw > 0. then begin
+            within w s r2 1. (2. *. en) e2 neg_infinity before_hi;
+            within w s r2 1. (2. *. fn) f2 hi_in infinity
+          end
+          else if hw < 0. then begin
+            within w s r2 1. (2. *. en) e2 before_lo infinity;
+            within w s r2 1. (2. *. fn) f2 neg_infinity after_hi
+          end
+          else if h0 < 0. then within w s r2 1. (2. *. en) e2 neg_infinity infinity
+          else if h0 > len then within w s r2 1. (2. *. fn) f2 neg_infinity infinity
+  done
+
+let hit_s b (r : Ray.scratch) tmin (h : Hit.t) =
+  let tmin = if h.floor > tmin then h.floor else tmin in
+  let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
+  let w = Scratch.get work_key in
+  Vec3.set w.dir (r.dx /. dl) (r.dy /. dl) (r.dz /. dl);
+  collect b w r;
+  let n = w.n in
+  if n = 0 then false
+  else begin
+    (* the stretches' ends, sorted *)
+    if 2 * n > Float.Array.length w.ends then w.ends <- Float.Array.make (4 * n) 0.;
+    let e = w.ends in
+    for i = 0 to n - 1 do
+      Float.Array.unsafe_set e (2 * i) (Float.Array.unsafe_get w.pieces (7 * i));
+      Float.Array.unsafe_set e ((2 * i) + 1) (Float.Array.unsafe_get w.pieces ((7 * i) + 1))
+    done;
+    let m = 2 * n in
+    for i = 1 to m - 1 do
+      let x = Float.Array.unsafe_get e i in
+      let j = ref (i - 1) in
+      while !j >= 0 && Float.Array.unsafe_get e !j > x do
+        Float.Array.unsafe_set e (!j + 1) (Float.Array.unsafe_get e !j);
+        decr j
+      done;
+      Float.Array.unsafe_set e (!j + 1) x
+    done;
+    (* a stretch is searched whole, not cut at [h.t]: the root found must
+       not depend on the order objects are tried in *)
+    let lo_t = tmin *. dl and hi_t = h.t *. dl in
+    let found = ref false and i = ref 0 in
+    while (not !found) && !i < m - 1 && Float.Array.unsafe_get e !i < hi_t do
+      let u = Float.Array.unsafe_get e !i and v = Float.Array.unsafe_get e (!i + 1) in
+      let u = Float.max u lo_t in
+      if u < v then begin
+        let mid = 0.5 *. (u +. v) in
+        let sum = w.sum in
+        Float.Array.fill sum 0 5 0.;
+        for k = 0 to n - 1 do
+          let o = 7 * k in
+          if Float.Array.unsafe_get w.pieces o <= mid && mid <= Float.Array.unsafe_get w.pieces (o + 1) then
+            for c = 0 to 4 do
+              Float.Array.unsafe_set sum c (Float.Array.unsafe_get sum c +. Float.Array.unsafe_get w.pieces (o + 2 + c))
+            done
+        done;
+        Float.Array.unsafe_set sum 0 (Float.Array.unsafe_get sum 0 -. b.threshold);
+        if Poly.first_root_in w.roots sum 4 u v then begin
+          (* the nearest root: nearer than [h.t], or none is *)
+          let t = Poly.root w.roots /. dl in
+          if t < h.t then begin
+            h.t <- t;
+            h.id <- 0.;
+            found := true
+          end
+          else i := m
+        end
+      end;
+      incr i
+    done;
+    !found
+  end
