@@ -20,6 +20,7 @@ type t =
   | Algebraic of Algebraic.t
   | Text of Text.t
   | Blob of Blob.t
+  | Prism of Prism.t
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -219,6 +220,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Algebraic a -> Algebraic.hit_s a r tmin h
   | Text t -> Text.hit_s t r tmin h
   | Blob b -> Blob.hit_s b r tmin h
+  | Prism p -> Prism.hit_s p r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -281,6 +283,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       if out.mx = 0. && out.my = 0. && out.mz = 0. then Vec3.load out Vec3.unit_x else Vec3.normalize_m out
   | Text t -> Text.normal_into t h out
   | Blob b -> Blob.normal_into b p out
+  | Prism pr -> Prism.normal_into pr p h out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -312,6 +315,7 @@ let[@inline] inside_xyz s x y z =
   | Algebraic a -> Algebraic.inside a x y z
   | Text t -> Text.inside t x y z
   | Blob b -> Blob.inside b x y z
+  | Prism p -> Prism.inside p x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -341,3 +345,4 @@ let bounds = function
   | Algebraic _ -> None
   | Text t -> Some (Text.bounds t)
   | Blob b -> Blob.bounds b
+  | Prism p -> Some (Prism.bounds p)

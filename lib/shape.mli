@@ -29,6 +29,7 @@ type t =
       (** POV-Ray's [poly], [cubic], [quartic], [quadric]: unbounded *)
   | Text of Text.t  (** POV-Ray's [text] *)
   | Blob of Blob.t  (** POV-Ray's [blob] *)
+  | Prism of Prism.t  (** POV-Ray's [prism] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

@@ -30,10 +30,14 @@ let camera items =
       let r = Vec3.cross sky d in
       if Vec3.length r > 1e-12 then begin
         let r = Vec3.normalize r in
-        let r = if handed < 0. then Vec3.neg r else r in
+        (* up from the right vector before its side is chosen; POV-Ray
+           keeps that side only for a positive handedness (up along the
+           direction, 0, mirrors too) *)
+        let u = Vec3.cross d r in
+        let r = if handed > 0. then r else Vec3.neg r in
         direction := Vec3.scale dl d;
         right := Vec3.scale rl r;
-        up := Vec3.scale ul (Vec3.cross d (Vec3.normalize r))
+        up := Vec3.scale ul u
       end
       else begin
         (* looking along the sky vector: POV-Ray keeps the right vector
@@ -179,6 +183,10 @@ let shape (o : Sdl.obj) =
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
+  | Sdl.Prism p -> (
+      match Prism.make p.spline p.sweep p.height1 p.height2 ~open_:p.no_caps p.points with
+      | Ok pr -> Shape.Prism pr
+      | Error e -> Diag.error o.loc "prism: %s" e)
   | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ -> assert false
 
 (* What a CSG node hands down to its children: its world transform, the

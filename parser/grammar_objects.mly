@@ -6,7 +6,8 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
-%token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY
+%token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
+%token <string> SPLINE_KIND
 
 %%
 
@@ -60,6 +61,10 @@
       { let threshold = List.fold_left (fun t i -> match i with `Threshold x -> x | `Comp _ -> t) 1. items in
         let comps = List.filter_map (function `Comp c -> Some c | `Threshold _ -> None) items in
         Shapes.obj (loc $loc) (Sdl.Blob (threshold, comps)) ms }
+  | PRISM LBRACE kinds = list(SPLINE_KIND) h1 = param COMMA? h2 = param COMMA? n = param
+    pts = list(prism_point) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc)
+          (Shapes.prism (loc $loc) kinds (fl $loc(h1) h1) (fl $loc(h2) h2) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
@@ -67,6 +72,8 @@
   | OBJECT LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | OBJECT LBRACE o = object_ ms = list(object_mod) RBRACE { List.fold_left (fun o f -> f o) o ms }
+
+prism_point: COMMA? p = param { (loc $loc(p), p) }
 
 blob_item:
   | THRESHOLD e = param { `Threshold (fl $loc(e) e) }

@@ -130,6 +130,15 @@ let rec parts (o : Sdl.obj) =
             Printf.sprintf "cylinder { %s, %s, %s, strength %s }" (vec a) (vec b) (float radius) (float strength)
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
+  | Sdl.Prism p ->
+      let kw = function Prism.Linear -> "linear_spline" | Prism.Quadratic -> "quadratic_spline"
+                        | Prism.Cubic -> "cubic_spline" | Prism.Bezier -> "bezier_spline" in
+      let sw = match p.sweep with Prism.Linear_sweep -> "linear_sweep" | Prism.Conic_sweep -> "conic_sweep" in
+      simple
+        (Printf.sprintf "prism { %s %s %s, %s, %d%s%s" sw (kw p.spline) (float p.height1) (float p.height2)
+           (Array.length p.points)
+           (String.concat "" (Array.to_list (Array.map (fun (x, z) -> Printf.sprintf ", <%s, %s>" (float x) (float z)) p.points)))
+           (if p.no_caps then " open" else ""))
   | Sdl.Csg (k, children) ->
       let kw =
         match k with

@@ -15,6 +15,7 @@ type shape =
       (** [poly], [cubic], [quartic], [quadric] *)
   | Text of text
   | Blob of float * Blob.component list  (** threshold, components *)
+  | Prism of prism
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj
@@ -43,6 +44,15 @@ and text = {
   thickness : float;
   offset : Vec3.t;
   glyphs : Text.t;  (** set with the font found *)
+}
+
+and prism = {
+  spline : Prism.spline;
+  sweep : Prism.sweep;
+  height1 : float;
+  height2 : float;
+  points : (float * float) array;
+  no_caps : bool;  (** [open] *)
 }
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }

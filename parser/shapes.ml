@@ -37,6 +37,7 @@ let obj loc shape ms =
 let set_open loc (o : Sdl.obj) =
   match o.shape with
   | Sdl.Cone c -> { o with shape = Sdl.Cone { c with open_ = true } }
+  | Sdl.Prism p -> { o with shape = Sdl.Prism { p with no_caps = true } }
   | _ -> Diag.warning loc "'open' only applies to cylinders and cones; ignored"; o
 
 let wrap (o : Sdl.obj) shape =
@@ -97,6 +98,33 @@ let text loc font chars thickness offset =
   in
   if thickness < 0. then Diag.error loc "a text's thickness must be >= 0, found %g" thickness;
   Sdl.Text { font; chars; thickness; offset; glyphs = Text.make f chars ~thickness ~offset }
+
+let prism loc kinds height1 height2 (nloc, n) pts =
+  let spline = ref Prism.Linear and sweep = ref Prism.Linear_sweep in
+  List.iter
+    (function
+      | "linear_spline" -> spline := Prism.Linear
+      | "quadratic_spline" -> spline := Prism.Quadratic
+      | "cubic_spline" -> spline := Prism.Cubic
+      | "bezier_spline" -> spline := Prism.Bezier
+      | "linear_sweep" -> sweep := Prism.Linear_sweep
+      | "conic_sweep" -> sweep := Prism.Conic_sweep
+      | k -> Diag.error loc "%s is not a prism's spline or sweep" k)
+    kinds;
+  if List.length pts <> n then
+    Diag.error nloc "this prism announces %d points and lists %d" n (List.length pts);
+  let point (l, v) =
+    match v with
+    | Value.Float f -> (f, f)
+    | Value.Vector a when Array.length a >= 2 -> (a.(0), a.(1))
+    | v -> Diag.error l "a prism's point is a 2-vector <x, z>, found %s" (Value.type_name v)
+  in
+  let points = Array.of_list (List.map point pts) in
+  (* checked now, for a located message *)
+  (match Prism.make !spline !sweep height1 height2 points with
+   | Ok _ -> ()
+   | Error e -> Diag.error loc "prism: %s" e);
+  Sdl.Prism { spline = !spline; sweep = !sweep; height1; height2; points; no_caps = false }
 
 let blob_sphere loc center radius strength =
   if not (radius > 0.) then Diag.error loc "a blob component's radius must be positive, found %g" radius;

@@ -46,6 +46,11 @@ val text : Loc.t -> string -> string -> float -> Camlray.Vec3.t -> Sdl.shape
     thickness, offset }], the font found as an include file ([loc] names
     it in errors). *)
 
+val prism : Loc.t -> string list -> float -> float -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
+(** [prism loc kinds h1 h2 (nloc, n) points]: its spline and sweep
+    keywords, heights, announced count and points (checked with located
+    errors). *)
+
 val blob_sphere : Loc.t -> Camlray.Vec3.t -> float -> float -> Camlray.Blob.component
 (** A blob's [sphere { centre, radius, [strength] s }] (or [component s,
     r, centre]); a radius that is not positive is an error. *)

@@ -162,6 +162,10 @@ and ident t name loc =
             end;
             next t
           end
+          else if List.mem name [ "linear_spline"; "quadratic_spline"; "cubic_spline"; "bezier_spline";
+                                  "linear_sweep"; "conic_sweep" ] then
+            (* a prism's words (a spline { } reads its own kind) *)
+            (Parser.SPLINE_KIND name, loc)
           else if name = "array" then fail t loc "arrays can only be created with #declare NAME = array[N]"
           else if Lexer.pov_reserved name then
             (* a POV-Ray word camlray does not know: inside a #declare the

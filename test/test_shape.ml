@@ -223,6 +223,62 @@ let blob_units =
         Alcotest.(check (float 1e-15)) "cancelled" 0. (Blob.field c 0. 0. 0.));
   ]
 
+(* Prisms: a square swept along y is the box; for every spline and sweep
+   a hit's normal leaves the solid one way and enters it the other (the
+   inside test counts the curves' crossings: it and the hits agree). *)
+let arrow = [| (0.2, -1.0); (0.2, 0.2); (1.0, -0.2); (1.0, 0.2); (0.2, 1.0); (-0.2, 1.0); (-1.0, 0.2); (-1.0, -0.2);
+               (-0.2, 0.2); (-0.2, -1.0); (0.2, -1.0) |]
+
+let prism_of spline sweep pts =
+  match Prism.make spline sweep 0.5 1.0 pts with Ok p -> p | Error e -> Alcotest.fail e
+
+let prism_units =
+  [
+    Alcotest.test_case "prism: a square swept is the box" `Quick (fun () ->
+        let sq = [| (-1., -1.); (1., -1.); (1., 1.); (-1., 1.); (-1., -1.) |] in
+        let p = Shape.Prism (prism_of Prism.Linear Prism.Linear_sweep sq) in
+        let b = Shape.box (v (-1.) 0.5 (-1.)) (v 1. 1. 1.) in
+        let st = Random.State.make [| 5 |] in
+        for _ = 1 to 2000 do
+          let o = v (Random.State.float st 10. -. 5.) (Random.State.float st 10. -. 5.) (Random.State.float st 10. -. 5.) in
+          let r = Ray.make o (Vec3.sub (v (Random.State.float st 2. -. 1.) 0.75 (Random.State.float st 2. -. 1.)) o) in
+          let a = Shape.intersect p r 1e-9 infinity and c = Shape.intersect b r 1e-9 infinity in
+          if not ((a = infinity && c = infinity) || Float.abs (a -. c) <= 1e-12) then
+            Alcotest.failf "prism %g, box %g from %s" a c (Vec3.to_string o)
+        done);
+    Alcotest.test_case "prism: too few points, a curve left open" `Quick (fun () ->
+        let bad r = match r with Error _ -> () | Ok _ -> Alcotest.fail "accepted" in
+        bad (Prism.make Prism.Linear Prism.Linear_sweep 0. 1. [| (0., 0.); (1., 0.) |]);
+        bad (Prism.make Prism.Cubic Prism.Linear_sweep 0. 1. (Array.sub arrow 0 5)));
+  ]
+
+let prism_prop =
+  QCheck.Test.make ~name:"prism: normals leave the solid, for every spline and sweep" ~count:2000
+    QCheck.(make ~print:(fun ((k, c), (r : Ray.t)) -> Printf.sprintf "kind %d conic %b ray %s -> %s" k c
+                            (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+              Gen.(pair (pair (int_bound 2) bool)
+                     (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.)
+                        (map3 Vec3.make (fr (-1.) 1.) (fr 0.5 1.) (fr (-1.) 1.)))))
+    (fun ((k, conic), r) ->
+      let spline, pts =
+        match k with
+        | 0 -> (Prism.Linear, arrow)
+        | 1 -> (Prism.Quadratic, Array.append arrow [| (0.2, 0.2) |])
+        | _ -> (Prism.Cubic, Array.concat [ [| (-0.2, -1.0) |]; arrow; [| (0.2, 0.2) |] ])
+      in
+      let p = prism_of spline (if conic then Prism.Conic_sweep else Prism.Linear_sweep) pts in
+      let s = Shape.Prism p in
+      let h = Hit.create infinity in
+      if not (Shape.hit s r 1e-9 h) then true
+      else begin
+        let pt = Ray.at r h.t in
+        let n = Shape.normal s pt h in
+        let a = Vec3.madd pt 1e-6 n and b = Vec3.madd pt (-1e-6) n in
+        let ok = (not (Prism.inside p a.x a.y a.z)) && Prism.inside p b.x b.y b.z in
+        ok || Float.abs (Vec3.dot n (Vec3.normalize r.dir)) < 1e-3
+        || QCheck.Test.fail_reportf "at %s (id %g) normal %s" (Vec3.to_string pt) h.id (Vec3.to_string n)
+      end)
+
 (* Roots of polynomials made from their roots: the first above [lo] *)
 let roots_prop =
   QCheck.Test.make ~name:"Poly.first_root: the first root above lo of a product of (t - r_i)" ~count:3000
@@ -262,4 +318,5 @@ let folded =
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
 let tests =
-  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ List.map QCheck_alcotest.to_alcotest (roots_prop :: props))
+  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units
+    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: props))

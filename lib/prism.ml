@@ -1,0 +1,272 @@
+(* Prisms (see prism.mli). A segment is P(s) = ((A s + B) s + C) s + D,
+   s in [0, 1], in the xz plane: 8 floats, Ax Az Bx Bz Cx Cz Dx Dz. *)
+
+type spline = Linear | Quadratic | Cubic | Bezier
+type sweep = Linear_sweep | Conic_sweep
+
+type t = {
+  seg : Float.Array.t;
+  n : int;
+  h1 : float;
+  h2 : float;
+  conic : bool;
+  open_ : bool;
+  lo : Vec3.t;
+  hi : Vec3.t;
+}
+
+let bounds t = (t.lo, t.hi)
+let[@inline] g a i = Float.Array.unsafe_get a i
+
+(* POV-Ray's segments of a prism's points: each spline kind's formula,
+   a sub-curve ending where it returns to its first point (its control
+   points then skipped) *)
+let segments spline (p : (float * float) array) =
+  let n = Array.length p in
+  let segs = ref [] in
+  let pt i = p.(i) in
+  let first = ref (match spline with Linear | Bezier -> pt 0 | Quadratic | Cubic -> pt 1) in
+  let i = ref 0 in
+  let close (ax, az) (bx, bz) = Float.abs (ax -. bx) < 1e-10 && Float.abs (az -. bz) < 1e-10 in
+  let err = ref None in
+  while !err = None && !i < n - 1 do
+    let k = !i in
+    let need j = if j >= n then err := Some "too few points: a sub-curve is not closed, or its control points are missing" in
+    let comb cs = (* sum of c * p.(k + j) over (j, c) *)
+      List.fold_left (fun (x, z) (j, c) -> let px, pz = pt (k + j) in (x +. (c *. px), z +. (c *. pz))) (0., 0.) cs
+    in
+    (match spline with
+    | Linear ->
+        need (k + 1);
+        if !err = None then segs := ((0., 0.), (0., 0.), comb [ (0, -1.); (1, 1.) ], comb [ (0, 1.) ]) :: !segs
+    | Quadratic ->
+        need (k + 2);
+        if !err = None then
+          segs := ((0., 0.), comb [ (0, 0.5); (1, -1.); (2, 0.5) ], comb [ (0, -0.5); (2, 0.5) ], comb [ (1, 1.) ]) :: !segs
+    | Cubic ->
+        need (k + 3);
+        if !err = None then
+          segs :=
+            ( comb [ (0, -0.5); (1, 1.5); (2, -1.5); (3, 0.5) ],
+              comb [ (0, 1.); (1, -2.5); (2, 2.); (3, -0.5) ],
+              comb [ (0, -0.5); (2, 0.5) ],
+              comb [ (1, 1.) ] )
+            :: !segs
+    | Bezier ->
+        need (k + 3);
+        if !err = None then
+          segs :=
+            ( comb [ (3, 1.); (2, -3.); (1, 3.); (0, -1.) ],
+              comb [ (2, 3.); (1, -6.); (0, 3.) ],
+              comb [ (1, 3.); (0, -3.) ],
+              comb [ (0, 1.) ] )
+            :: !segs);
+    (if !err = None then
+       match spline with
+       | Linear ->
+           if close (pt (k + 1)) !first then begin
+             i := !i + 1;
+             if !i + 1 < n then first := pt (!i + 1)
+           end
+       | Quadratic ->
+           if close (pt (k + 2)) !first then begin
+             i := !i + 2;
+             if !i + 2 < n then first := pt (!i + 2)
+           end
+       | Cubic ->
+           if close (pt (k + 2)) !first then begin
+             i := !i + 3;
+             if !i + 2 < n then first := pt (!i + 2)
+           end
+       | Bezier -> i := !i + 3);
+    incr i
+  done;
+  match !err with Some e -> Error e | None -> Ok (List.rev !segs)
+
+(* the extremes of a cubic's values over [0, 1]: the ends and the zeros
+   of its derivative *)
+let extent a b c d =
+  let f s = (((a *. s) +. b) *. s +. c) *. s +. d in
+  let lo = ref (Float.min (f 0.) (f 1.)) and hi = ref (Float.max (f 0.) (f 1.)) in
+  let visit s = if s > 0. && s < 1. then (lo := Float.min !lo (f s); hi := Float.max !hi (f s)) in
+  let qa = 3. *. a and qb = 2. *. b in
+  (if qa <> 0. then begin
+     let disc = (qb *. qb) -. (4. *. qa *. c) in
+     if disc >= 0. then begin
+       visit ((-.qb +. Float.sqrt disc) /. (2. *. qa));
+       visit ((-.qb -. Float.sqrt disc) /. (2. *. qa))
+     end
+   end
+   else if qb <> 0. then visit (-.c /. qb));
+  (!lo, !hi)
+
+let make spline sweep h1 h2 ?(open_ = false) points =
+  let h1, h2 = if h1 > h2 then (h2, h1) else (h1, h2) in
+  let n = Array.length points in
+  let least = match spline with Linear -> 3 | Quadratic -> 5 | Cubic -> 6 | Bezier -> 4 in
+  if n < least then Error (Printf.sprintf "this spline needs at least %d points, found %d" least n)
+  else if spline = Bezier && n mod 4 <> 0 then Error "a bezier_spline prism needs four points a segment"
+  else
+    match segments spline points with
+    | Error e -> Error e
+    | Ok segs ->
+        let seg = Float.Array.create (8 * List.length segs) in
+        let xl = ref infinity and xh = ref neg_infinity and zl = ref infinity and zh = ref neg_infinity in
+        List.iteri
+          (fun i ((ax, az), (bx, bz), (cx, cz), (dx, dz)) ->
+            List.iteri (fun k v -> Float.Array.set seg ((8 * i) + k) v) [ ax; az; bx; bz; cx; cz; dx; dz ];
+            let a, b = extent ax bx cx dx and c, d = extent az bz cz dz in
+            xl := Float.min !xl a;
+            xh := Float.max !xh b;
+            zl := Float.min !zl c;
+            zh := Float.max !zh d)
+          segs;
+        let conic = sweep = Conic_sweep in
+        let lo, hi =
+          if conic then
+            let ends l h k1 k2 = (Float.min (Float.min (l *. k1) (l *. k2)) (Float.min (h *. k1) (h *. k2)),
+                                  Float.max (Float.max (l *. k1) (l *. k2)) (Float.max (h *. k1) (h *. k2))) in
+            let x0, x1 = ends !xl !xh h1 h2 and z0, z1 = ends !zl !zh h1 h2 in
+            (Vec3.make x0 h1 z0, Vec3.make x1 h2 z1)
+          else (Vec3.make !xl h1 !zl, Vec3.make !xh h2 !zh)
+        in
+        Ok { seg; n = List.length segs; h1; h2; conic; open_; lo; hi }
+
+(* {2 Roots in [0, 1]} *)
+
+type work = { eqn : Float.Array.t; sc : Poly.scratch; found : Float.Array.t }
+
+let work_key = Scratch.key (fun () -> { eqn = Float.Array.make 4 0.; sc = Poly.scratch 3; found = Float.Array.make 3 0. })
+
+(* the roots of c3 s^3 + c2 s^2 + c1 s + c0 in [lo, hi), in order, into
+   [w.found]; their number *)
+let roots w c3 c2 c1 c0 lo hi =
+  let e = w.eqn in
+  Float.Array.unsafe_set e 0 c0;
+  Float.Array.unsafe_set e 1 c1;
+  Float.Array.unsafe_set e 2 c2;
+  Float.Array.unsafe_set e 3 c3;
+  let n = ref 0 and from = ref (lo -. 1e-12) in
+  while !n < 3 && Poly.first_root_in w.sc e 3 !from hi do
+    let r = Poly.root w.sc in
+    if r >= lo then begin
+      Float.Array.unsafe_set w.found !n r;
+      incr n
+    end;
+    (* past it: the search from a root's own value may find it again *)
+    from := Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (!from +. 1e-12)
+  done;
+  !n
+
+(* crossings of the half-line from (u, v) towards +x with the curves:
+   odd inside; a segment owns its start, not its end *)
+let in_curve t u v =
+  let w = Scratch.get work_key in
+  let count = ref 0 in
+  for i = 0 to t.n - 1 do
+    let o = 8 * i in
+    let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
+    and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
+    let end_z = az +. bz +. cz +. dz in
+    let k = roots w az bz cz (dz -. v) 0. 1. in
+    for j = 0 to k - 1 do
+      let s = Float.Array.unsafe_get w.found j in
+      let x = (((ax *. s) +. bx) *. s +. cx) *. s +. dx in
+      if x > u && not (end_z = v && s > 0.5) then incr count
+    done
+  done;
+  !count land 1 = 1
+
+let inside t x y z =
+  y > t.h1 && y < t.h2
+  && if t.conic then y <> 0. && in_curve t (x /. y) (z /. y) else in_curve t x z
+
+let[@inline] take (h : Hit.t) tmin tt id u =
+  tt > tmin && tt < h.t
+  && (h.t <- tt;
+      h.id <- id;
+      h.u <- u;
+      true)
+
+let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
+  let tmin = if h.floor > tmin then h.floor else tmin in
+  let found = ref false in
+  (* the caps *)
+  if (not t.open_) && r.dy <> 0. then begin
+    for c = 0 to 1 do
+      let hy = if c = 0 then t.h1 else t.h2 in
+      let tt = (hy -. r.oy) /. r.dy in
+      if tt > tmin && tt < h.t then begin
+        let x = r.ox +. (tt *. r.dx) and z = r.oz +. (tt *. r.dz) in
+        let inside = if t.conic then hy <> 0. && in_curve t (x /. hy) (z /. hy) else in_curve t x z in
+        if inside && take h tmin tt (float c) 0. then found := true
+      end
+    done
+  end;
+  (* the sides *)
+  let w = Scratch.get work_key in
+  let d2 = (r.dx *. r.dx) +. (r.dz *. r.dz) in
+  for i = 0 to t.n - 1 do
+    let o = 8 * i in
+    let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
+    and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
+    if not t.conic then begin
+      if d2 > 0. then begin
+        (* (P(s) - o) x d = 0 in the plane *)
+        let k =
+          roots w ((ax *. r.dz) -. (az *. r.dx)) ((bx *. r.dz) -. (bz *. r.dx)) ((cx *. r.dz) -. (cz *. r.dx))
+            (((dx -. r.ox) *. r.dz) -. ((dz -. r.oz) *. r.dx)) 0. (1. +. 1e-12)
+        in
+        for j = 0 to k - 1 do
+          let s = Float.Array.unsafe_get w.found j in
+          let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
+          let tt = (((px -. r.ox) *. r.dx) +. ((pz -. r.oz) *. r.dz)) /. d2 in
+          let y = r.oy +. (tt *. r.dy) in
+          if y >= t.h1 && y <= t.h2 && take h tmin tt (float (i + 2)) s then found := true
+        done
+      end
+    end
+    else begin
+      (* the point y (Px, 1, Pz) on the ray: (oz dx - ox dz) + Px (oy dz - oz dy) - Pz (oy dx - ox dy) = 0 *)
+      let a = (r.oy *. r.dz) -. (r.oz *. r.dy) and b = (r.oy *. r.dx) -. (r.ox *. r.dy) in
+      let k0 = (r.oz *. r.dx) -. (r.ox *. r.dz) in
+      let k =
+        roots w ((ax *. a) -. (az *. b)) ((bx *. a) -. (bz *. b)) ((cx *. a) -. (cz *. b))
+          ((dx *. a) -. (dz *. b) +. k0) 0. (1. +. 1e-12)
+      in
+      for j = 0 to k - 1 do
+        let s = Float.Array.unsafe_get w.found j in
+        let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
+        let den_x = r.dx -. (r.dy *. px) and den_z = r.dz -. (r.dy *. pz) in
+        let tt =
+          if Float.abs den_x >= Float.abs den_z then ((r.oy *. px) -. r.ox) /. den_x
+          else ((r.oy *. pz) -. r.oz) /. den_z
+        in
+        let y = r.oy +. (tt *. r.dy) in
+        if Float.is_finite tt && y >= t.h1 && y <= t.h2 && take h tmin tt (float (i + 2)) s then found := true
+      done
+    end
+  done;
+  !found
+
+let normal_into t (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
+  if h.id = 0. then Vec3.set out 0. (-1.) 0.
+  else if h.id = 1. then Vec3.set out 0. 1. 0.
+  else begin
+    (* [p] may be [out]: read before [out] is written *)
+    let x = p.mx and y = p.my and z = p.mz in
+    let o = 8 * (int_of_float h.id - 2) and s = h.u in
+    let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
+    and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
+    let tx = (((3. *. ax *. s) +. (2. *. bx)) *. s) +. cx and tz = (((3. *. az *. s) +. (2. *. bz)) *. s) +. cz in
+    (if t.conic then begin
+       let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
+       Vec3.set out tz ((pz *. tx) -. (px *. tz)) (-.tx)
+     end
+     else Vec3.set out tz 0. (-.tx));
+    Vec3.normalize_m out;
+    (* outward: a small step along it leaves the solid *)
+    let e = 1e-7 *. (1. +. Float.abs x +. Float.abs y +. Float.abs z) in
+    let nx = out.mx and ny = out.my and nz = out.mz in
+    if inside t (x +. (e *. nx)) (y +. (e *. ny)) (z +. (e *. nz)) then Vec3.set out (-.nx) (-.ny) (-.nz)
+  end
