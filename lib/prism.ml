@@ -18,9 +18,30 @@ type t = {
 let bounds t = (t.lo, t.hi)
 let[@inline] g a i = Float.Array.unsafe_get a i
 
-(* POV-Ray's segments of a prism's points: each spline kind's formula,
-   a sub-curve ending where it returns to its first point (its control
-   points then skipped) *)
+(* POV-Ray's formulas for the segment of a spline whose points start at
+   index [k] (A, B, C, D as (x, z) pairs); the caller checks the points
+   it reads exist *)
+let spline_segment spline (p : (float * float) array) k =
+  let comb cs =
+    List.fold_left (fun (x, z) (j, c) -> let px, pz = p.(k + j) in (x +. (c *. px), z +. (c *. pz))) (0., 0.) cs
+  in
+  match spline with
+  | Linear -> ((0., 0.), (0., 0.), comb [ (0, -1.); (1, 1.) ], comb [ (0, 1.) ])
+  | Quadratic -> ((0., 0.), comb [ (0, 0.5); (1, -1.); (2, 0.5) ], comb [ (0, -0.5); (2, 0.5) ], comb [ (1, 1.) ])
+  | Cubic ->
+      ( comb [ (0, -0.5); (1, 1.5); (2, -1.5); (3, 0.5) ],
+        comb [ (0, 1.); (1, -2.5); (2, 2.); (3, -0.5) ],
+        comb [ (0, -0.5); (2, 0.5) ],
+        comb [ (1, 1.) ] )
+  | Bezier ->
+      (comb [ (3, 1.); (2, -3.); (1, 3.); (0, -1.) ], comb [ (2, 3.); (1, -6.); (0, 3.) ], comb [ (1, 3.); (0, -3.) ],
+       comb [ (0, 1.) ])
+
+(* the points a segment from index [k] reads past [k] *)
+let reach_of = function Linear -> 1 | Quadratic -> 2 | Cubic | Bezier -> 3
+
+(* POV-Ray's segments of a prism's points: a sub-curve ending where it
+   returns to its first point (its control points then skipped) *)
 let segments spline (p : (float * float) array) =
   let n = Array.length p in
   let segs = ref [] in
@@ -31,54 +52,28 @@ let segments spline (p : (float * float) array) =
   let err = ref None in
   while !err = None && !i < n - 1 do
     let k = !i in
-    let need j = if j >= n then err := Some "too few points: a sub-curve is not closed, or its control points are missing" in
-    let comb cs = (* sum of c * p.(k + j) over (j, c) *)
-      List.fold_left (fun (x, z) (j, c) -> let px, pz = pt (k + j) in (x +. (c *. px), z +. (c *. pz))) (0., 0.) cs
-    in
-    (match spline with
-    | Linear ->
-        need (k + 1);
-        if !err = None then segs := ((0., 0.), (0., 0.), comb [ (0, -1.); (1, 1.) ], comb [ (0, 1.) ]) :: !segs
-    | Quadratic ->
-        need (k + 2);
-        if !err = None then
-          segs := ((0., 0.), comb [ (0, 0.5); (1, -1.); (2, 0.5) ], comb [ (0, -0.5); (2, 0.5) ], comb [ (1, 1.) ]) :: !segs
-    | Cubic ->
-        need (k + 3);
-        if !err = None then
-          segs :=
-            ( comb [ (0, -0.5); (1, 1.5); (2, -1.5); (3, 0.5) ],
-              comb [ (0, 1.); (1, -2.5); (2, 2.); (3, -0.5) ],
-              comb [ (0, -0.5); (2, 0.5) ],
-              comb [ (1, 1.) ] )
-            :: !segs
-    | Bezier ->
-        need (k + 3);
-        if !err = None then
-          segs :=
-            ( comb [ (3, 1.); (2, -3.); (1, 3.); (0, -1.) ],
-              comb [ (2, 3.); (1, -6.); (0, 3.) ],
-              comb [ (1, 3.); (0, -3.) ],
-              comb [ (0, 1.) ] )
-            :: !segs);
-    (if !err = None then
-       match spline with
-       | Linear ->
-           if close (pt (k + 1)) !first then begin
-             i := !i + 1;
-             if !i + 1 < n then first := pt (!i + 1)
-           end
-       | Quadratic ->
-           if close (pt (k + 2)) !first then begin
-             i := !i + 2;
-             if !i + 2 < n then first := pt (!i + 2)
-           end
-       | Cubic ->
-           if close (pt (k + 2)) !first then begin
-             i := !i + 3;
-             if !i + 2 < n then first := pt (!i + 2)
-           end
-       | Bezier -> i := !i + 3);
+    if k + reach_of spline >= n then
+      err := Some "too few points: a sub-curve is not closed, or its control points are missing"
+    else begin
+      segs := spline_segment spline p k :: !segs;
+      match spline with
+      | Linear ->
+          if close (pt (k + 1)) !first then begin
+            i := !i + 1;
+            if !i + 1 < n then first := pt (!i + 1)
+          end
+      | Quadratic ->
+          if close (pt (k + 2)) !first then begin
+            i := !i + 2;
+            if !i + 2 < n then first := pt (!i + 2)
+          end
+      | Cubic ->
+          if close (pt (k + 2)) !first then begin
+            i := !i + 3;
+            if !i + 2 < n then first := pt (!i + 2)
+          end
+      | Bezier -> i := !i + 3
+    end;
     incr i
   done;
   match !err with Some e -> Error e | None -> Ok (List.rev !segs)
@@ -138,25 +133,29 @@ type work = { eqn : Float.Array.t; sc : Poly.scratch; found : Float.Array.t }
 
 let work_key = Scratch.key (fun () -> { eqn = Float.Array.make 4 0.; sc = Poly.scratch 3; found = Float.Array.make 3 0. })
 
-(* the roots of c3 s^3 + c2 s^2 + c1 s + c0 in [lo, hi), in order, into
-   [w.found]; their number *)
-let roots w c3 c2 c1 c0 lo hi =
-  let e = w.eqn in
-  Float.Array.unsafe_set e 0 c0;
-  Float.Array.unsafe_set e 1 c1;
-  Float.Array.unsafe_set e 2 c2;
-  Float.Array.unsafe_set e 3 c3;
+(* the roots of a polynomial of degree [deg] (coefficients in [e],
+   constant first) in [lo, hi), in order, into [found]; their number *)
+let all_roots sc e deg (found : Float.Array.t) lo hi =
   let n = ref 0 and from = ref (lo -. 1e-12) in
-  while !n < 3 && Poly.first_root_in w.sc e 3 !from hi do
-    let r = Poly.root w.sc in
+  while !n < deg && Poly.first_root_in sc e deg !from hi do
+    let r = Poly.root sc in
     if r >= lo then begin
-      Float.Array.unsafe_set w.found !n r;
+      Float.Array.unsafe_set found !n r;
       incr n
     end;
     (* past it: the search from a root's own value may find it again *)
     from := Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (!from +. 1e-12)
   done;
   !n
+
+(* the roots of c3 s^3 + c2 s^2 + c1 s + c0 in [lo, hi) into [w.found] *)
+let roots w c3 c2 c1 c0 lo hi =
+  let e = w.eqn in
+  Float.Array.unsafe_set e 0 c0;
+  Float.Array.unsafe_set e 1 c1;
+  Float.Array.unsafe_set e 2 c2;
+  Float.Array.unsafe_set e 3 c3;
+  all_roots w.sc e 3 w.found lo hi
 
 (* crossings of the half-line from (u, v) towards +x with the curves:
    odd inside; a segment owns its start, not its end *)

@@ -20,3 +20,23 @@ val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
 (** Outward unit normal at a point a hit found. *)
 
 val bounds : t -> Vec3.t * Vec3.t
+
+(** {2 For lathes and others} *)
+
+val spline_segment :
+  spline -> (float * float) array -> int -> (float * float) * (float * float) * (float * float) * (float * float)
+(** [spline_segment kind points k]: POV-Ray's coefficients (A, B, C, D,
+    each an (x, y) pair) of the segment P(s) = ((A s + B) s + C) s + D,
+    s in [0, 1], whose points start at index [k]. *)
+
+val reach_of : spline -> int
+(** How many points past [k] a segment reads (1, 2 or 3). *)
+
+val extent : float -> float -> float -> float -> float * float
+(** [extent a b c d]: the least and greatest values of the cubic
+    [((a s + b) s + c) s + d] over [0, 1]. *)
+
+val all_roots : Poly.scratch -> Float.Array.t -> int -> Float.Array.t -> float -> float -> int
+(** [all_roots sc coefficients degree found lo hi]: the polynomial's roots
+    in [[lo, hi)] in increasing order, into [found] (room for [degree]);
+    their number. *)

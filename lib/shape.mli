@@ -30,6 +30,7 @@ type t =
   | Text of Text.t  (** POV-Ray's [text] *)
   | Blob of Blob.t  (** POV-Ray's [blob] *)
   | Prism of Prism.t  (** POV-Ray's [prism] *)
+  | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

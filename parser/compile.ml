@@ -183,6 +183,8 @@ let shape (o : Sdl.obj) =
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
+  | Sdl.Lathe (spline, points) -> (
+      match Lathe.make spline points with Ok l -> Shape.Lathe l | Error e -> Diag.error o.loc "lathe: %s" e)
   | Sdl.Prism p -> (
       match Prism.make p.spline p.sweep p.height1 p.height2 ~open_:p.no_caps p.points with
       | Ok pr -> Shape.Prism pr

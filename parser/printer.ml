@@ -1,6 +1,12 @@
 open Camlray
 
 let float f = Printf.sprintf "%.17g" f
+
+let spline_kw = function
+  | Camlray.Prism.Linear -> "linear_spline"
+  | Camlray.Prism.Quadratic -> "quadratic_spline"
+  | Camlray.Prism.Cubic -> "cubic_spline"
+  | Camlray.Prism.Bezier -> "bezier_spline"
 let vec (v : Vec3.t) = Printf.sprintf "<%s, %s, %s>" (float v.x) (float v.y) (float v.z)
 let rgb (c : Color.t) = Printf.sprintf "rgb <%s, %s, %s>" (float c.r) (float c.g) (float c.b)
 
@@ -130,9 +136,12 @@ let rec parts (o : Sdl.obj) =
             Printf.sprintf "cylinder { %s, %s, %s, strength %s }" (vec a) (vec b) (float radius) (float strength)
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
+  | Sdl.Lathe (spline, points) ->
+      simple
+        (Printf.sprintf "lathe { %s %d%s" (spline_kw spline) (Array.length points)
+           (String.concat "" (Array.to_list (Array.map (fun (x, z) -> Printf.sprintf ", <%s, %s>" (float x) (float z)) points))))
   | Sdl.Prism p ->
-      let kw = function Prism.Linear -> "linear_spline" | Prism.Quadratic -> "quadratic_spline"
-                        | Prism.Cubic -> "cubic_spline" | Prism.Bezier -> "bezier_spline" in
+      let kw = spline_kw in
       let sw = match p.sweep with Prism.Linear_sweep -> "linear_sweep" | Prism.Conic_sweep -> "conic_sweep" in
       simple
         (Printf.sprintf "prism { %s %s %s, %s, %d%s%s" sw (kw p.spline) (float p.height1) (float p.height2)

@@ -16,6 +16,7 @@ type shape =
   | Text of text
   | Blob of float * Blob.component list  (** threshold, components *)
   | Prism of prism
+  | Lathe of Prism.spline * (float * float) array
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj

@@ -99,7 +99,8 @@ let text loc font chars thickness offset =
   if thickness < 0. then Diag.error loc "a text's thickness must be >= 0, found %g" thickness;
   Sdl.Text { font; chars; thickness; offset; glyphs = Text.make f chars ~thickness ~offset }
 
-let prism loc kinds height1 height2 (nloc, n) pts =
+(* a prism's or lathe's spline and sweep words, its counted 2-D points *)
+let spline_words loc what kinds =
   let spline = ref Prism.Linear and sweep = ref Prism.Linear_sweep in
   List.iter
     (function
@@ -107,24 +108,37 @@ let prism loc kinds height1 height2 (nloc, n) pts =
       | "quadratic_spline" -> spline := Prism.Quadratic
       | "cubic_spline" -> spline := Prism.Cubic
       | "bezier_spline" -> spline := Prism.Bezier
-      | "linear_sweep" -> sweep := Prism.Linear_sweep
-      | "conic_sweep" -> sweep := Prism.Conic_sweep
-      | k -> Diag.error loc "%s is not a prism's spline or sweep" k)
+      | "linear_sweep" when what = "prism" -> sweep := Prism.Linear_sweep
+      | "conic_sweep" when what = "prism" -> sweep := Prism.Conic_sweep
+      | k -> Diag.error loc "%s is not a %s's spline%s" k what (if what = "prism" then " or sweep" else ""))
     kinds;
+  (!spline, !sweep)
+
+let points_2d what (nloc, n) pts =
   if List.length pts <> n then
-    Diag.error nloc "this prism announces %d points and lists %d" n (List.length pts);
+    Diag.error nloc "this %s announces %d points and lists %d" what n (List.length pts);
   let point (l, v) =
     match v with
     | Value.Float f -> (f, f)
     | Value.Vector a when Array.length a >= 2 -> (a.(0), a.(1))
-    | v -> Diag.error l "a prism's point is a 2-vector <x, z>, found %s" (Value.type_name v)
+    | v -> Diag.error l "a %s's point is a 2-vector, found %s" what (Value.type_name v)
   in
-  let points = Array.of_list (List.map point pts) in
+  Array.of_list (List.map point pts)
+
+let lathe loc kinds count pts =
+  let spline, _ = spline_words loc "lathe" kinds in
+  let points = points_2d "lathe" count pts in
+  (match Lathe.make spline points with Ok _ -> () | Error e -> Diag.error loc "lathe: %s" e);
+  Sdl.Lathe (spline, points)
+
+let prism loc kinds height1 height2 count pts =
+  let spline, sweep = spline_words loc "prism" kinds in
+  let points = points_2d "prism" count pts in
   (* checked now, for a located message *)
-  (match Prism.make !spline !sweep height1 height2 points with
+  (match Prism.make spline sweep height1 height2 points with
    | Ok _ -> ()
    | Error e -> Diag.error loc "prism: %s" e);
-  Sdl.Prism { spline = !spline; sweep = !sweep; height1; height2; points; no_caps = false }
+  Sdl.Prism { spline; sweep; height1; height2; points; no_caps = false }
 
 let blob_sphere loc center radius strength =
   if not (radius > 0.) then Diag.error loc "a blob component's radius must be positive, found %g" radius;

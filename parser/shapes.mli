@@ -51,6 +51,9 @@ val prism : Loc.t -> string list -> float -> float -> Loc.t * int -> (Loc.t * Va
     keywords, heights, announced count and points (checked with located
     errors). *)
 
+val lathe : Loc.t -> string list -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
+(** [lathe loc kinds (nloc, n) points] (checked with located errors). *)
+
 val blob_sphere : Loc.t -> Camlray.Vec3.t -> float -> float -> Camlray.Blob.component
 (** A blob's [sphere { centre, radius, [strength] s }] (or [component s,
     r, centre]); a radius that is not positive is an error. *)

@@ -279,6 +279,46 @@ let prism_prop =
         || QCheck.Test.fail_reportf "at %s (id %g) normal %s" (Vec3.to_string pt) h.id (Vec3.to_string n)
       end)
 
+(* Lathes: a straight profile at radius 1 is an open cylinder; a closed
+   profile's normals leave the solid *)
+let lathe_units =
+  [
+    Alcotest.test_case "lathe: a vertical line turned is the open cylinder" `Quick (fun () ->
+        let l = match Lathe.make Prism.Linear [| (1., 0.); (1., 2.) |] with Ok l -> l | Error e -> Alcotest.fail e in
+        let c = Shape.cylinder ~open_:true Vec3.zero (v 0. 2. 0.) 1. in
+        let st = Random.State.make [| 9 |] in
+        for _ = 1 to 2000 do
+          let o = v (Random.State.float st 8. -. 4.) (Random.State.float st 8. -. 4.) (Random.State.float st 8. -. 4.) in
+          let r = Ray.make o (Vec3.sub (v (Random.State.float st 2. -. 1.) (Random.State.float st 2.) (Random.State.float st 2. -. 1.)) o) in
+          let a = Shape.intersect (Shape.Lathe l) r 1e-9 infinity and b = Shape.intersect c r 1e-9 infinity in
+          if not ((a = infinity && b = infinity) || Float.abs (a -. b) <= 1e-9 *. (1. +. b)) then
+            Alcotest.failf "lathe %g, cylinder %g from %s" a b (Vec3.to_string o)
+        done);
+  ]
+
+let lathe_prop =
+  let ring = [| (1.5, 0.); (2., 0.5); (1.5, 1.); (1., 0.5); (1.5, 0.); (2., 0.5); (1.5, 1.) |] in
+  QCheck.Test.make ~name:"lathe: normals leave the solid (quadratic and cubic rings)" ~count:2000
+    QCheck.(make ~print:(fun (c, (r : Ray.t)) -> Printf.sprintf "cubic %b ray %s -> %s" c (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+              Gen.(pair bool (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.) (map3 Vec3.make (fr (-2.) 2.) (fr 0. 1.) (fr (-2.) 2.)))))
+    (fun (cubic, r) ->
+      let l =
+        match Lathe.make (if cubic then Prism.Cubic else Prism.Quadratic) (if cubic then ring else Array.sub ring 0 6) with
+        | Ok l -> l
+        | Error e -> failwith e
+      in
+      let s = Shape.Lathe l in
+      let h = Hit.create infinity in
+      if not (Shape.hit s r 1e-9 h) then true
+      else begin
+        let pt = Ray.at r h.t in
+        let n = Shape.normal s pt h in
+        let a = Vec3.madd pt 1e-6 n and b = Vec3.madd pt (-1e-6) n in
+        ((not (Lathe.inside l a.x a.y a.z)) && Lathe.inside l b.x b.y b.z)
+        || Float.abs (Vec3.dot n (Vec3.normalize r.dir)) < 1e-3
+        || QCheck.Test.fail_reportf "at %s normal %s" (Vec3.to_string pt) (Vec3.to_string n)
+      end)
+
 (* Roots of polynomials made from their roots: the first above [lo] *)
 let roots_prop =
   QCheck.Test.make ~name:"Poly.first_root: the first root above lo of a product of (t - r_i)" ~count:3000
@@ -318,5 +358,5 @@ let folded =
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
 let tests =
-  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units
-    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: props))
+  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units @ lathe_units
+    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: props))
