@@ -7,3 +7,10 @@ let copy_into s d =
   d.u <- s.u;
   d.v <- s.v;
   d.id <- s.id
+
+let[@inline] keep h tmin t id u =
+  t > tmin && t < h.t
+  && (h.t <- t;
+      h.id <- id;
+      h.u <- u;
+      true)

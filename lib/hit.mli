@@ -22,3 +22,8 @@ val create : float -> t
 
 val copy_into : t -> t -> unit
 (** [copy_into src dst]. *)
+
+val keep : t -> float -> float -> float -> float -> bool
+(** [keep h tmin t id u]: when [t] lies in [(tmin, h.t)], record it (with
+    the part [id] and the surface parameter [u]) and say so. Inlined
+    where it is used (its floats are not boxed). *)

@@ -57,12 +57,6 @@ let inside t x y z =
   done;
   !count land 1 = 1
 
-let[@inline] take (h : Hit.t) tmin tt id u =
-  tt > tmin && tt < h.t
-  && (h.t <- tt;
-      h.id <- id;
-      h.u <- u;
-      true)
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
@@ -95,7 +89,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       for j = 0 to k - 1 do
         let s = Float.Array.unsafe_get w.found j in
         let u = (((ay *. s) +. by) *. s +. cy) *. s +. dy -. r.oy in
-        if take h tmin (u /. r.dy) (float i) s then found := true
+        if Hit.keep h tmin (u /. r.dy) (float i) s then found := true
       done
     end
     else begin
@@ -115,8 +109,8 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
         let disc = (b *. b) -. (4. *. a *. c) in
         if a > 0. && disc >= 0. then begin
           let sq = Float.sqrt disc in
-          if take h tmin ((-.b -. sq) /. (2. *. a)) (float i) s then found := true;
-          if take h tmin ((-.b +. sq) /. (2. *. a)) (float i) s then found := true
+          if Hit.keep h tmin ((-.b -. sq) /. (2. *. a)) (float i) s then found := true;
+          if Hit.keep h tmin ((-.b +. sq) /. (2. *. a)) (float i) s then found := true
         end
       done
     end

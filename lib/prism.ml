@@ -180,12 +180,6 @@ let inside t x y z =
   y > t.h1 && y < t.h2
   && if t.conic then y <> 0. && in_curve t (x /. y) (z /. y) else in_curve t x z
 
-let[@inline] take (h : Hit.t) tmin tt id u =
-  tt > tmin && tt < h.t
-  && (h.t <- tt;
-      h.id <- id;
-      h.u <- u;
-      true)
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
@@ -198,7 +192,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       if tt > tmin && tt < h.t then begin
         let x = r.ox +. (tt *. r.dx) and z = r.oz +. (tt *. r.dz) in
         let inside = if t.conic then hy <> 0. && in_curve t (x /. hy) (z /. hy) else in_curve t x z in
-        if inside && take h tmin tt (float c) 0. then found := true
+        if inside && Hit.keep h tmin tt (float c) 0. then found := true
       end
     done
   end;
@@ -221,7 +215,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
           let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
           let tt = (((px -. r.ox) *. r.dx) +. ((pz -. r.oz) *. r.dz)) /. d2 in
           let y = r.oy +. (tt *. r.dy) in
-          if y >= t.h1 && y <= t.h2 && take h tmin tt (float (i + 2)) s then found := true
+          if y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
         done
       end
     end
@@ -242,7 +236,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
           else ((r.oy *. pz) -. r.oz) /. den_z
         in
         let y = r.oy +. (tt *. r.dy) in
-        if Float.is_finite tt && y >= t.h1 && y <= t.h2 && take h tmin tt (float (i + 2)) s then found := true
+        if Float.is_finite tt && y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
       done
     end
   done;

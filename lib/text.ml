@@ -181,13 +181,6 @@ let box_missed t k (r : Ray.scratch) tmin tmax =
   end;
   !miss || !t0 > !t1
 
-(* a crossing at [tt] kept when nearer than the best so far *)
-let[@inline] take (h : Hit.t) tmin tt id u =
-  tt > tmin && tt < h.t
-  && (h.t <- tt;
-      h.id <- id;
-      h.u <- u;
-      true)
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
@@ -200,10 +193,10 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       if r.dz <> 0. then begin
         let tf = -.r.oz /. r.dz in
         if tf > tmin && tf < h.t && in_glyph t k (r.ox +. (tf *. r.dx)) (r.oy +. (tf *. r.dy)) then
-          if take h tmin tf 0. 0. then found := true;
+          if Hit.keep h tmin tf 0. 0. then found := true;
         let tb = (t.thickness -. r.oz) /. r.dz in
         if tb > tmin && tb < h.t && in_glyph t k (r.ox +. (tb *. r.dx)) (r.oy +. (tb *. r.dy)) then
-          if take h tmin tb 1. 0. then found := true
+          if Hit.keep h tmin tb 1. 0. then found := true
       end;
       (* the swept outline: where the ray's shadow on the plane crosses a
          piece, at a height between the faces *)
@@ -223,7 +216,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
             let px = (((ax *. s) +. bx) *. s) +. x0 and py = (((ay *. s) +. by) *. s) +. y0 in
             let tt = (((px -. r.ox) *. r.dx) +. ((py -. r.oy) *. r.dy)) /. d2 in
             let z = r.oz +. (tt *. r.dz) in
-            if z >= 0. && z <= t.thickness && take h tmin tt (float (i + 2)) s then found := true
+            if z >= 0. && z <= t.thickness && Hit.keep h tmin tt (float (i + 2)) s then found := true
           done
         done
     end
