@@ -22,6 +22,7 @@ type t =
   | Blob of Blob.t
   | Prism of Prism.t
   | Lathe of Lathe.t
+  | Superellipsoid of Superellipsoid.t
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -223,6 +224,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Blob b -> Blob.hit_s b r tmin h
   | Prism p -> Prism.hit_s p r tmin h
   | Lathe l -> Lathe.hit_s l r tmin h
+  | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -287,6 +289,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   | Blob b -> Blob.normal_into b p out
   | Prism pr -> Prism.normal_into pr p h out
   | Lathe l -> Lathe.normal_into l p h out
+  | Superellipsoid se -> Superellipsoid.normal_into se p out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -320,6 +323,7 @@ let[@inline] inside_xyz s x y z =
   | Blob b -> Blob.inside b x y z
   | Prism p -> Prism.inside p x y z
   | Lathe l -> Lathe.inside l x y z
+  | Superellipsoid se -> Superellipsoid.inside se x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -351,3 +355,4 @@ let bounds = function
   | Blob b -> Blob.bounds b
   | Prism p -> Some (Prism.bounds p)
   | Lathe l -> Some (Lathe.bounds l)
+  | Superellipsoid _ -> Some Superellipsoid.bounds

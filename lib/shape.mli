@@ -31,6 +31,7 @@ type t =
   | Blob of Blob.t  (** POV-Ray's [blob] *)
   | Prism of Prism.t  (** POV-Ray's [prism] *)
   | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
+  | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

@@ -183,6 +183,7 @@ let shape (o : Sdl.obj) =
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
+  | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
   | Sdl.Lathe (spline, points) -> (
       match Lathe.make spline points with Ok l -> Shape.Lathe l | Error e -> Diag.error o.loc "lathe: %s" e)
   | Sdl.Prism p -> (

@@ -49,7 +49,7 @@ let object_keywords =
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
     ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
-    ("prism", PRISM); ("lathe", LATHE);
+    ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID);
   ]
 
 (* grammar_texture.mly *)

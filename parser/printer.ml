@@ -136,6 +136,7 @@ let rec parts (o : Sdl.obj) =
             Printf.sprintf "cylinder { %s, %s, %s, strength %s }" (vec a) (vec b) (float radius) (float strength)
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
+  | Sdl.Superellipsoid (e, n) -> simple (Printf.sprintf "superellipsoid { <%s, %s>" (float e) (float n))
   | Sdl.Lathe (spline, points) ->
       simple
         (Printf.sprintf "lathe { %s %d%s" (spline_kw spline) (Array.length points)

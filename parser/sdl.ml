@@ -17,6 +17,7 @@ type shape =
   | Blob of float * Blob.component list  (** threshold, components *)
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
+  | Superellipsoid of float * float  (** e, n *)
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj

@@ -140,6 +140,13 @@ let prism loc kinds height1 height2 count pts =
    | Error e -> Diag.error loc "prism: %s" e);
   Sdl.Prism { spline; sweep; height1; height2; points; no_caps = false }
 
+let superellipsoid loc v =
+  match v with
+  | Value.Vector [| e; n |] ->
+      if not (e > 0. && n > 0.) then Diag.error loc "a superellipsoid's exponents must be positive, found <%g, %g>" e n;
+      Sdl.Superellipsoid (e, n)
+  | v -> Diag.error loc "a superellipsoid needs <e, n>, found %s" (Value.type_name v)
+
 let blob_sphere loc center radius strength =
   if not (radius > 0.) then Diag.error loc "a blob component's radius must be positive, found %g" radius;
   Blob.Sphere { center; radius; strength }

@@ -54,6 +54,9 @@ val prism : Loc.t -> string list -> float -> float -> Loc.t * int -> (Loc.t * Va
 val lathe : Loc.t -> string list -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
 (** [lathe loc kinds (nloc, n) points] (checked with located errors). *)
 
+val superellipsoid : Loc.t -> Value.t -> Sdl.shape
+(** [superellipsoid { <e, n> }]: both exponents positive. *)
+
 val blob_sphere : Loc.t -> Camlray.Vec3.t -> float -> float -> Camlray.Blob.component
 (** A blob's [sphere { centre, radius, [strength] s }] (or [component s,
     r, centre]); a radius that is not positive is an error. *)

@@ -146,7 +146,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       let n = if Vec3.length n = 0. then n else Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a)) in
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
-  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ -> 0.
+  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Superellipsoid _ -> 0.
   | Shape.Blob b ->
       (* the field's distance from the generator's threshold over its slope *)
       let f x y z = Blob.field b x y z in
@@ -178,6 +178,7 @@ let shape_name (s : Shape.t) =
   | Shape.Blob _ -> "blob"
   | Shape.Prism _ -> "prism"
   | Shape.Lathe _ -> "lathe"
+  | Shape.Superellipsoid _ -> "superellipsoid"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =

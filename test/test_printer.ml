@@ -124,7 +124,8 @@ let fixpoint () =
      blob { threshold 0.4 sphere { 0, 1, 1 } cylinder { -x, x, 0.5, strength -2 } component 1, 1, y sturm\n\
        hierarchy off pigment { rgb 1 } rotate 10*z }\n\
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
-     lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n"
+     lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
+     superellipsoid { <0.3, 2> scale 2 }\n"
   in
   let text =
     if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then
@@ -139,4 +140,4 @@ let fixpoint () =
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe, superellipsoid print back to themselves" `Quick fixpoint ] )

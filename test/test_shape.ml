@@ -319,6 +319,42 @@ let lathe_prop =
         || QCheck.Test.fail_reportf "at %s normal %s" (Vec3.to_string pt) (Vec3.to_string n)
       end)
 
+(* Superellipsoids: <1, 1> is the unit sphere (POV-Ray's tolerance on
+   the function, 1e-10, within 1e-8 in distance); normals leave the solid *)
+let superellipsoid_units =
+  [
+    Alcotest.test_case "superellipsoid <1, 1> is the unit sphere" `Quick (fun () ->
+        let se = Shape.Superellipsoid (Superellipsoid.make 1. 1.) and sp = Shape.sphere Vec3.zero 1. in
+        let st = Random.State.make [| 11 |] in
+        for _ = 1 to 2000 do
+          let o = v (Random.State.float st 8. -. 4.) (Random.State.float st 8. -. 4.) (Random.State.float st 8. -. 4.) in
+          let r = Ray.make o (Vec3.sub (v (Random.State.float st 1.6 -. 0.8) (Random.State.float st 1.6 -. 0.8)
+                                          (Random.State.float st 1.6 -. 0.8)) o) in
+          let a = Shape.intersect se r 1e-9 infinity and b = Shape.intersect sp r 1e-9 infinity in
+          if not ((a = infinity && b = infinity) || Float.abs (a -. b) <= 1e-8 *. (1. +. b)) then
+            Alcotest.failf "superellipsoid %g, sphere %g from %s" a b (Vec3.to_string o)
+        done);
+  ]
+
+let superellipsoid_prop =
+  QCheck.Test.make ~name:"superellipsoid: normals leave the solid" ~count:2000
+    QCheck.(make ~print:(fun ((e, n), (r : Ray.t)) -> Printf.sprintf "<%g, %g> ray %s -> %s" e n
+                            (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+              Gen.(pair (pair (fr 0.2 2.5) (fr 0.2 2.5)) (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.) (gvec 0.9))))
+    (fun ((e, n), r) ->
+      let t = Superellipsoid.make e n in
+      let s = Shape.Superellipsoid t in
+      let h = Hit.create infinity in
+      if not (Shape.hit s r 1e-9 h) then true
+      else begin
+        let pt = Ray.at r h.t in
+        let nn = Shape.normal s pt h in
+        let a = Vec3.madd pt 1e-5 nn and b = Vec3.madd pt (-1e-5) nn in
+        ((not (Superellipsoid.inside t a.x a.y a.z)) && Superellipsoid.inside t b.x b.y b.z)
+        || Float.abs (Vec3.dot nn (Vec3.normalize r.dir)) < 1e-2
+        || QCheck.Test.fail_reportf "at %s normal %s" (Vec3.to_string pt) (Vec3.to_string nn)
+      end)
+
 (* Roots of polynomials made from their roots: the first above [lo] *)
 let roots_prop =
   QCheck.Test.make ~name:"Poly.first_root: the first root above lo of a product of (t - r_i)" ~count:3000
@@ -358,5 +394,5 @@ let folded =
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
 let tests =
-  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units @ lathe_units
-    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: props))
+  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
+    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))

@@ -1,0 +1,212 @@
+(* Superellipsoids (see superellipsoid.mli), with POV-Ray's algorithm and
+   constants. *)
+
+type t = { ex : float; ez : float }  (* the powers 2/e and 2/n *)
+
+let make e n = { ex = 2. /. e; ez = 2. /. n }
+let bounds = (Vec3.make (-1.0001) (-1.0001) (-1.0001), Vec3.make 1.0001 1.0001 1.0001)
+
+let zero_tolerance = 1e-10
+let depth_tolerance = 1e-4
+let epsilon = 1e-10
+let min_value = -1.01
+let max_value = 1.01
+let max_iterations = 20
+
+(* x^e, exact for small whole powers as POV-Ray's *)
+let power x e =
+  if Float.of_int (Float.to_int e) = e then
+    match Float.to_int e with
+    | 0 -> 1.
+    | 1 -> x
+    | 2 -> x *. x
+    | 3 -> x *. x *. x
+    | 4 -> let b = x *. x in b *. b
+    | 5 -> let b = x *. x in b *. b *. x
+    | 6 -> let b = x *. x in b *. b *. b
+    | _ -> Float.pow x e
+  else Float.pow x e
+
+(* (x^e + y^e)^(1/e), written to keep its range *)
+let g x y e =
+  if x > y then begin
+    let v = 1. +. power (y /. x) e in
+    (if v <> 1. then Float.pow v (1. /. e) else v) *. x
+  end
+  else if y <> 0. then begin
+    let v = 1. +. power (x /. y) e in
+    (if v <> 1. then Float.pow v (1. /. e) else v) *. y
+  end
+  else 0.
+
+let value s x y z = g (g (Float.abs x) (Float.abs y) s.ex) (Float.abs z) s.ez -. 1.
+
+(* POV-Ray's inside: below its EPSILON (1e-10) *)
+let inside s x y z = value s x y z < 1e-10
+
+let dists_key = Scratch.key (fun () -> Float.Array.make 11 0.)
+
+let planes = [| (1., 1., 0.); (1., -1., 0.); (1., 0., 1.); (1., 0., -1.); (0., 1., 1.); (0., 1., -1.); (1., 0., 0.);
+                (0., 1., 0.); (0., 0., 1.) |]
+
+(* the stretch of the ray in the box [min_value, max_value]^3 *)
+let box_stretch px py pz dx dy dz =
+  let lo = ref neg_infinity and hi = ref infinity and ok = ref true in
+  let slab p d =
+    if Float.abs d > epsilon then begin
+      let a = (min_value -. p) /. d and b = (max_value -. p) /. d in
+      lo := Float.max !lo (Float.min a b);
+      hi := Float.min !hi (Float.max a b)
+    end
+    else if p < min_value || p > max_value then ok := false
+  in
+  slab px dx;
+  slab py dy;
+  slab pz dz;
+  if !ok && !lo <= !hi && !hi >= epsilon then Some (!lo, !hi) else None
+
+(* secant and bisection steps between samples of opposite signs: the
+   distance of the point found *)
+let solve_hit1 s px py pz dx dy dz t0 v0 t1 v1 =
+  let t0 = ref t0 and v0 = ref v0 and t1 = ref t1 and v1 = ref v1 and result = ref nan and i = ref 0 in
+  let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
+  while Float.is_nan !result && !i < max_iterations do
+    if Float.abs !v0 < zero_tolerance then result := !t0
+    else if Float.abs !v1 < zero_tolerance then result := !t1
+    else begin
+      let x = Float.abs !v0 /. Float.abs (!v1 -. !v0) in
+      let t2 = !t0 +. (x *. (!t1 -. !t0)) in
+      let v2 = at t2 in
+      let t3 = !t0 +. (0.5 *. (!t1 -. !t0)) in
+      let v3 = at t3 in
+      if v2 *. v3 < 0. then begin
+        t0 := t2; v0 := v2; t1 := t3; v1 := v3
+      end
+      else if Float.abs v2 < Float.abs v3 then begin
+        if !v0 *. v2 < 0. then (t1 := t2; v1 := v2) else (t0 := t2; v0 := v2)
+      end
+      else if !v0 *. v3 < 0. then (t1 := t3; v1 := v3)
+      else (t0 := t3; v0 := v3)
+    end;
+    incr i
+  done;
+  if Float.is_nan !result then if Float.abs !v0 < Float.abs !v1 then !t0 else !t1 else !result
+
+(* no sign change between two samples: Newton's method from the first,
+   as POV-Ray tries it; the distance found, or nan *)
+let check_hit2 s px py pz dx dy dz t0 v0 t1 =
+  let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
+  let dt0 = ref t0 and dt1 = ref (t0 +. (0.0001 *. (t1 -. t0))) and v0 = ref v0 in
+  let maxdelta = t1 -. t0 in
+  let result = ref nan and go = ref true and i = ref 0 in
+  while !go && !dt0 < t1 && !i < max_iterations do
+    let v1 = at !dt1 in
+    if !v0 *. v1 < 0. then begin
+      result := solve_hit1 s px py pz dx dy dz !dt0 !v0 !dt1 v1;
+      go := false
+    end
+    else if Float.abs v1 < zero_tolerance then begin
+      result := !dt1;
+      go := false
+    end
+    else if (!v0 > 0. && v1 > !v0) || (!v0 < 0. && v1 < !v0) || v1 = !v0 then go := false
+    else begin
+      let deltat = v1 *. (!dt1 -. !dt0) /. (v1 -. !v0) in
+      if Float.abs deltat > maxdelta then go := false
+      else begin
+        v0 := v1;
+        dt0 := !dt1;
+        dt1 := !dt1 -. deltat
+      end
+    end;
+    incr i
+  done;
+  !result
+
+let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
+  let tmin = if h.floor > tmin then h.floor else tmin in
+  let len = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
+  let dx = r.dx /. len and dy = r.dy /. len and dz = r.dz /. len in
+  let px = r.ox and py = r.oy and pz = r.oz in
+  match box_stretch px py pz dx dy dz with
+  | None -> false
+  | Some (t1, t2) ->
+      let t1 = Float.max t1 depth_tolerance in
+      (* the stretch cut at the nine planes, a little widened as POV-Ray
+         does; sorted in place in a per-domain array *)
+      let widen = epsilon *. (t2 -. t1) in
+      let dists = Scratch.get dists_key in
+      Float.Array.set dists 0 t1;
+      Float.Array.set dists 1 t2;
+      let n = ref 2 in
+      for k = 0 to Array.length planes - 1 do
+        let a, b, c = Array.unsafe_get planes k in
+        let d = (dx *. a) +. (dy *. b) +. (dz *. c) in
+        if Float.abs d >= epsilon then begin
+          let t = -.((px *. a) +. (py *. b) +. (pz *. c)) /. d in
+          if t >= t1 -. widen && t <= t2 +. widen then begin
+            Float.Array.set dists !n t;
+            incr n
+          end
+        end
+      done;
+      let n = !n in
+      for k = 1 to n - 1 do
+        let x = Float.Array.get dists k in
+        let j = ref (k - 1) in
+        while !j >= 0 && Float.Array.get dists !j > x do
+          Float.Array.set dists (!j + 1) (Float.Array.get dists !j);
+          decr j
+        done;
+        Float.Array.set dists (!j + 1) x
+      done;
+
+      let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
+      let accept t =
+        (* distances in units of the ray's own direction *)
+        let t = t /. len in
+        if t > tmin && t < h.t && t *. len > depth_tolerance then begin
+          h.t <- t;
+          h.id <- 0.;
+          true
+        end
+        else false
+      in
+      let found = ref false and stop = ref false in
+      let dd i = Float.Array.get dists i in
+      let v0 = ref (at (dd 0)) in
+      if Float.abs !v0 < zero_tolerance && accept (dd 0) then found := true;
+      let i = ref 1 in
+      while (not !found) && (not !stop) && !i < n do
+        let v1 = at (dd !i) in
+        (if Float.abs v1 < zero_tolerance then (if accept (dd !i) then found := true)
+         else if !v0 *. v1 < 0. then begin
+           if accept (solve_hit1 s px py pz dx dy dz (dd (!i - 1)) !v0 (dd !i) v1) then found := true
+         end
+         else begin
+           let t = check_hit2 s px py pz dx dy dz (dd (!i - 1)) !v0 (dd !i) in
+           if not (Float.is_nan t) then if accept t then found := true else stop := true
+         end);
+        v0 := v1;
+        incr i
+      done;
+      !found
+
+let normal_into s (p : Vec3.m) (out : Vec3.m) =
+  let x = p.mx and y = p.my and z = p.mz in
+  let z2n = if z <> 0. then power (Float.abs z) s.ez else 0. in
+  let nz = if z <> 0. then z2n /. z else 0. in
+  let r = ref 0. and nx = ref x and ny = ref y in
+  if Float.abs x > Float.abs y then begin
+    r := power (Float.abs (y /. x)) s.ex;
+    nx := (1. -. z2n) /. x;
+    ny := if y <> 0. then (1. -. z2n) *. !r /. y else 0.
+  end
+  else if y <> 0. then begin
+    r := power (Float.abs (x /. y)) s.ex;
+    nx := if x <> 0. then (1. -. z2n) *. !r /. x else 0.;
+    ny := (1. -. z2n) /. y
+  end;
+  let nz = if z <> 0. then nz *. (1. +. !r) else nz in
+  Vec3.set out !nx !ny nz;
+  if out.mx = 0. && out.my = 0. && out.mz = 0. then Vec3.set out 0. 0. 1. else Vec3.normalize_m out
