@@ -1,4 +1,17 @@
-type projection = Perspective | Orthographic
+type cylinder = { axis : int; angle : float; ur : Vec3.t; uu : Vec3.t; ud : Vec3.t; span : float }
+type projection = Perspective | Orthographic | Cylinder of cylinder
+
+let cylinder ~axis ~angle_deg ~right ~up ~direction =
+  let span = if axis = 1 || axis = 3 then Vec3.length up else Vec3.length right in
+  Cylinder
+    {
+      axis;
+      angle = angle_deg *. Float.pi /. 180.;
+      ur = Vec3.normalize right;
+      uu = Vec3.normalize up;
+      ud = Vec3.normalize direction;
+      span;
+    }
 
 type t = {
   projection : projection;
@@ -49,15 +62,23 @@ let[@inline] span c (a : Vec3.t) sx sy unit =
     Vec3.make (k *. x) (k *. y) (k *. z)
   else Vec3.make x y z
 
-let[@inline] origin c sx sy =
-  match c.projection with Perspective -> c.location | Orthographic -> span c c.location sx sy false
-
-let[@inline] dir c sx sy =
-  match c.projection with
-  | Perspective -> span c c.direction sx sy true
-  | Orthographic -> Vec3.normalize c.direction
-
-let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
+(* POV-Ray's cylinder cameras: along the axis the screen is flat (scaled
+   by [span]); across it the ray turns by [angle] over the image width (or
+   height). Types 3 and 4 slide the eye along the axis instead. *)
+let cylinder_into k (loc : Vec3.t) sx sy (o : Vec3.m) (d : Vec3.m) =
+  let about_up = k.axis = 1 || k.axis = 3 in
+  let a = (if about_up then sx else sy) *. k.angle in
+  let f = (if about_up then sy else sx) *. k.span in
+  let s = Float.sin a and c = Float.cos a in
+  let side = if about_up then k.ur else k.uu and axis = if about_up then k.uu else k.ur in
+  let fd = if k.axis <= 2 then f else 0. in
+  let fo = f -. fd in
+  Vec3.set o (loc.x +. (fo *. axis.x)) (loc.y +. (fo *. axis.y)) (loc.z +. (fo *. axis.z));
+  Vec3.set d
+    ((s *. side.x) +. (fd *. axis.x) +. (c *. k.ud.x))
+    ((s *. side.y) +. (fd *. axis.y) +. (c *. k.ud.y))
+    ((s *. side.z) +. (fd *. axis.z) +. (c *. k.ud.z));
+  Vec3.normalize_m d
 
 let ray_into c sx sy o d =
   match c.projection with
@@ -68,6 +89,27 @@ let ray_into c sx sy o d =
       span_into c c.location sx sy false o;
       Vec3.load d c.direction;
       Vec3.normalize_m d
+  | Cylinder k -> cylinder_into k c.location sx sy o d
+
+let[@inline] origin c sx sy =
+  match c.projection with
+  | Perspective -> c.location
+  | Orthographic -> span c c.location sx sy false
+  | Cylinder k ->
+      let o = Vec3.m () and d = Vec3.m () in
+      cylinder_into k c.location sx sy o d;
+      Vec3.of_m o
+
+let[@inline] dir c sx sy =
+  match c.projection with
+  | Perspective -> span c c.direction sx sy true
+  | Orthographic -> Vec3.normalize c.direction
+  | Cylinder k ->
+      let o = Vec3.m () and d = Vec3.m () in
+      cylinder_into k c.location sx sy o d;
+      Vec3.of_m d
+
+let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
 let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
   ray_into c sx sy o d;

@@ -2,7 +2,19 @@
     and up vectors (look_at and angle already applied by the scene
     compiler). Screen coordinates [sx], [sy] run from -0.5 to 0.5, [sy] up. *)
 
-type projection = Perspective | Orthographic
+type cylinder = {
+  axis : int;
+      (** POV-Ray's type: 1 and 3 turn about up (the horizontal angle is the
+          [angle]), 2 and 4 about right; 3 and 4 move the eye along the axis
+          instead of turning the ray. *)
+  angle : float;  (** radians across the image in the turning direction *)
+  ur : Vec3.t;
+  uu : Vec3.t;
+  ud : Vec3.t;  (** right, up and direction, normalised *)
+  span : float;  (** the length of up (types 1, 3) or of right (2, 4) *)
+}
+
+type projection = Perspective | Orthographic | Cylinder of cylinder
 
 type t = {
   projection : projection;
@@ -17,6 +29,10 @@ type t = {
 
 val default : t
 (** POV-Ray's default camera (location 0, direction z, right 1.33 x, up y). *)
+
+val cylinder : axis:int -> angle_deg:float -> right:Vec3.t -> up:Vec3.t -> direction:Vec3.t -> projection
+(** POV-Ray's [cylinder N] camera with the final vectors ([angle] in
+    degrees, 90 when the scene gives none). *)
 
 val ray : t -> float -> float -> Ray.t
 (** [ray cam sx sy]: the pinhole ray through the screen point. Directions

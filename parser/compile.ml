@@ -2,11 +2,18 @@ open Camlray
 
 let camera items =
   let find f = List.fold_left (fun acc i -> match f i with Some v -> Some v | None -> acc) None items in
-  let ortho =
+  (* the last type named wins; 0 perspective, -1 orthographic, n cylinder n *)
+  let kind =
     List.fold_left
-      (fun acc i -> match i with Sdl.Orthographic -> true | Sdl.Perspective -> false | _ -> acc)
-      false items
+      (fun acc i ->
+        match i with
+        | Sdl.Orthographic -> -1
+        | Sdl.Perspective -> 0
+        | Sdl.Cylinder_camera n -> n
+        | _ -> acc)
+      0 items
   in
+  let ortho = kind = -1 in
   let location = Option.value ~default:Vec3.zero (find (function Sdl.Location v -> Some v | _ -> None)) in
   let dir0 = find (function Sdl.Direction v -> Some v | _ -> None) in
   let up0 = find (function Sdl.Up v -> Some v | _ -> None) in
@@ -17,8 +24,9 @@ let camera items =
   let direction = ref (Option.value ~default:Vec3.unit_z dir0) in
   let up = ref (Option.value ~default:Vec3.unit_y up0) in
   let right = ref (Option.value ~default:(Vec3.make 1.33 0. 0.) right0) in
+  (* a cylinder camera's angle is its turn, not a zoom *)
   (match angle with
-  | Some a when a > 0. && a < 180. ->
+  | Some a when a > 0. && a < 180. && kind <= 0 ->
       let len = Vec3.length !right /. (2. *. Float.tan (a *. Float.pi /. 360.)) in
       direction := Vec3.scale len (Vec3.normalize !direction)
   | _ -> ());
@@ -66,12 +74,19 @@ let camera items =
     | Some fp -> Vec3.dot (Vec3.sub fp location) (Vec3.normalize !direction)
     | None -> Vec3.dot (Vec3.sub Vec3.zero location) (Vec3.normalize !direction)
   in
+  let direction = Transform.vector xf !direction
+  and right = Transform.vector xf !right
+  and up = Transform.vector xf !up in
   {
-    Camera.projection = (if ortho then Camera.Orthographic else Camera.Perspective);
+    Camera.projection =
+      (if ortho then Camera.Orthographic
+       else if kind > 0 then
+         Camera.cylinder ~axis:kind ~angle_deg:(Option.value ~default:90. angle) ~right ~up ~direction
+       else Camera.Perspective);
     location = Transform.point xf location;
-    direction = Transform.vector xf !direction;
-    right = Transform.vector xf !right;
-    up = Transform.vector xf !up;
+    direction;
+    right;
+    up;
     aperture = Option.value ~default:0. (find (function Sdl.Aperture a -> Some a | _ -> None));
     focal_distance = Float.abs focal;
     blur_samples = Option.value ~default:0 (find (function Sdl.Blur_samples n -> Some n | _ -> None));

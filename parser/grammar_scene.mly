@@ -56,7 +56,11 @@ fog_item:
   | BLUR_SAMPLES e = param { Sdl.Blur_samples (Value.to_int (loc $loc(e)) e) }
   | t = transformation { Sdl.Cam_transform t }
   (* camera words camlray knows elsewhere, named when met here *)
-  | CYLINDER { Diag.error (loc $loc) "cylinder (a camera type) is not supported by camlray" }
+  | CYLINDER e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n < 1 || n > 4 then
+          Diag.error (loc $loc(e)) "cylinder camera type %d: the types are 1 to 4" n;
+        Sdl.Cylinder_camera n }
   | SPHERICAL { Diag.error (loc $loc) "spherical (a camera type) is not supported by camlray" }
   | NORMAL { Diag.error (loc $loc) "normal in a camera is not supported by camlray" }
 

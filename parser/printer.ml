@@ -174,6 +174,7 @@ and obj o =
 let camera_item = function
   | Sdl.Perspective -> "perspective"
   | Sdl.Orthographic -> "orthographic"
+  | Sdl.Cylinder_camera n -> Printf.sprintf "cylinder %d" n
   | Sdl.Location v -> "location " ^ vec v
   | Sdl.Look_at v -> "look_at " ^ vec v
   | Sdl.Angle a -> "angle " ^ float a

@@ -93,6 +93,7 @@ and obj = {
 type camera_item =
   | Perspective
   | Orthographic
+  | Cylinder_camera of int  (** POV-Ray's [cylinder 1] to [cylinder 4] *)
   | Location of Vec3.t
   | Look_at of Vec3.t
   | Angle of float

@@ -45,6 +45,39 @@ let units =
     Alcotest.test_case "a mirrored right stays mirrored after look_at" `Quick (fun () ->
         let c = cam "camera { right -1.33*x location <0,0,-5> look_at <0,0,0> }" in
         Alcotest.(check bool) "negative x" true (c.right.x < 0.));
+    Alcotest.test_case "cylinder 1: the ray turns by x * angle about up, y is flat" `Quick (fun () ->
+        let c = cam "camera { cylinder 1 location <0,0,-5> look_at 0 up 2*y angle 120 }" in
+        let r = Camera.ray c 0.25 0.1 in
+        (* 0.25 of 120 degrees = 30 degrees right of +z; up 2 * 0.1 *)
+        let d = Vec3.make (sin (Float.pi /. 6.)) 0.2 (cos (Float.pi /. 6.)) in
+        Alcotest.(check (float 1e-9)) "dx" 0. (Vec3.dist r.dir (Vec3.normalize d));
+        Alcotest.(check (float 1e-12)) "origin" 0. (Vec3.dist r.origin (Vec3.make 0. 0. (-5.))));
+    Alcotest.test_case "cylinder 2: the ray turns by y * angle about right; default angle 90" `Quick
+      (fun () ->
+        let c = cam "camera { cylinder 2 location <0,0,-5> look_at 0 right 2*x }" in
+        let r = Camera.ray c 0.1 (-0.5) in
+        (* the bottom edge looks 45 degrees down; x is flat, scaled by |right| *)
+        let d = Vec3.make 0.2 (-.sqrt 0.5) (sqrt 0.5) in
+        Alcotest.(check (float 1e-9)) "dir" 0. (Vec3.dist r.dir (Vec3.normalize d)));
+    Alcotest.test_case "cylinder 3 and 4 slide the eye along the axis" `Quick (fun () ->
+        let c3 = cam "camera { cylinder 3 location <0,0,-5> look_at 0 up 3*y angle 180 }" in
+        let r = Camera.ray c3 0.5 0.25 in
+        Alcotest.(check (float 1e-9)) "eye" 0. (Vec3.dist r.origin (Vec3.make 0. 0.75 (-5.)));
+        Alcotest.(check (float 1e-9)) "dir +x" 0. (Vec3.dist r.dir Vec3.unit_x);
+        let c4 = cam "camera { cylinder 4 location <0,0,-5> look_at 0 right 4*x angle 180 }" in
+        let r = Camera.ray c4 (-0.25) 0.5 in
+        Alcotest.(check (float 1e-9)) "eye" 0. (Vec3.dist r.origin (Vec3.make (-1.) 0. (-5.)));
+        Alcotest.(check (float 1e-9)) "dir +y" 0. (Vec3.dist r.dir Vec3.unit_y));
+    Alcotest.test_case "cylinder camera rays written in place equal Camera.ray" `Quick (fun () ->
+        let c = cam "camera { cylinder 3 location <1,2,-5> look_at <0,1,0> angle 200 rotate 10*z }" in
+        let o = Vec3.m () and d = Vec3.m () in
+        List.iter
+          (fun (sx, sy) ->
+            Camera.ray_into c sx sy o d;
+            let r = Camera.ray c sx sy in
+            if Vec3.dist (Vec3.of_m o) r.origin > 1e-12 || Vec3.dist (Vec3.of_m d) r.dir > 1e-12 then
+              Alcotest.failf "differs at %g %g" sx sy)
+          [ (0., 0.); (0.4, -0.3); (-0.5, 0.5) ]);
     Alcotest.test_case "depth of field: lens radius aperture/4, rays meet on the focal plane" `Quick
       (fun () ->
         let c = cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> }" in
