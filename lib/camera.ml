@@ -1,17 +1,14 @@
-type cylinder = { axis : int; angle : float; ur : Vec3.t; uu : Vec3.t; ud : Vec3.t; span : float }
-type projection = Perspective | Orthographic | Cylinder of cylinder
+type projection =
+  | Perspective
+  | Orthographic
+  | Cylinder of int
+  | Fisheye
+  | Omnimax
+  | Ultra_wide_angle
+  | Panoramic
+  | Spherical
 
-let cylinder ~axis ~angle_deg ~right ~up ~direction =
-  let span = if axis = 1 || axis = 3 then Vec3.length up else Vec3.length right in
-  Cylinder
-    {
-      axis;
-      angle = angle_deg *. Float.pi /. 180.;
-      ur = Vec3.normalize right;
-      uu = Vec3.normalize up;
-      ud = Vec3.normalize direction;
-      span;
-    }
+type frame = { ur : Vec3.t; uu : Vec3.t; ud : Vec3.t; lr : float; lu : float; angle : float; v_angle : float }
 
 type t = {
   projection : projection;
@@ -22,18 +19,34 @@ type t = {
   aperture : float;
   focal_distance : float;
   blur_samples : int;
+  frame : frame;
 }
 
+let deg = Float.pi /. 180.
+
+let frame ~right ~up ~direction ~angle_deg ~v_angle_deg =
+  {
+    ur = Vec3.normalize right;
+    uu = Vec3.normalize up;
+    ud = Vec3.normalize direction;
+    lr = Vec3.length right;
+    lu = Vec3.length up;
+    angle = angle_deg *. deg;
+    v_angle = v_angle_deg *. deg;
+  }
+
 let default =
+  let right = Vec3.make 1.33 0. 0. and up = Vec3.unit_y and direction = Vec3.unit_z in
   {
     projection = Perspective;
     location = Vec3.zero;
-    direction = Vec3.unit_z;
-    right = Vec3.make 1.33 0. 0.;
-    up = Vec3.unit_y;
+    direction;
+    right;
+    up;
     aperture = 0.;
     focal_distance = 1.;
     blur_samples = 0;
+    frame = frame ~right ~up ~direction ~angle_deg:90. ~v_angle_deg:180.;
   }
 
 let[@inline] pixel_x ~width px = (px /. float_of_int width) -. 0.5
@@ -62,58 +75,150 @@ let[@inline] span c (a : Vec3.t) sx sy unit =
     Vec3.make (k *. x) (k *. y) (k *. z)
   else Vec3.make x y z
 
-(* POV-Ray's cylinder cameras: along the axis the screen is flat (scaled
-   by [span]); across it the ray turns by [angle] over the image width (or
-   height). Types 3 and 4 slide the eye along the axis instead. *)
-let cylinder_into k (loc : Vec3.t) sx sy (o : Vec3.m) (d : Vec3.m) =
-  let about_up = k.axis = 1 || k.axis = 3 in
-  let a = (if about_up then sx else sy) *. k.angle in
-  let f = (if about_up then sy else sx) *. k.span in
-  let s = Float.sin a and c = Float.cos a in
-  let side = if about_up then k.ur else k.uu and axis = if about_up then k.uu else k.ur in
-  let fd = if k.axis <= 2 then f else 0. in
-  let fo = f -. fd in
-  Vec3.set o (loc.x +. (fo *. axis.x)) (loc.y +. (fo *. axis.y)) (loc.z +. (fo *. axis.z));
+(* [o] at [loc], [d] the unit vector [a ur + b uu + c ud] *)
+let[@inline] aim (k : frame) (loc : Vec3.t) a b c (o : Vec3.m) (d : Vec3.m) =
+  Vec3.load o loc;
   Vec3.set d
-    ((s *. side.x) +. (fd *. axis.x) +. (c *. k.ud.x))
-    ((s *. side.y) +. (fd *. axis.y) +. (c *. k.ud.y))
-    ((s *. side.z) +. (fd *. axis.z) +. (c *. k.ud.z));
+    ((a *. k.ur.x) +. (b *. k.uu.x) +. (c *. k.ud.x))
+    ((a *. k.ur.y) +. (b *. k.uu.y) +. (c *. k.ud.y))
+    ((a *. k.ur.z) +. (b *. k.uu.z) +. (c *. k.ud.z));
   Vec3.normalize_m d
 
-let ray_into c sx sy o d =
+(* POV-Ray's cylinder cameras: along the axis the screen is flat (scaled
+   by the length of up, resp. right); across it the ray turns by [angle]
+   over the image. Types 3 and 4 slide the eye along the axis instead. *)
+let cylinder_into n (k : frame) (loc : Vec3.t) sx sy o d =
+  let about_up = n = 1 || n = 3 in
+  let a = (if about_up then sx else sy) *. k.angle in
+  let f = (if about_up then sy else sx) *. if about_up then k.lu else k.lr in
+  let s = Float.sin a and c = Float.cos a in
+  let bend = if n <= 2 then f else 0. in
+  if about_up then aim k loc s bend c o d else aim k loc bend s c o d;
+  let slide = f -. bend in
+  if slide <> 0. then begin
+    let ax = if about_up then k.uu else k.ur in
+    Vec3.set o (o.mx +. (slide *. ax.x)) (o.my +. (slide *. ax.y)) (o.mz +. (slide *. ax.z))
+  end
+
+(* fisheye and omnimax: the point at polar angle [phi] (cosine [cp], sine
+   [sp]) of the image circle looks [theta] away from the direction *)
+let[@inline] polar_into k loc cp sp theta o d =
+  let s = Float.sin theta in
+  aim k loc (cp *. s) (sp *. s) (Float.cos theta) o d
+
+(* POV-Ray's omnimax: the image circle fitted to the frame, rad 1 at 180
+   degrees through its polynomial; nothing below 45 degrees under the axis *)
+let omnimax_into (k : frame) loc sx sy o d =
+  let aspect = k.lr /. k.lu and wide = 1.283458 in
+  let x0 = 2. *. sx *. if aspect > wide then aspect /. wide else 1. in
+  let y0 =
+    if aspect > 1. then (((2. *. sy) -. 1.) /. Float.min aspect wide) +. 1. else 2. *. sy /. aspect
+  in
+  let rad = Float.sqrt ((x0 *. x0) +. (y0 *. y0)) in
+  let cp = if rad = 0. then 1. else x0 /. rad and sp = if rad = 0. then 0. else y0 /. rad in
+  let r3 = rad *. rad *. rad in
+  let theta = (1.411269 *. rad) -. (0.09439 *. r3) +. (0.25674 *. r3 *. rad *. rad) in
+  polar_into k loc cp sp theta o d;
+  rad <= 1. && sp *. Float.sin theta >= -.Float.cos theta
+
+let fisheye_into (k : frame) loc sx sy o d =
+  let x0 = 2. *. sx *. k.lr and y0 = 2. *. sy *. k.lu in
+  let rad = Float.sqrt ((x0 *. x0) +. (y0 *. y0)) in
+  let cp = if rad = 0. then 1. else x0 /. rad and sp = if rad = 0. then 0. else y0 /. rad in
+  polar_into k loc cp sp (rad *. k.angle /. 2.) o d;
+  rad <= 1.
+
+(* [v] turned by [a] about the unit axis [k] (Rodrigues), into [d] *)
+let turn_into (v : Vec3.m) (k : Vec3.t) a (d : Vec3.m) =
+  let c = Float.cos a and s = Float.sin a in
+  let kv = (k.x *. v.mx) +. (k.y *. v.my) +. (k.z *. v.mz) in
+  let cx = (k.y *. v.mz) -. (k.z *. v.my)
+  and cy = (k.z *. v.mx) -. (k.x *. v.mz)
+  and cz = (k.x *. v.my) -. (k.y *. v.mx) in
+  let w = kv *. (1. -. c) in
+  Vec3.set d ((c *. v.mx) +. (s *. cx) +. (w *. k.x)) ((c *. v.my) +. (s *. cy) +. (w *. k.y))
+    ((c *. v.mz) +. (s *. cz) +. (w *. k.z))
+
+(* the projections beyond the two planar ones; the screen point comes in
+   [o]'s x and y (two floats passed to a call that is not inlined would be
+   boxed) *)
+let wide_into c (o : Vec3.m) d =
+  let k = c.frame and sx = o.mx and sy = o.my in
+  match c.projection with
+  | Perspective | Orthographic -> assert false
+  | Cylinder n ->
+      cylinder_into n k c.location sx sy o d;
+      true
+  | Fisheye -> fisheye_into k c.location sx sy o d
+  | Omnimax -> omnimax_into k c.location sx sy o d
+  | Ultra_wide_angle ->
+      let x0 = sx *. k.angle and y0 = sy *. k.angle *. k.lu /. k.lr in
+      aim k c.location (Float.sin x0) (Float.sin y0) (Float.cos x0 *. Float.cos y0) o d;
+      true
+  | Panoramic ->
+      (* POV-Ray's: the full right, up and direction, not their units *)
+      let x0 = (0.5 -. sx) *. Float.pi and y0 = Float.pi *. sy in
+      let ty =
+        if Float.abs ((Float.pi /. 2.) -. Float.abs y0) < 1e-10 then Float.copy_sign 2e10 y0 else Float.tan y0
+      in
+      let a = Float.cos x0 and b = Float.sin x0 in
+      let r = c.right and u = c.up and w = c.direction in
+      Vec3.load o c.location;
+      Vec3.set d
+        ((a *. r.x) +. (ty *. u.x) +. (b *. w.x))
+        ((a *. r.y) +. (ty *. u.y) +. (b *. w.y))
+        ((a *. r.z) +. (ty *. u.z) +. (b *. w.z));
+      Vec3.normalize_m d;
+      true
+  | Spherical ->
+      (* latitude about right, then longitude about up *)
+      Vec3.load d k.ud;
+      turn_into d k.ur (-.(sy *. k.v_angle)) o;
+      turn_into o k.uu (sx *. k.angle) d;
+      Vec3.load o c.location;
+      Vec3.normalize_m d;
+      true
+
+let[@inline] ray_into c sx sy o d =
   match c.projection with
   | Perspective ->
       Vec3.load o c.location;
-      span_into c c.direction sx sy true d
+      span_into c c.direction sx sy true d;
+      true
   | Orthographic ->
       span_into c c.location sx sy false o;
       Vec3.load d c.direction;
-      Vec3.normalize_m d
-  | Cylinder k -> cylinder_into k c.location sx sy o d
+      Vec3.normalize_m d;
+      true
+  | _ ->
+      Vec3.set o sx sy 0.;
+      wide_into c o d
 
-let[@inline] origin c sx sy =
+let sees c sx sy = ray_into c sx sy (Vec3.m ()) (Vec3.m ())
+
+let origin c sx sy =
   match c.projection with
   | Perspective -> c.location
   | Orthographic -> span c c.location sx sy false
-  | Cylinder k ->
+  | _ ->
       let o = Vec3.m () and d = Vec3.m () in
-      cylinder_into k c.location sx sy o d;
+      ignore (ray_into c sx sy o d);
       Vec3.of_m o
 
-let[@inline] dir c sx sy =
+let dir c sx sy =
   match c.projection with
   | Perspective -> span c c.direction sx sy true
   | Orthographic -> Vec3.normalize c.direction
-  | Cylinder k ->
+  | _ ->
       let o = Vec3.m () and d = Vec3.m () in
-      cylinder_into k c.location sx sy o d;
+      ignore (ray_into c sx sy o d);
       Vec3.of_m d
 
 let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
-let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
-  ray_into c sx sy o d;
-  if c.aperture > 0. then begin
+let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
+  let seen = ray_into c sx sy o d in
+  if seen && c.aperture > 0. then begin
     (* POV-Ray's lens has radius aperture/4 (checked by rendering a point
        light out of focus); uniform polar mapping of the square onto it *)
     let rad = 0.25 *. c.aperture *. Float.sqrt u in
@@ -130,9 +235,10 @@ let lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
     Vec3.set o (o.mx +. ox) (o.my +. oy) (o.mz +. oz);
     Vec3.set d (fx -. o.mx) (fy -. o.my) (fz -. o.mz);
     Vec3.normalize_m d
-  end
+  end;
+  seen
 
 let ray_lens c sx sy u v =
   let o = Vec3.m () and d = Vec3.m () in
-  lens_into c sx sy u v o d;
+  ignore (lens_into c sx sy u v o d);
   Ray.make (Vec3.of_m o) (Vec3.of_m d)

@@ -2,19 +2,30 @@
     and up vectors (look_at and angle already applied by the scene
     compiler). Screen coordinates [sx], [sy] run from -0.5 to 0.5, [sy] up. *)
 
-type cylinder = {
-  axis : int;
-      (** POV-Ray's type: 1 and 3 turn about up (the horizontal angle is the
-          [angle]), 2 and 4 about right; 3 and 4 move the eye along the axis
-          instead of turning the ray. *)
-  angle : float;  (** radians across the image in the turning direction *)
+type projection =
+  | Perspective
+  | Orthographic
+  | Cylinder of int
+      (** POV-Ray's [cylinder 1] to [4]: 1 and 3 turn about up by [angle]
+          across the width, 2 and 4 about right across the height; the
+          other coordinate is flat (scaled by the length of up, resp.
+          right); 3 and 4 move the eye along the axis instead of tilting
+          the ray. *)
+  | Fisheye  (** [angle] across the circle inscribed in the image *)
+  | Omnimax  (** POV-Ray's 180-degree dome projection (no angle) *)
+  | Ultra_wide_angle  (** [angle] across, [angle * |up| / |right|] down *)
+  | Panoramic  (** 180 degrees across, tangent up and down *)
+  | Spherical  (** [angle] across, [v_angle] down, as longitude and latitude *)
+
+type frame = {
   ur : Vec3.t;
   uu : Vec3.t;
   ud : Vec3.t;  (** right, up and direction, normalised *)
-  span : float;  (** the length of up (types 1, 3) or of right (2, 4) *)
+  lr : float;
+  lu : float;  (** the lengths of right and up *)
+  angle : float;  (** radians ([angle] of the scene; 90 degrees by default) *)
+  v_angle : float;  (** radians; the spherical camera's vertical angle *)
 }
-
-type projection = Perspective | Orthographic | Cylinder of cylinder
 
 type t = {
   projection : projection;
@@ -25,28 +36,34 @@ type t = {
   aperture : float;  (** 0: pinhole *)
   focal_distance : float;  (** along the view direction, for depth of field *)
   blur_samples : int;
+  frame : frame;  (** what the non-planar projections use *)
 }
+
+val frame : right:Vec3.t -> up:Vec3.t -> direction:Vec3.t -> angle_deg:float -> v_angle_deg:float -> frame
+(** The frame of the final vectors. *)
 
 val default : t
 (** POV-Ray's default camera (location 0, direction z, right 1.33 x, up y). *)
 
-val cylinder : axis:int -> angle_deg:float -> right:Vec3.t -> up:Vec3.t -> direction:Vec3.t -> projection
-(** POV-Ray's [cylinder N] camera with the final vectors ([angle] in
-    degrees, 90 when the scene gives none). *)
+val sees : t -> float -> float -> bool
+(** Whether the camera sends a ray through the screen point: not outside
+    the circle of a fisheye or an omnimax camera, nor below the omnimax's
+    dome (POV-Ray leaves those pixels black). *)
 
 val ray : t -> float -> float -> Ray.t
 (** [ray cam sx sy]: the pinhole ray through the screen point. Directions
-    are normalised. *)
+    are normalised. Where [sees] is false the ray is what the formula
+    gives, which POV-Ray does not trace. *)
 
 val origin : t -> float -> float -> Vec3.t
 val dir : t -> float -> float -> Vec3.t
 (** [origin] and [dir] of [ray], without the record. *)
 
-val ray_into : t -> float -> float -> Vec3.m -> Vec3.m -> unit
+val ray_into : t -> float -> float -> Vec3.m -> Vec3.m -> bool
 (** [ray_into c sx sy o d]: {!origin} and {!dir} written into [o] and [d]
-    (nothing allocated for a perspective camera). *)
+    (nothing allocated); the result is {!sees}. *)
 
-val lens_into : t -> float -> float -> float -> float -> Vec3.m -> Vec3.m -> unit
+val lens_into : t -> float -> float -> float -> float -> Vec3.m -> Vec3.m -> bool
 (** [lens_into cam sx sy u v o d]: {!ray_lens} written into [o] and [d]
     ({!ray_lens} goes through it). *)
 

@@ -312,9 +312,12 @@ let pixel_into t ~width ~height ~seed ~spp ~max_depth x y (out : Color.acc) =
     and jy = if strat then (float_of_int (k / side) +. u2) /. float_of_int side else u2 in
     let sx = Camera.pixel_x ~width (float_of_int x +. jx)
     and sy = Camera.pixel_y ~height (float_of_int y +. jy) in
-    if cam.aperture <= 0. then Camera.ray_into cam sx sy st.o st.d
-    else Camera.lens_into cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) st.o st.d;
-    li_into t sampler ~max_depth st;
+    let seen =
+      if cam.aperture <= 0. then Camera.ray_into cam sx sy st.o st.d
+      else Camera.lens_into cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) st.o st.d
+    in
+    (* a point the camera sends no ray through stays black, as in POV-Ray *)
+    if seen then li_into t sampler ~max_depth st else Color.acc_set st.acc 0. 0. 0.;
     let c = st.acc in
     (* a non-finite sample (never expected) would poison the pixel: drop it *)
     if Float.is_finite (c.ar +. c.ag +. c.ab) then

@@ -427,8 +427,9 @@ let focal_blur_into (s : Scene.t) (r : camera_ray) out =
   for k = 0 to n - 1 do
     let u = Float.rem (((float_of_int k +. 0.5) /. float_of_int n) +. du) 1. in
     let v = Float.rem (radical_inverse k +. dv) 1. in
-    Camera.lens_into cam sx sy u v r.o r.d;
-    trace_camera_ray s r r.light;
+    (* a point the camera sends no ray through stays black, as in POV-Ray *)
+    if Camera.lens_into cam sx sy u v r.o r.d then trace_camera_ray s r r.light
+    else Color.acc_set r.light 0. 0. 0.;
     let l = r.light in
     Color.acc_set sum (sum.ar +. l.ar) (sum.ag +. l.ag) (sum.ab +. l.ab)
   done;
@@ -447,8 +448,7 @@ let[@inline] sample_in (s : Scene.t) ~width ~height px py out =
     focal_blur_into s r out
   end
   else begin
-    Camera.ray_into cam sx sy r.o r.d;
-    trace_camera_ray s r out
+    if Camera.ray_into cam sx sy r.o r.d then trace_camera_ray s r out else Color.acc_set out 0. 0. 0.
   end
 
 let sample_into s ~width ~height px py out = sample_in s ~width ~height px py out

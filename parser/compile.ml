@@ -2,31 +2,38 @@ open Camlray
 
 let camera items =
   let find f = List.fold_left (fun acc i -> match f i with Some v -> Some v | None -> acc) None items in
-  (* the last type named wins; 0 perspective, -1 orthographic, n cylinder n *)
-  let kind =
+  (* the last type named wins *)
+  let projection =
     List.fold_left
       (fun acc i ->
         match i with
-        | Sdl.Orthographic -> -1
-        | Sdl.Perspective -> 0
-        | Sdl.Cylinder_camera n -> n
+        | Sdl.Orthographic -> Camera.Orthographic
+        | Sdl.Perspective -> Camera.Perspective
+        | Sdl.Cylinder_camera n -> Camera.Cylinder n
+        | Sdl.Fisheye -> Camera.Fisheye
+        | Sdl.Omnimax -> Camera.Omnimax
+        | Sdl.Ultra_wide_angle -> Camera.Ultra_wide_angle
+        | Sdl.Panoramic -> Camera.Panoramic
+        | Sdl.Spherical_camera -> Camera.Spherical
         | _ -> acc)
-      0 items
+      Camera.Perspective items
   in
-  let ortho = kind = -1 in
+  let ortho = projection = Camera.Orthographic in
+  let planar = ortho || projection = Camera.Perspective in
   let location = Option.value ~default:Vec3.zero (find (function Sdl.Location v -> Some v | _ -> None)) in
   let dir0 = find (function Sdl.Direction v -> Some v | _ -> None) in
   let up0 = find (function Sdl.Up v -> Some v | _ -> None) in
   let right0 = find (function Sdl.Right v -> Some v | _ -> None) in
-  let angle = find (function Sdl.Angle a -> Some a | _ -> None) in
+  let angles = find (function Sdl.Angle a -> Some (a, a /. 2.) | Sdl.Angles (h, v) -> Some (h, v) | _ -> None) in
+  let angle = Option.map fst angles in
   let sky = Option.value ~default:Vec3.unit_y (find (function Sdl.Sky v -> Some v | _ -> None)) in
   let look_at = find (function Sdl.Look_at v -> Some v | _ -> None) in
   let direction = ref (Option.value ~default:Vec3.unit_z dir0) in
   let up = ref (Option.value ~default:Vec3.unit_y up0) in
   let right = ref (Option.value ~default:(Vec3.make 1.33 0. 0.) right0) in
-  (* a cylinder camera's angle is its turn, not a zoom *)
+  (* only these two zoom by the angle; the other types turn by it *)
   (match angle with
-  | Some a when a > 0. && a < 180. && kind <= 0 ->
+  | Some a when a > 0. && a < 180. && planar ->
       let len = Vec3.length !right /. (2. *. Float.tan (a *. Float.pi /. 360.)) in
       direction := Vec3.scale len (Vec3.normalize !direction)
   | _ -> ());
@@ -78,11 +85,7 @@ let camera items =
   and right = Transform.vector xf !right
   and up = Transform.vector xf !up in
   {
-    Camera.projection =
-      (if ortho then Camera.Orthographic
-       else if kind > 0 then
-         Camera.cylinder ~axis:kind ~angle_deg:(Option.value ~default:90. angle) ~right ~up ~direction
-       else Camera.Perspective);
+    Camera.projection;
     location = Transform.point xf location;
     direction;
     right;
@@ -90,6 +93,15 @@ let camera items =
     aperture = Option.value ~default:0. (find (function Sdl.Aperture a -> Some a | _ -> None));
     focal_distance = Float.abs focal;
     blur_samples = Option.value ~default:0 (find (function Sdl.Blur_samples n -> Some n | _ -> None));
+    frame =
+      (* POV-Ray's defaults: 90 degrees; the spherical camera 360 by 180 *)
+      (let h, v =
+         match (angles, projection) with
+         | Some hv, _ -> hv
+         | None, Camera.Spherical -> (360., 180.)
+         | None, _ -> (90., 45.)
+       in
+       Camera.frame ~right ~up ~direction ~angle_deg:h ~v_angle_deg:v);
   }
 
 let light (o : Sdl.obj) (l : Sdl.light) =

@@ -1,7 +1,7 @@
 (* Top-level scene items: objects, camera, background, global settings. *)
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
-%token CAMERA PERSPECTIVE ORTHOGRAPHIC LOCATION LOOK_AT ANGLE RIGHT UP DIRECTION SKY
+%token CAMERA PERSPECTIVE ORTHOGRAPHIC FISHEYE OMNIMAX ULTRA_WIDE_ANGLE PANORAMIC LOCATION LOOK_AT ANGLE RIGHT UP DIRECTION SKY
 %token APERTURE FOCAL_POINT BLUR_SAMPLES
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
@@ -44,9 +44,15 @@ fog_item:
 %public camera_item:
   | PERSPECTIVE { Sdl.Perspective }
   | ORTHOGRAPHIC { Sdl.Orthographic }
+  | FISHEYE { Sdl.Fisheye }
+  | OMNIMAX { Sdl.Omnimax }
+  | ULTRA_WIDE_ANGLE { Sdl.Ultra_wide_angle }
+  | PANORAMIC { Sdl.Panoramic }
+  | SPHERICAL { Sdl.Spherical_camera }
   | LOCATION e = param { Sdl.Location (v3 $loc(e) e) }
   | LOOK_AT e = param { Sdl.Look_at (v3 $loc(e) e) }
   | ANGLE e = param { Sdl.Angle (fl $loc(e) e) }
+  | ANGLE e = param COMMA f = param { Sdl.Angles (fl $loc(e) e, fl $loc(f) f) }
   | RIGHT e = param { Sdl.Right (v3 $loc(e) e) }
   | UP e = param { Sdl.Up (v3 $loc(e) e) }
   | DIRECTION e = param { Sdl.Direction (v3 $loc(e) e) }
@@ -61,7 +67,6 @@ fog_item:
         if n < 1 || n > 4 then
           Diag.error (loc $loc(e)) "cylinder camera type %d: the types are 1 to 4" n;
         Sdl.Cylinder_camera n }
-  | SPHERICAL { Diag.error (loc $loc) "spherical (a camera type) is not supported by camlray" }
   | NORMAL { Diag.error (loc $loc) "normal in a camera is not supported by camlray" }
 
 %public global_item:

@@ -26,6 +26,8 @@ let lang_keywords =
 let scene_keywords =
   [
     ("camera", CAMERA); ("perspective", PERSPECTIVE); ("orthographic", ORTHOGRAPHIC);
+    ("fisheye", FISHEYE); ("omnimax", OMNIMAX); ("ultra_wide_angle", ULTRA_WIDE_ANGLE);
+    ("panoramic", PANORAMIC);
     ("location", LOCATION); ("look_at", LOOK_AT); ("angle", ANGLE); ("right", RIGHT);
     ("up", UP); ("direction", DIRECTION); ("sky", SKY); ("aperture", APERTURE);
     ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);

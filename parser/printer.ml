@@ -175,9 +175,15 @@ let camera_item = function
   | Sdl.Perspective -> "perspective"
   | Sdl.Orthographic -> "orthographic"
   | Sdl.Cylinder_camera n -> Printf.sprintf "cylinder %d" n
+  | Sdl.Fisheye -> "fisheye"
+  | Sdl.Omnimax -> "omnimax"
+  | Sdl.Ultra_wide_angle -> "ultra_wide_angle"
+  | Sdl.Panoramic -> "panoramic"
+  | Sdl.Spherical_camera -> "spherical"
   | Sdl.Location v -> "location " ^ vec v
   | Sdl.Look_at v -> "look_at " ^ vec v
   | Sdl.Angle a -> "angle " ^ float a
+  | Sdl.Angles (h, v) -> "angle " ^ float h ^ ", " ^ float v
   | Sdl.Right v -> "right " ^ vec v
   | Sdl.Up v -> "up " ^ vec v
   | Sdl.Direction v -> "direction " ^ vec v

@@ -98,9 +98,15 @@ type camera_item =
   | Perspective
   | Orthographic
   | Cylinder_camera of int  (** POV-Ray's [cylinder 1] to [cylinder 4] *)
+  | Fisheye
+  | Omnimax
+  | Ultra_wide_angle
+  | Panoramic
+  | Spherical_camera
   | Location of Vec3.t
   | Look_at of Vec3.t
   | Angle of float
+  | Angles of float * float  (** the spherical camera's [angle h, v] *)
   | Right of Vec3.t
   | Up of Vec3.t
   | Direction of Vec3.t

@@ -68,16 +68,74 @@ let units =
         let r = Camera.ray c4 (-0.25) 0.5 in
         Alcotest.(check (float 1e-9)) "eye" 0. (Vec3.dist r.origin (Vec3.make (-1.) 0. (-5.)));
         Alcotest.(check (float 1e-9)) "dir +y" 0. (Vec3.dist r.dir Vec3.unit_y));
-    Alcotest.test_case "cylinder camera rays written in place equal Camera.ray" `Quick (fun () ->
-        let c = cam "camera { cylinder 3 location <1,2,-5> look_at <0,1,0> angle 200 rotate 10*z }" in
+    Alcotest.test_case "fisheye: the circle's edge looks angle/2 away; outside it, no ray" `Quick
+      (fun () ->
+        let c = cam "camera { fisheye location 0 look_at z right x up y angle 180 }" in
+        let r = Camera.ray c 0.5 0. in
+        Alcotest.(check (float 1e-9)) "edge looks right" 0. (Vec3.dist r.dir Vec3.unit_x);
+        let r = Camera.ray c 0. 0.25 in
+        (* half-way out: 45 degrees up *)
+        Alcotest.(check (float 1e-9)) "up 45" 0. (Vec3.dist r.dir (Vec3.normalize (Vec3.make 0. 1. 1.)));
+        Alcotest.(check bool) "corner unseen" false (Camera.sees c 0.4 0.4);
+        Alcotest.(check bool) "inside seen" true (Camera.sees c 0.3 0.3));
+    Alcotest.test_case "ultra_wide_angle: sin and cos of angle * x, angle * y * |up|/|right|" `Quick
+      (fun () ->
+        let c = cam "camera { ultra_wide_angle location 0 look_at z right 4/3*x up y angle 180 }" in
+        let r = Camera.ray c 0.5 0. in
+        Alcotest.(check (float 1e-9)) "edge looks right" 0. (Vec3.dist r.dir Vec3.unit_x);
+        let r = Camera.ray c 0. 0.5 in
+        let a = Float.pi /. 2. *. 0.75 in
+        Alcotest.(check (float 1e-9)) "top" 0. (Vec3.dist r.dir (Vec3.make 0. (sin a) (cos a))));
+    Alcotest.test_case "panoramic: 180 degrees across, tan of the height up" `Quick (fun () ->
+        let c = cam "camera { panoramic location 0 look_at z right x up y }" in
+        Alcotest.(check (float 1e-9)) "centre" 0. (Vec3.dist (Camera.ray c 0. 0.).dir Vec3.unit_z);
+        Alcotest.(check (float 1e-9)) "right edge" 0. (Vec3.dist (Camera.ray c 0.5 0.).dir Vec3.unit_x);
+        let r = Camera.ray c 0. 0.25 in
+        Alcotest.(check (float 1e-9)) "up 45" 0. (Vec3.dist r.dir (Vec3.normalize (Vec3.make 0. 1. 1.))));
+    Alcotest.test_case "spherical: longitude and latitude; 360 by 180 by default, v = h/2" `Quick
+      (fun () ->
+        let c = cam "camera { spherical location 0 look_at z }" in
+        Alcotest.(check (float 1e-9)) "quarter right" 0. (Vec3.dist (Camera.ray c 0.25 0.).dir Vec3.unit_x);
+        Alcotest.(check (float 1e-9)) "behind" 0. (Vec3.dist (Camera.ray c 0.5 0.).dir (Vec3.neg Vec3.unit_z));
+        let r = Camera.ray c 0.25 0.25 in
+        (* 45 degrees up, then turned to the right *)
+        Alcotest.(check (float 1e-9)) "up-right" 0. (Vec3.dist r.dir (Vec3.normalize (Vec3.make 1. 1. 0.)));
+        let c = cam "camera { spherical location 0 look_at z angle 120 }" in
+        let r = Camera.ray c 0. 0.5 in
+        (* v = 60: the top edge 30 degrees up *)
+        Alcotest.(check (float 1e-9)) "v = h/2" 0. (Vec3.dist r.dir (Vec3.make 0. 0.5 (sqrt 0.75)));
+        let c = cam "camera { spherical location 0 look_at z angle 120, 90 }" in
+        let r = Camera.ray c 0. 0.5 in
+        Alcotest.(check (float 1e-9)) "v given" 0. (Vec3.dist r.dir (Vec3.normalize (Vec3.make 0. 1. 1.))));
+    Alcotest.test_case "omnimax: the centre looks ahead, the dome ends 45 degrees under the axis" `Quick
+      (fun () ->
+        let c = cam "camera { omnimax location 0 look_at z right x up y }" in
+        Alcotest.(check (float 1e-9)) "centre" 0. (Vec3.dist (Camera.ray c 0. 0.).dir Vec3.unit_z);
+        (* rad 1: POV-Ray's polynomial gives 1.573619 radians *)
+        let r = Camera.ray c 0. 0.5 in
+        Alcotest.(check (float 1e-9)) "top" (cos 1.573619) r.dir.z;
+        Alcotest.(check bool) "top seen" true (Camera.sees c 0. 0.5);
+        Alcotest.(check bool) "bottom unseen" false (Camera.sees c 0. (-0.5));
+        Alcotest.(check bool) "outside the circle" false (Camera.sees c 0.45 0.45));
+    Alcotest.test_case "every camera type: rays written in place equal Camera.ray" `Quick (fun () ->
         let o = Vec3.m () and d = Vec3.m () in
         List.iter
-          (fun (sx, sy) ->
-            Camera.ray_into c sx sy o d;
-            let r = Camera.ray c sx sy in
-            if Vec3.dist (Vec3.of_m o) r.origin > 1e-12 || Vec3.dist (Vec3.of_m d) r.dir > 1e-12 then
-              Alcotest.failf "differs at %g %g" sx sy)
-          [ (0., 0.); (0.4, -0.3); (-0.5, 0.5) ]);
+          (fun kind ->
+            let c = cam ("camera { " ^ kind ^ " location <1,2,-5> look_at <0,1,0> rotate 10*z }") in
+            List.iter
+              (fun (sx, sy) ->
+                let seen = Camera.ray_into c sx sy o d in
+                let r = Camera.ray c sx sy in
+                if seen <> Camera.sees c sx sy then Alcotest.failf "%s: sees differs" kind;
+                if Vec3.dist (Vec3.of_m o) r.origin > 1e-12 || Vec3.dist (Vec3.of_m d) r.dir > 1e-12 then
+                  Alcotest.failf "%s: differs at %g %g" kind sx sy;
+                if Float.abs (Vec3.length r.dir -. 1.) > 1e-12 then Alcotest.failf "%s: not a unit" kind)
+              [ (0., 0.); (0.4, -0.3); (-0.5, 0.5); (0.1, 0.45) ])
+          [
+            "perspective"; "orthographic"; "cylinder 1 angle 200"; "cylinder 2"; "cylinder 3 angle 200";
+            "cylinder 4"; "fisheye angle 270"; "omnimax"; "ultra_wide_angle angle 200"; "panoramic";
+            "spherical angle 300, 120";
+          ]);
     Alcotest.test_case "depth of field: lens radius aperture/4, rays meet on the focal plane" `Quick
       (fun () ->
         let c = cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> }" in
