@@ -1,5 +1,14 @@
 type wave = Ramp | Triangle | Sine | Scallop | Cubic | Poly of float
 
+type fractal = {
+  iterations : int;
+  exponent : int;
+  exterior : int;
+  efactor : float;
+  interior : int;
+  ifactor : float;
+}
+
 type kind =
   | Checker
   | Hexagon
@@ -22,6 +31,10 @@ type kind =
   | Waves
   | Wrinkles
   | Crackle
+  | Spiral1 of int
+  | Spiral2 of int
+  | Quilted of { c0 : float; c1 : float }
+  | Mandel of fractal
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
@@ -33,7 +46,12 @@ type t = {
   wave : wave option;
 }
 
-let make kind = { kind; turbulence = None; frequency = 1.; phase = 0.; wave = None }
+(* quilted alone starts at frequency 0, its value left unwrapped *)
+let make kind =
+  let frequency = match kind with Quilted _ -> 0. | _ -> 1. in
+  { kind; turbulence = None; frequency; phase = 0.; wave = None }
+
+let mandel iterations = { iterations; exponent = 2; exterior = 1; efactor = 1.; interior = 0; ifactor = 1. }
 
 let gradient v =
   let l = Vec3.length v in
@@ -121,6 +139,65 @@ let[@inline] crackle3 x y z =
   done;
   clamp01 (!d2 -. !d1)
 
+(* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
+let[@inline] tri v =
+  let f = if v >= 0. then v -. Float.floor v else v +. 1. +. Float.floor (Float.abs v) in
+  if f >= 0.5 then 2. *. (1. -. f) else 2. *. f
+
+(* spiral1's value around the z axis before its wave: height, distance
+   to the axis and the angle (0 along -y, growing towards +x), the angle
+   scaled by the number of arms; [turb] is the scalar turbulence *)
+let[@inline] spiral3 arms turb x y z =
+  let r = Float.sqrt ((x *. x) +. (y *. y)) in
+  let phi =
+    if r = 0. then 0.
+    else if x < 0. then (3. *. (Float.pi /. 2.)) -. Float.asin (y /. r)
+    else (Float.pi /. 2.) +. Float.asin (y /. r)
+  in
+  z +. r +. (float_of_int arms *. phi /. two_pi) +. turb
+
+(* quilted: the offset from the cell's centre, scaled by a cubic Bezier
+   of its length (ends 0 and 1, inner controls c0 and c1, times
+   1/sqrt(3/4)), its mean absolute coordinate *)
+let[@inline] quilted3 c0 c1 x y z =
+  let vx = x -. Float.floor x -. 0.5 and vy = y -. Float.floor y -. 0.5 and vz = z -. Float.floor z -. 0.5 in
+  let t = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+  let it = 1. -. t in
+  let k = ((t *. (t *. t)) +. (3. *. t *. (it *. it) *. c0) +. (3. *. (t *. t) *. it *. c1)) *. 1.154700538 in
+  (Float.abs (vx *. k) +. Float.abs (vy *. k) +. Float.abs (vz *. k)) /. 3.
+
+(* the shade of a point of the fractal: escaped after [n] iterations at
+   (a, b), or never, [m2] the least squared distance to 0 met *)
+let[@inline] exterior_shade f n a b =
+  let e = f.efactor in
+  match f.exterior with
+  | 0 -> e
+  | 1 -> float_of_int n /. float_of_int f.iterations
+  | 2 -> a *. e
+  | 3 -> b *. e
+  | 4 -> a *. a *. e
+  | 5 -> b *. b *. e
+  | 6 -> Float.sqrt ((a *. a) +. (b *. b)) *. e
+  | 7 ->
+      let m = truncate e in
+      if m <= 0 then 0. else float_of_int (n mod m) /. e
+  | 8 ->
+      let m = truncate (1. +. e) in
+      if m <= 0 then 0. else float_of_int (n mod m) /. e
+  | _ -> 0.
+
+let[@inline] interior_shade f a b m2 =
+  let i = f.ifactor in
+  match f.interior with
+  | 0 -> i
+  | 1 -> Float.sqrt m2 *. i
+  | 2 -> a *. i
+  | 3 -> b *. i
+  | 4 -> a *. a *. i
+  | 5 -> b *. b *. i
+  | 6 -> (a *. a) +. (b *. b *. i) (* sic: POV-Ray scales b^2 only *)
+  | _ -> 0.
+
 type result = { mutable v : float }
 
 (* the value in a record of its own, flat: a float field of a record with
@@ -128,6 +205,45 @@ type result = { mutable v : float }
 type work = { p : Vec3.m; d : Vec3.m; r : result }
 
 let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
+
+(* mandel: z <- z^e + c from z = c = x + iy, until |z|^2 > 4 or the
+   iterations run out; exponents 2, 3 and 4 written out, others summed
+   by the binomial expansion (signed coefficients, as POV-Ray sums them) *)
+let mandel_into f x y (w : work) =
+  let a = ref x and b = ref y in
+  let a2 = ref (x *. x) and b2 = ref (y *. y) in
+  let m2 = ref (!a2 +. !b2) in
+  let n = ref 0 and escaped = ref false in
+  let e = f.exponent in
+  while (not !escaped) && !n < f.iterations do
+    let a0 = !a and b0 = !b in
+    (match e with
+    | 2 ->
+        b := (2. *. a0 *. b0) +. y;
+        a := !a2 -. !b2 +. x
+    | 3 ->
+        b := (3. *. !a2 *. b0) -. (!b2 *. b0) +. y;
+        a := (!a2 *. a0) -. (3. *. a0 *. !b2) +. x
+    | 4 ->
+        b := (4. *. ((!a2 *. a0 *. b0) -. (a0 *. !b2 *. b0))) +. y;
+        a := (!a2 *. !a2) -. (6. *. !a2 *. !b2) +. (!b2 *. !b2) +. x
+    | _ ->
+        let re = ref (Float.pow a0 (float_of_int e)) and im = ref 0. and c = ref 1. in
+        for k = 1 to e do
+          c := !c *. float_of_int (e - k + 1) /. float_of_int k;
+          let s = if k land 2 <> 0 then -. !c else !c in
+          let term = s *. Float.pow a0 (float_of_int (e - k)) *. Float.pow b0 (float_of_int k) in
+          if k land 1 = 0 then re := !re +. term else im := !im +. term
+        done;
+        a := !re +. x;
+        b := !im +. y);
+    a2 := !a *. !a;
+    b2 := !b *. !b;
+    let d2 = !a2 +. !b2 in
+    if d2 < !m2 then m2 := d2;
+    if d2 > 4. then escaped := true else incr n
+  done;
+  if !escaped then w.r.v <- exterior_shade f !n !a !b else w.r.v <- interior_shade f !a !b !m2
 
 (* The raw pattern at [w.p] into [w.r.v]: each case stores its value
    itself (a value joined from the cases would be boxed). *)
@@ -175,18 +291,33 @@ let raw_m kind (w : work) =
       w.r.v <- !acc /. float_of_int (Array.length sources)
   | Crackle -> w.r.v <- crackle3 x y z
   | Wrinkles -> w.r.v <- clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal3 10 x y z))
+  | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
+  | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))
+  | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
+  | Mandel f -> mandel_into f x y w
 
-let default_wave = function Wood | Marble -> Triangle | _ -> Ramp
+let default_wave = function Wood | Marble | Spiral1 _ | Spiral2 _ -> Triangle | _ -> Ramp
 
 (* the wave shaping of [v] into [w.r.v] (each case storing it) *)
 let shape_into (w : work) wave v =
   match wave with
   | Ramp -> w.r.v <- v
-  | Triangle -> if v < 0.5 then w.r.v <- 2. *. v else w.r.v <- 2. *. (1. -. v)
+  | Triangle -> w.r.v <- tri v
   | Sine -> w.r.v <- 0.5 +. (0.5 *. Float.sin (two_pi *. v))
   | Scallop -> w.r.v <- Float.abs (Float.sin (Float.pi *. v))
   | Cubic -> w.r.v <- v *. v *. (3. -. (2. *. v))
   | Poly e -> w.r.v <- Float.pow v e
+
+(* POV-Ray's scalar turbulence, in camlray's noise: sum over the octaves
+   of omega^i noise(lambda^i p), in [0, ~2] *)
+let[@inline] scalar_turbulence tb (p : Vec3.m) =
+  let acc = ref 0. and o = ref 1. and l = ref 1. in
+  for _ = 1 to tb.octaves do
+    acc := !acc +. (!o *. Noise.noise3 (!l *. p.mx) (!l *. p.my) (!l *. p.mz));
+    o := !o *. tb.omega;
+    l := !l *. tb.lambda
+  done;
+  !acc
 
 (* The pattern at [q] into [w.r.v], allocating nothing: turbulence warp,
    raw pattern, then frequency, phase and wave *)
@@ -197,12 +328,26 @@ let eval_m t (q : Vec3.m) (w : work) =
       Noise.turbulence_m ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda q w.d;
       let a = tb.amount and d = w.d in
       Vec3.set w.p (q.mx +. (d.mx *. a.x)) (q.my +. (d.my *. a.y)) (q.mz +. (d.mz *. a.z)));
+  (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
+     (on top of the warp): read by [raw_m] from [w.r.v] *)
+  (match (t.kind, t.turbulence) with
+  | (Spiral1 _ | Spiral2 _), Some tb -> w.r.v <- tb.amount.x *. scalar_turbulence tb w.p
+  | _ -> w.r.v <- 0.);
   raw_m t.kind w;
   if not (is_block t.kind) then begin
-    let r = Float.rem ((w.r.v *. t.frequency) +. t.phase) 1.00001 in
-    let v = if r < 0. then r +. 1. else r *. 1. in
-    let v = if v > 1. then 1. else v *. 1. in
-    shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
+    if t.frequency <> 0. then begin
+      let r = Float.rem ((w.r.v *. t.frequency) +. t.phase) 1.00001 in
+      let v = if r < 0. then r +. 1. else r *. 1. in
+      let v = if v > 1. then 1. else v *. 1. in
+      shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
+    end
+    else begin
+      (* POV-Ray: no wrapping (nor phase) at frequency 0, only a negative
+         value taken mod 1 *)
+      let r = w.r.v in
+      let v = if r < 0. then r -. Float.floor r else r *. 1. in
+      shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
+    end
   end
 
 (* The pattern at [point] taken into its space by [xform]'s inverse

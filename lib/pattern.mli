@@ -4,9 +4,21 @@
     gradient, radial, onion, wood, marble, leopard, hexagon, brick) agree
     with POV-Ray 3.7's [function { pattern { ... } }] values; the noise
     patterns use {!Noise}, camlray's own noise, and only resemble
-    POV-Ray's. *)
+    POV-Ray's. spiral1, spiral2, quilted and mandel follow POV-Ray's
+    formulas (core/material/pattern.cpp). *)
 
 type wave = Ramp | Triangle | Sine | Scallop | Cubic | Poly of float
+
+type fractal = {
+  iterations : int;  (** at least 1 *)
+  exponent : int;  (** 2 to 33 *)
+  exterior : int;  (** colouring of escaping points, 0 to 8 (default 1: iterations / max) *)
+  efactor : float;  (** default 1 *)
+  interior : int;  (** colouring of points that never escape, 0 to 6 (default 0: ifactor) *)
+  ifactor : float;  (** default 1 *)
+}
+(** The mandel pattern's parameters ([mandel N exponent E interior T, F
+    exterior T, F]). *)
 
 type kind =
   | Checker
@@ -30,6 +42,13 @@ type kind =
   | Waves
   | Wrinkles
   | Crackle  (** F2 - F1 cellular noise (camlray's own feature points) *)
+  | Spiral1 of int
+      (** arms: z + r + arms phi / 2 pi around the z axis (triangle wave) *)
+  | Spiral2 of int  (** arms: tri(spiral1's value) + tri(r) (triangle wave) *)
+  | Quilted of { c0 : float; c1 : float }
+      (** control0, control1: unit cells shaded by a cubic of the
+          distance to their centre (frequency 0: no wrapping) *)
+  | Mandel of fractal  (** the Mandelbrot set in the xy plane *)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
@@ -42,7 +61,11 @@ type t = {
 }
 
 val make : kind -> t
-(** No turbulence, frequency 1, phase 0, default wave. *)
+(** No turbulence, frequency 1 (quilted: 0), phase 0, default wave. *)
+
+val mandel : int -> fractal
+(** [mandel n]: [n] iterations, exponent 2, POV-Ray's default exterior
+    (1, 1) and interior (0, 1). *)
 
 val gradient : Vec3.t -> kind
 val default_turbulence : Vec3.t -> turbulence
@@ -58,7 +81,8 @@ val block_count : kind -> int
 val value : t -> Vec3.t -> float
 (** The pattern at a point of pattern space: turbulence warp, the raw
     pattern, then frequency, phase and wave shaping (block patterns:
-    the cell index as a float, no shaping). *)
+    the cell index as a float, no shaping). As POV-Ray, frequency 0
+    leaves the value unwrapped (only a negative one is taken mod 1). *)
 
 type result = { mutable v : float }
 

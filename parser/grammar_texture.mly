@@ -17,6 +17,7 @@
 %token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
+%token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR
 
 %%
 
@@ -203,6 +204,14 @@
   | WAVES { Pattern.Waves }
   | WRINKLES { Pattern.Wrinkles }
   | CRACKLE { Pattern.Crackle }
+  (* POV-Ray truncates the number of arms (to a short) *)
+  | SPIRAL1 e = param { Pattern.Spiral1 (truncate (fl $loc(e) e)) }
+  | SPIRAL2 e = param { Pattern.Spiral2 (truncate (fl $loc(e) e)) }
+  | QUILTED { Pattern.Quilted { c0 = 1.; c1 = 1. } }
+  | MANDEL e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n < 1 then Diag.error (loc $loc(e)) "mandel needs at least 1 iteration";
+        Pattern.Mandel (Pattern.mandel n) }
 
 %public declare_rhs:
   | m = COLOR_MAP_ID { Decl.Color_map m }
@@ -309,6 +318,34 @@
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
   | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
   | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
+  (* quilted's controls are single-precision floats in POV-Ray *)
+  | CONTROL0 e = param { let x = Int32.float_of_bits (Int32.bits_of_float (fl $loc(e) e)) in
+      Texdesc.kind_mod (function
+        | Pattern.Quilted q -> Pattern.Quilted { q with c0 = x }
+        | _ -> Diag.error (loc $loc) "control0 can only be used with quilted") }
+  | CONTROL1 e = param { let x = Int32.float_of_bits (Int32.bits_of_float (fl $loc(e) e)) in
+      Texdesc.kind_mod (function
+        | Pattern.Quilted q -> Pattern.Quilted { q with c1 = x }
+        | _ -> Diag.error (loc $loc) "control1 can only be used with quilted") }
+  | EXPONENT e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        let n = if n >= 2 && n <= 33 then n else begin
+          Diag.warning (loc $loc(e)) "mandel exponents go from 2 to 33: using 2"; 2 end in
+        Texdesc.kind_mod (function
+          | Pattern.Mandel f -> Pattern.Mandel { f with exponent = n }
+          | _ -> Diag.error (loc $loc) "exponent (in a pattern) can only be used with mandel") }
+  | INTERIOR t = param COMMA? e = param
+      { let t = Value.to_int (loc $loc(t)) t and x = fl $loc(e) e in
+        if t < 0 || t > 6 then Diag.error (loc $loc(t)) "mandel interior types go from 0 to 6";
+        Texdesc.kind_mod (function
+          | Pattern.Mandel f -> Pattern.Mandel { f with interior = t; ifactor = x }
+          | _ -> Diag.error (loc $loc) "interior (in a pattern) can only be used with mandel") }
+  | EXTERIOR t = param COMMA? e = param
+      { let t = Value.to_int (loc $loc(t)) t and x = fl $loc(e) e in
+        if t < 0 || t > 8 then Diag.error (loc $loc(t)) "mandel exterior types go from 0 to 8";
+        Texdesc.kind_mod (function
+          | Pattern.Mandel f -> Pattern.Mandel { f with exterior = t; efactor = x }
+          | _ -> Diag.error (loc $loc) "exterior can only be used with mandel") }
 
 %public normal_body:
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
@@ -324,7 +361,12 @@
                                      xform = n.xform; amount = n.amount } in
           Texdesc.normal p) n }
   | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
-      { let p = Texdesc.of_pattern k in
+      { (match k with
+         | Pattern.Quilted _ ->
+             (* povray 3.7 perturbs normals by quilted with a formula of its own *)
+             Diag.error (loc $loc(k)) "quilted as a normal pattern is not supported by camlray"
+         | _ -> ());
+        let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | ms = list(normal_mod) { ignore ms; None }

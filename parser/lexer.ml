@@ -84,7 +84,8 @@ let texture_keywords =
     ("all", ALL); ("crand", CRAND);
     ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
-    ("texture_map", TEXTURE_MAP);
+    ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED);
+    ("control0", CONTROL0); ("control1", CONTROL1); ("mandel", MANDEL); ("exterior", EXTERIOR);
   ]
 
 (* Keywords to their tokens, each token made once and shared by every

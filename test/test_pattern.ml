@@ -119,6 +119,96 @@ let normal_comma () =
   Scn.close "bumps 0.5" 0.5 (amount "bumps 0.5");
   Scn.close "gradient x, 5.6" 5.6 (amount "gradient x, 5.6 scale 0.24")
 
+(* spiral1, spiral2, quilted, mandel: values worked out by hand from
+   POV-Ray's formulas (core/material/pattern.cpp), wrapped by its
+   fmod(v, 1.00001) at frequency 1 *)
+let spirals () =
+  let v ?wave k (x, y, z) =
+    let t = Pattern.make k in
+    Pattern.value (match wave with Some _ -> { t with wave } | None -> t) (Vec3.make x y z)
+  in
+  (* spiral1 3 at (1,0,0): r 1, angle pi/2, 0 + 1 + 3 (pi/2) / 2 pi = 1.75;
+     1.75 - 1.00001 = 0.74999; triangle: 2 (1 - 0.74999) *)
+  Scn.close ~eps:1e-9 "spiral1 3 at (1,0,0)" 0.50002 (v (Pattern.Spiral1 3) (1., 0., 0.));
+  (* (0,1,0.1): angle pi/2 + asin 1 = pi: 0.1 + 1 + 1.5 = 2.6 -> 0.59998 *)
+  Scn.close ~eps:1e-9 "spiral1 3 at (0,1,0.1)" 0.80004 (v (Pattern.Spiral1 3) (0., 1., 0.1));
+  (* (-1,0,0): x < 0, angle 3 pi/2: 1 + 2.25 = 3.25 -> 0.24997 *)
+  Scn.close ~eps:1e-9 "spiral1 3 at (-1,0,0)" 0.49994 (v (Pattern.Spiral1 3) (-1., 0., 0.));
+  (* on the axis the angle is 0: the value is z *)
+  Scn.close ~eps:1e-12 "spiral1 3 on the axis" 0.6 (v (Pattern.Spiral1 3) (0., 0., 0.3));
+  Scn.close ~eps:1e-12 "spiral1 3 on the axis, ramp" 0.3 (v ~wave:Pattern.Ramp (Pattern.Spiral1 3) (0., 0., 0.3));
+  (* (0.6,0.8,0): angle pi/2 + asin 0.8, 1 + 3 angle / 2 pi = 2.1927509 *)
+  Scn.close ~eps:1e-6 "spiral1 3 at (0.6,0.8,0), ramp" 0.1927309
+    (v ~wave:Pattern.Ramp (Pattern.Spiral1 3) (0.6, 0.8, 0.));
+  (* spiral2 2 there: tri(1 + 2 angle / 2 pi = 1.7951672) + tri(r = 1)
+     = 2 (1 - 0.7951672) + 0 = 0.4096655 *)
+  Scn.close ~eps:1e-6 "spiral2 2 at (0.6,0.8,0), ramp" 0.4096655
+    (v ~wave:Pattern.Ramp (Pattern.Spiral2 2) (0.6, 0.8, 0.));
+  Scn.close ~eps:1e-6 "spiral2 2 at (0.6,0.8,0)" 0.8193311 (v (Pattern.Spiral2 2) (0.6, 0.8, 0.))
+
+let quilted () =
+  let q c0 c1 (x, y, z) = Pattern.value (Pattern.make (Pattern.Quilted { c0; c1 })) (Vec3.make x y z) in
+  (* the cell's centre: no offset *)
+  Scn.close ~eps:1e-12 "centre" 0. (q 1. 1. (0.5, 0.5, 0.5));
+  Scn.close ~eps:1e-12 "centre of another cell" 0. (q 1. 1. (-1.5, 2.5, 0.5));
+  (* a corner: offset (-0.5,-0.5,-0.5), t = sqrt 0.75; controls 1, 1:
+     1 - (1-t)^3 = 0.9975951, / sqrt 0.75 = 1.1519237; times 0.5 *)
+  Scn.close ~eps:1e-6 "corner, controls 1 1" 0.5759618 (q 1. 1. (0., 0., 0.));
+  (* controls 0, 0: t^3 / sqrt 0.75 = 0.75; times 0.5 *)
+  Scn.close ~eps:1e-6 "corner, controls 0 0" 0.375 (q 0. 0. (2., -1., 3.));
+  (* a face centre: t = 0.5, 1 - 0.125 = 0.875, / sqrt 0.75 = 1.0103630;
+     times 0.5, over 3 *)
+  Scn.close ~eps:1e-6 "face centre" 0.1683938 (q 1. 1. (0.5, 0.5, 0.));
+  let s = Scn.compile "sphere { 0, 1 pigment { quilted control0 0.3 control1 -2 } }" in
+  match s.objects.(0).texture with
+  | { pigment = Pigment.Map { pattern; _ }; _ } :: _ ->
+      Scn.close ~eps:0. "quilted: frequency 0 (no wrapping)" 0. pattern.frequency;
+      (* POV-Ray keeps the controls in single precision *)
+      if pattern.kind <> Pattern.Quilted { c0 = Int32.float_of_bits (Int32.bits_of_float 0.3); c1 = -2. } then
+        Alcotest.fail "quilted controls"
+  | _ -> Alcotest.fail "no quilted pigment"
+
+let mandel () =
+  let m ?(exponent = 2) ?(interior = 0) n (x, y) =
+    Pattern.value
+      (Pattern.make (Pattern.Mandel { (Pattern.mandel n) with exponent; interior }))
+      (Vec3.make x y 0.)
+  in
+  (* inside the set: the interior shade, 1 by default (not wrapped: 1 <
+     1.00001) *)
+  Scn.close ~eps:0. "inside (0,0)" 1. (m 10 (0., 0.));
+  Scn.close ~eps:0. "inside (-1,0)" 1. (m 10 (-1., 0.));
+  (* interior 1: the least |z| met; 0 -> -1 -> 0 ... meets 0 *)
+  Scn.close ~eps:0. "inside, interior 1" 0. (m ~interior:1 10 (-1., 0.));
+  (* c = 3: 9 + 3 = 12 escapes at iteration 0 *)
+  Scn.close ~eps:0. "escapes at once" 0. (m 10 (3., 0.));
+  (* c = 1: 2 (|z|^2 = 4, not beyond), then 5: iteration 1 of 10 *)
+  Scn.close ~eps:1e-12 "c = 1" 0.1 (m 10 (1., 0.));
+  (* c = 0.5: 0.75, 1.0625, 1.6289, 3.1533: iteration 3 of 10 *)
+  Scn.close ~eps:1e-12 "c = 0.5" 0.3 (m 10 (0.5, 0.));
+  (* exponent 3 at 1: 2, then 9 *)
+  Scn.close ~eps:1e-12 "exponent 3" 0.1 (m ~exponent:3 10 (1., 0.));
+  (* the binomial sum: i^5 = i, so c = i gives 2i then 33i; i^7 = -i, so
+     c = i cycles 0, i, 0 ... inside *)
+  Scn.close ~eps:1e-12 "exponent 5 at i" 0.1 (m ~exponent:5 10 (0., 1.));
+  Scn.close ~eps:0. "exponent 7 at i" 1. (m ~exponent:7 10 (0., 1.));
+  (* the built-in map: 0.03 lies between magenta (0.015) and cyan (0.1) *)
+  Scn.color "built-in map, c = 0.5" (0.82353, 0.17647, 1.) (pig "mandel 100 translate -x*0.5");
+  Scn.color "built-in map, inside" (0., 1., 1.) (pig "mandel 100");
+  Scn.color "built-in map, escaping at once" (0., 0., 0.) (pig "mandel 100 translate -x*3");
+  (* only exponent 2 has it: the others are black to white *)
+  Scn.color "exponent 3: black to white" (1., 1., 1.) (pig "mandel 10 exponent 3");
+  let grey = "color_map { [0 rgb 0] [1 rgb 1] }" in
+  Scn.color "interior 0, 0.5" (0.5, 0.5, 0.5) (pig ("mandel 10 interior 0, 0.5 exterior 0 0.2 " ^ grey));
+  Scn.color "exterior 0 0.2" (0.2, 0.2, 0.2) (pig ("mandel 10 interior 0, 0.5 exterior 0 0.2 translate -x*3 " ^ grey))
+
+let pattern_errors () =
+  Scn.check_message "sphere { 0, 1 normal { quilted 0.5 } }" "quilted as a normal pattern is not supported";
+  Scn.check_message "sphere { 0, 1 pigment { bozo control0 0.5 } }" "control0 can only be used with quilted";
+  Scn.check_message "sphere { 0, 1 pigment { spiral1 2 exponent 3 } }" "exponent";
+  Scn.check_message "sphere { 0, 1 pigment { mandel 10 interior 7, 1 } }" "interior types go from 0 to 6";
+  Scn.check_message "sphere { 0, 1 pigment { mandel 0 } }" "at least 1 iteration"
+
 let tests =
   ( "pattern",
     [
@@ -129,4 +219,8 @@ let tests =
       Alcotest.test_case "transforms" `Quick transforms;
       Alcotest.test_case "normal bump size after a comma" `Quick normal_comma;
       Alcotest.test_case "image_map" `Quick image_map;
+      Alcotest.test_case "spiral1 and spiral2" `Quick spirals;
+      Alcotest.test_case "quilted" `Quick quilted;
+      Alcotest.test_case "mandel" `Quick mandel;
+      Alcotest.test_case "pattern modifier errors" `Quick pattern_errors;
     ] )

@@ -1,0 +1,21 @@
+// mandel: the built-in colour map, colour maps with exponents 3, 4 and 6,
+// and interior/exterior shading types; exact, so it should match POV-Ray
+// pixel for pixel (up to points right at the escape radius).
+#version 3.7;
+global_settings { assumed_gamma 1 }
+camera { location <0, 0, -7> look_at <0, 0, 0> angle 60 }
+light_source { <-5, 8, -10>, rgb 1 }
+#declare Tile = box { <-2, -2, 0>, <2, 2, 0.1> scale 0.7 }
+object { Tile pigment { mandel 50 translate x*0.5 scale 0.7 } finish { ambient 1 diffuse 0 }
+  translate <-1.6, 1.45, 0> }
+object { Tile
+  pigment { mandel 30 exponent 3 scale 0.7 color_map { [0 rgb <0,0,0.2>] [0.3 rgb <0,0.7,1>] [1 rgb 1] } }
+  finish { ambient 1 diffuse 0 } translate <1.6, 1.45, 0> }
+object { Tile
+  pigment { mandel 40 exponent 4 interior 1, 0.5 exterior 5, 0.01 scale 0.7
+            color_map { [0 rgb 0] [0.3 rgb <0,1,0>] [0.6 rgb <0.5,1,0>] [1 rgb <1,1,0>] } }
+  finish { ambient 1 diffuse 0 } translate <-1.6, -1.45, 0> }
+sphere { 0, 1.35
+  pigment { mandel 25 exponent 6 interior 6, 2 exterior 7, 5 scale 0.9
+            color_map { [0 rgb <0.4,0.2,0.1>] [0.5 rgb <1,0.8,0.4>] [1 rgb 1] } }
+  finish { phong 0.5 } translate <1.6, -1.45, 0> }
