@@ -68,7 +68,7 @@ let direct_spheres ?(domains = 1) n =
       let c () = Random.State.float rng 2. -. 1. in
       let x = c () in let y = c () in let z = c () in
       Object.make ~texture (Shape.sphere (Vec3.make x y z) r)) in
-  { base with objects; accel = Scene.accelerate ?par:(par domains) objects }
+  Scene.with_objects base objects (Scene.accelerate ?par:(par domains) objects)
 
 (* n spheres on the unit sphere (a Fibonacci lattice), each of radius
    1.2 times half the lattice's spacing (as n^(-1/2)), so that they cover
@@ -87,7 +87,7 @@ let shell_spheres ~width ~height ~domains n =
         Object.make ~texture (Shape.sphere (Vec3.make (ring *. Float.cos th) y (ring *. Float.sin th)) r))
   in
   let accel, t_bvh = time (fun () -> Scene.accelerate ?par:(par domains) objects) in
-  let s = { base with objects; accel } in
+  let s = Scene.with_objects base objects accel in
   { kind = "sphere shell"; count = n; parse_s = 0.; build_s = t_bvh; trace_s = trace ~width ~height ~domains s;
     bytes_per_prim = nan }
 
@@ -144,7 +144,7 @@ let mesh ~width ~height ~domains kind n =
   let texture = Texture.plain (Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. }) Finish.default in
   let base = compile header in
   let objects = [| Object.make ~texture (Shape.Mesh m) |] in
-  let s = { base with objects; accel = Scene.accelerate ?par:(par domains) objects } in
+  let s = Scene.with_objects base objects (Scene.accelerate ?par:(par domains) objects) in
   { kind = (match kind with `Sphere -> "sphere mesh" | `Terrain -> "terrain mesh"); count = tris;
     parse_s = 0.; build_s = t_build; trace_s = trace ~width ~height ~domains s;
     bytes_per_prim = float (Mesh.bytes m) /. float tris }

@@ -17,6 +17,8 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
   (* [sampled]: a sample of an area light at [lp], as a point light *)
   if sampled then Light.direction_at light lp.mx lp.my lp.mz p l else Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
+  (* double_illuminate: a light behind lights as from the front, by |cos| *)
+  let nl = if f.double_illuminate then Float.abs nl else nl in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
   let att =

@@ -20,6 +20,7 @@ type t = {
   metallic : float;
   reflection : reflection;
   conserve_energy : bool;
+  double_illuminate : bool;
 }
 
 let no_reflection =
@@ -46,6 +47,7 @@ let default =
     metallic = 0.;
     reflection = no_reflection;
     conserve_energy = false;
+    double_illuminate = false;
   }
 
 let has_reflection f =

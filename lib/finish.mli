@@ -23,6 +23,9 @@ type t = {
   metallic : float;
   reflection : reflection;
   conserve_energy : bool;
+  double_illuminate : bool;
+      (** set from the object's [double_illuminate]: lights behind the
+          surface light it as from the front (POV-Ray's |cos|) *)
 }
 
 val default : t

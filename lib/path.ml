@@ -198,6 +198,9 @@ let li_into t sampler ~max_depth (st : state) =
   let depth = ref 0 and go = ref true in
   while !go do
     let tmin = if !depth = 0 then 0. else Ray.epsilon in
+    (* POV-Ray's no_image and no_reflection: the camera ray sees the image
+       view, every later ray the reflected one *)
+    let s = if !depth = 0 then Scene.image s else Scene.reflected s in
     let h = st.h and fd = st.fd in
     if not (Scene.intersect_into s o d tmin infinity h fd) then begin
       go := false;

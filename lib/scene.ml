@@ -27,7 +27,11 @@ type t = {
   fog : Fog.t list;
   settings : settings;
   accel : accel;
+  all : accel;
+  views : views;
 }
+
+and views = { mutable image : t option; mutable reflected : t option }
 
 let default_settings =
   {
@@ -128,7 +132,30 @@ let accelerate ?par objects =
   { finite; bvh; infinite = Array.of_list infinite; spheres; reach = Array.of_list reach }
 
 let make ?(sky = Sky.none) ?(fog = []) ~objects ~lights ~camera ~background ~settings () =
-  { objects; lights; camera; background; sky; fog; settings; accel = accelerate objects }
+  let accel = accelerate objects in
+  { objects; lights; camera; background; sky; fog; settings; accel; all = accel; views = { image = None; reflected = None } }
+
+let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }
+
+(* the scene seen without the objects whose [flags] have [bit]: its own
+   tree for nearest hits, the whole one for shadows and insides *)
+let without s flags bit =
+  if Array.for_all (fun f -> f land bit = 0) flags then None
+  else
+    let keep = List.filteri (fun i _ -> flags.(i) land bit = 0) (Array.to_list s.objects) in
+    Some { s with accel = accelerate (Array.of_list keep) }
+
+let hide s flags =
+  if Array.length flags <> Array.length s.objects then invalid_arg "Scene.hide";
+  let v = { image = None; reflected = None } in
+  let s = { s with accel = s.all; views = v } in
+  (* set both: a view's own fallback would be itself, not the whole scene *)
+  v.image <- Some (Option.value ~default:s (without s flags 1));
+  v.reflected <- Some (Option.value ~default:s (without s flags 2));
+  s
+
+let image s = match s.views.image with Some v -> v | None -> s
+let reflected s = match s.views.reflected with Some v -> v | None -> s
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 
@@ -285,7 +312,7 @@ let occluder_leaf a sc (r : Ray.scratch) tmin i =
 
 (* within (tmin, sc.ray.far) *)
 let occluders_in s sc tmin opaque g =
-  let a = s.accel in
+  let a = s.all in
   (* written only when they change (ray after ray they are the same
      closed functions, and each write is a [caml_modify]); the last ones
      stay until the next query *)
@@ -357,7 +384,7 @@ let probe_leaf a pr _ _ i =
   true
 
 let containing_into s (p : Vec3.m) (out : objects) =
-  let a = s.accel in
+  let a = s.all in
   let pr = Scratch.get probe_key in
   let r = pr.at and hits = pr.hits in
   hits.n <- 0;

@@ -23,9 +23,31 @@ type t = {
   sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
   fog : Fog.t list;  (** in source order; whitted mode draws them *)
   settings : settings;
-  accel : accel;  (** built from [objects] by {!accelerate}; rebuild it when
-                      replacing [objects] *)
+  accel : accel;
+      (** built from [objects] by {!accelerate} (see {!with_objects}); for
+          nearest hits. In a view ({!image}, {!reflected}) it lacks the
+          objects hidden from that view. *)
+  all : accel;  (** every object: for shadows and for what holds a point *)
+  views : views;
 }
+
+and views = { mutable image : t option; mutable reflected : t option }
+(** [None]: the scene itself (nothing hidden from that view). *)
+
+val with_objects : t -> Object.t array -> accel -> t
+(** The scene with other objects and their tree; no hidden objects. *)
+
+val hide : t -> int array -> t
+(** [hide s flags]: POV-Ray's [no_image] (bit 1 of [flags.(i)]) and
+    [no_reflection] (bit 2) for [s.objects.(i)]: the scene with views that
+    leave those objects out (each view has its own tree). *)
+
+val image : t -> t
+(** What camera rays, and rays refracted from them, see: the scene
+    without its [no_image] objects (shadows still see them). *)
+
+val reflected : t -> t
+(** What rays after a reflection see: without its [no_reflection] objects. *)
 
 val accelerate : ?par:(int -> (int -> unit) -> unit) -> Object.t array -> accel
 (** Build the BVH (binned SAH) over the objects' world bounds; with [par],

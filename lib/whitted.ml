@@ -193,7 +193,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
         let m = 2. *. cos_i in
         Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
         fr.k.child <- weight;
-        trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k media rc;
+        trace_ray (Scene.reflected s) Ray.epsilon fr.p rd (level + 1) fr.k media rc;
         Color.acc_set out (c.ar +. (fade.ar *. rc.ar)) (c.ag +. (fade.ag *. rc.ag)) (c.ab +. (fade.ab *. rc.ab))
       end
       else begin
@@ -322,7 +322,8 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
       let rd = fr.rd and rc = fr.rc in
       Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
       fr.k.child <- fr.k.refl *. w;
-      trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k media rc;
+      (* no_reflection objects are left out from here on *)
+      trace_ray (Scene.reflected s) Ray.epsilon fr.p rd (level + 1) fr.k media rc;
       if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
       else
         let e = 1. /. rf.exponent in
@@ -387,7 +388,9 @@ let camera_key =
 (* the radiance along [r] into [out] *)
 let trace_camera_ray s (r : camera_ray) out =
   Scratch.reset (Scratch.get frames_key);
-  trace_ray s 0. r.o r.d 1 r.k (start_media s r.o) out
+  (* no_image objects are left out of what camera rays (and rays refracted
+     from them) see *)
+  trace_ray (Scene.image s) 0. r.o r.d 1 r.k (start_media s r.o) out
 
 let trace s (ray : Ray.t) =
   let r = Scratch.get camera_key in

@@ -226,8 +226,20 @@ type ctx = {
   tex : Texture.t option;
   inter : Interior.t option;
   no_shadow : bool;
+  flags : int;  (** Sdl.no_image, no_reflection, double_illuminate, from the parents *)
   lights : Light.t list ref;
 }
+
+(* POV-Ray's double_illuminate, carried by the finishes of a texture *)
+let rec illuminate_both (t : Texture.t) =
+  List.map
+    (fun (l : Texture.layer) ->
+      {
+        l with
+        finish = { l.finish with double_illuminate = true };
+        tmap = Option.map (fun (m : Texture.tmap) -> { m with entries = Array.map (fun (v, t) -> (v, illuminate_both t)) m.entries }) l.tmap;
+      })
+    t
 
 (* The interior an object hands down: its own or its parent's; [hollow]
    (on it, or on a parent, as POV-Ray sets it on a CSG's children) marks it:
@@ -245,7 +257,7 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   let o = Sdl.transform_obj ctx.xf o in
   let tex = match o.texture with Some _ -> o.texture | None -> ctx.tex in
   let inter = interior_of ctx o in
-  let ctx' = { ctx with xf = o.xform; tex; inter; no_shadow = ctx.no_shadow || o.no_shadow } in
+  let ctx' = { ctx with xf = o.xform; tex; inter; no_shadow = ctx.no_shadow || o.no_shadow; flags = ctx.flags lor o.flags } in
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
   | Sdl.Light l ->
@@ -301,6 +313,7 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
 
 and leaf ctx o tex inter =
   let texture = match tex with Some t -> Shapes.share_texture t | None -> Texture.default in
+  let texture = if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both texture else texture in
   let interior = Option.value ~default:Interior.default inter in
   Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow (shape o)
 
@@ -312,9 +325,9 @@ let rec top ctx (o : Sdl.obj) acc =
       let o' = Sdl.transform_obj ctx.xf o in
       let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
       let inter = interior_of ctx o' in
-      let ctx' = { ctx with xf = o'.xform; tex; inter; no_shadow = ctx.no_shadow || o'.no_shadow } in
+      let ctx' = { ctx with xf = o'.xform; tex; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags } in
       List.fold_left (fun acc c -> top ctx' c acc) acc l
-  | _ -> ( match obj ctx o with Some x -> x :: acc | None -> acc)
+  | _ -> ( match obj ctx o with Some x -> (x, ctx.flags lor o.flags) :: acc | None -> acc)
 
 let rec scene ?par:p (s : Sdl.scene) =
   par := p;
@@ -332,7 +345,7 @@ and scene_ (s : Sdl.scene) =
     List.iter
       (function
         | Sdl.Object o ->
-            let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; lights } in
+            let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; flags = 0; lights } in
             objects := top ctx o !objects
         | Sdl.Sky_sphere k -> sky := k
         | Sdl.Fog f -> fog := f :: !fog
@@ -358,11 +371,16 @@ and scene_ (s : Sdl.scene) =
       | false, _ -> Image.Identity
     in
     let camera = match !cams with (_, c) :: _ -> camera c | [] -> Camera.default in
-    let objects = Array.of_list (List.rev !objects) in
-    Ok
+    let flagged = Array.of_list (List.rev !objects) in
+    let objects = Array.map fst flagged in
+    let accel = Scene.accelerate ?par:!par objects in
+    let hidden = Array.map (fun (_, f) -> f land (Sdl.no_image lor Sdl.no_reflection)) flagged in
+    let s =
       {
         Scene.objects;
-        accel = Scene.accelerate ?par:!par objects;
+        accel;
+        all = accel;
+        views = { image = None; reflected = None };
         lights = Array.of_list (List.rev !lights);
         camera;
         background = !background;
@@ -370,4 +388,6 @@ and scene_ (s : Sdl.scene) =
         fog = List.rev !fog;
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }
+    in
+    Ok (if Array.exists (fun f -> f <> 0) hidden then Scene.hide s hidden else s)
   with Diag.Error d -> Error d

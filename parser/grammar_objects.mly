@@ -1,7 +1,7 @@
 (* Objects: shapes, CSG, object modifiers. *)
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
-%token SPHERE PLANE OBJECT NO_SHADOW HOLLOW
+%token SPHERE PLANE OBJECT NO_SHADOW HOLLOW NO_IMAGE NO_REFLECTION DOUBLE_ILLUMINATE
 %token BOX CYLINDER CONE TORUS DISC TRIANGLE SMOOTH_TRIANGLE MESH MESH2 OPEN STURM
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
@@ -140,6 +140,10 @@ items_rev:
       { with_texture (fun l -> { l with Texture.finish = f }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }
   | NO_SHADOW { fun (o : Sdl.obj) -> { o with no_shadow = true } }
+  | k = object_flag %prec below_shift { fun (o : Sdl.obj) -> { o with flags = o.flags lor k } }
+  | k = object_flag b = param
+      { let on = Value.to_bool (loc $loc(b)) b in
+        fun (o : Sdl.obj) -> { o with flags = (if on then o.flags lor k else o.flags land lnot k) } }
   | HOLLOW %prec below_shift { fun (o : Sdl.obj) -> { o with hollow = true } }
   | HOLLOW b = param { let h = Value.to_bool (loc $loc) b in fun (o : Sdl.obj) -> { o with hollow = h } }
   | OPEN { Shapes.set_open (loc $loc) }
@@ -152,3 +156,8 @@ items_rev:
   | BOUNDED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.bounded cs }
   | BOUNDED_BY LBRACE CLIPPED_BY RBRACE { Shapes.bound_by_clip (loc $loc) }
   | CLIPPED_BY LBRACE BOUNDED_BY RBRACE { Shapes.clip_by_bound (loc $loc) }
+
+object_flag:
+  | NO_IMAGE { Sdl.no_image }
+  | NO_REFLECTION { Sdl.no_reflection }
+  | DOUBLE_ILLUMINATE { Sdl.double_illuminate }

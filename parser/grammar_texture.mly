@@ -32,7 +32,7 @@
                   kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
                   area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
-                  texture = None; interior = None; no_shadow = false; hollow = false } in
+                  texture = None; interior = None; no_shadow = false; hollow = false; flags = 0 } in
         List.fold_left (fun o f -> f o) o ms }
 
 %public light_mod:

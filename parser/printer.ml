@@ -63,6 +63,9 @@ let rec parts (o : Sdl.obj) =
     tex
     @ (match o.interior with Some i -> [ interior i ] | None -> [])
     @ (if o.no_shadow then [ "no_shadow" ] else [])
+    @ List.filter_map
+        (fun (k, w) -> if o.flags land k <> 0 then Some w else None)
+        [ (Sdl.no_image, "no_image"); (Sdl.no_reflection, "no_reflection"); (Sdl.double_illuminate, "double_illuminate") ]
     @ (if o.hollow then [ "hollow on" ] else [])
     @ if Transform.is_identity o.xform then [] else [ matrix o.xform ]
   in

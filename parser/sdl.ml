@@ -88,6 +88,7 @@ and obj = {
   interior : Interior.t option;
   no_shadow : bool;
   hollow : bool;
+  flags : int;  (** {!no_image}, {!no_reflection}, {!double_illuminate} *)
 }
 
 type camera_item =
@@ -135,3 +136,7 @@ let transform_texture t tex = Texture.transform t tex
 
 let transform_obj t o =
   { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture }
+
+let no_image = 1
+let no_reflection = 2
+let double_illuminate = 4

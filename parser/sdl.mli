@@ -92,6 +92,7 @@ and obj = {
   interior : Interior.t option;
   no_shadow : bool;
   hollow : bool;
+  flags : int;  (** {!no_image}, {!no_reflection}, {!double_illuminate} *)
 }
 
 type camera_item =
@@ -142,3 +143,13 @@ val transform_obj : Transform.t -> obj -> obj
 (** Apply a transform to an object and to the texture already attached to
     it (POV-Ray's rule: a texture written before a transform moves with
     the object). *)
+
+val no_image : int
+(** The object is not seen by camera rays (nor through refraction from
+    them); it still casts shadows and shows in reflections. *)
+
+val no_reflection : int
+(** The object is not seen by rays after a reflection. *)
+
+val double_illuminate : int
+(** Lights behind the surface light it too. *)

@@ -27,7 +27,7 @@ let obj loc shape ms =
   Budget.parsed loc;
   let o =
     { Sdl.loc; shape; xform = Transform.identity; texture = None; interior = None; no_shadow = false;
-      hollow = false }
+      hollow = false; flags = 0 }
   in
   let o = List.fold_left (fun o f -> f o) o ms in
   match o.texture with
@@ -41,7 +41,7 @@ let set_open loc (o : Sdl.obj) =
   | _ -> Diag.warning loc "'open' only applies to cylinders and cones; ignored"; o
 
 let wrap (o : Sdl.obj) shape =
-  { o with shape; xform = Transform.identity; texture = o.texture; interior = o.interior; no_shadow = false }
+  { o with shape; xform = Transform.identity; texture = o.texture; interior = o.interior; no_shadow = false; flags = 0 }
 
 let strip (o : Sdl.obj) = { o with texture = None; interior = None }
 let inverse (o : Sdl.obj) = wrap o (Sdl.Inverse (strip o))

@@ -28,7 +28,7 @@ let gen_finish =
         { Finish.ambient = amb; emission = em; diffuse = d; diffuse_back = db; brilliance = br;
           phong = ph; phong_size = ps; specular = sp; roughness = ro; metallic = me;
           reflection = { rmin; rmax; falloff = fo; fresnel = fr; exponent = ex; rmetallic = me };
-          conserve_energy = ce })
+          conserve_energy = ce; double_illuminate = false })
       (quad (quad gen_col gen_col gen_pos gen_pos) (quad gen_pos gen_pos gen_pos gen_pos)
          (quad gen_pos gen_pos gen_col gen_col) (quad gen_bool gen_pos gen_pos gen_bool)))
 
@@ -46,8 +46,8 @@ let gen_interior =
 let gen_obj =
   QCheck.Gen.(
     map
-      (fun (shape, xform, texture, (interior, no_shadow, hollow)) ->
-        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow })
+      (fun (shape, xform, texture, (interior, no_shadow, (hollow, flags))) ->
+        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow; flags })
       (quad
          (oneof
             [
@@ -77,7 +77,7 @@ let gen_obj =
             ])
          gen_xform
          (option (list_size (int_range 1 3) gen_layer))
-         (triple (option gen_interior) gen_bool gen_bool)))
+         (triple (option gen_interior) gen_bool (pair gen_bool (int_range 0 7)))))
 
 let same_xform a b =
   List.for_all
@@ -89,7 +89,7 @@ let same_xform a b =
 let normalise (o : Sdl.obj) =
   (* lights keep no texture or interior *)
   match o.shape with
-  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false }
+  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false; flags = 0 }
   | _ -> o
 
 let round_trip =

@@ -369,6 +369,30 @@ let allocation_textures () =
   in
   if blur > 0.1 then Alcotest.failf "%.2f words per pixel with focal blur (at most 0.1)" blur
 
+(* POV-Ray's object flags: no_image hides from camera rays but keeps the
+   shadow, no_reflection hides from mirrors, double_illuminate lights the
+   back by |cos| *)
+let object_flags () =
+  let floor = light30 ^ plane "" in
+  let on_shadow_ray flag = Printf.sprintf "sphere { <0.2887, 0, 0.5>, 0.1 pigment { rgb 1 } %s }\n" flag in
+  gray "default finish, nothing in the way" 0.61962 (pixel floor);
+  gray "in the light's way: shadowed" 0.1 (pixel (floor ^ on_shadow_ray ""));
+  gray "no_image still casts its shadow" 0.1 (pixel (floor ^ on_shadow_ray "no_image"));
+  let in_view flag = Printf.sprintf "sphere { <0, 0, 0.5>, 0.1 pigment { rgb <1, 0, 0> } %s }\n" flag in
+  color ~eps:1e-4 "seen: lit red" (0.6099, 0., 0.) (pixel (floor ^ in_view ""));
+  gray "no_image: the plane behind it" 0.61962 (pixel (floor ^ in_view "no_image"));
+  let mirror = "plane { z, 1 finish { ambient 0 diffuse 0 reflection 1 } }\n" in
+  let behind flag =
+    Printf.sprintf "sphere { <0, 0, -1>, 0.5 pigment { rgb <0, 1, 0> } finish { ambient 1 diffuse 0 } %s }\n" flag
+  in
+  color "in the mirror" (0., 1., 0.) (pixel (mirror ^ behind ""));
+  gray "no_reflection: not in the mirror" 0. (pixel (mirror ^ behind "no_reflection"));
+  color "no_image: still in the mirror" (0., 1., 0.) (pixel (mirror ^ behind "no_image"));
+  let back_lit flag = "light_source { <0, 0, 10>, rgb 1 }\n" ^ Printf.sprintf "plane { z, 1 pigment { rgb 1 } %s }\n" flag in
+  gray "lit from behind: ambient only" 0.1 (pixel (back_lit ""));
+  gray "double_illuminate: as from the front" 0.7 (pixel (back_lit "double_illuminate"));
+  gray "double_illuminate off" 0.1 (pixel (back_lit "double_illuminate off"))
+
 let tests =
   ( "whitted",
     [
@@ -377,6 +401,7 @@ let tests =
       Alcotest.test_case "shadows" `Quick shadows;
       Alcotest.test_case "reflection" `Quick reflection;
       Alcotest.test_case "transparency" `Quick transparency;
+      Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
