@@ -64,6 +64,7 @@ let test_cost (o : Object.t) =
     match o.geom with
     | Object.Prim (Shape.Sphere _ | Shape.Plane _ | Shape.Box _ | Shape.Disc _ | Shape.Triangle _) -> 2.
     | Object.Prim (Shape.Cone _ | Shape.Smooth_triangle _) -> 3.
+    | Object.Prim (Shape.Polygon pg) -> 2. +. float (Polygon.edges pg)
     | Object.Prim (Shape.Torus _) -> 16.
     | Object.Prim (Shape.Algebraic a) -> 8. *. float (Algebraic.order a)
     | Object.Prim (Shape.Text t) -> 8. *. float (Text.glyph_count t)

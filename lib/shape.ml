@@ -23,6 +23,7 @@ type t =
   | Prism of Prism.t
   | Lathe of Lathe.t
   | Superellipsoid of Superellipsoid.t
+  | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -225,6 +226,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Prism p -> Prism.hit_s p r tmin h
   | Lathe l -> Lathe.hit_s l r tmin h
   | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
+  | Polygon pg -> Polygon.hit_s pg r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -245,6 +247,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       let k = 1. /. radius in
       Vec3.set out (k *. (p.mx -. center.x)) (k *. (p.my -. center.y)) (k *. (p.mz -. center.z))
   | Plane { normal; _ } | Disc { normal; _ } | Triangle { n = normal; _ } -> Vec3.load out normal
+  | Polygon pg -> Vec3.load out (Polygon.normal pg)
   | Box _ -> (
       match int_of_float h.id with
       | 0 -> Vec3.load out minus_x
@@ -316,7 +319,7 @@ let[@inline] inside_xyz s x y z =
       let rho = Float.sqrt ((x *. x) +. (z *. z)) -. major in
       (rho *. rho) +. (y *. y) < minor *. minor
   | Disc { center = c; normal = n; _ } -> ((x -. c.x) *. n.x) +. ((y -. c.y) *. n.y) +. ((z -. c.z) *. n.z) < 0.
-  | Triangle _ | Smooth_triangle _ -> false
+  | Triangle _ | Smooth_triangle _ | Polygon _ -> false
   | Mesh m -> Mesh.inside m (Vec3.make x y z)
   | Algebraic a -> Algebraic.inside a x y z
   | Text t -> Text.inside t x y z
@@ -356,3 +359,4 @@ let bounds = function
   | Prism p -> Some (Prism.bounds p)
   | Lathe l -> Some (Lathe.bounds l)
   | Superellipsoid _ -> Some Superellipsoid.bounds
+  | Polygon pg -> Some (Polygon.bounds pg)

@@ -32,6 +32,7 @@ type t =
   | Prism of Prism.t  (** POV-Ray's [prism] *)
   | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
   | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
+  | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

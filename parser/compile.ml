@@ -211,6 +211,8 @@ let shape (o : Sdl.obj) =
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
   | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
+  | Sdl.Polygon pts -> (
+      match Polygon.make pts with Ok (p, _) -> Shape.Polygon p | Error e -> Diag.error o.loc "polygon: %s" e)
   | Sdl.Lathe (spline, points) -> (
       match Lathe.make spline points with Ok l -> Shape.Lathe l | Error e -> Diag.error o.loc "lathe: %s" e)
   | Sdl.Prism p -> (

@@ -8,7 +8,7 @@
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
-%token LATHE SUPERELLIPSOID
+%token LATHE SUPERELLIPSOID POLYGON
 
 %%
 
@@ -68,6 +68,8 @@
           (Shapes.prism (loc $loc) kinds (fl $loc(h1) h1) (fl $loc(h2) h2) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | LATHE LBRACE kinds = list(SPLINE_KIND) n = param pts = list(prism_point) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.lathe (loc $loc) kinds (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
+  | POLYGON LBRACE n = param pts = list(prism_point) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.polygon (loc $loc) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | SUPERELLIPSOID LBRACE e = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.superellipsoid (loc $loc(e)) e) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }

@@ -52,7 +52,7 @@ let object_keywords =
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
     ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
-    ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID);
+    ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID); ("polygon", POLYGON);
   ]
 
 (* grammar_texture.mly *)

@@ -140,6 +140,10 @@ let rec parts (o : Sdl.obj) =
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
   | Sdl.Superellipsoid (e, n) -> simple (Printf.sprintf "superellipsoid { <%s, %s>" (float e) (float n))
+  | Sdl.Polygon pts ->
+      simple
+        (Printf.sprintf "polygon { %d%s" (Array.length pts)
+           (String.concat "" (Array.to_list (Array.map (fun p -> ", " ^ vec p) pts))))
   | Sdl.Lathe (spline, points) ->
       simple
         (Printf.sprintf "lathe { %s %d%s" (spline_kw spline) (Array.length points)

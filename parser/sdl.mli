@@ -22,6 +22,7 @@ type shape =
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
   | Superellipsoid of float * float  (** e, n *)
+  | Polygon of Vec3.t array  (** the points as written *)
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj

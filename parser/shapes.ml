@@ -140,6 +140,16 @@ let prism loc kinds height1 height2 count pts =
    | Error e -> Diag.error loc "prism: %s" e);
   Sdl.Prism { spline; sweep; height1; height2; points; no_caps = false }
 
+let polygon loc (nloc, n) pts =
+  if List.length pts <> n then Diag.error nloc "this polygon announces %d points and lists %d" n (List.length pts);
+  let points = Array.of_list (List.map (fun (l, v) -> Value.to_vec3 l v) pts) in
+  (* checked now, for a located message *)
+  (match Polygon.make points with
+   | Ok (_, true) -> ()
+   | Ok (_, false) -> Diag.warning loc "polygon not closed (its last point is not its outline's first): closed"
+   | Error e -> Diag.error loc "polygon: %s" e);
+  Sdl.Polygon points
+
 let superellipsoid loc v =
   match v with
   | Value.Vector [| e; n |] ->

@@ -54,6 +54,11 @@ val prism : Loc.t -> string list -> float -> float -> Loc.t * int -> (Loc.t * Va
 val lathe : Loc.t -> string list -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
 (** [lathe loc kinds (nloc, n) points] (checked with located errors). *)
 
+val polygon : Loc.t -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
+(** [polygon { n, p1, ... pn }]: the count checked, the points in one
+    plane (2-vectors have z 0); an outline left open is closed with a
+    warning. *)
+
 val superellipsoid : Loc.t -> Value.t -> Sdl.shape
 (** [superellipsoid { <e, n> }]: both exponents positive. *)
 

@@ -83,6 +83,26 @@ let gblob =
   in
   map (fun cs -> Shape.Blob (Blob.make ~threshold:0.25 cs)) (list_size (int_range 2 3) comp)
 
+(* a star-shaped outline of 3 to 8 points in a random plane, closed *)
+let gpolygon =
+  let open QCheck.Gen in
+  map3
+    (fun c nrm rs ->
+      let u = Vec3.normalize (Vec3.cross nrm (if Float.abs nrm.Vec3.x < 0.9 then Vec3.unit_x else Vec3.unit_y)) in
+      let v = Vec3.cross nrm u in
+      let k = List.length rs in
+      let pts =
+        List.mapi
+          (fun i r ->
+            let a = 2. *. Float.pi *. Stdlib.float i /. Stdlib.float k in
+            Vec3.add c (Vec3.add (Vec3.scale (r *. cos a) u) (Vec3.scale (r *. sin a) v)))
+          rs
+      in
+      let pts = Array.of_list (pts @ [ List.hd pts ]) in
+      match Polygon.make pts with Ok (p, _) -> Shape.Polygon p | Error e -> failwith e)
+    (gvec 0.5) gdir
+    (list_size (int_range 3 8) (fr 0.4 1.5))
+
 (* A non-degenerate shape around the origin (within ~2 units). *)
 let gshape =
   let open QCheck.Gen in
@@ -100,6 +120,7 @@ let gshape =
       map3 Shape.triangle (gvec 1.5) (gvec 1.5) (gvec 1.5);
       galgebraic;
       gblob;
+      gpolygon;
     ]
 
 let gxform =
@@ -146,6 +167,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       let n = if Vec3.length n = 0. then n else Vec3.normalize (Vec3.cross (Vec3.sub b a) (Vec3.sub c a)) in
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
+  | Shape.Polygon pg -> Float.abs (Vec3.dot (Polygon.normal pg) (Vec3.sub p (Polygon.point pg)))
   | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Superellipsoid _ -> 0.
   | Shape.Blob b ->
       (* the field's distance from the generator's threshold over its slope *)
@@ -179,6 +201,7 @@ let shape_name (s : Shape.t) =
   | Shape.Prism _ -> "prism"
   | Shape.Lathe _ -> "lathe"
   | Shape.Superellipsoid _ -> "superellipsoid"
+  | Shape.Polygon _ -> "polygon"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =

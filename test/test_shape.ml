@@ -393,6 +393,40 @@ let folded =
       let o' = Object.make ~xform:(Transform.scale (v 2. 1. 1.)) (Shape.sphere Vec3.zero 1.) in
       Alcotest.(check bool) "an ellipsoid keeps its transform" false (Transform.is_identity o'.xform))
 
+(* polygon: even-odd over every outline, errors for bad point sets *)
+let polygon_units =
+  let pts l = Array.of_list (List.map (fun (a, b) -> v a b 0.) l) in
+  let square_with_hole =
+    pts [ (0., 0.); (4., 0.); (4., 4.); (0., 4.); (0., 0.); (1., 1.); (3., 1.); (3., 3.); (1., 3.); (1., 1.) ]
+  in
+  let hits p x y =
+    Shape.intersect (Shape.Polygon p) (Ray.make (v x y (-1.)) Vec3.unit_z) 0. infinity < infinity
+  in
+  [
+    Alcotest.test_case "polygon: the ring is hit, the hole and the outside are not" `Quick (fun () ->
+        match Polygon.make square_with_hole with
+        | Error e -> Alcotest.fail e
+        | Ok (p, closed) ->
+            Alcotest.(check bool) "closed" true closed;
+            Alcotest.(check bool) "ring" true (hits p 0.5 2.);
+            Alcotest.(check bool) "hole" false (hits p 2. 2.);
+            Alcotest.(check bool) "outside" false (hits p 5. 2.);
+            Alcotest.(check (float 1e-12)) "at z = 0" 1.
+              (Shape.intersect (Shape.Polygon p) (Ray.make (v 0.5 2. (-1.)) Vec3.unit_z) 0. infinity));
+    Alcotest.test_case "polygon: an open outline is closed; bad point sets are errors" `Quick (fun () ->
+        (match Polygon.make (pts [ (0., 0.); (2., 0.); (0., 2.) ]) with
+        | Ok (p, closed) ->
+            Alcotest.(check bool) "reported open" false closed;
+            Alcotest.(check bool) "closed here" true (hits p 0.5 0.5);
+            Alcotest.(check bool) "past the closing edge" false (hits p 1.5 1.5)
+        | Error e -> Alcotest.fail e);
+        let bad l = match Polygon.make l with Ok _ -> false | Error _ -> true in
+        Alcotest.(check bool) "two points" true (bad (pts [ (0., 0.); (1., 0.) ]));
+        Alcotest.(check bool) "on one line" true (bad (pts [ (0., 0.); (1., 0.); (2., 0.); (0., 0.) ]));
+        Alcotest.(check bool) "not flat" true
+          (bad [| v 0. 0. 0.; v 1. 0. 0.; v 1. 1. 0.; v 0. 1. 0.5; v 0. 0. 0. |]));
+  ]
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
+  ("shape", folded :: hand @ inside_cases @ polygon_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
