@@ -11,6 +11,7 @@ type t =
   | Map of { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t }
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
   | Image_map of { image : image; xform : Transform.t }
+  | Average of (float * t) array
 
 let solid c = Solid c
 let black = Solid (Color.opaque Color.black)
@@ -49,6 +50,7 @@ let rec transform t p =
   | Blocks b ->
       Blocks { b with xform = Transform.then_ b.xform t; cells = Array.map (transform t) b.cells }
   | Image_map i -> Image_map { i with xform = Transform.then_ i.xform t }
+  | Average es -> Average (Array.map (fun (w, q) -> (w, transform t q)) es)
 
 let clear = Color.rgbft 0. 0. 0. 0. 1.
 
@@ -115,6 +117,7 @@ let rec opaque = function
   | Map { entries; _ } -> entries_opaque entries 0
   | Blocks { cells; _ } -> cells_opaque cells 0
   | Image_map _ -> false
+  | Average es -> entries_opaque es 0
 
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
@@ -164,6 +167,22 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
   | Image_map { image; xform } ->
       Transform.inv_point_m xform point w.q;
       image_into image w.q o
+  | Average es ->
+      let t = Scratch.level w.tmp d in
+      o.r <- 0.;
+      o.g <- 0.;
+      o.b <- 0.;
+      o.filter <- 0.;
+      o.transmit <- 0.;
+      for i = 0 to Array.length es - 1 do
+        let k, q = Array.unsafe_get es i in
+        into_d w q point t (d + 1);
+        o.r <- o.r +. (k *. t.r);
+        o.g <- o.g +. (k *. t.g);
+        o.b <- o.b +. (k *. t.b);
+        o.filter <- o.filter +. (k *. t.filter);
+        o.transmit <- o.transmit +. (k *. t.transmit)
+      done
 
 (* a solid colour, or a plain checker of solid colours, without the
    domain's work *)

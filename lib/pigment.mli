@@ -21,6 +21,9 @@ type t =
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
       (** checker, hexagon, brick with their list of colours or pigments *)
   | Image_map of { image : image; xform : Transform.t }
+  | Average of (float * t) array
+      (** POV-Ray's [average pigment_map]: the entries' colours weighted
+          (weights summing to 1) *)
 
 val solid : Color.rgbft -> t
 val black : t

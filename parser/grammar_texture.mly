@@ -17,7 +17,7 @@
 %token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
-%token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR
+%token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
 
 %%
 
@@ -78,6 +78,7 @@
   | t = ioption(TEXTURE_ID) ms = list(texture_mod)
       { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
+  | AVERAGE { Diag.error (loc $loc) "average (of textures) is not supported by camlray" }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
@@ -137,6 +138,8 @@
   | c = color_value ms = list(pigment_mod)
       { Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) }
   | k = pattern_kind ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pattern k))) }
+  (* the weighted mean of its pigment_map's entries (weights 1 when left out) *)
+  | AVERAGE ms = list(pigment_mod) { Texdesc.(pigment (apply ms (average ()))) }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
       { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
   | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
@@ -280,6 +283,13 @@
       { (Pigment.solid (Value.to_color (loc $loc(c1)) c1), Pigment.solid (Value.to_color (loc $loc(c2)) c2)) }
 
 %public pigment_map_entry:
+  (* without a value: an average's weight of 1 (other patterns read 1 too) *)
+  | LBRACKET p = PIGMENT_ID ms = list(pigment_mod) RBRACKET
+      { (1., Texdesc.(pigment (apply ms (of_pigment p)))) }
+  | LBRACKET k = pattern_kind ms = list(pigment_mod) RBRACKET
+      { (1., Texdesc.(pigment (apply ms (of_pattern k)))) }
+  | LBRACKET k = block_kind cs = block_cells ms = list(pigment_mod) RBRACKET
+      { (1., Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs }))) }
   | LBRACKET v = param COMMA? p = PIGMENT_ID ms = list(pigment_mod) RBRACKET
       { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pigment p)))) }
   | LBRACKET v = param COMMA? k = pattern_kind ms = list(pigment_mod) RBRACKET
@@ -348,6 +358,7 @@
           | _ -> Diag.error (loc $loc) "exterior can only be used with mandel") }
 
 %public normal_body:
+  | AVERAGE { Diag.error (loc $loc) "average (of normals) is not supported by camlray" }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
       { if k = Pattern.Checker then
           (* povray 3.7 shades alternate squares as facing away: not rebuilt *)

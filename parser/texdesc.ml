@@ -7,13 +7,14 @@ type pat = {
   cells : Pigment.t list;
   xform : Transform.t;
   amount : float;
+  average : bool;  (** [average]: [entries] are weights, not values *)
 }
 
 type modifier = pat -> pat
 
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
-    amount = 0.5 }
+    amount = 0.5; average = false }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -24,10 +25,13 @@ let of_pigment (p : Pigment.t) =
   | _ -> { empty with base = p }
 
 let of_pattern k = { empty with pattern = Some (Pattern.make k) }
+let average () = { empty with average = true }
 let apply ms p = List.fold_left (fun p m -> m p) p ms
 
 let transform t p =
   match p.pattern with
+  | None when p.average ->
+      { p with entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries }
   | None -> { p with base = Pigment.transform t p.base }
   | Some _ ->
       {
@@ -53,6 +57,12 @@ let kind_mod f = pattern_mod (fun pt -> { pt with kind = f pt.kind })
 
 let pigment p =
   match p.pattern with
+  | None when p.average ->
+      (* POV-Ray divides by the weights' sum *)
+      let es = Option.value ~default:[||] p.entries in
+      let total = Array.fold_left (fun s (w, _) -> s +. w) 0. es in
+      if Array.length es = 0 || total = 0. then Pigment.black
+      else Pigment.Average (Array.map (fun (w, q) -> (w /. total, q)) es)
   | None -> p.base
   | Some pattern ->
       if Pattern.is_block pattern.kind then

@@ -12,12 +12,14 @@ type pat = {
   cells : Pigment.t list;  (** block pattern colours, in written order *)
   xform : Transform.t;
   amount : float;  (** normals: bump amount *)
+  average : bool;  (** [average pigment_map]: the entries' values are weights *)
 }
 
 type modifier = pat -> pat
 
 val of_pigment : Pigment.t -> pat
 val of_pattern : Pattern.kind -> pat
+val average : unit -> pat
 val apply : modifier list -> pat -> pat
 
 val pigment : pat -> Pigment.t

@@ -369,6 +369,18 @@ let allocation_textures () =
   in
   if blur > 0.1 then Alcotest.failf "%.2f words per pixel with focal blur (at most 0.1)" blur
 
+(* average pigment_map: the weighted mean of its entries *)
+let average () =
+  let flat pig = pixel (Printf.sprintf "plane { z, 1 pigment { %s } finish { ambient 1 diffuse 0 } }\n" pig) in
+  color "weights 1 and 3" (0.25, 0., 0.75)
+    (flat "average pigment_map { [1 rgb <1, 0, 0>] [3 rgb <0, 0, 1>] }");
+  (* gradient x at x = 0 is 0: the first colour of each map; no weight: 1 *)
+  color "weights left out count 1" (0.5, 0.5, 0.)
+    (flat "average pigment_map { [gradient x color_map { [0 rgb <1, 0, 0>] [1 rgb 1] }] \
+           [gradient y color_map { [0 rgb <0, 1, 0>] [1 rgb 1] }] }");
+  color "the same weights in other units" (0.25, 0., 0.75)
+    (flat "average pigment_map { [0.5 rgb <1, 0, 0>] [1.5 rgb <0, 0, 1>] }")
+
 (* POV-Ray's object flags: no_image hides from camera rays but keeps the
    shadow, no_reflection hides from mirrors, double_illuminate lights the
    back by |cos| *)
@@ -402,6 +414,7 @@ let tests =
       Alcotest.test_case "reflection" `Quick reflection;
       Alcotest.test_case "transparency" `Quick transparency;
       Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
+      Alcotest.test_case "average pigment_map" `Quick average;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
