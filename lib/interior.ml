@@ -4,10 +4,11 @@ type t = {
   fade_power : float;
   fade_color : Color.t;
   hollow : bool;
+  caustics : float;
 }
 
 let default =
-  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black; hollow = false }
+  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black; hollow = false; caustics = 0. }
 
 let[@inline] fade_channel i c d =
   if i.fade_distance = 0. then 1.

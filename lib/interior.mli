@@ -8,6 +8,11 @@ type t = {
   hollow : bool;
       (** the object's [hollow]: a ray inside only hollow solids is in the
           open, where fog is seen *)
+  caustics : float;
+      (** POV-Ray's faked caustics, 45 x the scene's [caustics] value (0:
+          none): a shadow ray through the surface carries (1 + |cos|^caustics)
+          times the light it lets through, cos between the ray and the
+          surface's normal (whitted mode) *)
 }
 
 val default : t

@@ -70,6 +70,8 @@ type walk = {
   mean : Color.acc;
   cross : Vec3.m;  (** a crossing of the shadow ray *)
   filter : Color.acc;  (** what the surface there lets through *)
+  cn : Vec3.m;  (** the surface's normal there (faked caustics) *)
+  pn : Vec3.m;  (** a layer's perturbed normal *)
 }
 
 let shadow_key =
@@ -79,7 +81,7 @@ let shadow_key =
         ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
-        filter = Color.acc 0. })
+        filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m () })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -97,6 +99,21 @@ let add_fader w (o : Object.t) (h : Hit.t) =
   Float.Array.set w.fts k h.t;
   w.nf <- k + 1
 
+(* POV-Ray's faked caustics: per layer, more light where the ray meets the
+   surface (its normal perturbed by the layer's) square on *)
+let caustics w (o : Object.t) q h c =
+  let r = w.ray and n = w.cn and pn = w.pn in
+  Object.normal_into o q h n;
+  let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
+  let k = ref 1. in
+  List.iter
+    (fun (l : Texture.layer) ->
+      (match l.normal with Some nm -> Normal.perturb_m nm q n pn | None -> Vec3.set pn n.mx n.my n.mz);
+      let cos = Float.abs ((pn.mx *. r.dx) +. (pn.my *. r.dy) +. (pn.mz *. r.dz)) /. dl in
+      k := !k *. (1. +. Float.pow cos c))
+    o.texture;
+  !k
+
 let shadow_hit (o : Object.t) (h : Hit.t) =
   let t = h.t in
   let w = Scratch.get shadow_key in
@@ -109,7 +126,9 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
     let r = w.ray and q = w.cross and f = w.filter in
     Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
     filter_into o.texture q f 0;
-    Color.acc_set a (a.ar *. f.ar) (a.ag *. f.ag) (a.ab *. f.ab);
+    let c = o.interior.caustics in
+    let k = if c = 0. then 1. else caustics w o q h c in
+    Color.acc_set a (a.ar *. k *. f.ar) (a.ag *. k *. f.ag) (a.ab *. k *. f.ab);
     if Interior.fades_light o.interior then add_fader w o h;
     not (Color.acc_is_black a)
   end

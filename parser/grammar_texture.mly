@@ -2,7 +2,7 @@
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
 %token LIGHT_SOURCE SPOTLIGHT PARALLEL POINT_AT RADIUS FALLOFF TIGHTNESS
-%token FADE_DISTANCE FADE_POWER FADE_COLOR SHADOWLESS
+%token FADE_DISTANCE FADE_POWER FADE_COLOR SHADOWLESS CAUSTICS
 %token TEXTURE PIGMENT FINISH INTERIOR
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR
@@ -457,6 +457,8 @@ bump_size: COMMA? a = param { a }
   | FADE_POWER e = param { let x = fl $loc(e) e in fun (i : Interior.t) -> { i with fade_power = x } }
   | FADE_COLOR c = color_value
       { let c = Value.to_rgb (loc $loc(c)) c in fun (i : Interior.t) -> { i with fade_color = c } }
+  (* POV-Ray keeps 45 times the value written *)
+  | CAUSTICS e = param { let x = 45. *. fl $loc(e) e in fun (i : Interior.t) -> { i with caustics = x } }
 
 (* arrays of declared maps, normals and materials:
    #declare A = array[2] { M_Glass, M_Glass2 } *)

@@ -87,7 +87,7 @@ let texture_keywords =
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
     ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED);
     ("control0", CONTROL0); ("control1", CONTROL1); ("mandel", MANDEL); ("exterior", EXTERIOR);
-    ("average", AVERAGE);
+    ("average", AVERAGE); ("caustics", CAUSTICS);
   ]
 
 (* Keywords to their tokens, each token made once and shared by every

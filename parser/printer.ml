@@ -41,8 +41,9 @@ let finish (f : Finish.t) =
 let layer (l : Texture.layer) = Printf.sprintf "texture { %s %s }" (pigment l.pigment) (finish l.finish)
 
 let interior (i : Interior.t) =
-  Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s }" (float i.ior)
+  Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s%s }" (float i.ior)
     (float i.fade_distance) (float i.fade_power) (rgb i.fade_color)
+    (if i.caustics = 0. then "" else " caustics " ^ float (i.caustics /. 45.))
 
 let light_kind = function
   | Light.Point -> ""

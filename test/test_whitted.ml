@@ -381,6 +381,21 @@ let average () =
   color "the same weights in other units" (0.25, 0., 0.75)
     (flat "average pigment_map { [0.5 rgb <1, 0, 0>] [1.5 rgb <0, 0, 1>] }")
 
+(* POV-Ray's faked caustics: a shadow ray through a clear surface carries
+   (1 + |cos|^(45 c)) of its light, cos to the surface's normal *)
+let caustics () =
+  let floor = light30 ^ plane "" in
+  (* a clear disc across the light's way, facing the light (cos 1) or the
+     camera (cos 0.866) *)
+  let disc normal c =
+    Printf.sprintf "disc { <0.2887, 0, 0.5>, %s, 0.1 pigment { rgbf 1 } interior { caustics %g } }\n" normal c
+  in
+  let toward = "<5, 0, -8.66025>" in
+  gray "clear: the light passes" 0.61962 (pixel (floor ^ disc toward 0.));
+  gray "caustics 1 square on: twice the light" (0.1 +. (2. *. 0.51962)) (pixel (floor ^ disc toward 1.));
+  gray ~eps:1e-4 "caustics 1 at 30 degrees: 1 + 0.866^45" (0.1 +. ((1. +. (0.866025 ** 45.)) *. 0.51962))
+    (pixel (floor ^ disc "z" 1.))
+
 (* POV-Ray's object flags: no_image hides from camera rays but keeps the
    shadow, no_reflection hides from mirrors, double_illuminate lights the
    back by |cos| *)
@@ -415,6 +430,7 @@ let tests =
       Alcotest.test_case "transparency" `Quick transparency;
       Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
       Alcotest.test_case "average pigment_map" `Quick average;
+      Alcotest.test_case "faked caustics" `Quick caustics;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
