@@ -9,6 +9,14 @@ type fractal = {
   ifactor : float;
 }
 
+(* a function's code and where it leaves its value; its frames (of the
+   function's size), one per domain *)
+type fn = { result : int; run : float array -> unit; frames : float array Scratch.key }
+
+let fn ~slots ~result run =
+  if slots < 3 || result < 0 || result >= slots then invalid_arg "Pattern.fn: bad slot counts";
+  { result; run; frames = Scratch.key (fun () -> Array.make slots 0.) }
+
 type kind =
   | Checker
   | Hexagon
@@ -35,6 +43,7 @@ type kind =
   | Spiral2 of int
   | Quilted of { c0 : float; c1 : float }
   | Mandel of fractal
+  | Function of fn
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
@@ -295,6 +304,17 @@ let raw_m kind (w : work) =
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
   | Mandel f -> mandel_into f x y w
+  | Function f ->
+      (* [w] is read before the code runs: the code may evaluate other
+         patterns (through a pigment function), which may reuse [w] *)
+      let s = Scratch.get f.frames in
+      Array.unsafe_set s 0 x;
+      Array.unsafe_set s 1 y;
+      Array.unsafe_set s 2 z;
+      f.run s;
+      let v = Array.unsafe_get s f.result in
+      (* POV-Ray: values above 1 taken mod 1, others left as they are *)
+      w.r.v <- (if v > 1. then Float.rem v 1. else v)
 
 let default_wave = function Wood | Marble | Spiral1 _ | Spiral2 _ -> Triangle | _ -> Ramp
 

@@ -5,7 +5,8 @@
     with POV-Ray 3.7's [function { pattern { ... } }] values; the noise
     patterns use {!Noise}, camlray's own noise, and only resemble
     POV-Ray's. spiral1, spiral2, quilted and mandel follow POV-Ray's
-    formulas (core/material/pattern.cpp). *)
+    formulas (core/material/pattern.cpp); a function pattern's value is
+    its function's, taken mod 1 above 1 as POV-Ray does. *)
 
 type wave = Ramp | Triangle | Sine | Scallop | Cubic | Poly of float
 
@@ -19,6 +20,20 @@ type fractal = {
 }
 (** The mandel pattern's parameters ([mandel N exponent E interior T, F
     exterior T, F]). *)
+
+type fn
+(** A user function of x, y, z used as a pattern ([function { ... }]):
+    compiled code over an array of float slots, one array per domain. *)
+
+val fn : slots:int -> result:int -> (float array -> unit) -> fn
+(** [fn ~slots ~result run]: [run s] reads x, y, z from [s.(0)],
+    [s.(1)], [s.(2)] of an array of [slots] floats ([slots >= 3], [result
+    < slots]) and leaves the function's value in [s.(result)]. Each
+    domain runs it on an array of its own, so [run] may be called from
+    several domains at once; it should not allocate (the pattern then
+    allocates nothing). A function must not evaluate, while it runs,
+    the same [fn] again (functions are defined before they are used, so
+    this holds for functions of the scene language). *)
 
 type kind =
   | Checker
@@ -49,6 +64,10 @@ type kind =
       (** control0, control1: unit cells shaded by a cubic of the
           distance to their centre (frequency 0: no wrapping) *)
   | Mandel of fractal  (** the Mandelbrot set in the xy plane *)
+  | Function of fn
+      (** [function { ... }]: the function at the point, mod 1 above 1
+          (values below 0 are left to the frequency step, which takes
+          them mod 1) *)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 

@@ -122,11 +122,14 @@ let rec opaque = function
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
 
-(* Per domain: the point in an image's space, the pattern's work, and
-   per nesting depth a colour for the second of two entries blended. *)
-type work = { q : Vec3.m; pw : Pattern.work; tmp : out Scratch.levels }
+(* Per domain: the point in an image's space, the pattern's work, per
+   nesting depth a colour for the second of two entries blended, and the
+   first depth no running evaluation holds (a pigment function in a
+   pattern evaluates a pigment inside another's evaluation: it starts
+   there). *)
+type work = { q : Vec3.m; pw : Pattern.work; tmp : out Scratch.levels; mutable used : int }
 
-let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out })
+let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out; used = 0 })
 
 (* The commonest pattern, a checker of the pattern space itself, read
    without the pattern's work: the cell at [point] (any other pigment is
@@ -155,6 +158,7 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
           else begin
             let k = (v -. vp) /. (vi -. vp) in
             let t = Scratch.level w.tmp d in
+            if w.used <= d then w.used <- d + 1;
             into_d w pp point o (d + 1);
             into_d w pi point t (d + 1);
             lerp_into o t k
@@ -169,6 +173,7 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       image_into image w.q o
   | Average es ->
       let t = Scratch.level w.tmp d in
+      if w.used <= d then w.used <- d + 1;
       o.r <- 0.;
       o.g <- 0.;
       o.b <- 0.;
@@ -189,7 +194,11 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
 let into p point o =
   match checker_cell p point with
   | Solid c -> set o c
-  | q -> into_d (Scratch.get work_key) q point o 0
+  | q ->
+      let w = Scratch.get work_key in
+      let base = w.used in
+      into_d w q point o base;
+      w.used <- base
 
 let eval p point =
   match p with

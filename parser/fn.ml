@@ -1,71 +1,167 @@
 (* User-defined functions: POV-Ray's function { ... } bodies, compiled
-   once into OCaml closures over a slot array (the parameters, then the
-   variables of sum()/prod()). Constants fold at compile time. *)
+   once into OCaml closures working in a frame of float slots (the
+   parameters, then the values of sub-expressions, then the frames of the
+   functions called), and the vector functions. *)
+open Camlray
+
+type code = float array -> int -> unit
+
+type vector =
+  | Apply of { width : int option; apply : float array -> float array }
+      (** transform and spline functions: [width] components when known *)
+  | Colour of Pigment.t  (** a pigment function: red, green, blue, filter, transmit *)
 
 type t = {
   params : string array;
-  nslots : int;
-  code : float array -> float;
+  frame : int;
+  out : int;
+  run : code;
   unsupported : string option;
-  vector : (float array -> float array) option;
-      (** a vector function (function { transform {...} }) *)
+  vector : vector option;
 }
 
-let make ~params ~nslots ~unsupported code = { params; nslots; code; unsupported; vector = None }
+let nothing : code = fun _ _ -> ()
+
+let make ~params ~frame ~out ~unsupported run =
+  if frame < Array.length params || out < 0 || out >= max frame 1 then invalid_arg "Fn.make: bad frame";
+  { params; frame; out; run; unsupported; vector = None }
+
+let vector_fn params v = { params; frame = Array.length params; out = 0; run = nothing; unsupported = None; vector = Some v }
 
 let of_transform tr =
   let apply (a : float array) =
-    let p = Camlray.Transform.point tr (Camlray.Vec3.make a.(0) a.(1) a.(2)) in
+    let p = Transform.point tr (Vec3.make a.(0) a.(1) a.(2)) in
     [| p.x; p.y; p.z |]
   in
-  { params = [| "x"; "y"; "z" |]; nslots = 3; code = (fun _ -> nan); unsupported = None;
-    vector = Some apply }
+  vector_fn [| "x"; "y"; "z" |] (Apply { width = Some 3; apply })
 
-let of_spline eval =
-  { params = [| "t" |]; nslots = 1; code = (fun _ -> nan); unsupported = None;
-    vector = Some (fun a -> eval a.(0)) }
-
+let of_spline eval = vector_fn [| "t" |] (Apply { width = None; apply = (fun a -> eval a.(0)) })
+let of_pigment p = vector_fn [| "x"; "y"; "z" |] (Colour p)
 let is_vector f = f.vector <> None
-let code f = f.code
-let nslots f = f.nslots
+let frame f = f.frame
+let out f = f.out
+let run f = f.run
+let arity f = Array.length f.params
+let params f = Array.to_list f.params
+let unsupported f = f.unsupported
 
-let slots loc f args =
+(* POV-Ray's members of a vector function's value; gray weighs the
+   channels as POV-Ray's colours do *)
+let gray = 5
+
+let member = function
+  | "x" | "u" | "red" -> Some 0
+  | "y" | "v" | "green" -> Some 1
+  | "z" | "blue" -> Some 2
+  | "t" | "filter" -> Some 3
+  | "transmit" -> Some 4
+  | "gray" | "grey" -> Some gray
+  | _ -> None
+
+let[@inline] gray_of r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
+
+let component a m =
+  let n = Array.length a in
+  let get i = if i < n then a.(i) else 0. in
+  if m = gray then gray_of (get 0) (get 1) (get 2) else get m
+
+let check_args loc f n =
+  let k = Array.length f.params in
+  if n <> k then Diag.error loc "this function takes %d argument%s, got %d" k (if k = 1 then "" else "s") n
+
+(* the per-domain point and colour of one call of a pigment function *)
+type pig_work = { p : Vec3.m; o : Pigment.out }
+
+let member_code loc f m ~args ~out =
+  check_args loc f (Array.length args);
+  match f.vector with
+  | None -> Diag.error loc "this function returns a float: it has no members"
+  | Some (Apply { width; apply }) ->
+      (match width with
+      | Some w when m <> gray && m >= w ->
+          Diag.error loc "this function's value has %d components: this member does not exist" w
+      | _ -> ());
+      fun s b ->
+        let a = Array.map (fun i -> s.(b + i)) args in
+        s.(b + out) <- component (apply a) m
+  | Some (Colour pig) ->
+      (match m with
+      | 0 | 1 | 2 | 3 | 4 -> ()
+      | m when m = gray -> ()
+      | _ -> Diag.error loc "a pigment function's value has no such member");
+      (* each domain its own point and colour; this call cannot run again
+         while it runs (a pigment cannot use a function defined after it);
+         Pigment.into starts below the scratch colours the maps being
+         evaluated hold *)
+      let key = Scratch.key (fun () -> { p = Vec3.m (); o = Pigment.out () }) in
+      let ax = args.(0) and ay = args.(1) and az = args.(2) in
+      fun s b ->
+        let w = Scratch.get key in
+        Vec3.set w.p (Array.unsafe_get s (b + ax)) (Array.unsafe_get s (b + ay)) (Array.unsafe_get s (b + az));
+        Pigment.into pig w.p w.o;
+        let o = w.o and i = b + out in
+        (* each case stores its value (a value joined from the cases
+           would be boxed) *)
+        match m with
+        | 0 -> Array.unsafe_set s i o.r
+        | 1 -> Array.unsafe_set s i o.g
+        | 2 -> Array.unsafe_set s i o.b
+        | 3 -> Array.unsafe_set s i o.filter
+        | 4 -> Array.unsafe_set s i o.transmit
+        | _ -> Array.unsafe_set s i (gray_of o.r o.g o.b)
+
+let frame_of loc f args =
   (match f.unsupported with Some u -> Diag.error loc "%s" u | None -> ());
-  let n = Array.length f.params in
-  if List.length args <> n then
-    Diag.error loc "this function takes %d argument%s, got %d" n (if n = 1 then "" else "s")
-      (List.length args);
-  let s = Array.make f.nslots 0. in
+  check_args loc f (List.length args);
+  let s = Array.make (max f.frame 1) 0. in
   List.iteri (fun i a -> s.(i) <- a) args;
   s
 
 let call loc f args =
   if f.vector <> None then Diag.error loc "this is a vector function: its value is a vector";
-  f.code (slots loc f args)
+  let s = frame_of loc f args in
+  f.run s 0;
+  s.(f.out)
 
 let call_vector loc f args =
   match f.vector with
-  | Some v -> v (slots loc f args)
+  | Some (Apply { apply; _ }) -> apply (frame_of loc f args)
+  | Some (Colour p) -> (
+      match args with
+      | [ x; y; z ] ->
+          let c = Pigment.eval p (Vec3.make x y z) in
+          [| c.c.r; c.c.g; c.c.b; c.filter; c.transmit |]
+      | _ -> check_args loc f (List.length args); [||])
   | None -> Diag.error loc "this is a float function, not a vector function"
-
-let arity f = Array.length f.params
-let params f = Array.to_list f.params
-let unsupported f = f.unsupported
 
 let eval f args =
   (match f.unsupported with Some u -> invalid_arg u | None -> ());
   if f.vector <> None then invalid_arg "Fn.eval: a vector function";
   if Array.length args <> Array.length f.params then invalid_arg "Fn.eval: wrong number of arguments";
-  let s = Array.make f.nslots 0. in
+  let s = Array.make (max f.frame 1) 0. in
   Array.blit args 0 s 0 (Array.length args);
-  f.code s
+  f.run s 0;
+  s.(f.out)
 
 let eval3 f =
   (match f.unsupported with Some u -> invalid_arg u | None -> ());
   if f.vector <> None then invalid_arg "Fn.eval3: a vector function";
   if Array.length f.params <> 3 then invalid_arg "Fn.eval3: the function does not take 3 arguments";
-  let n = f.nslots and code = f.code in
+  let n = f.frame and code = f.run and out = f.out in
   fun x y z ->
     let s = Array.make n 0. in
-    s.(0) <- x; s.(1) <- y; s.(2) <- z;
-    code s
+    s.(0) <- x;
+    s.(1) <- y;
+    s.(2) <- z;
+    code s 0;
+    s.(out)
+
+let pattern loc f =
+  (match f.unsupported with Some u -> Diag.error loc "%s" u | None -> ());
+  if f.vector <> None then
+    Diag.error loc "a vector function cannot be a pattern: take one of its components (F(x, y, z).x)";
+  if Array.length f.params <> 3 then
+    Diag.error loc "a function used as a pattern takes 3 parameters (x, y, z), this one takes %d"
+      (Array.length f.params);
+  let run = f.run in
+  Pattern.fn ~slots:f.frame ~result:f.out (fun s -> run s 0)

@@ -5,37 +5,80 @@ open Lexer
 
 type resolved = Const of float | Vec of float array | Func of Fn.t | Unknown
 
-(* A compiled sub-expression: a constant, or code over the slots. *)
-type c = K of float | C of (float array -> float)
+(* A compiled sub-expression: a constant (folded at compile time), or a
+   slot of the frame holding the value once [code] (if any) has run. The
+   code of a node runs its operands' code, then stores its own value:
+   closures returning unit over a float array, so that evaluation
+   allocates nothing (a closure returning a float would box it). *)
+type c = K of float | V of { slot : int; code : Fn.code option }
 
-let run = function K k -> fun _ -> k | C f -> f
+let nothing : Fn.code = fun _ _ -> ()
 
-let lift1 g = function K a -> K (g a) | C f -> C (fun s -> g (f s))
+type op1 =
+  | Neg | Sin | Cos | Tan | Asin | Acos | Atan | Sinh | Cosh | Tanh | Asinh | Acosh | Atanh | Sqrt
+  | Exp | Ln | Log | Abs | Floor | Ceil | Int | Radians | Degrees
 
-let lift2 g a b =
-  match (a, b) with
-  | K x, K y -> K (g x y)
-  | K x, C f -> C (fun s -> g x (f s))
-  | C f, K y -> C (fun s -> g (f s) y)
-  | C f, C h -> C (fun s -> g (f s) (h s))
+type op2 =
+  | Add | Sub | Mul | Div | Lt | Le | Gt | Ge | Eq | Ne | And | Or | Atan2 | Pow | Mod | Idiv | Min | Max
 
 let deg = 180. /. Float.pi
-let b2f b = if b then 1. else 0.
+let[@inline] b2f b = if b then 1. else 0.
+
+(* inlined into the nodes' code: the match runs, the floats stay unboxed *)
+let[@inline] apply1 op x =
+  match op with
+  | Neg -> -.x
+  | Sin -> Float.sin x
+  | Cos -> Float.cos x
+  | Tan -> Float.tan x
+  | Asin -> Float.asin x
+  | Acos -> Float.acos x
+  | Atan -> Float.atan x
+  | Sinh -> Float.sinh x
+  | Cosh -> Float.cosh x
+  | Tanh -> Float.tanh x
+  | Asinh -> Float.log (x +. Float.sqrt ((x *. x) +. 1.))
+  | Acosh -> Float.log (x +. Float.sqrt ((x *. x) -. 1.))
+  | Atanh -> 0.5 *. Float.log ((1. +. x) /. (1. -. x))
+  | Sqrt -> Float.sqrt x
+  | Exp -> Float.exp x
+  | Ln -> Float.log x
+  | Log -> Float.log10 x
+  | Abs -> Float.abs x
+  | Floor -> Float.floor x
+  | Ceil -> Float.ceil x
+  | Int -> Float.trunc x
+  | Radians -> x /. deg
+  | Degrees -> x *. deg
+
+let[@inline] apply2 op x y =
+  match op with
+  | Add -> x +. y
+  | Sub -> x -. y
+  | Mul -> x *. y
+  | Div -> x /. y
+  | Lt -> b2f (x < y)
+  | Le -> b2f (x <= y)
+  | Gt -> b2f (x > y)
+  | Ge -> b2f (x >= y)
+  | Eq -> b2f (Float.abs (x -. y) <= 1e-10)
+  | Ne -> b2f (Float.abs (x -. y) > 1e-10)
+  | And -> b2f (x <> 0. && y <> 0.)
+  | Or -> b2f (x <> 0. || y <> 0.)
+  | Atan2 -> Float.atan2 x y
+  | Pow -> Float.pow x y
+  | Mod -> Float.rem x y
+  | Idiv -> Float.trunc (x /. y)
+  | Min -> if y < x then y else x
+  | Max -> if y > x then y else x
 
 let unary_builtins =
-  [ ("sin", Float.sin); ("cos", Float.cos); ("tan", Float.tan); ("asin", Float.asin);
-    ("acos", Float.acos); ("atan", Float.atan); ("sinh", Float.sinh); ("cosh", Float.cosh);
-    ("tanh", Float.tanh);
-    ("asinh", fun x -> Float.log (x +. Float.sqrt ((x *. x) +. 1.)));
-    ("acosh", fun x -> Float.log (x +. Float.sqrt ((x *. x) -. 1.)));
-    ("atanh", fun x -> 0.5 *. Float.log ((1. +. x) /. (1. -. x)));
-    ("sqrt", Float.sqrt); ("exp", Float.exp); ("ln", Float.log);
-    ("log", Float.log10); ("abs", Float.abs); ("floor", Float.floor); ("ceil", Float.ceil);
-    ("int", Float.trunc); ("radians", fun a -> a /. deg); ("degrees", fun a -> a *. deg) ]
+  [ ("sin", Sin); ("cos", Cos); ("tan", Tan); ("asin", Asin); ("acos", Acos); ("atan", Atan);
+    ("sinh", Sinh); ("cosh", Cosh); ("tanh", Tanh); ("asinh", Asinh); ("acosh", Acosh);
+    ("atanh", Atanh); ("sqrt", Sqrt); ("exp", Exp); ("ln", Ln); ("log", Log); ("abs", Abs);
+    ("floor", Floor); ("ceil", Ceil); ("int", Int); ("radians", Radians); ("degrees", Degrees) ]
 
-let binary_builtins =
-  [ ("atan2", Float.atan2); ("pow", Float.pow); ("mod", Float.rem);
-    ("div", fun a b -> Float.trunc (a /. b)) ]
+let binary_builtins = [ ("atan2", Atan2); ("pow", Pow); ("mod", Mod); ("div", Idiv) ]
 
 (* The name a keyword token stands for when it names a parameter. *)
 let word = function
@@ -53,10 +96,15 @@ let word = function
 type st = {
   toks : token array;
   mutable i : int;
-  mutable slots : (string * int) list;  (** innermost first *)
-  mutable nslots : int;
-  resolve : string -> resolved;
+  mutable slots : (string * int) list;  (** parameters and sum/prod variables, innermost first *)
+  mutable nslots : int;  (** this function's own slots *)
+  resolve : Loc.t -> string -> resolved;
   mutable unsupported : string option;
+  mutable consts : (int * float) list;  (** slots holding constants, written on entry *)
+  mutable callee : int;  (** the largest frame of a function called *)
+  top : int ref;
+      (** where called functions' frames start, after the own slots (known
+          once the body is compiled) *)
 }
 
 let peek st = st.toks.(st.i).raw
@@ -69,27 +117,122 @@ let expect st t what =
   | Tok x when x = t -> advance st
   | r -> err st "in a function: expected %s, found %s" what (describe r)
 
+let fresh st =
+  let i = st.nslots in
+  st.nslots <- i + 1;
+  i
+
+(* an operand: the slot to read and the code that fills it *)
+let operand st = function
+  | K k ->
+      let i = fresh st in
+      st.consts <- (i, k) :: st.consts;
+      (i, nothing)
+  | V { slot; code } -> (slot, Option.value code ~default:nothing)
+
+let[@inline] get (s : float array) i = Array.unsafe_get s i
+let[@inline] set (s : float array) i v = Array.unsafe_set s i v
+
+let un st op a =
+  match a with
+  | K x -> K (apply1 op x)
+  | _ ->
+      let ia, ra = operand st a in
+      let o = fresh st in
+      V { slot = o; code = Some (fun s b -> ra s b; set s (b + o) (apply1 op (get s (b + ia)))) }
+
+let bin st op a b =
+  match (a, b) with
+  | K x, K y -> K (apply2 op x y)
+  | _ ->
+      let ia, ra = operand st a and ib, rb = operand st b in
+      let o = fresh st in
+      V
+        {
+          slot = o;
+          code =
+            Some
+              (fun s k ->
+                ra s k;
+                rb s k;
+                set s (k + o) (apply2 op (get s (k + ia)) (get s (k + ib))));
+        }
+
+(* operands' slots and code, in arrays (the code loops over them) *)
+let operands st args =
+  let ops = List.map (operand st) args in
+  (Array.of_list (List.map fst ops), Array.of_list (List.map snd ops))
+
 let call_fn st loc (f : Fn.t) args =
+  match Fn.unsupported f with
+  | Some u ->
+      (* POV-Ray's internal functions take their own number of arguments:
+         the call is read, and the function calling it is unsupported *)
+      if st.unsupported = None then st.unsupported <- Some u;
+      K 0.
+  | None ->
   let n = Fn.arity f in
   if List.length args <> n then
     Diag.error loc "this function takes %d argument%s, got %d" n (if n = 1 then "" else "s")
       (List.length args);
-  (match (Fn.unsupported f, st.unsupported) with
-  | Some u, None -> st.unsupported <- Some u
-  | _ -> ());
-  let args = Array.of_list args in
-  let code = Fn.code f and size = Fn.nslots f in
-  if Array.for_all (function K _ -> true | C _ -> false) args && Fn.unsupported f = None then
-    let slots = Array.make size 0. in
-    Array.iteri (fun i a -> match a with K k -> slots.(i) <- k | C _ -> ()) args;
-    K (code slots)
-  else
-    let args = Array.map run args in
-    C
-      (fun s ->
-        let slots = Array.make size 0. in
-        Array.iteri (fun i a -> slots.(i) <- a s) args;
-        code slots)
+  if Fn.is_vector f then
+    Diag.error loc "this is a vector function: take a component of its value (F(x, y, z).x)";
+  if List.for_all (function K _ -> true | V _ -> false) args then
+    K (Fn.eval f (Array.of_list (List.map (function K k -> k | V _ -> 0.) args)))
+  else begin
+    (* the callee's frame starts after this function's own slots *)
+    st.callee <- max st.callee (Fn.frame f);
+    let slots, codes = operands st args in
+    let o = fresh st and top = st.top and run = Fn.run f and fo = Fn.out f in
+    V
+      {
+        slot = o;
+        code =
+          Some
+            (fun s k ->
+              for i = 0 to Array.length codes - 1 do
+                (Array.unsafe_get codes i) s k
+              done;
+              let cb = k + !top in
+              for i = 0 to Array.length slots - 1 do
+                set s (cb + i) (get s (k + Array.unsafe_get slots i))
+              done;
+              run s cb;
+              set s (k + o) (get s (cb + fo)));
+      }
+  end
+
+(* V(args).member: a vector or pigment function's component *)
+let call_member st loc (f : Fn.t) args mloc m =
+  let n = Fn.arity f in
+  if List.length args <> n then
+    Diag.error loc "this function takes %d argument%s, got %d" n (if n = 1 then "" else "s")
+      (List.length args);
+  let c =
+    match Fn.member m with
+    | Some c -> c
+    | None ->
+        Diag.error mloc
+          "in a function: .%s is not a member; they are x, y, z, t, u, v, red, green, blue, filter, \
+           transmit and gray"
+          m
+  in
+  if not (Fn.is_vector f) then
+    Diag.error mloc "in a function: .%s applies to vector and pigment functions; this one returns a float" m;
+  let slots, codes = operands st args in
+  let o = fresh st in
+  let get_member = Fn.member_code mloc f c ~args:slots ~out:o in
+  V
+    {
+      slot = o;
+      code =
+        Some
+          (fun s k ->
+            for i = 0 to Array.length codes - 1 do
+              (Array.unsafe_get codes i) s k
+            done;
+            get_member s k);
+    }
 
 (* Precedence as in POV-Ray's function parser (fnsyntax.cpp), lowest
    first: |, &, comparisons (one level), + -, * /, unary + -. There is no
@@ -97,7 +240,7 @@ let call_fn st loc (f : Fn.t) args =
 let rec expr st =
   let rec go a =
     match peek st with
-    | Tok Parser.OR -> advance st; go (lift2 (fun x y -> b2f (x <> 0. || y <> 0.)) a (conj st))
+    | Tok Parser.OR -> advance st; go (bin st Or a (conj st))
     | _ -> a
   in
   go (conj st)
@@ -105,21 +248,21 @@ let rec expr st =
 and conj st =
   let rec go a =
     match peek st with
-    | Tok Parser.AND -> advance st; go (lift2 (fun x y -> b2f (x <> 0. && y <> 0.)) a (rel st))
+    | Tok Parser.AND -> advance st; go (bin st And a (rel st))
     | _ -> a
   in
   go (rel st)
 
 and rel st =
   let rec go a =
-    let op g = advance st; go (lift2 (fun x y -> b2f (g x y)) a (add st)) in
+    let op o = advance st; go (bin st o a (add st)) in
     match peek st with
-    | Tok Parser.LT -> op ( < )
-    | Tok Parser.LE -> op ( <= )
-    | Tok Parser.GT -> op ( > )
-    | Tok Parser.GE -> op ( >= )
-    | Tok Parser.EQ -> op (fun x y -> Float.abs (x -. y) <= 1e-10)
-    | Tok Parser.NE -> op (fun x y -> Float.abs (x -. y) > 1e-10)
+    | Tok Parser.LT -> op Lt
+    | Tok Parser.LE -> op Le
+    | Tok Parser.GT -> op Gt
+    | Tok Parser.GE -> op Ge
+    | Tok Parser.EQ -> op Eq
+    | Tok Parser.NE -> op Ne
     | _ -> a
   in
   go (add st)
@@ -127,8 +270,8 @@ and rel st =
 and add st =
   let rec go a =
     match peek st with
-    | Tok Parser.PLUS -> advance st; go (lift2 ( +. ) a (mul st))
-    | Tok Parser.MINUS -> advance st; go (lift2 ( -. ) a (mul st))
+    | Tok Parser.PLUS -> advance st; go (bin st Add a (mul st))
+    | Tok Parser.MINUS -> advance st; go (bin st Sub a (mul st))
     | _ -> a
   in
   go (mul st)
@@ -136,15 +279,15 @@ and add st =
 and mul st =
   let rec go a =
     match peek st with
-    | Tok Parser.STAR -> advance st; go (lift2 ( *. ) a (unary st))
-    | Tok Parser.SLASH -> advance st; go (lift2 ( /. ) a (unary st))
+    | Tok Parser.STAR -> advance st; go (bin st Mul a (unary st))
+    | Tok Parser.SLASH -> advance st; go (bin st Div a (unary st))
     | _ -> a
   in
   go (unary st)
 
 and unary st =
   match peek st with
-  | Tok Parser.MINUS -> advance st; lift1 Float.neg (unary st)
+  | Tok Parser.MINUS -> advance st; un st Neg (unary st)
   | Tok Parser.PLUS -> advance st; unary st
   | _ -> primary st
 
@@ -191,28 +334,37 @@ and primary st =
   | Ident (("sum" | "prod") as kind) ->
       advance st;
       fold st t.loc kind
-  | Ident "pattern" | Tok Parser.PIGMENT ->
-      let kind = match t.raw with Tok Parser.PIGMENT -> "pigment" | _ -> "pattern" in
+  | Tok Parser.PIGMENT ->
+      (* the supplier reads function { pigment { ... } } itself *)
+      err st "in a function: a pigment is a function's whole body: function { pigment { ... } }"
+  | Ident "pattern" ->
       advance st;
       skip_braces st;
-      st.unsupported <- Some (Printf.sprintf "%s functions are not supported by camlray" kind);
+      st.unsupported <- Some "pattern functions are not supported by camlray";
       K 0.
   | Ident name -> (
       advance st;
       match List.assoc_opt name st.slots with
-      | Some i -> C (fun s -> s.(i))
+      | Some i -> V { slot = i; code = None }
       | None -> (
-          match st.resolve name with
+          match st.resolve t.loc name with
           | Const k -> K k
           | Vec _ ->
               Diag.error t.loc "%s is a vector: functions take only floats (POV-Ray's rule)" name
-          | Func f -> call_fn st t.loc f (args st)
+          | Func f -> (
+              let a = args st in
+              match peek st with
+              | Tok (Parser.MEMBER m) ->
+                  let mloc = (tok st).loc in
+                  advance st;
+                  call_member st t.loc f a mloc m
+              | _ -> call_fn st t.loc f a)
           | Unknown -> Diag.error t.loc "undefined identifier %s in a function" name))
   | r -> err st "in a function: unexpected %s" (describe r)
 
 and slot st loc name =
   match List.assoc_opt name st.slots with
-  | Some i -> C (fun s -> s.(i))
+  | Some i -> V { slot = i; code = None }
   | None -> (
       match name with
       | "u" when List.mem_assoc "x" st.slots -> slot st loc "x"
@@ -231,38 +383,76 @@ and skip_braces st =
   go 0
 
 and fold st loc kind =
-  (* sum(i, from, to, expr) / prod(i, from, to, expr) *)
+  (* sum(i, from, to, expr) / prod(i, from, to, expr): the variable runs
+     from [from] by steps of 1 while at most [to] (read once) *)
   expect st Parser.LPAREN "'('";
   let var = match peek st with
     | Ident v -> advance st; v
     | r -> err st "expected the %s variable, found %s" kind (describe r)
   in
   expect st Parser.COMMA "','";
-  let lo = run (expr st) in
+  let ilo, rlo = operand st (expr st) in
   expect st Parser.COMMA "','";
-  let hi = run (expr st) in
+  let ihi, rhi = operand st (expr st) in
   expect st Parser.COMMA "','";
-  let i = st.nslots in
-  st.nslots <- st.nslots + 1;
+  let i = fresh st in
   let saved = st.slots in
   st.slots <- (var, i) :: saved;
-  let body = run (expr st) in
+  let ib, rbody = operand st (expr st) in
   st.slots <- saved;
   expect st Parser.RPAREN "')'";
   ignore loc;
-  let sum = kind = "sum" in
-  C
-    (fun s ->
-      let a = lo s and b = hi s in
-      let acc = ref (if sum then 0. else 1.) in
-      let k = ref a in
-      while !k <= b do
-        s.(i) <- !k;
-        let v = body s in
-        acc := if sum then !acc +. v else !acc *. v;
-        k := !k +. 1.
-      done;
-      !acc)
+  let o = fresh st in
+  let code =
+    if kind = "sum" then fun s k ->
+      rlo s k;
+      rhi s k;
+      set s (k + i) (get s (k + ilo));
+      set s (k + o) 0.;
+      while get s (k + i) <= get s (k + ihi) do
+        rbody s k;
+        set s (k + o) (get s (k + o) +. get s (k + ib));
+        set s (k + i) (get s (k + i) +. 1.)
+      done
+    else fun s k ->
+      rlo s k;
+      rhi s k;
+      set s (k + i) (get s (k + ilo));
+      set s (k + o) 1.;
+      while get s (k + i) <= get s (k + ihi) do
+        rbody s k;
+        set s (k + o) (get s (k + o) *. get s (k + ib));
+        set s (k + i) (get s (k + i) +. 1.)
+      done
+  in
+  V { slot = o; code = Some code }
+
+and select st c x y z =
+  (* select(c, x, y [, z]): x when c < 0; with 3 arguments y otherwise,
+     with 4 y when c = 0 and z when c > 0; only the branch taken runs *)
+  match c with
+  | K v -> if v < 0. then x else (match z with None -> y | Some z -> if v = 0. then y else z)
+  | _ ->
+      let ic, rc = operand st c in
+      let ix, rx = operand st x and iy, ry = operand st y in
+      let o = fresh st in
+      let code =
+        match z with
+        | None ->
+            fun s k ->
+              rc s k;
+              if get s (k + ic) < 0. then (rx s k; set s (k + o) (get s (k + ix)))
+              else (ry s k; set s (k + o) (get s (k + iy)))
+        | Some z ->
+            let iz, rz = operand st z in
+            fun s k ->
+              rc s k;
+              let v = get s (k + ic) in
+              if v < 0. then (rx s k; set s (k + o) (get s (k + ix)))
+              else if v = 0. then (ry s k; set s (k + o) (get s (k + iy)))
+              else (rz s k; set s (k + o) (get s (k + iz)))
+      in
+      V { slot = o; code = Some code }
 
 and builtin st loc name =
   let a = args st in
@@ -271,34 +461,42 @@ and builtin st loc name =
     if n <> k then Diag.error loc "%s expects %d argument%s, got %d" name k (if k = 1 then "" else "s") n
   in
   match List.assoc_opt name unary_builtins with
-  | Some g -> need 1; lift1 g (List.hd a)
+  | Some g -> need 1; un st g (List.hd a)
   | None -> (
       match List.assoc_opt name binary_builtins with
-      | Some g -> need 2; lift2 g (List.nth a 0) (List.nth a 1)
+      | Some g -> need 2; bin st g (List.nth a 0) (List.nth a 1)
       | None -> (
           match (name, a) with
           | ("min" | "max"), x :: rest ->
-              let g = if name = "min" then Float.min else Float.max in
-              List.fold_left (lift2 g) x rest
-          | "select", [ c; x; y ] ->
-              let c = run c and x = run x and y = run y in
-              C (fun s -> if c s < 0. then x s else y s)
-          | "select", [ c; x; y; z ] ->
-              let c = run c and x = run x and y = run y and z = run z in
-              C (fun s -> let v = c s in if v < 0. then x s else if v = 0. then y s else z s)
+              let g = if name = "min" then Min else Max in
+              List.fold_left (bin st g) x rest
+          | "select", [ c; x; y ] -> select st c x y None
+          | "select", [ c; x; y; z ] -> select st c x y (Some z)
           | "select", _ -> Diag.error loc "select expects 3 or 4 arguments, got %d" n
           | ("min" | "max"), [] -> Diag.error loc "%s needs at least one argument" name
           | _ -> Diag.error loc "%s cannot be used in a function" name))
 
 let compile ~resolve ~params toks =
-  let st = { toks; i = 0; slots = List.mapi (fun i p -> (p, i)) params;
-             nslots = List.length params; resolve; unsupported = None } in
+  let st =
+    { toks; i = 0; slots = List.mapi (fun i p -> (p, i)) params; nslots = List.length params; resolve;
+      unsupported = None; consts = []; callee = 0; top = ref 0 }
+  in
   let body = expr st in
   (match peek st with
   | Eof -> ()
   | Tok (Parser.MEMBER m) ->
-      (* a pigment function's colour channel: F(x,y,z).gray *)
-      err st "in a function: .%s of a function's value is not supported by camlray" m
+      err st "in a function: .%s applies only to a call of a vector or pigment function" m
   | r -> err st "in a function: expected an operator or '}', found %s" (describe r));
-  Fn.make ~params:(Array.of_list params) ~nslots:st.nslots ~unsupported:st.unsupported (run body)
-
+  let out, code = operand st body in
+  st.top := st.nslots;
+  let frame = st.nslots + st.callee in
+  let cslots = Array.of_list (List.map fst st.consts) and cvals = Array.of_list (List.map snd st.consts) in
+  let run =
+    if Array.length cslots = 0 then code
+    else fun s k ->
+      for i = 0 to Array.length cslots - 1 do
+        set s (k + Array.unsafe_get cslots i) (Array.unsafe_get cvals i)
+      done;
+      code s k
+  in
+  Fn.make ~params:(Array.of_list params) ~frame ~out ~unsupported:st.unsupported run

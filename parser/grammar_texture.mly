@@ -142,7 +142,6 @@
   | AVERAGE ms = list(pigment_mod) { Texdesc.(pigment (apply ms (average ()))) }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
       { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
-  | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
   | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
@@ -215,6 +214,9 @@
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 then Diag.error (loc $loc(e)) "mandel needs at least 1 iteration";
         Pattern.Mandel (Pattern.mandel n) }
+  (* function { EXPR } (or a declared function called in it): its value
+     at the point, POV-Ray's function pattern *)
+  | f = FUNCTION_LIT { Pattern.Function (Fn.pattern (loc $loc(f)) f) }
 
 %public declare_rhs:
   | m = COLOR_MAP_ID { Decl.Color_map m }
@@ -381,7 +383,6 @@
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         Some (Texdesc.normal (Texdesc.apply ms p)) }
   | ms = list(normal_mod) { ignore ms; None }
-  | FUNCTION_LIT { Diag.error (loc $loc) "function (as a pattern) is not supported by camlray" }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
 
 (* normal { PATTERN [,] BUMP_SIZE ... } *)

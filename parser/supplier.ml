@@ -212,6 +212,13 @@ and function_lit t loc =
       let s = Splread.read t sloc in
       expect_tok t Parser.RBRACE "'}' to close the function";
       Fn.of_spline (Spline.eval s)
+  | Tok Parser.PIGMENT -> (
+      if params <> [ "x"; "y"; "z" ] then fail t loc "a pigment function takes no parameter list";
+      match parse t Parser.Incremental.declare_rhs with
+      | Decl.Pigment p ->
+          expect_tok t Parser.RBRACE "'}' to close the function";
+          Fn.of_pigment p
+      | _ -> fail t loc "expected a pigment { ... } in this function")
   | _ ->
   let rec body depth acc =
     let tok = raw_next t in
@@ -226,7 +233,7 @@ and function_lit t loc =
   in
   let toks = Array.of_list (body 0 []) in
   if Array.length toks = 1 then fail t loc "a function's body cannot be empty";
-  let resolve name =
+  let resolve nloc name =
     match Cursor.builtin t name with
     | Some v -> Fnparse.Const v
     | None -> (
@@ -234,6 +241,7 @@ and function_lit t loc =
         | Some (Env.Decl (Decl.Value (Value.Float f))) -> Fnparse.Const f
         | Some (Env.Decl (Decl.Value (Value.Vector a))) -> Fnparse.Vec a
         | Some (Env.Decl (Decl.Function f)) -> Fnparse.Func f
+        | Some (Env.Unsupported u) -> unsupported_name t name u nloc
         | _ -> Fnparse.Unknown)
   in
   Fnparse.compile ~resolve ~params toks

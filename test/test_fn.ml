@@ -50,7 +50,7 @@ let tests =
           end);
       Alcotest.test_case "Fn.eval3 evaluates from OCaml" `Quick (fun () ->
           let toks = Lexer.tokenize ~file:"<fn>" "x*x + y*y + z*z - 1" in
-          let fn = Fnparse.compile ~resolve:(fun _ -> Fnparse.Unknown) ~params:[ "x"; "y"; "z" ] toks in
+          let fn = Fnparse.compile ~resolve:(fun _ _ -> Fnparse.Unknown) ~params:[ "x"; "y"; "z" ] toks in
           let g = Fn.eval3 fn in
           check "eval3" 2. (g 1. 1. 1.);
           check "eval" (-1.) (Fn.eval fn [| 0.; 0.; 0. |]));
@@ -61,6 +61,41 @@ let tests =
           Scn.check_message "#declare F = function(a) { a } sphere {0, F(1, 2)}" "takes 1 argument";
           Scn.check_message "#declare F = function { }" "cannot be empty";
           Scn.check_message "#declare F = function(a, a) { a }" "listed twice");
+      Alcotest.test_case "pigment functions: channels in scene expressions and functions" `Quick (fun () ->
+          (* POV-Ray 3.7 prints 0.25,0.5,0.75,0,0 for C and 4.7925 for G *)
+          let prelude =
+            "#declare PF = function { pigment { gradient x color_map { [0 rgb <0,0.5,1>] [1 rgb <1,0.5,0>] } } }\n\
+             #declare G = function { PF(x,y,z).x + PF(x,y,z).gray*10 }\n\
+             #declare C = PF(0.25, 0, 0);"
+          in
+          check "C.red" 0.25 (f ~prelude "C.red");
+          check "C.blue" 0.75 (f ~prelude "C.blue");
+          check "C.transmit" 0. (f ~prelude "C.transmit");
+          check "G" 4.7925 (f ~prelude "G(0.25, 0, 0)");
+          let prelude = "#declare PF = function { pigment { rgbft <0.1, 0.2, 0.3, 0.4, 0.5> } }" in
+          check "filter" 0.4 (f ~prelude:(prelude ^ " #declare H = function { PF(x,y,z).filter }") "H(0,0,0)");
+          check "t" 0.4 (f ~prelude:(prelude ^ " #declare H = function { PF(x,y,z).t }") "H(0,0,0)");
+          check "transmit" 0.5 (f ~prelude:(prelude ^ " #declare H = function { PF(x,y,z).transmit }") "H(0,0,0)"));
+      Alcotest.test_case "members of transform and spline functions in functions" `Quick (fun () ->
+          let prelude =
+            "#declare T = function { transform { scale <2, 3, 4> translate x } }\n\
+             #declare S = function { spline { linear_spline 0, <0, 0, 0>, 1, <2, 4, 6> } }\n\
+             #declare F = function { T(x, y, z).y + T(x, y, z).x * 10 + S(x).z * 100 }"
+          in
+          (* T(0.5, 1, 1) = <2, 3, 4>; S(0.5) = <1, 2, 3> *)
+          check "F" 323. (f ~prelude "F(0.5, 1, 1)");
+          check "T(...).y in the scene" 3. (f ~prelude "T(0.5, 1, 1).y"));
+      Alcotest.test_case "errors: members" `Quick (fun () ->
+          let pf = "#declare PF = function { pigment { rgb 1 } }\n" in
+          Scn.check_message (pf ^ "#declare G = function { PF(x, y, z).w }") ".w is not a member";
+          Scn.check_message (pf ^ "#declare G = function { PF(x, y, z) }") "vector function";
+          Scn.check_message (pf ^ "#declare G = function { PF(x, y).red }") "takes 3 arguments";
+          Scn.check_message "#declare F = function { x } #declare G = function { F(x, y, z).x }"
+            "returns a float";
+          Scn.check_message "#declare G = function { (x + y).x }" "applies only to a call";
+          Scn.check_message "#declare T = function { transform { scale 2 } } #declare G = function { T(x, y, z).filter }"
+            "3 components";
+          Scn.check_message "#declare P = function(a) { pigment { rgb 1 } }" "no parameter list");
       Alcotest.test_case "internal functions declare but cannot be called" `Quick (fun () ->
           Scn.check_message "#declare F = function { internal(3) } sphere {0, F(1,2,3)}" "internal function 3");
     ] )

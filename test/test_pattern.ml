@@ -209,6 +209,117 @@ let pattern_errors () =
   Scn.check_message "sphere { 0, 1 pigment { mandel 10 interior 7, 1 } }" "interior types go from 0 to 6";
   Scn.check_message "sphere { 0, 1 pigment { mandel 0 } }" "at least 1 iteration"
 
+(* function { ... } as a pattern, built through the scene language; the
+   expected values are POV-Ray 3.7's function { pattern { function {
+   x*x + y } ... } } at the same points (read with #debug): above 1 the
+   value is taken mod 1 (1 itself stays), below 0 the frequency step
+   takes it mod 1.00001 then adds 1; at frequency 0 it is v - floor v *)
+let fn_pattern src =
+  let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { %s } }" src) in
+  match s.objects.(0).texture with
+  | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
+  | _ -> Alcotest.failf "no pattern pigment in %S" src
+
+let function_values () =
+  let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
+  let cases =
+    [
+      ("", [ 0.35; 0.74; 0.75; 1.; 0.; 0.70002; 0.9; 0. ]);
+      ("frequency 2 phase 0.3", [ 1.; 0.77999001; 0.80000001; 0.29998001; 0.3; 0.70004001; 0.09998001; 0.30001001 ]);
+      ("sine_wave", [ 0.9045085; 0.00098664; 0.; 0.5; 0.5; 0.02445233; 0.20610737; 0.5 ]);
+      ("frequency 0", [ 0.35; 0.74; 0.75; 1.; 0.; 0.7; 0.9; 0. ]);
+    ]
+  in
+  List.iter
+    (fun (mods, expected) ->
+      let p = fn_pattern ("function { x*x + y } " ^ mods) in
+      List.iter2
+        (fun (x, y) e ->
+          Scn.close ~eps:1e-6 (Printf.sprintf "x*x + y %s at (%g, %g)" mods x y) e
+            (Pattern.value p (Vec3.make x y 0.)))
+        pts expected)
+    cases
+
+let function_declared () =
+  let v src x y z =
+    let s =
+      Scn.compile
+        (Printf.sprintf "#declare F = function { x + y*z } #declare G = function (a, b, c) { F(c, b, a) * 2 }
+                         sphere { 0, 1 pigment { %s } }" src)
+    in
+    match s.objects.(0).texture with
+    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> Pattern.value pattern (Vec3.make x y z)
+    | _ -> Alcotest.fail "no pattern"
+  in
+  Scn.close ~eps:1e-12 "F(x, y, z)" 0.5 (v "function { F(x, y, z) }" 0.1 0.2 2.);
+  (* 2 (0.3 + 0.2 * 0.1) = 0.64 *)
+  Scn.close ~eps:1e-12 "G(x, y, z), parameters a, b, c" 0.64 (v "function { G(x, y, z) }" 0.1 0.2 0.3);
+  (* the pigment's transform takes the point into pattern space: x / 2,
+     black to white *)
+  let s = Scn.compile "sphere { 0, 1 pigment { function { x } scale 2 } }" in
+  match s.objects.(0).texture with
+  | { pigment; _ } :: _ -> Scn.close ~eps:1e-12 "scaled" 0.25 (Pigment.eval pigment (Vec3.make 0.5 0. 0.)).c.r
+  | [] -> Alcotest.fail "no texture"
+
+(* a pigment function's channels in a function pattern: gradient x from
+   <0, 0.5, 1> to <1, 0.5, 0> at x = 0.25 is <0.25, 0.5, 0.75>, gray
+   0.297 r + 0.589 g + 0.114 b (POV-Ray gives 4.7925 for .x + 10 .gray
+   there) *)
+let pigment_function () =
+  let pf = "#declare PF = function { pigment { gradient x color_map { [0 rgbft <0, 0.5, 1, 0.2, 0.1>] [1 rgbft <1, 0.5, 0, 0.4, 0.3>] } } }\n" in
+  let v member =
+    let s = Scn.compile (pf ^ Printf.sprintf "sphere { 0, 1 pigment { function { PF(x, y, z).%s } } }" member) in
+    match s.objects.(0).texture with
+    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> Pattern.value pattern (Vec3.make 0.25 0.3 0.7)
+    | _ -> Alcotest.fail "no pattern"
+  in
+  List.iter
+    (fun (m, e) -> Scn.close ~eps:1e-12 ("PF(x, y, z)." ^ m) e (v m))
+    [ ("x", 0.25); ("red", 0.25); ("u", 0.25); ("y", 0.5); ("green", 0.5); ("v", 0.5); ("z", 0.75);
+      ("blue", 0.75); ("t", 0.25); ("filter", 0.25); ("transmit", 0.15);
+      ("gray", (0.297 *. 0.25) +. (0.589 *. 0.5) +. (0.114 *. 0.75)); ("grey", 0.45425) ]
+
+(* evaluating a function pattern, a declared function, builtins, sum and
+   select and a pigment function's channel included, allocates nothing *)
+let function_allocation () =
+  let s =
+    Scn.compile
+      "#declare F = function { x*x + y } \
+       #declare PF = function { pigment { onion color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] } } }\n\
+       sphere { 0, 1 pigment { function { F(x, y, z) + sin(x) * 0.1 + select(y, 0.1, 0.2) + sum(i, 1, 3, i*z) * 0.01 \
+       + max(x, y, 0) + PF(x, z, y).gray } } }"
+  in
+  let pattern =
+    match s.objects.(0).texture with
+    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
+    | _ -> Alcotest.fail "no pattern"
+  in
+  let q = Vec3.m () and w = Pattern.work () in
+  Vec3.set q 0.3 0.2 0.1;
+  Pattern.eval_m pattern q w;
+  let before = Gc.minor_words () in
+  for i = 1 to 1000 do
+    Vec3.set q (0.001 *. float_of_int i) 0.2 (-0.3);
+    Pattern.eval_m pattern q w
+  done;
+  let words = Gc.minor_words () -. before in
+  if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of a function pattern" words
+
+let function_normal () =
+  let s = Scn.compile "sphere { 0, 1 normal { function { abs(x) } 0.7 scale 0.5 } }" in
+  match s.objects.(0).texture with
+  | { normal = Some n; _ } :: _ ->
+      Scn.close "bump size" 0.7 n.amount;
+      Scn.close ~eps:1e-12 "value" 0.6 (Pattern.value n.pattern (Vec3.make (-0.6) 0. 0.))
+  | _ -> Alcotest.fail "no normal"
+
+let function_errors () =
+  Scn.check_message "sphere { 0, 1 pigment { function (a, b) { a + b } } }" "takes 3 parameters";
+  Scn.check_message "#declare T = function { transform { scale 2 } }\nsphere { 0, 1 pigment { function { T(x, y, z) } } }"
+    "take a component";
+  Scn.check_message "#include \"functions.inc\"\nsphere { 0, 1 normal { function { f_noise3d(x, y, z) } } }"
+    "internal function"
+
 let tests =
   ( "pattern",
     [
@@ -223,4 +334,10 @@ let tests =
       Alcotest.test_case "quilted" `Quick quilted;
       Alcotest.test_case "mandel" `Quick mandel;
       Alcotest.test_case "pattern modifier errors" `Quick pattern_errors;
+      Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
+      Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
+      Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
+      Alcotest.test_case "function patterns allocate nothing" `Quick function_allocation;
+      Alcotest.test_case "function normals" `Quick function_normal;
+      Alcotest.test_case "function pattern errors" `Quick function_errors;
     ] )

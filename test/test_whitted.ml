@@ -396,6 +396,24 @@ let caustics () =
   gray ~eps:1e-4 "caustics 1 at 30 degrees: 1 + 0.866^45" (0.1 +. ((1. +. (0.866025 ** 45.)) *. 0.51962))
     (pixel (floor ^ disc "z" 1.))
 
+(* a pigment function called from a pattern inside interpolated maps: the
+   same colour as the pattern written out (the maps' scratch colours are
+   not overwritten by the inner evaluation) *)
+let nested_pigment_function () =
+  let scene inner =
+    "#declare PF = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, 0>] } } }\n\
+     plane { z, 1 pigment { gradient y pigment_map {\n\
+       [0 rgb <0, 1, 0>]\n\
+       [1 gradient z pigment_map {\n\
+          [0 rgb 1]\n\
+          [1 " ^ inner ^ " color_map { [0 rgb <1, 0, 0>] [1 rgb <0, 0, 1>] }] }] }\n\
+       translate <0.3, 0.4, 0.45> }\n\
+       finish { ambient 1 diffuse 0 } }\n"
+  in
+  let a = pixel (scene "function { PF(x, y, z).red }") and b = pixel (scene "gradient x") in
+  color "as written out" (b.r, b.g, b.b) a;
+  if b.r = b.g && b.g = b.b then Alcotest.fail "the maps were not all interpolated"
+
 (* POV-Ray's object flags: no_image hides from camera rays but keeps the
    shadow, no_reflection hides from mirrors, double_illuminate lights the
    back by |cos| *)
@@ -431,6 +449,7 @@ let tests =
       Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
       Alcotest.test_case "average pigment_map" `Quick average;
       Alcotest.test_case "faked caustics" `Quick caustics;
+      Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
