@@ -29,3 +29,11 @@ let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =
       match (m { (Texdesc.of_pattern Pattern.Bozo) with pattern = Some t.pattern }).pattern with
       | Some pattern -> { l with tmap = Some { t with pattern } }
       | None -> l)
+
+(* a declared or current normal with more modifiers *)
+let moved ms (n : Normal.t option) =
+  Option.map
+    (fun (n : Normal.t) ->
+      Texdesc.normal
+        (Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern; xform = n.xform; amount = n.amount }))
+    n

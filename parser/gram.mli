@@ -24,3 +24,6 @@ val old_entry :
 val tmap_pattern : Texdesc.modifier -> Camlray.Texture.layer -> Camlray.Texture.layer
 (** Apply a pattern modifier (turbulence, frequency, ...) to a patterned
     texture layer. *)
+
+val moved : Texdesc.modifier list -> Camlray.Normal.t option -> Camlray.Normal.t option
+(** A normal with more modifiers (transformations, pattern modifiers). *)

@@ -136,10 +136,10 @@ items_rev:
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
           | Some layers -> t @ layers | None -> t) } }
-  | PIGMENT LBRACE p = pigment_body RBRACE
-      { with_texture (fun l -> { l with Texture.pigment = p }) }
-  | FINISH LBRACE f = finish_body RBRACE
-      { with_texture (fun l -> { l with Texture.finish = f }) }
+  | PIGMENT LBRACE p = pigment_edit RBRACE
+      { with_texture (fun l -> { l with Texture.pigment = p l.pigment }) }
+  | FINISH LBRACE f = finish_edit RBRACE
+      { with_texture (fun l -> { l with Texture.finish = f l.finish }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }
   | NO_SHADOW { fun (o : Sdl.obj) -> { o with no_shadow = true } }
   | k = object_flag %prec below_shift { fun (o : Sdl.obj) -> { o with flags = o.flags lor k } }

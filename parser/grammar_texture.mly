@@ -102,13 +102,13 @@
   | LBRACKET v = param COMMA? t = texture_body RBRACKET { (fl $loc(v) v, t) }
 
 %public texture_mod:
-  | PIGMENT LBRACE p = pigment_body RBRACE { top_layer (fun l -> { l with pigment = p }) }
-  | NORMAL LBRACE n = normal_body RBRACE { top_layer (fun l -> { l with normal = n }) }
-  | FINISH LBRACE f = finish_body RBRACE { top_layer (fun l -> { l with finish = f }) }
+  | PIGMENT LBRACE p = pigment_edit RBRACE { top_layer (fun l -> { l with pigment = p l.pigment }) }
+  | NORMAL LBRACE n = normal_edit RBRACE { top_layer (fun l -> { l with normal = n l.normal }) }
+  | FINISH LBRACE f = finish_edit RBRACE { top_layer (fun l -> { l with finish = f l.finish }) }
   | t = transformation { Texture.transform t }
 
 %public object_mod:
-  | NORMAL LBRACE n = normal_body RBRACE { with_texture (fun l -> { l with Texture.normal = n }) }
+  | NORMAL LBRACE n = normal_edit RBRACE { with_texture (fun l -> { l with Texture.normal = n l.normal }) }
 
 %public item:
   | SKY_SPHERE LBRACE k = sky_body RBRACE { Sdl.Sky_sphere k }
@@ -133,20 +133,29 @@
   | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { Sky.pigments = p :: k.pigments } }
   | t = transformation { Sky.transform t }
 
-%public pigment_body:
-  | p = PIGMENT_ID ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment p))) }
+(* pigment { ... } as it changes the pigment it is written over: POV-Ray
+   edits in place, so modifiers alone move or turn the pigment already
+   there (texture { T_Stone1 pigment { rotate 90*z } }); a pattern, a
+   colour or an identifier replaces it. [pigment_body] is the one written
+   over the default pigment. *)
+%public pigment_edit:
+  | p = PIGMENT_ID ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (of_pigment p))) in fun _ -> p }
   | c = color_value ms = list(pigment_mod)
-      { Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) }
-  | k = pattern_kind ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pattern k))) }
+      { let p = Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) in
+        fun _ -> p }
+  | k = pattern_kind ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (of_pattern k))) in fun _ -> p }
   (* the weighted mean of its pigment_map's entries (weights 1 when left out) *)
-  | AVERAGE ms = list(pigment_mod) { Texdesc.(pigment (apply ms (average ()))) }
+  | AVERAGE ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (average ()))) in fun _ -> p }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
-      { Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) }
+      { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
   | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
-        Texdesc.(pigment (apply ms (of_pigment p))) }
-  | ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment (Defaults.texture ()).pigment))) }
+        let p = Texdesc.(pigment (apply ms (of_pigment p))) in
+        fun _ -> p }
+  | ms = list(pigment_mod) { fun base -> Texdesc.(pigment (apply ms (of_pigment base))) }
+
+%public pigment_body: e = pigment_edit { e (Defaults.texture ()).pigment }
 
 %public block_cells:
   | { [] }
@@ -359,7 +368,10 @@
           | Pattern.Mandel f -> Pattern.Mandel { f with exterior = t; efactor = x }
           | _ -> Diag.error (loc $loc) "exterior can only be used with mandel") }
 
-%public normal_body:
+(* normal { ... } changes the normal it is written over: modifiers alone
+   move the perturbation already there; a pattern or an identifier
+   replaces it. [normal_body] is the one written over none. *)
+%public normal_edit:
   | AVERAGE { Diag.error (loc $loc) "average (of normals) is not supported by camlray" }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
       { if k = Pattern.Checker then
@@ -367,12 +379,9 @@
           Diag.error (loc $loc(k)) "checker as a normal pattern is not supported by camlray";
         let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
-        Some (Texdesc.normal (Texdesc.apply ms p)) }
-  | n = NORMAL_ID ms = list(normal_mod)
-      { Option.map (fun (n : Normal.t) ->
-          let p = Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern;
-                                     xform = n.xform; amount = n.amount } in
-          Texdesc.normal p) n }
+        let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
+        fun _ -> n }
+  | n = NORMAL_ID ms = list(normal_mod) { let n = moved ms n in fun _ -> n }
   | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
       { (match k with
          | Pattern.Quilted _ ->
@@ -381,9 +390,12 @@
          | _ -> ());
         let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
-        Some (Texdesc.normal (Texdesc.apply ms p)) }
-  | ms = list(normal_mod) { ignore ms; None }
+        let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
+        fun _ -> n }
+  | ms = list(normal_mod) { fun base -> moved ms base }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
+
+%public normal_body: e = normal_edit { e None }
 
 (* normal { PATTERN [,] BUMP_SIZE ... } *)
 bump_size: COMMA? a = param { a }
@@ -392,10 +404,16 @@ bump_size: COMMA? a = param { a }
   | t = transformation { Texdesc.transform t }
   | m = pattern_mod { m }
 
-%public finish_body:
+(* finish { ... } changes the finish it is written over (POV-Ray edits in
+   place: texture { T finish { reflection 0.1 } } keeps T's highlights);
+   an identifier replaces it *)
+%public finish_edit:
   | f = ioption(FINISH_ID) ms = list(finish_item)
-      { let base = match f with Some f -> f | None -> (Defaults.texture ()).finish in
-        List.fold_left (fun f m -> m f) base ms }
+      { fun base ->
+          let base = match f with Some f -> f | None -> base in
+          List.fold_left (fun f m -> m f) base ms }
+
+%public finish_body: e = finish_edit { e (Defaults.texture ()).finish }
 
 %public finish_item:
   | AMBIENT c = color_value { let c = Value.to_rgb (loc $loc(c)) c in fun (f : Finish.t) -> { f with ambient = c } }

@@ -414,6 +414,20 @@ let nested_pigment_function () =
   color "as written out" (b.r, b.g, b.b) a;
   if b.r = b.g && b.g = b.b then Alcotest.fail "the maps were not all interpolated"
 
+(* pigment { } and finish { } change what they are written over, as POV-Ray
+   edits in place *)
+let edits () =
+  let tex = "#declare T = texture { pigment { gradient x color_map { [0 rgb 0] [1 rgb 1] } }\n\
+             finish { ambient 0.5 diffuse 0 } }\n" in
+  gray "a declared texture" 0.25 (pixel (tex ^ "plane { z, 1 texture { T pigment { translate 0.5*x } } }\n"));
+  (* gradient x at x = 0 moved by 0.25: value 0.75, ambient 0.5 *)
+  gray "its pigment moved, its finish kept" 0.375 (pixel (tex ^ "plane { z, 1 texture { T pigment { translate 0.25*x } } }\n"));
+  gray "its finish changed, its pigment kept" (0.5 *. 0.75 +. 0.75 *. 0.1)
+    (pixel (tex ^ "plane { z, 1 texture { T pigment { translate 0.25*x } finish { emission 0.1 } } }\n"));
+  gray "an object's pigment { } changes its texture's" 0.375
+    (pixel (tex ^ "plane { z, 1 texture { T } pigment { translate 0.25*x } }\n"));
+  gray "a pigment written anew replaces it" 0.5 (pixel (tex ^ "plane { z, 1 texture { T pigment { rgb 1 } } }\n"))
+
 (* POV-Ray's object flags: no_image hides from camera rays but keeps the
    shadow, no_reflection hides from mirrors, double_illuminate lights the
    back by |cos| *)
@@ -449,6 +463,7 @@ let tests =
       Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
       Alcotest.test_case "average pigment_map" `Quick average;
       Alcotest.test_case "faked caustics" `Quick caustics;
+      Alcotest.test_case "pigment and finish edit what they are written over" `Quick edits;
       Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
