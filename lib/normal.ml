@@ -25,10 +25,28 @@ type work = { q : Vec3.m; s : Vec3.m; pw : Pattern.work }
 
 let work_key = Scratch.key (fun () -> { q = Vec3.m (); s = Vec3.m (); pw = Pattern.work () })
 
+(* POV-Ray's quilted normal: in pattern space, the offset from the
+   cell's centre scaled by quilted's cubic of its length, times the
+   amount, added to the unit normal *)
+let quilted_m nm c0 c1 (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
+  let vx = q.mx -. Float.floor q.mx -. 0.5 and vy = q.my -. Float.floor q.my -. 0.5
+  and vz = q.mz -. Float.floor q.mz -. 0.5 in
+  let k = nm.amount *. Pattern.quilt_cubic (Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))) c0 c1 in
+  Vec3.set out n.mx n.my n.mz;
+  Transform.normal_inverse_m nm.xform out;
+  Vec3.normalize_m out;
+  Vec3.set out (out.mx +. (k *. vx)) (out.my +. (k *. vy)) (out.mz +. (k *. vz));
+  Transform.normal_m nm.xform out;
+  if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
+  else Vec3.normalize_m out
+
 let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let w = Scratch.get work_key in
   let q = w.q in
   Transform.inv_point_m nm.xform point q;
+  match nm.pattern.kind with
+  | Pattern.Quilted { c0; c1 } -> quilted_m nm c0 c1 q n out
+  | _ ->
   (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order *)
   let gx = ref 0. and gy = ref 0. and gz = ref 0. in
   for i = 0 to Array.length tetra - 1 do

@@ -168,11 +168,14 @@ let[@inline] spiral3 arms turb x y z =
 (* quilted: the offset from the cell's centre, scaled by a cubic Bezier
    of its length (ends 0 and 1, inner controls c0 and c1, times
    1/sqrt(3/4)), its mean absolute coordinate *)
+let[@inline] quilt_cubic t c0 c1 =
+  let it = 1. -. t in
+  ((t *. (t *. t)) +. (3. *. t *. (it *. it) *. c0) +. (3. *. (t *. t) *. it *. c1)) *. 1.154700538
+
 let[@inline] quilted3 c0 c1 x y z =
   let vx = x -. Float.floor x -. 0.5 and vy = y -. Float.floor y -. 0.5 and vz = z -. Float.floor z -. 0.5 in
   let t = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-  let it = 1. -. t in
-  let k = ((t *. (t *. t)) +. (3. *. t *. (it *. it) *. c0) +. (3. *. (t *. t) *. it *. c1)) *. 1.154700538 in
+  let k = quilt_cubic t c0 c1 in
   (Float.abs (vx *. k) +. Float.abs (vy *. k) +. Float.abs (vz *. k)) /. 3.
 
 (* the shade of a point of the fractal: escaped after [n] iterations at

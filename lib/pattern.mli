@@ -79,6 +79,10 @@ type t = {
   wave : wave option;  (** [None]: the pattern's default wave *)
 }
 
+val quilt_cubic : float -> float -> float -> float
+(** [quilt_cubic t c0 c1]: quilted's scale of an offset of length [t] from
+    its cell's centre (a cubic Bezier with inner controls [c0], [c1]). *)
+
 val make : kind -> t
 (** No turbulence, frequency 1 (quilted: 0), phase 0, default wave. *)
 

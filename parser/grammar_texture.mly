@@ -383,12 +383,7 @@
         fun _ -> n }
   | n = NORMAL_ID ms = list(normal_mod) { let n = moved ms n in fun _ -> n }
   | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
-      { (match k with
-         | Pattern.Quilted _ ->
-             (* povray 3.7 perturbs normals by quilted with a formula of its own *)
-             Diag.error (loc $loc(k)) "quilted as a normal pattern is not supported by camlray"
-         | _ -> ());
-        let p = Texdesc.of_pattern k in
+      { let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }

@@ -203,7 +203,6 @@ let mandel () =
   Scn.color "exterior 0 0.2" (0.2, 0.2, 0.2) (pig ("mandel 10 interior 0, 0.5 exterior 0 0.2 translate -x*3 " ^ grey))
 
 let pattern_errors () =
-  Scn.check_message "sphere { 0, 1 normal { quilted 0.5 } }" "quilted as a normal pattern is not supported";
   Scn.check_message "sphere { 0, 1 pigment { bozo control0 0.5 } }" "control0 can only be used with quilted";
   Scn.check_message "sphere { 0, 1 pigment { spiral1 2 exponent 3 } }" "exponent";
   Scn.check_message "sphere { 0, 1 pigment { mandel 10 interior 7, 1 } }" "interior types go from 0 to 6";
