@@ -340,7 +340,7 @@ and primary st =
   | Ident "pattern" ->
       advance st;
       skip_braces st;
-      st.unsupported <- Some "pattern functions are not supported by camlray";
+      st.unsupported <- Some "pattern (in a function) is not supported by camlray";
       K 0.
   | Ident name -> (
       advance st;

@@ -68,6 +68,10 @@
   | AREA_ILLUMINATION b = param
       { let on = Value.to_bool (loc $loc) b in area_field (fun a -> { a with area_illumination = on }) }
   | LOOKS_LIKE LBRACE o = object_ RBRACE { light_field (fun l -> { l with looks_like = Some o }) }
+  (* looks_like { Name [modifiers] }: a declared object without object { } *)
+  | LOOKS_LIKE LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
+      { let o = List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc(o) } ms in
+        light_field (fun l -> { l with looks_like = Some o }) }
 
 %public color_value_noprefix: k = RGB e = unary { Value.to_rgb (loc $loc) (Value.rgb_kind (loc $loc) k e) }
 

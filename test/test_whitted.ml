@@ -38,6 +38,11 @@ let lights () =
   gray "spot at 35" 0.79033 (spot_at 35.);
   gray "spot at 40" 0.31061 (spot_at 40.);
   gray "spot at 46" 0. (spot_at 46.);
+  (* looks_like { Name }: the declared object drawn at the light (here in
+     front of the camera: its emission seen), casting no shadow *)
+  gray "looks_like a declared object" 0.7
+    (pixel "#declare Sun = sphere { 0, 0.1 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 0.7 } }\n\
+            light_source { <0, 0, 0.5>, rgb 1 looks_like { Sun } }\n");
   gray "spot tight" 0.85805
     (pixel
        (Printf.sprintf
