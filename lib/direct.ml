@@ -5,6 +5,21 @@ let light_min_cos = 1e-10
 
 type opacity = { mutable alpha : float }
 
+(* POV-Ray's iridescence of channel [c] (0 red, 1 green, 2 blue): a thin
+   film of the finish's thickness (varied by camlray's noise with
+   [irid_turb]) seen at the cosines [cl] to the light and of the ray [d]
+   to the normal [n] shifts the channel by its wavelength *)
+let irid_k (s : Scene.t) (f : Finish.t) (p : Vec3.m) cl (d : Vec3.m) (n : Vec3.m) c =
+  let t =
+    if f.irid_turb = 0. then f.irid_thickness
+    else f.irid_thickness *. (1. +. (((Noise.fractal3 5 p.mx p.my p.mz) -. 1.) *. f.irid_turb))
+  in
+  let ce = Float.abs ((n.mx *. d.mx) +. (n.my *. d.my) +. (n.mz *. d.mz)) in
+  let phase = 2. *. Float.pi *. t *. (Float.abs cl +. ce) in
+  let wl = s.settings.irid_wavelength in
+  let w = if c = 0 then wl.r else if c = 1 then wl.g else wl.b in
+  1. +. (f.irid *. Float.cos (phase /. w))
+
 (* Diffuse and highlights of one light seen from [p], added into [out];
    the shadow is {!Shadow.light} (an area light's samples come here as
    point lights). Scalars throughout: nothing is allocated unless the
@@ -37,9 +52,11 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
     if not (lr = 0. && lg = 0. && lb = 0.) then
       if back then begin
         let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
-        out.ar <- out.ar +. (k *. (pc.r *. lr));
-        out.ag <- out.ag +. (k *. (pc.g *. lg));
-        out.ab <- out.ab +. (k *. (pc.b *. lb))
+        let ir = if f.irid > 0. then irid_k s f p nl d n 0 else 1. and ig = if f.irid > 0. then irid_k s f p nl d n 1 else 1.
+        and ib = if f.irid > 0. then irid_k s f p nl d n 2 else 1. in
+        out.ar <- out.ar +. (ir *. k *. (pc.r *. lr));
+        out.ag <- out.ag +. (ig *. k *. (pc.g *. lg));
+        out.ab <- out.ab +. (ib *. k *. (pc.b *. lb))
       end
       else begin
         let cr = ref 0. and cg = ref 0. and cb = ref 0. in
@@ -78,6 +95,12 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
               cb := !cb +. (k *. mb)
             end
           end
+        end;
+        if f.irid > 0. then begin
+          (* POV-Ray's iridescence scales this light's diffuse and highlights *)
+          cr := !cr *. irid_k s f p nl d n 0;
+          cg := !cg *. irid_k s f p nl d n 1;
+          cb := !cb *. irid_k s f p nl d n 2
         end;
         out.ar <- out.ar +. !cr;
         out.ag <- out.ag +. !cg;

@@ -21,6 +21,9 @@ type t = {
   reflection : reflection;
   conserve_energy : bool;
   double_illuminate : bool;
+  irid : float;
+  irid_thickness : float;
+  irid_turb : float;
 }
 
 let no_reflection =
@@ -48,6 +51,9 @@ let default =
     reflection = no_reflection;
     conserve_energy = false;
     double_illuminate = false;
+    irid = 0.;
+    irid_thickness = 0.;
+    irid_turb = 0.;
   }
 
 let has_reflection f =

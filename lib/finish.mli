@@ -24,6 +24,12 @@ type t = {
   reflection : reflection;
   conserve_energy : bool;
   double_illuminate : bool;
+  irid : float;
+      (** POV-Ray's [irid { amount thickness t turbulence u }]: the
+          reflected light scaled per channel by 1 + amount cos(2 pi t
+          (|cos r| + |cos i|) / wavelength) (0: none) *)
+  irid_thickness : float;
+  irid_turb : float;
       (** set from the object's [double_illuminate]: lights behind the
           surface light it as from the front (POV-Ray's |cos|) *)
 }

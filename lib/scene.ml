@@ -4,6 +4,7 @@ type settings = {
   ambient_light : Color.t;
   encoding : Image.encoding;
   legacy_alpha : bool;
+  irid_wavelength : Color.t;
 }
 
 (* [finite] is stored in BVH leaf order. [spheres] holds, per finite
@@ -40,6 +41,7 @@ let default_settings =
     ambient_light = Color.white;
     encoding = Image.Srgb;
     legacy_alpha = false;
+    irid_wavelength = Color.make 0.25 0.18 0.14;
   }
 
 (* What testing an object costs, in tests of a sphere held in the flat

@@ -8,6 +8,7 @@ type settings = {
   encoding : Image.encoding;  (** output transfer curve (POV-Ray's gamma rules) *)
   legacy_alpha : bool;
       (** pre-3.7 transparency rule: alpha = 1 - (f max(rgb) + t) *)
+  irid_wavelength : Color.t;  (** [irid_wavelength], POV-Ray's <0.25, 0.18, 0.14> by default *)
 }
 
 type accel

@@ -111,6 +111,22 @@ let[@inline] fogged_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) med
         Fog.apply fogs o d t out
       end
 
+(* POV-Ray's iridescence, on the reflected light [rc]: a thin film of the
+   finish's thickness (varied by camlray's noise with [irid_turb]) seen at
+   cosines [ci] in and [cr] out shifts each channel's phase by its
+   wavelength *)
+let irid (s : Scene.t) (f : Finish.t) (p : Vec3.m) ci cr (rc : Color.acc) =
+  let t =
+    if f.irid_turb = 0. then f.irid_thickness
+    else f.irid_thickness *. (1. +. (((Noise.fractal3 5 p.mx p.my p.mz) -. 1.) *. f.irid_turb))
+  in
+  let phase = 2. *. Float.pi *. t *. (Float.abs ci +. cr) in
+  let wl = s.settings.irid_wavelength and a = f.irid in
+  Color.acc_set rc
+    (rc.ar *. (1. +. (a *. Float.cos (phase /. wl.r))))
+    (rc.ag *. (1. +. (a *. Float.cos (phase /. wl.g))))
+    (rc.ab *. (1. +. (a *. Float.cos (phase /. wl.b))))
+
 (* The ray from [o] along [d], hits beyond [tmin], its radiance into
    [out]; its ADC weight is [from.child]; [media]: the interiors the ray
    is inside, innermost first. [o] and [d] belong to the caller and are
@@ -324,6 +340,7 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
       fr.k.child <- fr.k.refl *. w;
       (* no_reflection objects are left out from here on *)
       trace_ray (Scene.reflected s) Ray.epsilon fr.p rd (level + 1) fr.k media rc;
+      if f.irid > 0. then irid s f fr.p cos_i (Float.abs (dot rd n)) rc;
       if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
       else
         let e = 1. /. rf.exponent in

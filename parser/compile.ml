@@ -361,6 +361,7 @@ and scene_ (s : Sdl.scene) =
                     settings := { !settings with max_trace_level = max 1 (min 256 n) }
                 | Sdl.Adc_bailout a -> settings := { !settings with adc_bailout = a }
                 | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c }
+                | Sdl.Irid_wavelength c -> settings := { !settings with irid_wavelength = c }
                 | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;

@@ -3,7 +3,7 @@
 
 %token CAMERA PERSPECTIVE ORTHOGRAPHIC FISHEYE OMNIMAX ULTRA_WIDE_ANGLE PANORAMIC LOCATION LOOK_AT ANGLE RIGHT UP DIRECTION SKY
 %token APERTURE FOCAL_POINT BLUR_SAMPLES
-%token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT
+%token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT IRID_WAVELENGTH
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
 
 %start <Sdl.item list> scene
@@ -74,3 +74,4 @@ fog_item:
   | MAX_TRACE_LEVEL e = param { Sdl.Max_trace_level (Value.to_int (loc $loc(e)) e) }
   | ADC_BAILOUT e = param { Sdl.Adc_bailout (fl $loc(e) e) }
   | AMBIENT_LIGHT c = color_value { Sdl.Ambient_light (Value.to_rgb (loc $loc(c)) c) }
+  | IRID_WAVELENGTH c = color_value { Sdl.Irid_wavelength (Value.to_rgb (loc $loc(c)) c) }

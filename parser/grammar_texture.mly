@@ -5,7 +5,7 @@
 %token FADE_DISTANCE FADE_POWER FADE_COLOR SHADOWLESS CAUSTICS
 %token TEXTURE PIGMENT FINISH INTERIOR
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
-%token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR
+%token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
@@ -445,6 +445,10 @@ bump_size: COMMA? a = param { a }
           { f with reflection = r } }
   | REFLECTION_EXPONENT e = param
       { let x = fl $loc(e) e in fun (f : Finish.t) -> { f with reflection = { f.reflection with exponent = x } } }
+  (* irid { amount [thickness t] [turbulence u] } *)
+  | IRID LBRACE a = param ms = list(irid_item) RBRACE
+      { let a = fl $loc(a) a in
+        fun (f : Finish.t) -> List.fold_left (fun f m -> m f) { f with irid = a } ms }
   | CONSERVE_ENERGY b = ioption(param)
       { let on = match b with None -> true | Some v -> Value.to_bool (loc $loc) v in
         fun (f : Finish.t) -> { f with conserve_energy = on } }
@@ -488,3 +492,9 @@ texture_decl_id:
   | m = COLOR_MAP_ID { Decl.Color_map m }
   | n = NORMAL_ID { Decl.Normal n }
   | m = MATERIAL_ID { Decl.Material m }
+
+irid_item:
+  | THICKNESS e = param { let x = fl $loc(e) e in fun (f : Finish.t) -> { f with irid_thickness = x } }
+  | TURBULENCE e = param
+      { let x = match e with Value.Vector v when Array.length v > 0 -> v.(0) | e -> fl $loc(e) e in
+        fun (f : Finish.t) -> { f with irid_turb = x } }

@@ -33,7 +33,8 @@ let scene_keywords =
     ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
     ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
     ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
-    ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT); ("fog", FOG); ("fog_type", FOG_TYPE);
+    ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
+    ("irid_wavelength", IRID_WAVELENGTH); ("fog", FOG); ("fog_type", FOG_TYPE);
     ("fog_offset", FOG_OFFSET); ("fog_alt", FOG_ALT); ("turb_depth", TURB_DEPTH); ("distance", DISTANCE);
   ]
 
@@ -68,6 +69,7 @@ let texture_keywords =
     ("specular", SPECULAR); ("roughness", ROUGHNESS); ("metallic", METALLIC);
     ("reflection", REFLECTION); ("fresnel", FRESNEL); ("exponent", EXPONENT);
     ("reflection_exponent", REFLECTION_EXPONENT); ("conserve_energy", CONSERVE_ENERGY);
+    ("irid", IRID); ("thickness", THICKNESS);
     ("ior", IOR); ("area_light", AREA_LIGHT); ("adaptive", ADAPTIVE); ("jitter", JITTER);
     ("circular", CIRCULAR); ("orient", ORIENT); ("area_illumination", AREA_ILLUMINATION);
     ("looks_like", LOOKS_LIKE); ("sky_sphere", SKY_SPHERE); ("normal", NORMAL);

@@ -32,11 +32,15 @@ let finish (f : Finish.t) =
   Printf.sprintf
     "finish { ambient %s emission %s diffuse %s, %s brilliance %s phong %s phong_size %s specular %s \
      roughness %s metallic %s reflection { %s, %s fresnel %s falloff %s exponent %s metallic %s } \
-     conserve_energy %s }"
+     conserve_energy %s%s }"
     (rgb f.ambient) (rgb f.emission) (float f.diffuse) (float f.diffuse_back) (float f.brilliance)
     (float f.phong) (float f.phong_size) (float f.specular) (float f.roughness) (float f.metallic)
     (rgb r.rmin) (rgb r.rmax) (if r.fresnel then "on" else "off") (float r.falloff) (float r.exponent)
     (float r.rmetallic) (if f.conserve_energy then "on" else "off")
+    (if f.irid = 0. then ""
+     else
+       Printf.sprintf " irid { %s thickness %s turbulence %s }" (float f.irid) (float f.irid_thickness)
+         (float f.irid_turb))
 
 let layer (l : Texture.layer) = Printf.sprintf "texture { %s %s }" (pigment l.pigment) (finish l.finish)
 
@@ -204,6 +208,7 @@ let camera_item = function
 let global = function
   | Sdl.Assumed_gamma g -> "assumed_gamma " ^ float g
   | Sdl.Max_trace_level n -> Printf.sprintf "max_trace_level %d" n
+  | Sdl.Irid_wavelength c -> "irid_wavelength " ^ rgb c
   | Sdl.Adc_bailout a -> "adc_bailout " ^ float a
   | Sdl.Ambient_light c -> "ambient_light " ^ rgb c
   | Sdl.Noise_generator n -> Printf.sprintf "noise_generator %d" n

@@ -117,6 +117,7 @@ type camera_item =
 type global =
   | Assumed_gamma of float
   | Max_trace_level of int
+  | Irid_wavelength of Color.t
   | Adc_bailout of float
   | Ambient_light of Color.t
   | Noise_generator of int  (** parsed; camlray has one noise *)

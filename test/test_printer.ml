@@ -28,7 +28,8 @@ let gen_finish =
         { Finish.ambient = amb; emission = em; diffuse = d; diffuse_back = db; brilliance = br;
           phong = ph; phong_size = ps; specular = sp; roughness = ro; metallic = me;
           reflection = { rmin; rmax; falloff = fo; fresnel = fr; exponent = ex; rmetallic = me };
-          conserve_energy = ce; double_illuminate = false })
+          conserve_energy = ce; double_illuminate = false;
+          irid = 0.; irid_thickness = 0.; irid_turb = 0. })
       (quad (quad gen_col gen_col gen_pos gen_pos) (quad gen_pos gen_pos gen_pos gen_pos)
          (quad gen_pos gen_pos gen_col gen_col) (quad gen_bool gen_pos gen_pos gen_bool)))
 

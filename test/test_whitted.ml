@@ -433,6 +433,19 @@ let edits () =
     (pixel (tex ^ "plane { z, 1 texture { T } pigment { translate 0.25*x } }\n"));
   gray "a pigment written anew replaces it" 0.5 (pixel (tex ^ "plane { z, 1 texture { T pigment { rgb 1 } } }\n"))
 
+(* POV-Ray's iridescence: a light's diffuse and highlights scaled per
+   channel by 1 + a cos(2 pi t (|cos l| + |cos e|) / wavelength) *)
+let irid () =
+  let lit = "light_source { <0, 0, -10>, rgb 1 }\n" in
+  let film a t = Printf.sprintf "plane { z, 1 pigment { rgb 1 } finish { irid { %g thickness %g } } }\n" a t in
+  let k a t wl = 1. +. (a *. cos (2. *. Float.pi *. t *. 2. /. wl)) in
+  (* head-on: both cosines 1; ambient 0.1 is not scaled, diffuse 0.6 is *)
+  color "wavelengths 0.25, 0.18, 0.14" (0.1 +. (0.6 *. k 0.5 0.25 0.25), 0.1 +. (0.6 *. k 0.5 0.25 0.18),
+                                        0.1 +. (0.6 *. k 0.5 0.25 0.14))
+    (pixel (lit ^ film 0.5 0.25));
+  color "irid_wavelength" (0.1 +. (0.6 *. k 0.3 0.4 0.5), 0.1 +. (0.6 *. k 0.3 0.4 0.2), 0.1 +. (0.6 *. k 0.3 0.4 0.1))
+    (pixel ("global_settings { irid_wavelength rgb <0.5, 0.2, 0.1> }\n" ^ lit ^ film 0.3 0.4))
+
 (* POV-Ray's object flags: no_image hides from camera rays but keeps the
    shadow, no_reflection hides from mirrors, double_illuminate lights the
    back by |cos| *)
@@ -468,6 +481,7 @@ let tests =
       Alcotest.test_case "no_image, no_reflection, double_illuminate" `Quick object_flags;
       Alcotest.test_case "average pigment_map" `Quick average;
       Alcotest.test_case "faked caustics" `Quick caustics;
+      Alcotest.test_case "iridescence" `Quick irid;
       Alcotest.test_case "pigment and finish edit what they are written over" `Quick edits;
       Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
       Alcotest.test_case "focal blur" `Quick focal_blur;
