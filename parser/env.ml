@@ -84,6 +84,13 @@ let restore t m =
   t.scopes <- m;
   moved t
 
+let local_at t (m : mark) name b = match m with s :: _ -> set t s name b | [] -> set t t.globals name b
+
+let declare_at t (m : mark) name b =
+  match List.find_opt (fun s -> H.mem s name) m with
+  | Some s -> set t s name b
+  | None -> set t t.globals name b
+
 let names t =
   let acc = ref [] in
   H.iter (fun k _ -> acc := k :: !acc) t.globals;

@@ -66,5 +66,12 @@ val mark : t -> mark
 (** The current scope stack, to return to after an aborted sub-parse. *)
 
 val restore : t -> mark -> unit
+
+val local_at : t -> mark -> string -> binding -> unit
+val declare_at : t -> mark -> string -> binding -> unit
+(** {!local} and {!declare} as seen from the scopes of a {!mark}: a
+    directive binds in the scope where it was written, even when the
+    value it reads ends inside a macro's body (a macro that returns
+    [Q;]). *)
 val names : t -> string list
 (** Every visible name (for "did you mean" suggestions). *)
