@@ -319,6 +319,13 @@ and leaf ctx o tex inter =
   let interior = Option.value ~default:Interior.default inter in
   Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow (shape o)
 
+(* An object compiled on its own while the scene is still being read
+   (POV-Ray's trace(), inside(), min_extent() and max_extent() ask
+   declared objects): its lights are dropped. *)
+let standalone (o : Sdl.obj) =
+  let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; flags = 0; lights = ref [] } in
+  Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts) (fun () -> obj ctx o)
+
 (* Top-level unions (not clipped, not inverted) are flattened into the
    scene's BVH: same surfaces, same textures. *)
 let rec top ctx (o : Sdl.obj) acc =

@@ -11,3 +11,8 @@ val camera : Sdl.camera_item list -> Camlray.Camera.t
 val scene : ?par:(int -> (int -> unit) -> unit) -> Sdl.scene -> (Camlray.Scene.t, Diag.t) result
 (** [par]: build the BVHs of large meshes and of the scene in parallel
     ({!Camlray.Render.parallel}); the trees are the same as without. *)
+
+val standalone : Sdl.obj -> Camlray.Object.t option
+(** One object compiled on its own, while the scene is read ([None] for
+    an object that is only a light); its lights are dropped. Errors raise
+    {!Diag.Error}. *)

@@ -48,6 +48,7 @@ open Gram
 %start <Value.t> expr_then_semi
 %start <Value.t> expr_then_comma
 %start <Value.t> expr_then_rparen
+%start <Value.t * bool> expr_then_sep
 %start <Value.t> expr_then_rbracket
 %start <Decl.t * bool> macro_arg
 %start <Decl.t * bool> array_elem
@@ -82,6 +83,11 @@ open Gram
 %public expr_then_comma: e = expr COMMA { e }
 
 %public expr_then_rparen: e = expr RPAREN { e }
+
+(* an argument, then [true] when another follows *)
+%public expr_then_sep:
+  | e = expr COMMA { (e, true) }
+  | e = expr RPAREN { (e, false) }
 
 %public expr_then_rbracket: e = expr RBRACKET { e }
 

@@ -25,6 +25,7 @@ let run options ~name text =
   Shapes.forget_textures ();
   Budget.reset options.limits.max_objects;
   Value.reset_streams ();
+  Probe.reset ();
   let last_loc = ref Loc.none in
   try
     let toks = Toks.of_text ~file:name text in

@@ -127,6 +127,7 @@ and ident t name loc =
             next t
           end
           else if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          else if List.mem name [ "trace"; "inside"; "min_extent"; "max_extent" ] then probe t name loc
           else if name = "file_exists" then begin
             expect_tok t Parser.LPAREN "'(' after file_exists";
             let file = parse t Parser.Incremental.string_arg in
@@ -173,6 +174,44 @@ and ident t name loc =
             unsupported t loc { feature = name; feature_loc = loc; declared = loc; failure = None }
               "%s is not supported by camlray" name
           else (Parser.UNDEFINED_ID name, loc))
+
+(* trace(O, A, B [, N]), inside(O, P), min_extent(O), max_extent(O): the
+   object is named by a declared identifier (as POV-Ray requires); trace's
+   N, a vector identifier, receives the normal ([#declare]'s scope). *)
+and probe t name loc =
+  expect_tok t Parser.LPAREN (Printf.sprintf "'(' after %s" name);
+  let n, nloc = expect_ident t (Printf.sprintf "the name of a declared object in %s(...)" name) in
+  let o =
+    match Env.find t.env n with
+    | Some (Env.Decl (Decl.Object o)) -> o
+    | Some (Env.Unsupported u) -> ignore (unsupported_name t n u nloc); assert false
+    | Some (Env.Decl d) -> fail t nloc "%s needs an object: %s is %s" name n (Decl.kind_name d)
+    | _ -> fail t nloc "%s needs a declared object: %s is not one%s" name n (suggest t n)
+  in
+  let vector (v : Camlray.Vec3.t) = Parser.VECTOR [| v.x; v.y; v.z |] in
+  match name with
+  | "min_extent" | "max_extent" ->
+      expect_tok t Parser.RPAREN "')'";
+      (vector (Probe.extent loc o ~max:(name = "max_extent")), loc)
+  | "inside" ->
+      expect_tok t Parser.COMMA "','";
+      let p = parse t Parser.Incremental.expr_then_rparen in
+      (Parser.FLOAT (if Probe.inside loc o (Value.to_vec3 loc p) then 1. else 0.), loc)
+  | _ ->
+      expect_tok t Parser.COMMA "','";
+      let a = parse t Parser.Incremental.expr_then_comma in
+      let b, more = parse t Parser.Incremental.expr_then_sep in
+      let point, normal = Probe.trace loc o (Value.to_vec3 loc a) (Value.to_vec3 loc b) in
+      if more then begin
+        let v, vloc = expect_ident t "the name of a vector identifier to receive the normal" in
+        (match Env.find t.env v with
+         | None | Some (Env.Decl (Decl.Value _)) -> ()
+         | Some (Env.Decl d) -> fail t vloc "trace's normal goes into a vector identifier: %s is %s" v (Decl.kind_name d)
+         | Some _ -> fail t vloc "trace's normal goes into a vector identifier: %s is not one" v);
+        expect_tok t Parser.RPAREN "')'";
+        Env.declare t.env v (Env.Decl (Decl.Value (Value.Vector [| normal.x; normal.y; normal.z |])))
+      end;
+      (vector point, loc)
 
 (* function [(params)] { body }: the body is read here, token by token,
    and compiled by Fnparse; directives may not stand inside it. *)
@@ -450,7 +489,10 @@ and declare t ~local loc =
     end
   in
   if Lexer.pov_reserved name then fail t nloc "%s is a reserved word and cannot be declared" name;
-  let bind b = if local then Env.local t.env name b else Env.declare t.env name b in
+  (* the scope the directive stands in: the value may end inside a
+     macro's body (#local V = M() where M's body ends with 'Q;') *)
+  let scope = Env.mark t.env in
+  let bind b = if local then Env.local_at t.env scope name b else Env.declare_at t.env scope name b in
   match (raw_peek t).raw with
   | Tok Parser.LBRACKET -> (
       (* element assignment: NAME[i]... = value *)

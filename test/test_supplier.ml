@@ -245,4 +245,58 @@ let tests =
               (fun inc -> ignore (Scn.parse (Printf.sprintf "#version 3.7;\n#include \"%s\"\n" inc)))
               [ "colors.inc"; "consts.inc"; "finish.inc"; "metals.inc"; "golds.inc"; "math.inc";
                 "transforms.inc"; "functions.inc"; "strings.inc"; "rand.inc"; "arrays.inc" ]);
-    ] )
+          (* trace, inside, min_extent, max_extent: the answers POV-Ray 3.7
+         prints through #debug for the same declarations *)
+      Alcotest.test_case "min_extent and max_extent give POV-Ray's boxes" `Quick (fun () ->
+          let ext decl =
+            Scn.vec ~prelude:(decl ^ " #declare Lo = min_extent(O); #declare Hi = max_extent(O);") "Lo"
+            @ Scn.vec ~prelude:(decl ^ " #declare Lo = min_extent(O); #declare Hi = max_extent(O);") "Hi"
+          in
+          check "sphere" [ -1.; 0.; 1.; 3.; 4.; 5. ] (ext "#declare O = sphere { <1,2,3>, 2 }");
+          check ~eps:2e-6 "rotated box (corners turned, single precision)"
+            [ -4.154212; -2.289059; -4.470682; 6.408264; 6.400375; 6.710400 ]
+            (ext "#declare O = box { <-1,-2,-3>, <4,5,6> rotate <10,20,30> }");
+          check "torus turned and stretched" [ -2.5; -5.; -0.5; 2.5; 5.; 0.5 ]
+            (ext "#declare O = torus { 2, 0.5 rotate x*90 scale <1,2,1> }");
+          check "difference: its first object's box" [ -1.; -1.; -1.; 1.; 1.; 1. ]
+            (ext "#declare O = difference { box { -1, 1 } sphere { 0, 1.2 } }");
+          check "scaled cylinder" [ -2.; 0.; -2.; 2.; 6.; 2. ]
+            (ext "#declare O = cylinder { <0,0,0>, <0,3,0>, 1 scale 2 }");
+          check "plane: unbounded" [ -1e10; -1e10; -1e10; 1e10; 1e10; 1e10 ] (ext "#declare O = plane { y, -1 }"));
+      Alcotest.test_case "trace: the first crossing and its normal, zeros when it misses" `Quick (fun () ->
+          let tr decl call =
+            let prelude = decl ^ " #declare N = <9,9,9>; #declare I = " ^ call ^ ";" in
+            Scn.vec ~prelude "I" @ Scn.vec ~prelude "N"
+          in
+          let s = "#declare S = sphere { <1,2,3>, 2 }" in
+          check "from above" [ 1.; 4.; 3.; 0.; 1.; 0. ] (tr s "trace(S, <1,10,3>, -y, N)");
+          let r = Float.sqrt 2. in
+          check ~eps:1e-12 "from inside: the far side, outward normal"
+            [ 1. +. r; 2. +. r; 3.; 1. /. r; 1. /. r; 0. ] (tr s "trace(S, <1,2,3>, <1,1,0>, N)");
+          check "missed: both zero" [ 0.; 0.; 0.; 0.; 0.; 0. ] (tr s "trace(S, <10,10,10>, x, N)");
+          check ~eps:1e-12 "a difference: the box's front face, not the cut sphere"
+            [ 0.4; 0.8; -1.; 0.; 0.; -1. ]
+            (tr "#declare S = difference { box { -1, 1 } sphere { 0, 1.2 } }" "trace(S, <0,0,-5>, <0.1,0.2,1>, N)");
+          check "without the normal" [ 6.; -1.; 3. ]
+            (Scn.vec ~prelude:"#declare P = plane { y, -1 } #declare I = trace(P, <0,5,0>, <1,-1,0.5>);" "I"));
+      Alcotest.test_case "inside(O, P) is POV-Ray's inside test" `Quick (fun () ->
+          check "inside" [ 1.; 0.; 0.; 1.; 1. ]
+            (floats
+               "#declare S = sphere { <1,2,3>, 2 } #declare D = difference { box { -1, 1 } sphere { 0, 1.2 } }\n\
+                #declare P = plane { y, -1 }\n\
+                sphere { 0, inside(S, <1,2,3>) } sphere { 0, inside(S, <5,5,5>) } sphere { 0, inside(D, 0) }\n\
+                sphere { 0, inside(D, <0.95,0.95,0.95>) } sphere { 0, inside(P, <0,-2,0>) }"));
+      Alcotest.test_case "trace in a macro: its normal goes into the caller's #local (tracevines)" `Quick (fun () ->
+          (* FindTmp's shape: a macro whose body ends with 'Q;' read by a
+             #local outside it: the name is bound where the #local stands *)
+          check "macro value" [ 4.; 1. ]
+            (floats
+               "#declare S = sphere { 0, 1 }\n\
+                #macro Hit(A) #local N = <0,0,0>; #local I = trace(S, A, -A, N); (I.x * 4) * N.x; #end\n\
+                #macro Go() #local V = Hit(<5,0,0>) sphere { 0, V } #local W = 1; sphere { 0, W } #end\n\
+                Go()"));
+      Alcotest.test_case "trace of something that is not an object is a located error" `Quick (fun () ->
+          let d = Scn.error "#declare F = 3;\n#declare I = trace(F, 0, x);" in
+          Alcotest.(check string) "located at F" "<test>:2:20: error: trace needs an object: F is a float"
+            (List.hd (String.split_on_char '\n' (Diag.to_string d))));
+] )
