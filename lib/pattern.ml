@@ -26,6 +26,8 @@ type kind =
   | Onion
   | Planar
   | Spherical
+  | Boxed
+  | Cylindrical
   | Wood
   | Marble
   | Leopard
@@ -265,14 +267,30 @@ let raw_m kind (w : work) =
   | Checker -> w.r.v <- checker3 x y z
   | Hexagon -> w.r.v <- hexagon3 x z
   | Brick { size; mortar } -> w.r.v <- brick3 size mortar x y z
-  | Gradient v -> w.r.v <- (x *. v.x) +. (y *. v.y) +. (z *. v.z)
-  | Radial -> w.r.v <- -.Float.atan2 z x /. two_pi
-  | Onion -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y) +. (z *. z))
+  | Gradient v ->
+      (* POV-Ray wraps a gradient above 1 itself (1.5 gives 0.5, 2 gives
+         0, 1 stays 1), before the frequency step's wider wrap *)
+      let g = (x *. v.x) +. (y *. v.y) +. (z *. v.z) in
+      w.r.v <- (if g > 1. then Float.rem g 1. else g)
+  | Radial ->
+      (* POV-Ray's: 0.25 on the axis, else 0.25 + (atan2 x z + pi) / 2 pi,
+         from 0.25 to 1.25 (what passes 1 is wrapped by the frequency
+         step) *)
+      w.r.v <-
+        (if Float.abs x < 0.001 && Float.abs z < 0.001 then 0.25
+         else 0.25 +. ((Float.atan2 x z +. Float.pi) /. two_pi))
+  | Onion -> w.r.v <- Float.rem (Float.sqrt ((x *. x) +. (y *. y) +. (z *. z))) 1.
   | Planar ->
       let r = Float.abs y in
       w.r.v <- (if r > 1. then 0. else 1. -. r)
   | Spherical ->
       let r = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      w.r.v <- (if r > 1. then 0. else 1. -. r)
+  | Boxed ->
+      let r = Float.max (Float.abs x) (Float.max (Float.abs y) (Float.abs z)) in
+      w.r.v <- (if r > 1. then 0. else 1. -. r)
+  | Cylindrical ->
+      let r = Float.sqrt ((x *. x) +. (z *. z)) in
       w.r.v <- (if r > 1. then 0. else 1. -. r)
   | Wood -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y))
   | Marble -> w.r.v <- x

@@ -44,6 +44,8 @@ type kind =
   | Onion
   | Planar  (** 1 - |y|, 0 beyond 1 *)
   | Spherical  (** 1 - |p|, 0 beyond 1 *)
+  | Boxed  (** 1 - max(|x|, |y|, |z|), 0 beyond 1 *)
+  | Cylindrical  (** 1 - sqrt(x^2 + z^2), 0 beyond 1 *)
   | Wood
   | Marble
   | Leopard

@@ -165,3 +165,12 @@ let pattern loc f =
       (Array.length f.params);
   let run = f.run in
   Pattern.fn ~slots:f.frame ~result:f.out (fun s -> run s 0)
+
+(* pigment_pattern { P }: the grey of P's colour, clipped to [0, 1]
+   (above 1 POV-Ray gives 1 - 1e-5: measured, rgb 2 gives 0.99999) *)
+let pigment_pattern loc p =
+  let code = member_code loc (of_pigment p) gray ~args:[| 0; 1; 2 |] ~out:3 in
+  Pattern.fn ~slots:4 ~result:3 (fun s ->
+      code s 0;
+      let v = Array.unsafe_get s 3 in
+      Array.unsafe_set s 3 (if v < 0. then 0. else if v > 1. then 1. -. 1e-5 else v))

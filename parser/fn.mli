@@ -86,3 +86,7 @@ val pattern : Loc.t -> t -> Camlray.Pattern.fn
 (** The function as a pattern ([pigment { function { ... } }]): a
     located error unless it is a supported float function of 3
     parameters. *)
+
+val pigment_pattern : Loc.t -> Camlray.Pigment.t -> Camlray.Pattern.fn
+(** POV-Ray's [pigment_pattern { P }]: the grey of [P]'s colour
+    ([0.297 red + 0.589 green + 0.114 blue]) clipped to [[0, 1]]. *)

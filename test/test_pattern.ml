@@ -219,6 +219,47 @@ let fn_pattern src =
   | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
   | _ -> Alcotest.failf "no pattern pigment in %S" src
 
+(* boxed, cylindrical, pigment_pattern: the values POV-Ray 3.7 prints
+   for function { pattern { ... } } at the same points *)
+let shape_patterns () =
+  let pts = [ (0.3, 0.5, -0.2); (1.5, 0.2, 0.1); (-0.7, -0.1, 0.6); (0.2, 3., 0.3) ] in
+  List.iter
+    (fun (src, expected) ->
+      let p = fn_pattern src in
+      List.iter2
+        (fun (x, y, z) e ->
+          Scn.close ~eps:1e-6 (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e (Pattern.value p (Vec3.make x y z)))
+        pts expected)
+    [
+      ("boxed", [ 0.5; 0.; 0.3; 0. ]);
+      ("cylindrical", [ 0.639445; 0.; 0.078046; 0.639445 ]);
+      ("pigment_pattern { checker rgb 1, rgb 0.3 }", [ 0.3; 0.3; 1.; 0.3 ]);
+      ("pigment_pattern { gradient x color_map { [0 rgb <1,0,0>] [1 rgb <0,0,1>] } }",
+       [ 0.2421; 0.2055; 0.2421; 0.2604 ]);
+      ("pigment_pattern { rgb 1 }", [ 1.; 1.; 1.; 1. ]);
+      ("pigment_pattern { rgb 2 }", [ 0.99999; 0.99999; 0.99999; 0.99999 ]);
+      ("pigment_pattern { rgb -1 }", [ 0.; 0.; 0.; 0. ]);
+    ];
+  (* gradient wraps itself above 1, onion always, before the frequency
+     step's fmod(v, 1.00001); radial is 0.25 + (atan2(x, z) + pi) / 2 pi,
+     0.25 on the axis *)
+  let at src pts expected =
+    let p = fn_pattern src in
+    List.iter2
+      (fun (x, y, z) e ->
+        Scn.close ~eps:1e-7 (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e (Pattern.value p (Vec3.make x y z)))
+      pts expected
+  in
+  let xs = [ (1.5, 0., 0.); (10.5, 0., 0.); (2., 0., 0.); (1., 0., 0.); (-3.3, 0., 0.) ] in
+  at "gradient x" xs [ 0.5; 0.5; 0.; 1.; 0.70003 ];
+  at "gradient x phase 0.2" xs [ 0.7; 0.7; 0.2; 0.19999; 0.90003 ];
+  at "gradient -x" xs [ 0.50001; 0.5001; 0.00001; 0.; 0.3 ];
+  at "onion" xs [ 0.5; 0.5; 0.; 0.; 0.3 ];
+  at "onion frequency 2" xs [ 1.; 1.; 0.; 0.; 0.6 ];
+  at "radial" [ (1.5, 0., 0.); (0.3, 0., -0.4); (0.01, 1., -0.9); (0.0005, 1., 0.0002) ]
+    [ 1.; 0.1475736; 0.2482217; 0.25 ];
+  at "radial frequency 3 sine_wave" [ (0.3, 0., -0.4); (-1., 0., -0.2) ] [ 0.6760882; 0.7791144 ]
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -333,6 +374,7 @@ let tests =
       Alcotest.test_case "quilted" `Quick quilted;
       Alcotest.test_case "mandel" `Quick mandel;
       Alcotest.test_case "pattern modifier errors" `Quick pattern_errors;
+      Alcotest.test_case "boxed, cylindrical, pigment_pattern; gradient, onion, radial wraps = POV-Ray" `Quick shape_patterns;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
