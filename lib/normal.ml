@@ -1,6 +1,28 @@
-type t = { pattern : Pattern.t; amount : float; xform : Transform.t }
+type t = { pattern : Pattern.t; amount : float; xform : Transform.t; slope : Float.Array.t }
 
-let make kind amount = { pattern = Pattern.make kind; amount; xform = Transform.identity }
+let slope_height m v =
+  let n = Float.Array.length m / 3 in
+  let value i = Float.Array.unsafe_get m (3 * i) in
+  if v <= value 0 then Float.Array.unsafe_get m 1
+  else if v >= value (n - 1) then Float.Array.unsafe_get m ((3 * (n - 1)) + 1)
+  else begin
+    let i = ref 1 in
+    while v > value !i do incr i done;
+    let a = 3 * (!i - 1) and b = 3 * !i in
+    let v0 = Float.Array.unsafe_get m a and h0 = Float.Array.unsafe_get m (a + 1)
+    and s0 = Float.Array.unsafe_get m (a + 2) in
+    let v1 = Float.Array.unsafe_get m b and h1 = Float.Array.unsafe_get m (b + 1)
+    and s1 = Float.Array.unsafe_get m (b + 2) in
+    if v1 = v0 then h1
+    else
+      (* Hermite: heights h0, h1 and slopes s0, s1 at t = 0, 1 *)
+      let t = (v -. v0) /. (v1 -. v0) in
+      let t2 = t *. t in
+      let t3 = t2 *. t in
+      (t3 *. (s0 +. s1 +. (2. *. (h0 -. h1)))) -. (t2 *. ((2. *. s0) +. s1 +. (3. *. (h0 -. h1)))) +. (t *. s0) +. h0
+  end
+
+let make kind amount = { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0 }
 let transform t nm = { nm with xform = Transform.then_ nm.xform t }
 
 (* Bump strength per unit of amount and of pattern-space slope, calibrated
@@ -53,7 +75,7 @@ let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
     let (v : Vec3.t) = Array.unsafe_get tetra i in
     Vec3.set w.s (q.mx +. (delta *. v.x)) (q.my +. (delta *. v.y)) (q.mz +. (delta *. v.z));
     Pattern.eval_m nm.pattern w.s w.pw;
-    let f = w.pw.r.v in
+    let f = if Float.Array.length nm.slope = 0 then w.pw.r.v else slope_height nm.slope w.pw.r.v in
     gx := !gx +. (f *. v.x);
     gy := !gy +. (f *. v.y);
     gz := !gz +. (f *. v.z)

@@ -6,7 +6,15 @@
     bumps, dents, ripples, waves and wrinkles are approximated by gains
     (and camlray's noise differs), so those only look alike. *)
 
-type t = { pattern : Pattern.t; amount : float; xform : Transform.t }
+type t = {
+  pattern : Pattern.t;
+  amount : float;
+  xform : Transform.t;
+  slope : Float.Array.t;
+      (** POV-Ray's [slope_map]: (value, height, slope) triples by rising
+          value, the pattern's value taken to a height by Hermite cubics
+          between them; empty: none (the height is the value) *)
+}
 
 val make : Pattern.kind -> float -> t
 val transform : Transform.t -> t -> t
@@ -14,3 +22,9 @@ val transform : Transform.t -> t -> t
 val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
 (** [perturb_m nm point n out]: the perturbed unit normal at a world
     point, into [out] (not [n]), allocating nothing. *)
+
+val slope_height : Float.Array.t -> float -> float
+(** [slope_height map v]: the height a slope map gives the value [v]:
+    the first entry's height at or below its value, the last's past its
+    value, else the Hermite cubic between the two entries around [v],
+    their heights and slopes at its ends (POV-Ray's rule). *)

@@ -7,7 +7,7 @@
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
-%token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN
+%token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -405,6 +405,14 @@ bump_size: COMMA? a = param { a }
 %public normal_mod:
   | t = transformation { Texdesc.transform t }
   | m = pattern_mod { m }
+  | SLOPE_MAP LBRACE es = list(slope_entry) RBRACE { Texdesc.slope_map (loc $loc) es }
+
+(* [value, <height, slope>] *)
+slope_entry:
+  | LBRACKET v = param COMMA? hs = param RBRACKET
+      { match hs with
+        | Value.Vector [| h; s |] -> (fl $loc(v) v, h, s)
+        | _ -> Diag.error (loc $loc(hs)) "a slope_map entry is [value, <height, slope>]" }
 
 (* finish { ... } changes the finish it is written over (POV-Ray edits in
    place: texture { T finish { reflection 0.1 } } keeps T's highlights);

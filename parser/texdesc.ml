@@ -8,13 +8,14 @@ type pat = {
   xform : Transform.t;
   amount : float;
   average : bool;  (** [average]: [entries] are weights, not values *)
+  slope : Float.Array.t;
 }
 
 type modifier = pat -> pat
 
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
-    amount = 0.5; average = false }
+    amount = 0.5; average = false; slope = Float.Array.create 0 }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -81,8 +82,8 @@ let pigment p =
 
 let normal p =
   match p.pattern with
-  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform }
-  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform }
+  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform; slope = p.slope }
+  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform; slope = p.slope }
 
 let image_map loc ~gamma_decode file mods =
   let img =
@@ -102,3 +103,14 @@ let image_map loc ~gamma_decode file mods =
   in
   let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false } in
   Pigment.Image_map { image = List.fold_left (fun i f -> f i) im mods; xform = Transform.identity }
+
+let slope_map loc entries p =
+  let rec sorted = function
+    | (v0, _, _) :: ((v1, _, _) :: _ as rest) ->
+        if v1 < v0 then Diag.error loc "slope_map entries must come in order of value (%g after %g)" v1 v0;
+        sorted rest
+    | _ -> ()
+  in
+  if entries = [] then Diag.error loc "a slope_map needs at least one entry";
+  sorted entries;
+  { p with slope = Float.Array.of_list (List.concat_map (fun (v, h, s) -> [ v; h; s ]) entries) }

@@ -13,6 +13,7 @@ type pat = {
   xform : Transform.t;
   amount : float;  (** normals: bump amount *)
   average : bool;  (** [average pigment_map]: the entries' values are weights *)
+  slope : Float.Array.t;  (** normals: [slope_map] (see {!Normal.t}) *)
 }
 
 type modifier = pat -> pat
@@ -34,3 +35,6 @@ val kind_mod : (Pattern.kind -> Pattern.kind) -> modifier
 val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
 (** Read a PNG into a planar image map (values decoded from sRGB when
     [gamma_decode]). Errors are located. *)
+
+val slope_map : Loc.t -> (float * float * float) list -> modifier
+(** A normal's [slope_map { [value, <height, slope>] ... }]. *)

@@ -260,6 +260,25 @@ let shape_patterns () =
     [ 1.; 0.1475736; 0.2482217; 0.25 ];
   at "radial frequency 3 sine_wave" [ (0.3, 0., -0.4); (-1., 0., -0.2) ] [ 0.6760882; 0.7791144 ]
 
+(* slope_map: heights by Hermite cubics between the entries *)
+let slope_map () =
+  let m l = Float.Array.of_list (List.concat_map (fun (v, h, s) -> [ v; h; s ]) l) in
+  let identity = m [ (0., 0., 1.); (1., 1., 1.) ] in
+  List.iter (fun v -> Scn.close ~eps:1e-12 "the default map is the identity" v (Normal.slope_height identity v))
+    [ 0.; 0.3; 0.77; 1. ];
+  let smooth = m [ (0., 0., 0.); (1., 1., 0.) ] in
+  Scn.close ~eps:1e-12 "flat ends: 3t^2 - 2t^3 at 0.25" 0.15625 (Normal.slope_height smooth 0.25);
+  Scn.close ~eps:1e-12 "flat ends at 0.5" 0.5 (Normal.slope_height smooth 0.5);
+  let three = m [ (0.2, 0.5, 0.); (0.6, 1., 2.); (0.8, 0., 0.) ] in
+  Scn.close "below the first entry: its height" 0.5 (Normal.slope_height three 0.1);
+  Scn.close "past the last: its height" 0. (Normal.slope_height three 0.95);
+  (* between 0.6 and 0.8 at t = 0.5: h0 1, s0 2, h1 0, s1 0:
+     t^3 (2 + 2) - t^2 (4 + 3) + 2t + 1 = 0.5 - 1.75 + 1 + 1 = 0.75 *)
+  Scn.close ~eps:1e-12 "between entries" 0.75 (Normal.slope_height three 0.7);
+  Scn.close ~eps:1e-12 "at an entry" 1. (Normal.slope_height three 0.6);
+  Scn.check_message "sphere { 0, 1 normal { gradient x slope_map { [0.5 <0, 1>] [0.2 <1, 0>] } } }"
+    "slope_map entries must come in order of value (0.2 after 0.5)"
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -375,6 +394,7 @@ let tests =
       Alcotest.test_case "mandel" `Quick mandel;
       Alcotest.test_case "pattern modifier errors" `Quick pattern_errors;
       Alcotest.test_case "boxed, cylindrical, pigment_pattern; gradient, onion, radial wraps = POV-Ray" `Quick shape_patterns;
+      Alcotest.test_case "slope_map heights" `Quick slope_map;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
