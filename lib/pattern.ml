@@ -49,18 +49,36 @@ type kind =
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
+type warp_kind =
+  | Repeat of { axis : int; width : float; offset : Vec3.t; flip : Vec3.t }
+  | Black_hole of {
+      center : Vec3.t;
+      radius : float;
+      strength : float;
+      falloff : float;
+      inverse : bool;
+      repeat : Vec3.t;
+      jitter : Vec3.t;
+    }
+  | Turbulence of turbulence
+
+type warp = { kind : warp_kind; into : Transform.t; back : Transform.t }
+
+let warp before kind = { kind; into = Transform.inverse before; back = before }
+
 type t = {
   kind : kind;
   turbulence : turbulence option;
   frequency : float;
   phase : float;
   wave : wave option;
+  warps : warp array;
 }
 
 (* quilted alone starts at frequency 0, its value left unwrapped *)
 let make kind =
   let frequency = match kind with Quilted _ -> 0. | _ -> 1. in
-  { kind; turbulence = None; frequency; phase = 0.; wave = None }
+  { kind; turbulence = None; frequency; phase = 0.; wave = None; warps = [||] }
 
 let mandel iterations = { iterations; exponent = 2; exterior = 1; efactor = 1.; interior = 0; ifactor = 1. }
 
@@ -362,13 +380,81 @@ let[@inline] scalar_turbulence tb (p : Vec3.m) =
 
 (* The pattern at [q] into [w.r.v], allocating nothing: turbulence warp,
    raw pattern, then frequency, phase and wave *)
+(* One component of a point, by axis number (each case stores its own
+   value: a value joined from the cases would be boxed). *)
+let[@inline] component (p : Vec3.m) axis = if axis = 0 then p.mx else if axis = 1 then p.my else p.mz
+
+let set_component (p : Vec3.m) axis v = if axis = 0 then p.mx <- v else if axis = 1 then p.my <- v else p.mz <- v
+
+let add_turbulence tb (p : Vec3.m) (d : Vec3.m) =
+  Noise.turbulence_m ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda p d;
+  let a = tb.amount in
+  Vec3.set p (p.mx +. (d.mx *. a.x)) (p.my +. (d.my *. a.y)) (p.mz +. (d.mz *. a.z))
+
+(* A black hole's centre, one axis: in a repeated axis, [radius] from
+   the corner of the point's cell (moved by the jitter), and the point
+   taken into that cell *)
+let hole_axis (p : Vec3.m) (c : Vec3.m) axis centre repeat radius jitter =
+  let x = component p axis in
+  if repeat > 0. then begin
+    let cell = Float.floor (x /. repeat) in
+    set_component p axis (x -. (cell *. repeat));
+    set_component c axis (radius +. jitter)
+  end
+  else set_component c axis centre
+
+let apply_warp (wp : warp) (p : Vec3.m) (d : Vec3.m) =
+  match wp.kind with
+  | Turbulence tb -> add_turbulence tb p d
+  | Repeat { axis; width; offset; flip } ->
+      let x = component p axis in
+      let cell = Float.floor (x /. width) in
+      set_component p axis (x -. (cell *. width));
+      if int_of_float cell land 1 = 1 then begin
+        if flip.x < 0. then p.mx <- (if axis = 0 then width -. p.mx else -.p.mx);
+        if flip.y < 0. then p.my <- (if axis = 1 then width -. p.my else -.p.my);
+        if flip.z < 0. then p.mz <- (if axis = 2 then width -. p.mz else -.p.mz)
+      end;
+      Vec3.set p (p.mx +. (cell *. offset.x)) (p.my +. (cell *. offset.y)) (p.mz +. (cell *. offset.z))
+  | Black_hole { center; radius; strength; falloff; inverse; repeat; jitter } ->
+      (* [d] holds the point in its cell, then the offset from the hole *)
+      let ox = p.mx and oy = p.my and oz = p.mz in
+      Vec3.set d ox oy oz;
+      let c = p in
+      (* the cell's jitter: camlray's noise at the cell's corner *)
+      let jx, jy, jz =
+        if jitter.x = 0. && jitter.y = 0. && jitter.z = 0. then (0., 0., 0.)
+        else
+          let cell r x = if r > 0. then Float.floor (x /. r) else 0. in
+          let kx = cell repeat.x ox and ky = cell repeat.y oy and kz = cell repeat.z oz in
+          ( jitter.x *. (Noise.noise3 (kx +. 0.5) (ky +. 0.5) (kz +. 0.5) -. 0.5),
+            jitter.y *. (Noise.noise3 (kx +. 10.5) (ky +. 0.5) (kz +. 0.5) -. 0.5),
+            jitter.z *. (Noise.noise3 (kx +. 0.5) (ky +. 10.5) (kz +. 0.5) -. 0.5) )
+      in
+      hole_axis d c 0 center.x repeat.x radius jx;
+      hole_axis d c 1 center.y repeat.y radius jy;
+      hole_axis d c 2 center.z repeat.z radius jz;
+      let dx = d.mx -. c.mx and dy = d.my -. c.my and dz = d.mz -. c.mz in
+      let l = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+      if l < radius then begin
+        let k = strength *. Float.pow (1. -. (l /. radius)) falloff in
+        let k = if inverse then -.k else k in
+        Vec3.set p (ox +. (k *. dx)) (oy +. (k *. dy)) (oz +. (k *. dz))
+      end
+      else Vec3.set p ox oy oz
+
 let eval_m t (q : Vec3.m) (w : work) =
-  (match t.turbulence with
-  | None -> Vec3.set w.p q.mx q.my q.mz
-  | Some tb ->
-      Noise.turbulence_m ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda q w.d;
-      let a = tb.amount and d = w.d in
-      Vec3.set w.p (q.mx +. (d.mx *. a.x)) (q.my +. (d.my *. a.y)) (q.mz +. (d.mz *. a.z)));
+  Vec3.set w.p q.mx q.my q.mz;
+  for i = Array.length t.warps - 1 downto 0 do
+    let wp = Array.unsafe_get t.warps i in
+    (* into the space the warp was written in (the transformations
+       before it applied forward), warped, and back *)
+    let id = Transform.is_identity wp.back in
+    if not id then Transform.inv_point_m wp.into w.p w.p;
+    apply_warp wp w.p w.d;
+    if not id then Transform.inv_point_m wp.back w.p w.p
+  done;
+  (match t.turbulence with None -> () | Some tb -> add_turbulence tb w.p w.d);
   (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
      (on top of the warp): read by [raw_m] from [w.r.v] *)
   (match (t.kind, t.turbulence) with

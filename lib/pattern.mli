@@ -73,12 +73,49 @@ type kind =
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
+(** POV-Ray's [warp { }]s, each acting on the point in the space of the
+    transformations written before it. *)
+type warp_kind =
+  | Repeat of { axis : int; width : float; offset : Vec3.t; flip : Vec3.t }
+      (** [repeat v]: the pattern's slab [0, width) along axis [axis]
+          (0, 1, 2; [width] is [v]'s component there, sign kept) copied
+          along it; each copy [k] moved by [k offset]; in odd copies the
+          components whose [flip] is negative are mirrored (across the
+          slab on the repeated axis) *)
+  | Black_hole of {
+      center : Vec3.t;
+      radius : float;
+      strength : float;
+      falloff : float;
+      inverse : bool;
+      repeat : Vec3.t;
+          (** positive components: a hole in every cell of that size,
+              [radius] from the cell's corner (POV-Ray ignores [center]
+              on those axes) *)
+      jitter : Vec3.t;  (** [turbulence]: cells' holes moved by up to this (camlray's noise) *)
+    }
+      (** points within [radius] of the hole pushed out of it (pulled in
+          when [inverse]) by [strength (1 - d / radius)^falloff] of their
+          distance [d] *)
+  | Turbulence of turbulence  (** [warp { turbulence ... }] *)
+
+type warp = { kind : warp_kind; into : Transform.t; back : Transform.t }
+(** [back]: the transformations written before the warp; [into] their
+    inverse, whose inverse (applied by [Transform.inv_point_m]) takes a
+    point of pattern space into the space the warp was written in. *)
+
+val warp : Transform.t -> warp_kind -> warp
+(** [warp before k]: a warp written after the transformations [before]. *)
+
 type t = {
   kind : kind;
   turbulence : turbulence option;
   frequency : float;
   phase : float;
   wave : wave option;  (** [None]: the pattern's default wave *)
+  warps : warp array;
+      (** in written order; applied last first to the point in pattern
+          space, before the (classic) turbulence and the pattern *)
 }
 
 val quilt_cubic : float -> float -> float -> float

@@ -8,6 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
+%token WARP REPEAT BLACK_HOLE OFFSET FLIP
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -344,6 +345,7 @@
       | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
   | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
+  | WARP LBRACE k = warp_body RBRACE { Texdesc.warp (loc $loc) k }
   | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
   | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
   (* quilted's controls are single-precision floats in POV-Ray *)
@@ -509,3 +511,52 @@ irid_item:
   | TURBULENCE e = param
       { let x = match e with Value.Vector v when Array.length v > 0 -> v.(0) | e -> fl $loc(e) e in
         fun (f : Finish.t) -> { f with irid_turb = x } }
+
+(* warp { repeat V [offset V] [flip V] }, warp { black_hole C, R ... },
+   warp { turbulence V [octaves N] [omega F] [lambda F] } *)
+warp_body:
+  | REPEAT e = param ms = list(repeat_item)
+      { let v = v3 $loc(e) e in
+        let axis, width =
+          match List.filter (fun (_, c) -> c <> 0.) [ (0, v.x); (1, v.y); (2, v.z) ] with
+          | [ a ] -> a
+          | _ -> Diag.error (loc $loc(e)) "repeat needs a vector along one axis (x*2, -y, ...)"
+        in
+        let offset, flip =
+          List.fold_left (fun (o, f) m -> match m with
+            | `Offset v -> (v, f)
+            | `Flip (v : Vec3.t) ->
+                (o, Vec3.make (if v.x <> 0. then -1. else 1.) (if v.y <> 0. then -1. else 1.) (if v.z <> 0. then -1. else 1.)))
+            (Vec3.zero, Vec3.one) ms
+        in
+        Pattern.Repeat { axis; width; offset; flip } }
+  | BLACK_HOLE c = param COMMA r = param ms = list(hole_item)
+      { let radius = fl $loc(r) r in
+        if not (radius > 0.) then Diag.error (loc $loc(r)) "a black hole's radius must be positive, found %g" radius;
+        List.fold_left (fun k m -> m k)
+          (Pattern.Black_hole { center = v3 $loc(c) c; radius; strength = 1.; falloff = 2.; inverse = false;
+                                repeat = Vec3.zero; jitter = Vec3.zero })
+          ms }
+  | TURBULENCE e = param ms = list(warp_turb_item)
+      { Pattern.Turbulence (List.fold_left (fun t m -> m t) (Pattern.default_turbulence (v3 $loc(e) e)) ms) }
+  | PLANAR | SPHERICAL | CYLINDRICAL
+      { Diag.error (loc $loc) "mapping warps (warp { planar | spherical | cylindrical | toroidal | cubic }) are not supported by camlray" }
+
+repeat_item:
+  | OFFSET e = param { `Offset (v3 $loc(e) e) }
+  | FLIP e = param { `Flip (v3 $loc(e) e) }
+
+hole_item:
+  | STRENGTH e = param { let x = fl $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with strength = x } | k -> k }
+  | FALLOFF e = param { let x = fl $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with falloff = x } | k -> k }
+  | INVERSE { function Pattern.Black_hole h -> Pattern.Black_hole { h with inverse = not h.inverse } | k -> k }
+  | REPEAT e = param { let v = v3 $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with repeat = v } | k -> k }
+  | TURBULENCE e = param { let v = v3 $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with jitter = v } | k -> k }
+
+warp_turb_item:
+  | OCTAVES e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n < 1 || n > 10 then Diag.error (loc $loc(e)) "octaves go from 1 to 10, found %d" n;
+        fun (t : Pattern.turbulence) -> { t with octaves = n } }
+  | OMEGA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with omega = x } }
+  | LAMBDA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with lambda = x } }

@@ -114,3 +114,10 @@ let slope_map loc entries p =
   if entries = [] then Diag.error loc "a slope_map needs at least one entry";
   sorted entries;
   { p with slope = Float.Array.of_list (List.concat_map (fun (v, h, s) -> [ v; h; s ]) entries) }
+
+let warp loc k p =
+  match p.pattern with
+  | Some pt -> { p with pattern = Some { pt with warps = Array.append pt.warps [| Pattern.warp p.xform k |] } }
+  | None ->
+      Diag.warning loc "a warp on a plain colour changes nothing";
+      p

@@ -38,3 +38,6 @@ val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigmen
 
 val slope_map : Loc.t -> (float * float * float) list -> modifier
 (** A normal's [slope_map { [value, <height, slope>] ... }]. *)
+
+val warp : Loc.t -> Pattern.warp_kind -> modifier
+(** [warp { ... }]: after the pattern's transformations so far. *)

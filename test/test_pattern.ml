@@ -279,6 +279,54 @@ let slope_map () =
   Scn.check_message "sphere { 0, 1 normal { gradient x slope_map { [0.5 <0, 1>] [0.2 <1, 0>] } } }"
     "slope_map entries must come in order of value (0.2 after 0.5)"
 
+(* warps: the points POV-Ray 3.7's warps give, read back through
+   pigment functions whose colour is the warped coordinate (single
+   precision there: 1e-5) *)
+let warps () =
+  let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6);
+              (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ] in
+  List.iter
+    (fun (w, expected) ->
+      (* the pattern and the pigment's transformations *)
+      let coord c =
+        let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { function { (%s + 50) / 100 } %s } }" c w) in
+        match s.objects.(0).texture with
+        | { pigment = Pigment.Map { pattern; xform; _ }; _ } :: _ -> (pattern, xform)
+        | _ -> Alcotest.fail "no pattern"
+      in
+      let px = coord "x" and py = coord "y" and pz = coord "z" in
+      List.iter2
+        (fun (x, y, z) (ex, ey, ez) ->
+          let at (p, xf) = (Pattern.value p (Transform.inv_point xf (Vec3.make x y z)) *. 100.) -. 50. in
+          Scn.check_floats ~eps:1e-5 (Printf.sprintf "%s at (%g, %g, %g)" w x y z) [ ex; ey; ez ] [ at px; at py; at pz ])
+        pts expected)
+    [
+      ("warp { repeat x*2 }",
+       [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (0.6, -0.4, 0.3); (1.1, 1.2, 0.8); (0.9, 0.1, -0.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { repeat x*2 offset <0.25, 0.5, 1> }",
+       [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (0.85, 0.1, 1.3); (0.85, 0.7, -0.2); (0.4, -0.9, -2.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { repeat x*2 flip y }",
+       [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (0.6, 0.4, 0.3); (1.1, -1.2, 0.8); (0.9, 0.1, -0.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { repeat x*2 flip x }",
+       [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (1.4, -0.4, 0.3); (0.9, 1.2, 0.8); (0.9, 0.1, -0.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { repeat y*1.5 flip <1,0,1> offset z*0.3 }",
+       [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (-2.6, 1.1, -0.6); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, 1.1, -0.2) ]);
+      ("warp { repeat -x*2 }",
+       [ (-1.7, 0.2, 0.1); (-0.3, 0.5, -0.2); (-1.4, -0.4, 0.3); (-0.9, 1.2, 0.8); (-1.1, 0.1, -0.6); (-1.4, 0.7, 0.0); (-1.9, 0.05, 0.0); (-0.8, -1.9, 0.4) ]);
+      ("warp { black_hole <0,0,0>, 1 }",
+       [ (0.4175, 0.27834, 0.13916); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6); (0.60365, 0.70426, 0.0); (0.17889, 0.08944, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { black_hole <0.5,0,0>, 2 strength 0.5 falloff 3 }",
+       [ (0.23859, 0.26141, 0.13071); (1.72408, 0.51003, -0.20401); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6); (0.6135, 0.79455, 0.0); (-0.0018, 0.06273, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { black_hole <0,0,0>, 1 inverse }",
+       [ (0.1825, 0.12167, 0.06083); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6); (0.59634, 0.69574, 0.0); (0.02111, 0.01056, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { black_hole <0,0,0>, 0.5 repeat <2, 1.5, 0> }",
+       [ (0.28733, 0.181, 0.10633); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6); (0.63056, 0.76112, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
+      ("warp { repeat x*2 } scale 2 warp { black_hole 0, 1 }",
+       [ (0.20875, 0.13916, 0.06958); (0.85, 0.25, -0.1); (1.3, -0.2, 0.15); (1.55, 0.6, 0.4); (0.45, 0.05, -0.3); (0.30183, 0.35213, 0.0); (0.08944, 0.04472, 0.0); (0.6, -0.95, 0.2) ]);
+    ];
+  Scn.check_message "sphere { 0, 1 pigment { bozo warp { repeat <1, 1, 0> } } }" "repeat needs a vector along one axis";
+  Scn.check_message "sphere { 0, 1 pigment { bozo warp { black_hole 0, 0 } } }" "a black hole's radius must be positive"
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -395,6 +443,7 @@ let tests =
       Alcotest.test_case "pattern modifier errors" `Quick pattern_errors;
       Alcotest.test_case "boxed, cylindrical, pigment_pattern; gradient, onion, radial wraps = POV-Ray" `Quick shape_patterns;
       Alcotest.test_case "slope_map heights" `Quick slope_map;
+      Alcotest.test_case "warps: repeat, black_hole, order with transforms = POV-Ray" `Quick warps;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
