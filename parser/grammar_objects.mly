@@ -84,10 +84,13 @@ prism_point: COMMA? p = param { (loc $loc(p), p) }
 
 blob_item:
   | THRESHOLD e = param { `Threshold (fl $loc(e) e) }
-  | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param RBRACE
-      { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }
-  | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param COMMA? STRENGTH? s = param RBRACE
-      { `Comp (Shapes.blob_cylinder (loc $loc) (v3 $loc(a) a) (v3 $loc(b) b) (fl $loc(r) r) (fl $loc(s) s)) }
+  | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param ts = list(transformation) RBRACE
+      { `Comp (Shapes.blob_moved (loc $loc) ts
+                 (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s))) }
+  | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param COMMA? STRENGTH? s = param
+    ts = list(transformation) RBRACE
+      { `Comp (Shapes.blob_moved (loc $loc) ts
+                 (Shapes.blob_cylinder (loc $loc) (v3 $loc(a) a) (v3 $loc(b) b) (fl $loc(r) r) (fl $loc(s) s))) }
   | COMPONENT s = param COMMA? r = param COMMA? c = param
       { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }
 
@@ -129,7 +132,9 @@ items: b = items_rev ioption(COMMA) { b }
 
 items_rev:
   | { Shapes.items () }
-  | b = items_rev COMMA p = param { Shapes.add_item b $startpos(p) $endpos(p) p }
+  (* commas are optional, as everywhere in POV-Ray (its mesh2.pov leaves
+     some out: after the count, between vectors) *)
+  | b = items_rev COMMA? p = param { Shapes.add_item b $startpos(p) $endpos(p) p }
 
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }

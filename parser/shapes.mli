@@ -118,3 +118,7 @@ val default_texture : Sdl.obj -> Sdl.obj
     texture in force there (its CSG children without one inherit it).
     Known difference: "there" is after the parser's lookahead, so an
     object followed directly by a [#default] gets that new default. *)
+
+val blob_moved : Loc.t -> Camlray.Transform.t list -> Camlray.Blob.component -> Camlray.Blob.component
+(** A blob component's transformations (moves, turns, even scales; a
+    stretch is a located error). *)

@@ -206,6 +206,27 @@ let mesh2_items_once =
       in
       Alcotest.(check string) "the same mesh" (read plain) (read with_directives))
 
+(* POV-Ray's commas are optional in mesh2 blocks (its mesh2.pov leaves
+   out some); blob components take moves, turns and even scales *)
+let optional_commas_blob_moves =
+  Alcotest.test_case "mesh2 items without commas; blob components moved" `Quick (fun () ->
+      let read text =
+        match Parse.string text with
+        | Ok s -> Printer.scene s
+        | Error d -> Alcotest.failf "%s" (Diag.to_string d)
+      in
+      Alcotest.(check string) "mesh2"
+        (read "mesh2 { vertex_vectors { 4, <0,0,0>, <1,0,0>, <0,1,0>, <1,1,0> } face_indices { 2, <0,1,2>, <1,3,2> } }")
+        (read "mesh2 { vertex_vectors { 4 <0,0,0>, <1,0,0> <0,1,0>\n <1,1,0> } face_indices { 2 <0,1,2> <1,3,2>, } }");
+      Alcotest.(check string) "blob"
+        (read "blob { threshold 0.5 sphere { vrotate(<1,0,0>, y*90) * 2, 2, 1 }\n\
+                      cylinder { vrotate(0, z*90) + y, vrotate(2*x, z*90) + y, 0.5, 2 } }")
+        (read "blob { threshold 0.5 sphere { <1,0,0>, 1, 1 rotate y*90 scale 2 } cylinder { 0, 2*x, 0.5, 2 rotate z*90 translate y } }");
+      match Parse.string "blob { sphere { 0, 1, 1 scale <1,2,1> } }" with
+      | Ok _ -> Alcotest.fail "a stretched blob component was accepted"
+      | Error d ->
+          Alcotest.(check string) "stretch" "a blob component can be moved, turned and scaled evenly; this transformation stretches it" d.msg)
+
 (* POV-Ray's own example scenes (Debian's povray-examples, installed by
    make test's setup): each reads the same, warnings included, with
    folding (and vectors read again) on and off. *)
@@ -245,4 +266,4 @@ let pov_examples_fold =
         Alcotest.(check bool) "some scenes" true (List.length files > 300)
       end)
 
-let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: pov_examples_fold :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
+let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: optional_commas_blob_moves :: pov_examples_fold :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
