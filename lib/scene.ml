@@ -68,6 +68,7 @@ let test_cost (o : Object.t) =
     | Object.Prim (Shape.Cone _ | Shape.Smooth_triangle _) -> 3.
     | Object.Prim (Shape.Polygon pg) -> 2. +. float (Polygon.edges pg)
     | Object.Prim (Shape.Torus _) -> 16.
+    | Object.Prim (Shape.Height_field _) -> 16.
     | Object.Prim (Shape.Algebraic a) -> 8. *. float (Algebraic.order a)
     | Object.Prim (Shape.Text t) -> 8. *. float (Text.glyph_count t)
     | Object.Prim (Shape.Blob _) -> 32.

@@ -24,6 +24,7 @@ type t =
   | Lathe of Lathe.t
   | Superellipsoid of Superellipsoid.t
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
+  | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -227,6 +228,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Lathe l -> Lathe.hit_s l r tmin h
   | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
   | Polygon pg -> Polygon.hit_s pg r tmin h
+  | Height_field f -> Height_field.hit_s f r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -248,6 +250,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       Vec3.set out (k *. (p.mx -. center.x)) (k *. (p.my -. center.y)) (k *. (p.mz -. center.z))
   | Plane { normal; _ } | Disc { normal; _ } | Triangle { n = normal; _ } -> Vec3.load out normal
   | Polygon pg -> Vec3.load out (Polygon.normal pg)
+  | Height_field f -> Height_field.normal_into f p h out
   | Box _ -> (
       match int_of_float h.id with
       | 0 -> Vec3.load out minus_x
@@ -321,6 +324,7 @@ let[@inline] inside_xyz s x y z =
   | Disc { center = c; normal = n; _ } -> ((x -. c.x) *. n.x) +. ((y -. c.y) *. n.y) +. ((z -. c.z) *. n.z) < 0.
   | Triangle _ | Smooth_triangle _ | Polygon _ -> false
   | Mesh m -> Mesh.inside m (Vec3.make x y z)
+  | Height_field f -> Height_field.inside f x y z
   | Algebraic a -> Algebraic.inside a x y z
   | Text t -> Text.inside t x y z
   | Blob b -> Blob.inside b x y z
@@ -360,3 +364,4 @@ let bounds = function
   | Lathe l -> Some (Lathe.bounds l)
   | Superellipsoid _ -> Some Superellipsoid.bounds
   | Polygon pg -> Some (Polygon.bounds pg)
+  | Height_field f -> Some (Height_field.bounds f)

@@ -33,6 +33,7 @@ type t =
   | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
   | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
+  | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

@@ -211,6 +211,7 @@ let shape (o : Sdl.obj) =
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
   | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
+  | Sdl.Height_field hf -> Shape.Height_field (Height_field.place hf.field o.xform)
   | Sdl.Polygon pts -> (
       match Polygon.make pts with Ok (p, _) -> Shape.Polygon p | Error e -> Diag.error o.loc "polygon: %s" e)
   | Sdl.Lathe (spline, points) -> (

@@ -29,6 +29,7 @@ open Gram
 %token <string> UNDEFINED_ID
 %token <Fn.t> FUNCTION_ID
 %token <Fn.t> FUNCTION_LIT  (* a function { ... } the supplier compiled *)
+%token <int * int * Fn.t * string option> FUNCTION_SIZED  (* height_field's function W, H { ... } *)
 %token <string> FUNC
 %token <string> MEMBER
 %token <string> RGB
@@ -47,6 +48,7 @@ open Gram
 %start <Value.t> paren_expr
 %start <Value.t> expr_then_semi
 %start <Value.t> expr_then_comma
+%start <Value.t> expr_then_lbrace
 %start <Value.t> expr_then_rparen
 %start <Value.t * bool> expr_then_sep
 %start <Value.t> expr_then_rbracket
@@ -79,6 +81,7 @@ open Gram
 %public paren_expr: LPAREN e = expr RPAREN { e }
 
 %public expr_then_semi: e = expr SEMI { e }
+%public expr_then_lbrace: e = expr LBRACE { e }
 
 %public expr_then_comma: e = expr COMMA { e }
 

@@ -8,7 +8,8 @@
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
-%token LATHE SUPERELLIPSOID POLYGON
+%token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
+%token <string> IMAGE_KIND
 
 %%
 
@@ -70,6 +71,8 @@
       { Shapes.obj (loc $loc) (Shapes.lathe (loc $loc) kinds (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | POLYGON LBRACE n = param pts = list(prism_point) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.polygon (loc $loc) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
+  | HEIGHT_FIELD LBRACE src = hf_source os = list(hf_option) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.height_field src os) ms }
   | SUPERELLIPSOID LBRACE e = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.superellipsoid (loc $loc(e)) e) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
@@ -163,6 +166,19 @@ items_rev:
   | BOUNDED_BY LBRACE cs = nonempty_list(object_) RBRACE { Shapes.bounded cs }
   | BOUNDED_BY LBRACE CLIPPED_BY RBRACE { Shapes.bound_by_clip (loc $loc) }
   | CLIPPED_BY LBRACE BOUNDED_BY RBRACE { Shapes.clip_by_bound (loc $loc) }
+
+hf_source:
+  | f = FUNCTION_SIZED { let (w, h, fn, text) = f in Shapes.Hf_fn (loc $loc, w, h, fn, text) }
+  | k = hf_kind f = string_arg { Shapes.Hf_file (loc $loc(f), Some k, f) }
+  | f = string_arg { Shapes.Hf_file (loc $loc(f), None, f) }
+
+hf_kind:
+  | PNG { "png" }
+  | k = IMAGE_KIND { k }
+
+hf_option:
+  | SMOOTH { Shapes.Hf_smooth }
+  | WATER_LEVEL e = param { Shapes.Hf_water (loc $loc(e), fl $loc(e) e) }
 
 object_flag:
   | NO_IMAGE { Sdl.no_image }

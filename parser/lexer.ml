@@ -54,6 +54,10 @@ let object_keywords =
     ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
     ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID); ("polygon", POLYGON);
+    ("height_field", HEIGHT_FIELD); ("water_level", WATER_LEVEL); ("smooth", SMOOTH);
+    ("gif", IMAGE_KIND "gif"); ("tga", IMAGE_KIND "tga"); ("iff", IMAGE_KIND "iff"); ("ppm", IMAGE_KIND "ppm");
+    ("pgm", IMAGE_KIND "pgm"); ("sys", IMAGE_KIND "sys"); ("jpeg", IMAGE_KIND "jpeg"); ("tiff", IMAGE_KIND "tiff");
+    ("bmp", IMAGE_KIND "bmp"); ("exr", IMAGE_KIND "exr"); ("hdr", IMAGE_KIND "hdr"); ("pot", IMAGE_KIND "pot");
   ]
 
 (* grammar_texture.mly *)
@@ -201,6 +205,11 @@ let describe = function
           let found = ref None in
           Words.iter (fun k v -> if v = Tok t then found := Some k) keywords;
           match !found with Some k -> "keyword " ^ k | None -> "a declared identifier"))
+
+let keyword_of raw =
+  let found = ref None in
+  Words.iter (fun k v -> if v = raw then found := Some k) keywords;
+  !found
 
 exception Lex_error of string
 

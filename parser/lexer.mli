@@ -33,3 +33,6 @@ val keyword_names : unit -> string list
 val pov_reserved : string -> bool
 (** Whether a name is a POV-Ray 3.7 reserved word (so that an unsupported
     keyword can be reported by name). *)
+
+val keyword_of : raw -> string option
+(** The keyword a token stands for, if it is one. *)

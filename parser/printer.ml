@@ -144,6 +144,17 @@ let rec parts (o : Sdl.obj) =
             Printf.sprintf "cylinder { %s, %s, %s, strength %s }" (vec a) (vec b) (float radius) (float strength)
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
+  | Sdl.Height_field hf ->
+      let src =
+        match hf.source with
+        | Sdl.Hf_file (kind, file) ->
+            (match kind with Some k -> k ^ " " | None -> "") ^ Printf.sprintf "%S" file
+        | Sdl.Hf_function (w, h, Some body) -> Printf.sprintf "function %d, %d { %s }" w h body
+        | Sdl.Hf_function (w, h, None) -> Printf.sprintf "function %d, %d { 0 /* a pigment function */ }" w h
+      in
+      simple
+        (Printf.sprintf "height_field { %s%s%s" src (if hf.smooth then " smooth" else "")
+           (if hf.water <> 0. then " water_level " ^ float hf.water else ""))
   | Sdl.Superellipsoid (e, n) -> simple (Printf.sprintf "superellipsoid { <%s, %s>" (float e) (float n))
   | Sdl.Polygon pts ->
       simple

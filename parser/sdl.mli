@@ -23,6 +23,7 @@ type shape =
   | Lathe of Prism.spline * (float * float) array
   | Superellipsoid of float * float  (** e, n *)
   | Polygon of Vec3.t array  (** the points as written *)
+  | Height_field of height_field
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj
@@ -44,6 +45,18 @@ and algebraic = {
   coef : float array;  (** POV-Ray's term order (see {!Camlray.Algebraic.make}) *)
   quadric : bool;  (** a [quadric]: inside where the polynomial is <= 0 *)
 }
+
+and height_field = {
+  source : hf_source;
+  smooth : bool;
+  water : float;  (** water_level, 0 .. 1 *)
+  field : Height_field.t;  (** the grid read or computed *)
+}
+
+and hf_source =
+  | Hf_file of string option * string  (** the file type word (png, pgm, ...) if written, the file as written *)
+  | Hf_function of int * int * string option
+      (** width, height, the body's text (None for a pigment function) *)
 
 and text = {
   font : string;  (** as written *)

@@ -150,6 +150,61 @@ let polygon loc (nloc, n) pts =
    | Error e -> Diag.error loc "polygon: %s" e);
   Sdl.Polygon points
 
+(* height_field: its source, options as the grammar reads them *)
+type hf_source = Hf_file of Loc.t * string option * string | Hf_fn of Loc.t * int * int * Fn.t * string option
+type hf_option = Hf_smooth | Hf_water of Loc.t * float
+
+let height_field src opts =
+  let smooth = List.mem Hf_smooth opts in
+  let water = List.fold_left (fun w o -> match o with Hf_water (_, x) -> x | Hf_smooth -> w) 0. opts in
+  List.iter
+    (function
+      | Hf_water (l, x) when x < 0. || x > 1. -> Diag.warning l (Printf.sprintf "water_level %g is outside 0 .. 1" x)
+      | _ -> ())
+    opts;
+  let (w, h, v), source =
+    match src with
+    | Hf_file (loc, kind, file) -> (
+        (match kind with
+         | Some ("gif" | "tga" | "iff" | "sys" | "jpeg" | "tiff" | "bmp" | "exr" | "hdr" | "pot" as k) ->
+             Diag.error loc "height_field: %s files are not supported by camlray (png, pgm and ppm are)" k
+         | _ -> ());
+        let path =
+          match Defaults.find_file loc file with
+          | Some p -> p
+          | None -> Diag.error loc "cannot find height_field image %s (looked in the scene's folder and the include path)" file
+        in
+        match Hf_image.read path with
+        | im -> ((im.w, im.h, im.v), Sdl.Hf_file (kind, file))
+        | exception Failure m -> Diag.error loc "cannot read height_field image %s: %s" file m)
+    | Hf_fn (loc, w, h, f, text) ->
+        if w < 2 || h < 2 then Diag.error loc "a height_field function needs at least 2 x 2 points, found %d x %d" w h;
+        if w * h > 1 lsl 26 then Diag.error loc "a height_field function of %d x %d points is too large" w h;
+        (* Make_Pattern_Image: pixel (j, i) is the function at <j/(w-1), i/(h-1), 0> *)
+        let at =
+          if Fn.is_vector f then fun x y ->
+            let c = Fn.call_vector loc f [ x; y; 0. ] in
+            let g k = if k < Array.length c then c.(k) else 0. in
+            Hf_image.of_color (g 0) (g 1) (g 2)
+          else
+            match Fn.eval3 f with
+            | e -> fun x y -> Hf_image.of_float (e x y 0.)
+            | exception Invalid_argument m -> Diag.error loc "height_field function: %s" m
+        in
+        let v = Array.make (w * h) 0 in
+        for i = 0 to h - 1 do
+          for j = 0 to w - 1 do
+            v.((i * w) + j) <- at (float j /. float (w - 1)) (float i /. float (h - 1))
+          done
+        done;
+        ((w, h, v), Sdl.Hf_function (w, h, text))
+  in
+  (match src with
+   | Hf_file (loc, _, file) when w < 2 || h < 2 ->
+       Diag.error loc "height_field image %s is %d x %d: at least 2 x 2 pixels are needed" file w h
+   | _ -> ());
+  Sdl.Height_field { source; smooth; water; field = Height_field.make ~width:w ~depth:h ~heights:v ~smooth ~water }
+
 let superellipsoid loc v =
   match v with
   | Value.Vector [| e; n |] ->

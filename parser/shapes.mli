@@ -59,6 +59,15 @@ val polygon : Loc.t -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
     plane (2-vectors have z 0); an outline left open is closed with a
     warning. *)
 
+type hf_source = Hf_file of Loc.t * string option * string | Hf_fn of Loc.t * int * int * Fn.t * string option
+type hf_option = Hf_smooth | Hf_water of Loc.t * float
+
+val height_field : hf_source -> hf_option list -> Sdl.shape
+(** [height_field { png "file" | function W, H { ... } [smooth] [water_level w] }]:
+    the file found as fonts are (a located error when it is missing or
+    unreadable), the function sampled at W x H points; see
+    {!Camlray.Height_field}. *)
+
 val superellipsoid : Loc.t -> Value.t -> Sdl.shape
 (** [superellipsoid { <e, n> }]: both exponents positive. *)
 

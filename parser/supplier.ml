@@ -126,8 +126,28 @@ and ident t name loc =
             parse t Parser.Incremental.default_body;
             next t
           end
-          else if name = "function" then (Parser.FUNCTION_LIT (function_lit t loc), loc)
+          else if name = "function" then
+            match (raw_peek t).raw with
+            | Tok Parser.LPAREN | Tok Parser.LBRACE -> (Parser.FUNCTION_LIT (function_lit t loc), loc)
+            | _ ->
+                (* height_field's function W, H { ... }: POV-Ray rounds the sizes *)
+                let size v = int_of_float (Float.floor (Value.to_float loc v +. 0.5)) in
+                let w = size (parse t Parser.Incremental.expr_then_comma) in
+                let h = size (parse t Parser.Incremental.expr_then_lbrace) in
+                let f, text = function_body t loc [ "x"; "y"; "z" ] in
+                (Parser.FUNCTION_SIZED (w, h, f, text), loc)
           else if List.mem name [ "trace"; "inside"; "min_extent"; "max_extent" ] then probe t name loc
+          else if name = "hf_gray_16" then begin
+            (* an output setting (16-bit grey files): read and ignored *)
+            (match (raw_peek t).raw with
+            | Tok (Parser.FLOAT _) | Ident ("on" | "off" | "true" | "false" | "yes" | "no") -> ignore (raw_next t)
+            | _ -> ());
+            if not (List.mem name t.skipped) then begin
+              t.skipped <- name :: t.skipped;
+              Diag.warning loc "hf_gray_16 (16-bit grey output files) is read and ignored"
+            end;
+            next t
+          end
           else if name = "file_exists" then begin
             expect_tok t Parser.LPAREN "'(' after file_exists";
             let file = parse t Parser.Incremental.string_arg in
@@ -239,24 +259,28 @@ and function_lit t loc =
     | _ -> [ "x"; "y"; "z" ]
   in
   expect_tok t Parser.LBRACE "'{' to open the function's body";
+  fst (function_body t loc params)
+
+(* the body after its '{', and its text when it is an expression *)
+and function_body t loc params =
   match (raw_peek t).raw with
   | Tok Parser.TRANSFORM ->
       if params <> [ "x"; "y"; "z" ] then fail t loc "a transform function takes no parameter list";
       let tr = parse t Parser.Incremental.transform_arg in
       expect_tok t Parser.RBRACE "'}' to close the function";
-      Fn.of_transform tr
+      (Fn.of_transform tr, None)
   | Ident "spline" ->
       if params <> [ "x"; "y"; "z" ] then fail t loc "a spline function takes no parameter list";
       let sloc = (raw_next t).loc in
       let s = Splread.read t sloc in
       expect_tok t Parser.RBRACE "'}' to close the function";
-      Fn.of_spline (Spline.eval s)
+      (Fn.of_spline (Spline.eval s), None)
   | Tok Parser.PIGMENT -> (
       if params <> [ "x"; "y"; "z" ] then fail t loc "a pigment function takes no parameter list";
       match parse t Parser.Incremental.declare_rhs with
       | Decl.Pigment p ->
           expect_tok t Parser.RBRACE "'}' to close the function";
-          Fn.of_pigment p
+          (Fn.of_pigment p, None)
       | _ -> fail t loc "expected a pigment { ... } in this function")
   | _ ->
   let rec body depth acc =
@@ -283,7 +307,39 @@ and function_lit t loc =
         | Some (Env.Unsupported u) -> unsupported_name t name u nloc
         | _ -> Fnparse.Unknown)
   in
-  Fnparse.compile ~resolve ~params toks
+  (Fnparse.compile ~resolve ~params toks, source_text toks)
+
+(* the text of a function's body from its tokens (None if one of them
+   cannot be written back) *)
+and source_text toks =
+  let word = function
+    | Ident s -> Some s
+    | Eof -> Some ""
+    | Directive _ -> None
+    | Tok tk -> (
+        match tk with
+        | Parser.FLOAT f -> Some (Printf.sprintf "%.17g" f)
+        | Parser.FUNC f -> Some f
+        | Parser.MEMBER m -> Some ("." ^ m)
+        | Parser.STRING s -> Some (Printf.sprintf "%S" s)
+        | Parser.LBRACE -> Some "{" | Parser.RBRACE -> Some "}" | Parser.LPAREN -> Some "("
+        | Parser.RPAREN -> Some ")" | Parser.LBRACKET -> Some "[" | Parser.RBRACKET -> Some "]"
+        | Parser.LT -> Some "<" | Parser.GT -> Some ">" | Parser.LE -> Some "<=" | Parser.GE -> Some ">="
+        | Parser.EQ -> Some "=" | Parser.NE -> Some "!=" | Parser.PLUS -> Some "+" | Parser.MINUS -> Some "-"
+        | Parser.STAR -> Some "*" | Parser.SLASH -> Some "/" | Parser.COMMA -> Some ","
+        | Parser.QUESTION -> Some "?" | Parser.COLON -> Some ":" | Parser.AND -> Some "&" | Parser.OR -> Some "|"
+        | Parser.BANG -> Some "!"
+        | Parser.RGB k | Parser.CHANNEL k -> Some k
+        | _ -> Lexer.keyword_of (Tok tk))
+  in
+  let rec go acc i =
+    if i >= Array.length toks then Some (String.concat " " (List.rev acc))
+    else match word toks.(i).raw with
+      | Some "" -> go acc (i + 1)
+      | Some w -> go (w :: acc) (i + 1)
+      | None -> None
+  in
+  go [] 0
 
 and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
  fun t start ->

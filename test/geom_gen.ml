@@ -103,6 +103,16 @@ let gpolygon =
     (gvec 0.5) gdir
     (list_size (int_range 3 8) (fr 0.4 1.5))
 
+(* a 2..6 x 2..6 grid of random heights, sometimes a water level *)
+let gheight_field =
+  let open QCheck.Gen in
+  int_range 2 6 >>= fun w ->
+  int_range 2 6 >>= fun d ->
+  map2
+    (fun hs water -> Shape.Height_field (Height_field.make ~width:w ~depth:d ~heights:(Array.of_list hs) ~smooth:false ~water))
+    (list_size (return (w * d)) (int_range 0 65535))
+    (oneof_list [ 0.; 0.; 0.3 ])
+
 (* A non-degenerate shape around the origin (within ~2 units). *)
 let gshape =
   let open QCheck.Gen in
@@ -121,6 +131,7 @@ let gshape =
       galgebraic;
       gblob;
       gpolygon;
+      gheight_field;
     ]
 
 let gxform =
@@ -133,6 +144,29 @@ let gxform =
 let gray =
   let open QCheck.Gen in
   map2 (fun o target -> Ray.make o (Vec3.sub target o)) (gvec 8.) (gvec 1.5)
+
+(* A height field's hit may lie on a triangle's plane up to 1e-4 grid units
+   past its edges (POV-Ray's tolerance): the smallest height difference
+   from the planes of the triangles within that reach, object units. *)
+let hf_residual f (p : Vec3.t) =
+  let w = Height_field.width f and d = Height_field.depth f in
+  let sx = float (w - 1) and sz = float (d - 1) in
+  let gx = p.x *. sx and gz = p.z *. sz and gy = p.y *. 65536. in
+  let h = Height_field.height f in
+  let best = ref infinity in
+  for cx = Int.max 0 (truncate gx - 1) to Int.min (w - 2) (truncate gx + 1) do
+    for cz = Int.max 0 (truncate gz - 1) to Int.min (d - 2) (truncate gz + 1) do
+      let s = gx -. float cx and u = gz -. float cz in
+      if s >= -2e-4 && u >= -2e-4 && s +. u <= 1.0002 then
+        best := Float.min !best (Float.abs (gy -. (h cx cz +. (s *. (h (cx + 1) cz -. h cx cz)) +. (u *. (h cx (cz + 1) -. h cx cz)))));
+      if s <= 1.0002 && u <= 1.0002 && s +. u >= 0.9998 then
+        let y4 = h (cx + 1) (cz + 1) in
+        best :=
+          Float.min !best
+            (Float.abs (gy -. (y4 +. ((1. -. s) *. (h cx (cz + 1) -. y4)) +. ((1. -. u) *. (h (cx + 1) cz -. y4)))))
+    done
+  done;
+  !best /. 65536.
 
 (* Distance-like residual of a point (object space) from the surface. *)
 let residual (s : Shape.t) (p : Vec3.t) =
@@ -168,6 +202,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       ignore c;
       Float.abs (Vec3.dot (Vec3.sub p a) n)
   | Shape.Polygon pg -> Float.abs (Vec3.dot (Polygon.normal pg) (Vec3.sub p (Polygon.point pg)))
+  | Shape.Height_field f -> hf_residual f p
   | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Superellipsoid _ -> 0.
   | Shape.Blob b ->
       (* the field's distance from the generator's threshold over its slope *)
@@ -202,6 +237,7 @@ let shape_name (s : Shape.t) =
   | Shape.Lathe _ -> "lathe"
   | Shape.Superellipsoid _ -> "superellipsoid"
   | Shape.Polygon _ -> "polygon"
+  | Shape.Height_field _ -> "height_field"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =
