@@ -49,7 +49,7 @@ let world_box xf = function
    wider than its surface): what intersections and clips may trust. *)
 let rec solid_box o =
   match o.geom with
-  | Prim (Shape.Disc _) -> None
+  | Prim (Shape.Disc _ | Shape.Height_field _) -> None  (* a height field: the column under it too *)
   | Prim _ | Intersection _ -> o.bounds
   | Union cs | Merge cs ->
       if Array.length cs = 0 then o.bounds

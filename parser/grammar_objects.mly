@@ -169,7 +169,7 @@ items_rev:
 
 hf_source:
   | f = FUNCTION_SIZED { let (w, h, fn, text) = f in Shapes.Hf_fn (loc $loc, w, h, fn, text) }
-  | k = hf_kind f = string_arg { Shapes.Hf_file (loc $loc(f), Some k, f) }
+  | k = hf_kind f = string_arg { Shapes.Hf_file (loc $loc, Some k, f) }
   | f = string_arg { Shapes.Hf_file (loc $loc(f), None, f) }
 
 hf_kind:

@@ -126,7 +126,8 @@ let fixpoint () =
        hierarchy off pigment { rgb 1 } rotate 10*z }\n\
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
      lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
-     superellipsoid { <0.3, 2> scale 2 }\n"
+     superellipsoid { <0.3, 2> scale 2 }\n\
+     height_field { function 4, 3 { x * y + 0.1 } smooth water_level 0.1 hierarchy off scale <2, 1, 2> }\n"
   in
   let text =
     if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then

@@ -427,6 +427,111 @@ let polygon_units =
           (bad [| v 0. 0. 0.; v 1. 0. 0.; v 1. 1. 0.; v 0. 1. 0.5; v 0. 0. 0. |]));
   ]
 
+(* height_field: known answers, POV-Ray's pixel mapping and diagonal (as
+   povray's trace() gave them), water level, smooth normals, the parser *)
+let hf_units =
+  let mk ?(smooth = false) ?(water = 0.) w d hs = Height_field.make ~width:w ~depth:d ~heights:(Array.of_list hs) ~smooth ~water in
+  let down_at f px pz =
+    let h = Hit.create infinity in
+    let r = Ray.make (v px 2. pz) down in
+    if Shape.hit (Shape.Height_field f) r 0. h then Some (h.t, Shape.normal (Shape.Height_field f) (Ray.at r h.t) h)
+    else None
+  in
+  let surface_y f px pz = match down_at f px pz with Some (t, _) -> 2. -. t | None -> nan in
+  let write_file name contents =
+    let p = Filename.concat (Sys.getcwd ()) name in
+    Out_channel.with_open_bin p (fun oc -> output_string oc contents);
+    p
+  in
+  let parsed_field src =
+    let sdl = match Camlray_lang.Parse.string src with Ok s -> s | Error d -> Alcotest.fail (Camlray_lang.Diag.to_string d) in
+    match sdl.Camlray_lang.Sdl.items with
+    | [ Camlray_lang.Sdl.Object { shape = Camlray_lang.Sdl.Height_field hf; _ } ] -> (sdl, hf.field)
+    | _ -> Alcotest.fail "not one height field"
+  in
+  [
+    Alcotest.test_case "height_field: a flat field is hit where its plane is, normal up" `Quick (fun () ->
+        let f = mk 3 4 (List.init 12 (fun _ -> 32768)) in
+        match down_at f 0.3 0.7 with
+        | Some (t, n) ->
+            Alcotest.(check (float 1e-12)) "t" 1.5 t;
+            Alcotest.(check bool) "normal +y" true (vclose n y)
+        | None -> Alcotest.fail "no hit");
+    Alcotest.test_case "height_field: a ramp's height and normal" `Quick (fun () ->
+        (* columns 0, 30000, 60000 on both rows: slope 60000/65536 over x *)
+        let f = mk 3 2 [ 0; 30000; 60000; 0; 30000; 60000 ] in
+        let k = 60000. /. 65536. in
+        Alcotest.(check (float 1e-12)) "height at x = 0.25" (0.25 *. k) (surface_y f 0.25 0.4);
+        match down_at f 0.8 0.5 with
+        | Some (_, n) ->
+            let e = Vec3.normalize (v (-.k) 1. 0.) in
+            if not (vclose n e) then Alcotest.failf "normal %s, expected %s" (Vec3.to_string n) (Vec3.to_string e)
+        | None -> Alcotest.fail "no hit");
+    Alcotest.test_case "height_field: the image's top row is z = 1, cells cut from (1,0) to (0,1)" `Quick (fun () ->
+        (* 2 x 2: only the bottom-left pixel (image row 1) is high: the corner x = 0, z = 0 *)
+        let f = mk 2 2 [ 0; 0; 65535; 0 ] in
+        Alcotest.(check (float 1e-9)) "(0.25, 0.25) on the corner's triangle" (65535. *. 0.5 /. 65536.) (surface_y f 0.25 0.25);
+        Alcotest.(check (float 1e-9)) "(0.4, 0.4) too" (65535. *. 0.2 /. 65536.) (surface_y f 0.4 0.4);
+        Alcotest.(check (float 1e-9)) "(0.6, 0.6) on the other, flat" 0. (surface_y f 0.6 0.6);
+        Alcotest.(check (float 1e-9)) "(0.1, 0.8) on the corner's triangle" (65535. *. 0.1 /. 65536.) (surface_y f 0.1 0.8));
+    Alcotest.test_case "height_field: water_level cuts the surface below it" `Quick (fun () ->
+        let hs = [ 0; 30000; 60000; 0; 30000; 60000 ] in
+        let dry = mk 3 2 hs and wet = mk ~water:0.5 3 2 hs in
+        Alcotest.(check bool) "low part without water" true (down_at dry 0.1 0.5 <> None);
+        Alcotest.(check bool) "low part under water: gone" true (down_at wet 0.1 0.5 = None);
+        Alcotest.(check (float 1e-12)) "high part stays" (surface_y dry 0.9 0.5) (surface_y wet 0.9 0.5);
+        Alcotest.(check bool) "inside under the water" true (Shape.inside (Shape.Height_field wet) (v 0.1 0.3 0.5));
+        Alcotest.(check bool) "inside under the surface" true (Shape.inside (Shape.Height_field dry) (v 0.9 0.5 0.5));
+        Alcotest.(check bool) "above is outside" false (Shape.inside (Shape.Height_field dry) (v 0.9 0.95 0.5)));
+    Alcotest.test_case "height_field: smooth normals blend the corners' normals" `Quick (fun () ->
+        (* flat then rising: the flat cell's smooth normal leans away from the rise *)
+        let hs = [ 0; 0; 60000; 0; 0; 60000; 0; 0; 60000 ] in
+        let f = mk ~smooth:true 3 3 hs in
+        let n_at px = match down_at f px 0.5 with Some (_, n) -> n | None -> Alcotest.fail "no hit" in
+        let n0 = n_at 0. and n1 = n_at 0.5 and nq = n_at 0.125 in
+        let e = Vec3.normalize (Vec3.add (Vec3.scale 0.75 n0) (Vec3.scale 0.25 n1)) in
+        if not (vclose ~eps:1e-9 nq e) then Alcotest.failf "blend %s, expected %s" (Vec3.to_string nq) (Vec3.to_string e);
+        Alcotest.(check bool) "leans to -x" true (nq.x < 0.);
+        (match down_at (mk 3 3 hs) 0.125 0.5 with
+         | Some (_, n) -> Alcotest.(check bool) "the flat triangle's is +y" true (vclose n y)
+         | None -> Alcotest.fail "no hit"));
+    Alcotest.test_case "height_field: a walk allocates nothing" `Quick (fun () ->
+        let f = mk 64 64 (List.init (64 * 64) (fun i -> (i * 7919) land 0xFFFF)) in
+        let s = Shape.Height_field f in
+        let r = Ray.of_ray (Ray.make (v (-0.5) 1.2 0.1) (Vec3.normalize (v 1. (-0.6) 0.8))) in
+        let h = Hit.create infinity in
+        ignore (Shape.hit_s s r 0. h);
+        let before = Gc.minor_words () in
+        for _ = 1 to 1000 do
+          h.t <- infinity;
+          ignore (Shape.hit_s s r 0. h)
+        done;
+        Alcotest.(check (float 0.)) "words" 0. (Gc.minor_words () -. before));
+    Alcotest.test_case "height_field: files and functions read as POV-Ray reads them (trace() values)" `Quick (fun () ->
+        let pgm = write_file "camlray-hf-test.pgm" "P5\n3 2\n255\n\x00\x33\x66\x99\xcc\xff" in
+        let _, f = parsed_field (Printf.sprintf "height_field { pgm %S }" pgm) in
+        (* povray 3.7: 52428 at (0.5, z = 0) (the bottom row, 204), 13107 at z = 1 (51) *)
+        Alcotest.(check (float 1e-6)) "bottom row" (52428. /. 65536.) (surface_y f 0.5 1e-9);
+        Alcotest.(check (float 1e-6)) "top row" (13107. /. 65536.) (surface_y f 0.5 (1. -. 1e-9));
+        let ppm = write_file "camlray-hf-test.ppm" "P6\n2 2\n255\n\xff\x00\x00\x00\xff\x00\x01\x02\x00\x80\x80\x80" in
+        let _, c = parsed_field (Printf.sprintf "height_field { ppm %S }" ppm) in
+        (* red the high byte: (r*256 + g)*255 *)
+        Alcotest.(check (float 0.)) "red" 65280. (Height_field.height c 0 1);
+        Alcotest.(check (float 0.)) "green" 255. (Height_field.height c 1 1);
+        Alcotest.(check (float 0.)) "1, 2" 258. (Height_field.height c 0 0);
+        Alcotest.(check (float 0.)) "grey 128" 32896. (Height_field.height c 1 0);
+        let _, fn = parsed_field "height_field { function 3, 2 { x*0.5 + y*0.25 } }" in
+        (* povray: 32767 at (0.5, z = 0) (y = 1), 16383 at z = 1 (y = 0) *)
+        Alcotest.(check (float 0.)) "fn at z = 0" 32767. (Height_field.height fn 1 0);
+        Alcotest.(check (float 0.)) "fn at z = 1" 16383. (Height_field.height fn 1 1);
+        let _, wrap = parsed_field "height_field { function 2, 2 { 1.5 } }" in
+        Alcotest.(check (float 0.)) "1.5 wraps to 32766 as in povray" 32766. (Height_field.height wrap 0 0);
+        let sdl, _ = parsed_field (Printf.sprintf "height_field { pgm %S smooth water_level 0.25 }" pgm) in
+        let text = String.concat "\n" (List.map Camlray_lang.Printer.item sdl.items) in
+        let sdl', _ = parsed_field text in
+        Alcotest.(check string) "printed back" text (String.concat "\n" (List.map Camlray_lang.Printer.item sdl'.items)));
+  ]
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ polygon_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
+  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
