@@ -439,7 +439,10 @@ let hf_units =
   in
   let surface_y f px pz = match down_at f px pz with Some (t, _) -> 2. -. t | None -> nan in
   let write_file name contents =
-    let p = Filename.concat (Sys.getcwd ()) name in
+    (* in the working folder (scenes may read there), removed when the
+       tests end *)
+    let p = Filename.concat (Sys.getcwd ()) (Printf.sprintf "%d-%s" (Unix.getpid ()) name) in
+    at_exit (fun () -> try Sys.remove p with Sys_error _ -> ());
     Out_channel.with_open_bin p (fun oc -> output_string oc contents);
     p
   in
