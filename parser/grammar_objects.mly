@@ -6,6 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
+%token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
@@ -73,6 +74,12 @@
       { Shapes.obj (loc $loc) (Shapes.polygon (loc $loc) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | HEIGHT_FIELD LBRACE src = hf_source os = list(hf_option) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.height_field src os) ms }
+  | BICUBIC_PATCH LBRACE os = list(patch_option) pts = list(prism_point) ms = list(object_mod) RBRACE
+      { (* POV-Ray's default steps: 0 (one cell: two triangles; measured) *)
+        let steps k = List.fold_left (fun acc (k', n) -> if k = k' then n else acc) 0 os in
+        Shapes.obj (loc $loc)
+          (Shapes.bicubic_patch (loc $loc) ~u_steps:(steps `U) ~v_steps:(steps `V)
+             (Array.of_list (List.map (fun (l, p) -> Value.to_vec3 l p) pts))) ms }
   | SUPERELLIPSOID LBRACE e = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.superellipsoid (loc $loc(e)) e) ms }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
@@ -184,3 +191,14 @@ object_flag:
   | NO_IMAGE { Sdl.no_image }
   | NO_REFLECTION { Sdl.no_reflection }
   | DOUBLE_ILLUMINATE { Sdl.double_illuminate }
+
+(* type 0|1, flatness: how POV-Ray keeps its subpatches (camlray always
+   cuts down to the steps); u_steps, v_steps *)
+patch_option:
+  | TYPE e = param
+      { let t = Value.to_int (loc $loc(e)) e in
+        if t <> 0 && t <> 1 then Diag.error (loc $loc(e)) "a bicubic_patch's type is 0 or 1, found %d" t;
+        (`T, t) }
+  | FLATNESS e = param { ignore (fl $loc(e) e); (`F, 0) }
+  | U_STEPS e = param { (`U, Value.to_int (loc $loc(e)) e) }
+  | V_STEPS e = param { (`V, Value.to_int (loc $loc(e)) e) }

@@ -8,7 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
-%token WARP REPEAT BLACK_HOLE OFFSET FLIP
+%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -283,6 +283,9 @@
   | es = list(map_entry) { Array.of_list (List.concat es) }
 
 %public pigment_mod:
+  (* the colour of POV-Ray's low-quality previews (+Q5 and below): camlray
+     renders at full quality, so it is read and not used *)
+  | QUICK_COLOR c = color_value { ignore c; fun p -> p }
   | t = transformation { Texdesc.transform t }
   | m = pattern_mod { m }
   | COLOR_MAP LBRACE m = color_map_body RBRACE { Texdesc.map (Array.to_list m) }

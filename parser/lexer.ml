@@ -54,6 +54,7 @@ let object_keywords =
     ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
     ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID); ("polygon", POLYGON);
+    ("bicubic_patch", BICUBIC_PATCH); ("type", TYPE); ("flatness", FLATNESS); ("u_steps", U_STEPS); ("v_steps", V_STEPS);
     ("height_field", HEIGHT_FIELD); ("water_level", WATER_LEVEL); ("smooth", SMOOTH);
     ("gif", IMAGE_KIND "gif"); ("tga", IMAGE_KIND "tga"); ("iff", IMAGE_KIND "iff"); ("ppm", IMAGE_KIND "ppm");
     ("pgm", IMAGE_KIND "pgm"); ("sys", IMAGE_KIND "sys"); ("jpeg", IMAGE_KIND "jpeg"); ("tiff", IMAGE_KIND "tiff");
@@ -80,7 +81,7 @@ let texture_keywords =
     ("color_map", COLOR_MAP); ("colour_map", COLOR_MAP); ("pigment_map", PIGMENT_MAP);
     ("checker", CHECKER); ("hexagon", HEXAGON); ("brick", BRICK); ("brick_size", BRICK_SIZE);
     ("mortar", MORTAR); ("gradient", GRADIENT); ("radial", RADIAL); ("onion", ONION); ("planar", PLANAR); ("spherical", SPHERICAL); ("boxed", BOXED); ("pigment_pattern", PIGMENT_PATTERN); ("slope_map", SLOPE_MAP); ("warp", WARP); ("repeat", REPEAT); ("black_hole", BLACK_HOLE);
-    ("offset", OFFSET); ("flip", FLIP); ("cylindrical", CYLINDRICAL);
+    ("offset", OFFSET); ("flip", FLIP); ("quick_color", QUICK_COLOR); ("quick_colour", QUICK_COLOR); ("cylindrical", CYLINDRICAL);
     ("bozo", BOZO); ("spotted", SPOTTED); ("granite", GRANITE); ("marble", MARBLE);
     ("wood", WOOD); ("agate", AGATE); ("agate_turb", AGATE_TURB); ("leopard", LEOPARD);
     ("ripples", RIPPLES); ("waves", WAVES); ("wrinkles", WRINKLES); ("bumps", BUMPS);

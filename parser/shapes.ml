@@ -294,6 +294,81 @@ let mesh _loc tris =
     { verts = fa_of_vecs (List.rev !verts); normals = fa_of_vecs normals; faces; normal_faces;
       face_textures; textures = Array.of_list textures; inside_vector = None }
 
+(* POV-Ray's bicubic_patch: the Bezier patch of 16 control points (four
+   rows of four, u along a row, v down the rows), cut into 2^u_steps x
+   2^v_steps cells of two triangles each, with the patch's own normals
+   at their corners. POV-Ray subdivides the same way (down to those
+   steps, sooner where flatness allows: camlray always goes down to
+   them) and takes the normal at a hit from the patch. *)
+let bicubic_patch loc ~u_steps ~v_steps (pts : Vec3.t array) =
+  if Array.length pts <> 16 then
+    Diag.error loc "a bicubic_patch needs 16 control points, found %d" (Array.length pts);
+  let check what n =
+    if n < 0 || n > 10 then Diag.error loc "%s goes from 0 to 10, found %d" what n
+  in
+  check "u_steps" u_steps;
+  check "v_steps" v_steps;
+  let nu = 1 lsl u_steps and nv = 1 lsl v_steps in
+  let bern t = let s = 1. -. t in [| s *. s *. s; 3. *. t *. s *. s; 3. *. t *. t *. s; t *. t *. t |] in
+  let dbern t =
+    let s = 1. -. t in
+    [| -3. *. s *. s; (3. *. s *. s) -. (6. *. t *. s); (6. *. t *. s) -. (3. *. t *. t); 3. *. t *. t |]
+  in
+  let sum wu wv =
+    let x = ref 0. and y = ref 0. and z = ref 0. in
+    for i = 0 to 3 do
+      for j = 0 to 3 do
+        let w = wv.(i) *. wu.(j) and (p : Vec3.t) = pts.((4 * i) + j) in
+        x := !x +. (w *. p.x);
+        y := !y +. (w *. p.y);
+        z := !z +. (w *. p.z)
+      done
+    done;
+    Vec3.make !x !y !z
+  in
+  let normal u v =
+    let n u v = Vec3.cross (sum (dbern u) (bern v)) (sum (bern u) (dbern v)) in
+    let m = n u v in
+    if Vec3.length m > 1e-12 then Vec3.normalize m
+    else
+      (* a corner where an edge collapses: the normal just inside *)
+      let e = 1e-4 in
+      let m = n (if u > 0.5 then u -. e else u +. e) (if v > 0.5 then v -. e else v +. e) in
+      if Vec3.length m > 0. then Vec3.normalize m else Vec3.zero
+  in
+  let verts = Float.Array.make (3 * (nu + 1) * (nv + 1)) 0. in
+  let normals = Float.Array.make (3 * (nu + 1) * (nv + 1)) 0. in
+  for i = 0 to nv do
+    for j = 0 to nu do
+      let u = float j /. float nu and v = float i /. float nv in
+      let k = 3 * ((i * (nu + 1)) + j) in
+      let p = sum (bern u) (bern v) and n = normal u v in
+      Float.Array.set verts k p.x; Float.Array.set verts (k + 1) p.y; Float.Array.set verts (k + 2) p.z;
+      Float.Array.set normals k n.x; Float.Array.set normals (k + 1) n.y; Float.Array.set normals (k + 2) n.z
+    done
+  done;
+  let vert k = Vec3.make (Float.Array.get verts (3 * k)) (Float.Array.get verts ((3 * k) + 1)) (Float.Array.get verts ((3 * k) + 2)) in
+  (* the cells' two triangles, leaving out those an edge collapses to a
+     line (a patch's pole) *)
+  let faces = ref [] in
+  let add a b c =
+    let pa = vert a in
+    let area = Vec3.length (Vec3.cross (Vec3.sub (vert b) pa) (Vec3.sub (vert c) pa)) in
+    if area > 1e-14 then faces := c :: b :: a :: !faces
+  in
+  for i = 0 to nv - 1 do
+    for j = 0 to nu - 1 do
+      let k r c = (r * (nu + 1)) + c in
+      add (k i j) (k i (j + 1)) (k (i + 1) (j + 1));
+      add (k i j) (k (i + 1) (j + 1)) (k (i + 1) j)
+    done
+  done;
+  let faces = Array.of_list (List.rev !faces) in
+  if Array.length faces = 0 then Diag.error loc "this bicubic_patch is flat to a line or a point";
+  Sdl.Mesh
+    { verts; normals; faces; normal_faces = Array.copy faces; face_textures = [||]; textures = [||];
+      inside_vector = None }
+
 type mesh2_block =
   | Verts of Float.Array.t  (* x y z of each vertex *)
   | Normals of Float.Array.t

@@ -131,3 +131,8 @@ val default_texture : Sdl.obj -> Sdl.obj
 val blob_moved : Loc.t -> Camlray.Transform.t list -> Camlray.Blob.component -> Camlray.Blob.component
 (** A blob component's transformations (moves, turns, even scales; a
     stretch is a located error). *)
+
+val bicubic_patch : Loc.t -> u_steps:int -> v_steps:int -> Camlray.Vec3.t array -> Sdl.shape
+(** POV-Ray's [bicubic_patch] of 16 control points, as a smooth mesh of
+    2^u_steps x 2^v_steps cells (two triangles each) with the patch's
+    normals at their corners. *)

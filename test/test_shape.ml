@@ -535,6 +535,63 @@ let hf_units =
         Alcotest.(check string) "printed back" text (String.concat "\n" (List.map Camlray_lang.Printer.item sdl'.items)));
   ]
 
+(* bicubic_patch: a smooth mesh on the Bezier patch *)
+let patch_units =
+  let compile src =
+    match Camlray_lang.Parse.string src with
+    | Error d -> Alcotest.failf "%s" (Camlray_lang.Diag.to_string d)
+    | Ok sdl -> (
+        match Camlray_lang.Compile.scene sdl with
+        | Ok s -> s.objects.(0)
+        | Error d -> Alcotest.failf "%s" (Camlray_lang.Diag.to_string d))
+  in
+  let pts f =
+    String.concat ", "
+      (List.init 16 (fun k -> let i = k / 4 and j = k mod 4 in
+         let x, y, z = f (float j) (float i) in Printf.sprintf "<%g, %g, %g>" x y z))
+  in
+  let down o x y =
+    let r = Ray.make (Vec3.make x y (-10.)) Vec3.unit_z in
+    let h = Hit.create infinity and f = Object.found o in
+    if Object.hit o r 0. h f then
+      let p = Ray.at r h.t in
+      Some (p, Object.normal f.leaf p h)
+    else None
+  in
+  [
+    Alcotest.test_case "bicubic_patch: a flat patch is its plane" `Quick (fun () ->
+        let o = compile (Printf.sprintf "bicubic_patch { type 1 u_steps 2 v_steps 2 %s }" (pts (fun x y -> (x, y, 1.)))) in
+        (match down o 1.3 2.1 with
+         | Some (p, n) ->
+             Alcotest.(check (float 1e-9)) "z" 1. p.z;
+             Alcotest.(check (float 1e-9)) "normal along z" 1. (Float.abs n.z)
+         | None -> Alcotest.fail "missed");
+        Alcotest.(check bool) "outside missed" true (down o 3.2 1. = None));
+    Alcotest.test_case "bicubic_patch: its surface, as the Bezier formula gives it" `Quick (fun () ->
+        (* heights z = x (3 - x) y (3 - y) / 4 at the control points: at
+           u = v = 1/2 the patch is at x = y = 1.5, z = (sum of the
+           weights 1/8 3/8 3/8 1/8 times heights) = (3/4 * 2 / 4 ... ) *)
+        let h x y = x *. (3. -. x) *. y *. (3. -. y) /. 4. in
+        let o = compile (Printf.sprintf "bicubic_patch { u_steps 4 v_steps 4 %s }" (pts (fun x y -> (x, y, h x y)))) in
+        let w = [| 0.125; 0.375; 0.375; 0.125 |] in
+        let z = ref 0. in
+        for i = 0 to 3 do for j = 0 to 3 do z := !z +. (w.(i) *. w.(j) *. h (float j) (float i)) done done;
+        match down o 1.5 1.5 with
+        | Some (p, n) ->
+            (* a vertex of the 16 x 16 grid: exact *)
+            Alcotest.(check (float 1e-9)) "centre height" !z p.z;
+            (* symmetric: the normal is along z there *)
+            Alcotest.(check (float 1e-9)) "centre normal" 1. (Float.abs n.z)
+        | None -> Alcotest.fail "missed");
+    Alcotest.test_case "bicubic_patch: 16 points, steps 0 to 10" `Quick (fun () ->
+        let err src = match Camlray_lang.Parse.string src with
+          | Ok _ -> Alcotest.failf "accepted: %s" src | Error d -> d.msg in
+        Alcotest.(check string) "15 points" "a bicubic_patch needs 16 control points, found 15"
+          (err (Printf.sprintf "bicubic_patch { %s }" (String.concat ", " (List.init 15 (fun i -> Printf.sprintf "<%d,0,0>" i)))));
+        Alcotest.(check string) "steps" "u_steps goes from 0 to 10, found 11"
+          (err (Printf.sprintf "bicubic_patch { u_steps 11 %s }" (pts (fun x y -> (x, y, 0.))))));
+  ]
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
+  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
