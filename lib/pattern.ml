@@ -45,6 +45,7 @@ type kind =
   | Spiral2 of int
   | Quilted of { c0 : float; c1 : float }
   | Mandel of fractal
+  | Julia of { cr : float; ci : float; fractal : fractal }
   | Function of fn
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
@@ -238,10 +239,10 @@ type work = { p : Vec3.m; d : Vec3.m; r : result }
 
 let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
 
-(* mandel: z <- z^e + c from z = c = x + iy, until |z|^2 > 4 or the
+(* mandel: z <- z^e + c from z = c = x + iy (julia: c fixed), until |z|^2 > 4 or the
    iterations run out; exponents 2, 3 and 4 written out, others summed
    by the binomial expansion (signed coefficients, as POV-Ray sums them) *)
-let mandel_into f x y (w : work) =
+let fractal_into f ~cx ~cy x y (w : work) =
   let a = ref x and b = ref y in
   let a2 = ref (x *. x) and b2 = ref (y *. y) in
   let m2 = ref (!a2 +. !b2) in
@@ -251,14 +252,14 @@ let mandel_into f x y (w : work) =
     let a0 = !a and b0 = !b in
     (match e with
     | 2 ->
-        b := (2. *. a0 *. b0) +. y;
-        a := !a2 -. !b2 +. x
+        b := (2. *. a0 *. b0) +. cy;
+        a := !a2 -. !b2 +. cx
     | 3 ->
-        b := (3. *. !a2 *. b0) -. (!b2 *. b0) +. y;
-        a := (!a2 *. a0) -. (3. *. a0 *. !b2) +. x
+        b := (3. *. !a2 *. b0) -. (!b2 *. b0) +. cy;
+        a := (!a2 *. a0) -. (3. *. a0 *. !b2) +. cx
     | 4 ->
-        b := (4. *. ((!a2 *. a0 *. b0) -. (a0 *. !b2 *. b0))) +. y;
-        a := (!a2 *. !a2) -. (6. *. !a2 *. !b2) +. (!b2 *. !b2) +. x
+        b := (4. *. ((!a2 *. a0 *. b0) -. (a0 *. !b2 *. b0))) +. cy;
+        a := (!a2 *. !a2) -. (6. *. !a2 *. !b2) +. (!b2 *. !b2) +. cx
     | _ ->
         let re = ref (Float.pow a0 (float_of_int e)) and im = ref 0. and c = ref 1. in
         for k = 1 to e do
@@ -267,8 +268,8 @@ let mandel_into f x y (w : work) =
           let term = s *. Float.pow a0 (float_of_int (e - k)) *. Float.pow b0 (float_of_int k) in
           if k land 1 = 0 then re := !re +. term else im := !im +. term
         done;
-        a := !re +. x;
-        b := !im +. y);
+        a := !re +. cx;
+        b := !im +. cy);
     a2 := !a *. !a;
     b2 := !b *. !b;
     let d2 = !a2 +. !b2 in
@@ -342,7 +343,8 @@ let raw_m kind (w : work) =
   | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
-  | Mandel f -> mandel_into f x y w
+  | Mandel f -> fractal_into f ~cx:x ~cy:y x y w
+  | Julia { cr; ci; fractal } -> fractal_into fractal ~cx:cr ~cy:ci x y w
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)

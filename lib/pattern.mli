@@ -66,6 +66,8 @@ type kind =
       (** control0, control1: unit cells shaded by a cubic of the
           distance to their centre (frequency 0: no wrapping) *)
   | Mandel of fractal  (** the Mandelbrot set in the xy plane *)
+  | Julia of { cr : float; ci : float; fractal : fractal }
+      (** the Julia set of c = cr + i ci in the xy plane (z from the point) *)
   | Function of fn
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes

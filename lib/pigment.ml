@@ -31,7 +31,8 @@ let default_entries (k : Pattern.kind) =
   | Agate _ ->
       [| (0., sc 1. 1. 1.); (0.5, sc 0.95 0.75 0.5); (0.5, sc 0.9 0.7 0.5); (0.6, sc 0.9 0.7 0.4);
          (0.6, sc 1. 0.7 0.4); (1., sc 0.6 0.3 0.) |]
-  (* only for exponent 2: POV-Ray gives its other mandels the grey map *)
+  (* only for exponent 2: POV-Ray gives its other mandels, and julia, the
+     grey map *)
   | Mandel { exponent = 2; _ } ->
       [| (0.001, sc 0. 0. 0.); (0.001, sc 0. 1. 1.); (0.012, sc 1. 1. 0.); (0.015, sc 1. 0. 1.);
          (0.1, sc 0. 1. 1.) |]

@@ -19,6 +19,7 @@
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
+%token JULIA
 
 %%
 
@@ -230,6 +231,12 @@
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 then Diag.error (loc $loc(e)) "mandel needs at least 1 iteration";
         Pattern.Mandel (Pattern.mandel n) }
+  | JULIA c = param COMMA? e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n < 1 then Diag.error (loc $loc(e)) "julia needs at least 1 iteration";
+        match c with
+        | Value.Vector [| cr; ci |] -> Pattern.Julia { cr; ci; fractal = Pattern.mandel n }
+        | _ -> Diag.error (loc $loc(c)) "julia needs a 2-vector <re, im>, then the iterations" }
   (* function { EXPR } (or a declared function called in it): its value
      at the point, POV-Ray's function pattern *)
   | f = FUNCTION_LIT { Pattern.Function (Fn.pattern (loc $loc(f)) f) }
@@ -366,18 +373,21 @@
           Diag.warning (loc $loc(e)) "mandel exponents go from 2 to 33: using 2"; 2 end in
         Texdesc.kind_mod (function
           | Pattern.Mandel f -> Pattern.Mandel { f with exponent = n }
+          | Pattern.Julia j -> Pattern.Julia { j with fractal = { j.fractal with exponent = n } }
           | _ -> Diag.error (loc $loc) "exponent (in a pattern) can only be used with mandel") }
   | INTERIOR t = param COMMA? e = param
       { let t = Value.to_int (loc $loc(t)) t and x = fl $loc(e) e in
         if t < 0 || t > 6 then Diag.error (loc $loc(t)) "mandel interior types go from 0 to 6";
         Texdesc.kind_mod (function
           | Pattern.Mandel f -> Pattern.Mandel { f with interior = t; ifactor = x }
+          | Pattern.Julia j -> Pattern.Julia { j with fractal = { j.fractal with interior = t; ifactor = x } }
           | _ -> Diag.error (loc $loc) "interior (in a pattern) can only be used with mandel") }
   | EXTERIOR t = param COMMA? e = param
       { let t = Value.to_int (loc $loc(t)) t and x = fl $loc(e) e in
         if t < 0 || t > 8 then Diag.error (loc $loc(t)) "mandel exterior types go from 0 to 8";
         Texdesc.kind_mod (function
           | Pattern.Mandel f -> Pattern.Mandel { f with exterior = t; efactor = x }
+          | Pattern.Julia j -> Pattern.Julia { j with fractal = { j.fractal with exterior = t; efactor = x } }
           | _ -> Diag.error (loc $loc) "exterior can only be used with mandel") }
 
 (* normal { ... } changes the normal it is written over: modifiers alone

@@ -327,6 +327,22 @@ let warps () =
   Scn.check_message "sphere { 0, 1 pigment { bozo warp { repeat <1, 1, 0> } } }" "repeat needs a vector along one axis";
   Scn.check_message "sphere { 0, 1 pigment { bozo warp { black_hole 0, 0 } } }" "a black hole's radius must be positive"
 
+(* julia: the values POV-Ray prints through pigment functions *)
+let julia () =
+  let pts = [ (0.1, 0.2, 0.); (0.5, -0.3, 0.); (-0.7, 0.1, 0.4); (1.2, 0.9, 0.); (0., 0., 0.); (-0.2, -0.6, 0.) ] in
+  List.iter
+    (fun (src, expected) ->
+      let p = fn_pattern src in
+      List.iter2
+        (fun (x, y, z) e -> Scn.close ~eps:1e-6 (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e (Pattern.value p (Vec3.make x y z)))
+        pts expected)
+    [
+      ("julia <0.353, 0.288>, 30", [ 1.000000; 0.200000; 0.100000; 0.000000; 1.000000; 1.000000 ]);
+      ("julia <-0.4, 0.6>, 50 interior 1, 1", [ 0.260000; 0.205297; 0.960000; 0.000000; 0.500000; 0.060000 ]);
+      ("julia <0.353, 0.288>, 30 exponent 3 exterior 2, 0.5", [ 1.000000; 1.000000; 1.000000; 0.582500; 1.000000; 1.000000 ]);
+      ("julia <0.2, 0.5>, 20 interior 6, 0.3 exterior 6, 0.2", [ 0.065386; 0.474810; 0.445753; 0.557297; 0.057603; 0.109655 ]);
+    ]
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -444,6 +460,7 @@ let tests =
       Alcotest.test_case "boxed, cylindrical, pigment_pattern; gradient, onion, radial wraps = POV-Ray" `Quick shape_patterns;
       Alcotest.test_case "slope_map heights" `Quick slope_map;
       Alcotest.test_case "warps: repeat, black_hole, order with transforms = POV-Ray" `Quick warps;
+      Alcotest.test_case "julia = POV-Ray" `Quick julia;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
