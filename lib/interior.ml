@@ -5,15 +5,18 @@ type t = {
   fade_color : Color.t;
   hollow : bool;
   caustics : float;
+  media : Media.t list;
 }
 
 let default =
-  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black; hollow = false; caustics = 0. }
+  { ior = 1.; fade_distance = 0.; fade_power = 0.; fade_color = Color.black; hollow = false; caustics = 0.; media = [] }
 
 let[@inline] fade_channel i c d =
   if i.fade_distance = 0. then 1.
   else if i.fade_power >= 1000. then Float.exp (-.(1. -. c) *. d /. i.fade_distance)
   else c +. ((1. -. c) /. (1. +. Float.pow (d /. i.fade_distance) i.fade_power))
+
+let transform t i = if i.media = [] then i else { i with media = List.map (Media.transform t) i.media }
 
 (* Shadow rays fade only with a fade_power (povray 3.7: fade_power 0 fades
    what the eye sees through, by 1/2, but not the light) *)

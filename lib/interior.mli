@@ -13,6 +13,7 @@ type t = {
           none): a shadow ray through the surface carries (1 + |cos|^caustics)
           times the light it lets through, cos between the ray and the
           surface's normal (whitted mode) *)
+  media : Media.t list;  (** its [media { }], in source order (whitted mode) *)
 }
 
 val default : t
@@ -25,6 +26,10 @@ val fade_channel : t -> float -> float -> float
     (povray 3.7 does so for what is seen through; its shadow rays do not
     fade then, see {!Whitted}). Inlined where it is used (the distance is
     not boxed). *)
+
+val transform : Transform.t -> t -> t
+(** Move the densities of its media (the interior itself when it has none:
+    interiors are told apart by identity). *)
 
 val fades_light : t -> bool
 (** Whether a shadow ray fades inside: a fade distance and a fade power

@@ -23,11 +23,13 @@ type t = {
   fade_power : float;
   shadowless : bool;
   area : area option;
+  media_interaction : bool;
+  media_attenuation : bool;
 }
 
 let point position color =
   { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
-    area = None }
+    area = None; media_interaction = true; media_attenuation = false }
 
 let area axis1 axis2 n1 n2 =
   { axis1; axis2; n1 = max 1 n1; n2 = max 1 n2; adaptive = 100; circular = false;

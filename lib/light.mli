@@ -33,6 +33,8 @@ type t = {
   fade_power : float;
   shadowless : bool;
   area : area option;
+  media_interaction : bool;  (** scattered by media (true) *)
+  media_attenuation : bool;  (** dimmed by atmospheric media (false) *)
 }
 
 val point : Vec3.t -> Color.t -> t

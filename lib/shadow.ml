@@ -129,7 +129,7 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
     let c = o.interior.caustics in
     let k = if c = 0. then 1. else caustics w o q h c in
     Color.acc_set a (a.ar *. k *. f.ar) (a.ag *. k *. f.ag) (a.ab *. k *. f.ab);
-    if Interior.fades_light o.interior then add_fader w o h;
+    if Interior.fades_light o.interior || o.interior.media <> [] then add_fader w o h;
     not (Color.acc_is_black a)
   end
 
@@ -176,10 +176,14 @@ let fade_segments (w : walk) dist =
           p.oz <- r.oz +. (mid *. r.dz);
           if Object.inside_s o f then begin
             let d = hi -. lo in
-            Color.acc_set a
-              (a.ar *. Interior.fade_channel inner fc.r d)
-              (a.ag *. Interior.fade_channel inner fc.g d)
-              (a.ab *. Interior.fade_channel inner fc.b d)
+            if Interior.fades_light inner then
+              Color.acc_set a
+                (a.ar *. Interior.fade_channel inner fc.r d)
+                (a.ag *. Interior.fade_channel inner fc.g d)
+                (a.ab *. Interior.fade_channel inner fc.b d);
+            (* the interior's media dim the light (POV-Ray 3.7 does so
+               whatever the light's media_attenuation) *)
+            Media.transmittance_into inner.media r lo hi a
           end
         end
       done

@@ -111,6 +111,17 @@ let[@inline] fogged_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) med
         Fog.apply fogs o d t out
       end
 
+(* What a ray inside solids with media brings back from the point [p] it
+   hit, through them (see {!Volume}) *)
+let rec has_media = function [] -> false | (i : Interior.t) :: r -> i.media <> [] || has_media r
+
+let mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
+  if has_media media then begin
+    let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
+    let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
+    Volume.apply s o d t media out
+  end
+
 (* POV-Ray's iridescence, on the reflected light [rc]: a thin film of the
    finish's thickness (varied by camlray's noise with [irid_turb]) seen at
    cosines [ci] in and [cr] out shifts each channel's phase by its
@@ -163,6 +174,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
+      mediated_hit s o d p media out;
       fogged_hit s o d p media out;
       leave ()
     end

@@ -119,6 +119,8 @@ let light (o : Sdl.obj) (l : Sdl.light) =
     fade_distance = l.fade_distance;
     fade_power = l.fade_power;
     shadowless = l.shadowless;
+    media_interaction = l.media_interaction;
+    media_attenuation = l.media_attenuation;
     area =
       Option.map
         (fun (a : Light.area) ->

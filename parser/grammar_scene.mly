@@ -18,6 +18,7 @@
   | BACKGROUND LBRACE c = color_value RBRACE
       { Sdl.Background (Value.to_color (loc $loc(c)) c) }
   | GLOBAL_SETTINGS LBRACE g = list(global_item) RBRACE { Sdl.Global_settings (loc $loc, g) }
+  | MEDIA { Diag.error (loc $loc) "media at scene level (atmospheric media) is not supported by camlray" }
   | FOG LBRACE fs = list(fog_item) RBRACE
       { Sdl.Fog (Fogdesc.fog (loc $loc) (List.fold_left (fun d f -> f d) Fogdesc.empty fs)) }
 

@@ -20,6 +20,8 @@
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
 %token JULIA
+%token MEDIA ABSORPTION SCATTERING ECCENTRICITY EXTINCTION DENSITY METHOD INTERVALS SAMPLES
+%token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION
 
 %%
 
@@ -32,6 +34,7 @@
   | LIGHT_SOURCE LBRACE p = param COMMA? c = color_value ms = list(light_mod) RBRACE
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
                   kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
+                  media_interaction = true; media_attenuation = false;
                   area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
                   texture = None; interior = None; no_shadow = false; hollow = false; flags = 0 } in
@@ -57,6 +60,12 @@
   | FADE_DISTANCE e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_distance = d }) }
   | FADE_POWER e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_power = d }) }
   | SHADOWLESS { light_field (fun l -> { l with shadowless = true }) }
+  | MEDIA_INTERACTION %prec below_shift { light_field (fun l -> { l with media_interaction = true }) }
+  | MEDIA_INTERACTION b = param
+      { let on = Value.to_bool (loc $loc) b in light_field (fun l -> { l with media_interaction = on }) }
+  | MEDIA_ATTENUATION %prec below_shift { light_field (fun l -> { l with media_attenuation = true }) }
+  | MEDIA_ATTENUATION b = param
+      { let on = Value.to_bool (loc $loc) b in light_field (fun l -> { l with media_attenuation = on }) }
   | AREA_LIGHT a = param COMMA? b = param COMMA? n1 = param COMMA? n2 = param
       { let a = v3 $loc(a) a and b = v3 $loc(b) b in
         let n1 = Value.to_int (loc $loc(n1)) n1 and n2 = Value.to_int (loc $loc(n2)) n2 in
@@ -507,6 +516,55 @@ slope_entry:
       { let c = Value.to_rgb (loc $loc(c)) c in fun (i : Interior.t) -> { i with fade_color = c } }
   (* POV-Ray keeps 45 times the value written *)
   | CAUSTICS e = param { let x = 45. *. fl $loc(e) e in fun (i : Interior.t) -> { i with caustics = x } }
+  (* several media add up, in source order *)
+  | MEDIA LBRACE m = media_body RBRACE { fun (i : Interior.t) -> { i with media = i.media @ [ m ] } }
+
+(* media { ... }: POV-Ray's participating media, sampled as POV-Ray 3.7
+   does (see Camlray.Volume) *)
+%public media_body:
+  | ms = list(media_item) { List.fold_left (fun m f -> f m) Media.default ms }
+
+media_item:
+  | EMISSION c = color_value { let c = Value.to_rgb (loc $loc(c)) c in fun (m : Media.t) -> { m with emission = c } }
+  | ABSORPTION c = color_value { let c = Value.to_rgb (loc $loc(c)) c in fun (m : Media.t) -> { m with absorption = c } }
+  | SCATTERING LBRACE k = param COMMA c = color_value ss = list(scattering_item) RBRACE
+      { let k = Value.to_int (loc $loc(k)) k in
+        if k < 1 || k > 5 then Diag.error (loc $loc(k)) "scattering types go from 1 to 5";
+        let s = List.fold_left (fun s f -> f s) (Media.scattering k (Value.to_rgb (loc $loc(c)) c)) ss in
+        fun (m : Media.t) -> { m with scattering = Some s } }
+  (* several densities multiply *)
+  | DENSITY LBRACE e = pigment_edit RBRACE
+      { let d = e (Pigment.solid (Color.rgbft 1. 1. 1. 0. 0.)) in
+        fun (m : Media.t) -> { m with density = m.density @ [ d ] } }
+  | METHOD e = param
+      { let k = Value.to_int (loc $loc(e)) e in
+        if k = 1 then Diag.error (loc $loc) "media method 1 (random sampling) is not supported by camlray: use method 2 or 3";
+        if k < 1 || k > 3 then Diag.error (loc $loc(e)) "media methods go from 1 to 3";
+        fun (m : Media.t) -> { m with meth = k } }
+  | INTERVALS e = param
+      { let k = Value.to_int (loc $loc(e)) e in
+        if k < 1 then Diag.error (loc $loc(e)) "media needs at least 1 interval";
+        fun (m : Media.t) -> { m with intervals = k } }
+  | SAMPLES a = param b = preceded(COMMA, param)?
+      { let a = Value.to_int (loc $loc(a)) a in
+        let b = match b with Some b -> Value.to_int (loc $loc(b)) b | None -> a in
+        if a < 1 then Diag.error (loc $loc(a)) "media needs at least 1 sample";
+        if b < a then Diag.error (loc $loc(b)) "media's maximum samples must be at least its minimum";
+        fun (m : Media.t) -> { m with samples = a; samples_max = b } }
+  | CONFIDENCE e = param { let x = fl $loc(e) e in fun (m : Media.t) -> { m with confidence = x } }
+  | VARIANCE e = param { let x = fl $loc(e) e in fun (m : Media.t) -> { m with variance = x } }
+  | RATIO e = param { let x = fl $loc(e) e in fun (m : Media.t) -> { m with ratio = x } }
+  | JITTER e = param { let x = fl $loc(e) e in fun (m : Media.t) -> { m with jitter = x } }
+  | AA_THRESHOLD e = param { let x = fl $loc(e) e in fun (m : Media.t) -> { m with aa_threshold = x } }
+  | AA_LEVEL e = param
+      { let k = Value.to_int (loc $loc(e)) e in
+        if k < 1 then Diag.error (loc $loc(e)) "aa_level in media must be at least 1";
+        fun (m : Media.t) -> { m with aa_level = k } }
+  | t = transformation { Media.transform t }
+
+scattering_item:
+  | ECCENTRICITY e = param { let x = fl $loc(e) e in fun (s : Media.scattering) -> { s with eccentricity = x } }
+  | EXTINCTION e = param { let x = fl $loc(e) e in fun (s : Media.scattering) -> { s with extinction = x } }
 
 (* arrays of declared maps, normals and materials:
    #declare A = array[2] { M_Glass, M_Glass2 } *)

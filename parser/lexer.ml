@@ -96,6 +96,11 @@ let texture_keywords =
     ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED);
     ("control0", CONTROL0); ("control1", CONTROL1); ("mandel", MANDEL); ("exterior", EXTERIOR);
     ("average", AVERAGE); ("caustics", CAUSTICS);
+    ("media", MEDIA); ("absorption", ABSORPTION); ("scattering", SCATTERING);
+    ("eccentricity", ECCENTRICITY); ("extinction", EXTINCTION); ("density", DENSITY);
+    ("method", METHOD); ("intervals", INTERVALS); ("samples", SAMPLES); ("confidence", CONFIDENCE);
+    ("variance", VARIANCE); ("ratio", RATIO); ("aa_threshold", AA_THRESHOLD); ("aa_level", AA_LEVEL);
+    ("media_interaction", MEDIA_INTERACTION); ("media_attenuation", MEDIA_ATTENUATION);
   ]
 
 (* Keywords to their tokens, each token made once and shared by every

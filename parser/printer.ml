@@ -79,7 +79,9 @@ let rec parts (o : Sdl.obj) =
   | Sdl.Light l ->
       ( Printf.sprintf "light_source { %s, %s%s fade_distance %s fade_power %s%s" (vec l.position)
           (rgb l.color) (light_kind l.kind) (float l.fade_distance) (float l.fade_power)
-          (if l.shadowless then " shadowless" else ""),
+          (if l.shadowless then " shadowless" else "")
+          ^ (if l.media_interaction then "" else " media_interaction off")
+          ^ (if l.media_attenuation then " media_attenuation on" else ""),
         if Transform.is_identity o.xform then [] else [ matrix o.xform ] )
   | Sdl.Sphere (c, r) -> simple (Printf.sprintf "sphere { %s, %s" (vec c) (float r))
   | Sdl.Plane (n, d) -> simple (Printf.sprintf "plane { %s, %s" (vec n) (float d))

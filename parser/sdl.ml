@@ -90,6 +90,8 @@ and light = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  media_interaction : bool;
+  media_attenuation : bool;
   area : Light.area option;
   looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }
@@ -150,7 +152,8 @@ type scene = { items : item list; version : float option; file : string }
 let transform_texture t tex = Texture.transform t tex
 
 let transform_obj t o =
-  { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture }
+  { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture;
+    interior = Option.map (Interior.transform t) o.interior }
 
 let no_image = 1
 let no_reflection = 2

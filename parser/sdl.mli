@@ -94,6 +94,8 @@ and light = {
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+  media_interaction : bool;
+  media_attenuation : bool;
   area : Light.area option;
   looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }

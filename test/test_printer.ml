@@ -41,7 +41,7 @@ let gen_layer =
 
 let gen_interior =
   QCheck.Gen.(
-    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc; hollow = false; caustics = 0. })
+    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc; hollow = false; caustics = 0.; media = [] })
       (quad gen_pos gen_pos gen_pos gen_col))
 
 let gen_obj =
@@ -73,7 +73,8 @@ let gen_obj =
                 (fun p c (fd, fp, sh) ->
                   Sdl.Light
                     { Sdl.position = p; color = c; kind = Light.Point; fade_distance = fd;
-                      fade_power = fp; shadowless = sh; area = None; looks_like = None })
+                      fade_power = fp; shadowless = sh; media_interaction = not sh;
+                      media_attenuation = sh; area = None; looks_like = None })
                 gen_vec gen_col (triple gen_pos gen_pos gen_bool);
             ])
          gen_xform
