@@ -183,7 +183,7 @@ let fade_segments (w : walk) dist =
                 (a.ab *. Interior.fade_channel inner fc.b d);
             (* the interior's media dim the light (POV-Ray 3.7 does so
                whatever the light's media_attenuation) *)
-            Media.transmittance_into inner.media r lo hi a
+            if inner.media <> [] then Media.transmittance_into inner.media r lo hi a
           end
         end
       done

@@ -115,7 +115,7 @@ let[@inline] fogged_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) med
    hit, through them (see {!Volume}) *)
 let rec has_media = function [] -> false | (i : Interior.t) :: r -> i.media <> [] || has_media r
 
-let mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
+let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
   if has_media media then begin
     let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
     let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
@@ -174,7 +174,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
-      mediated_hit s o d p media out;
+      if has_media media then mediated_hit s o d p media out;
       fogged_hit s o d p media out;
       leave ()
     end
