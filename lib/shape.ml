@@ -25,6 +25,7 @@ type t =
   | Superellipsoid of Superellipsoid.t
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
+  | Isosurface of Isosurface.t  (** POV-Ray's [isosurface] *)
 
 let sphere center radius = Sphere { center; radius }
 let plane n d = Plane { normal = Vec3.normalize n; offset = d }
@@ -229,6 +230,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
   | Polygon pg -> Polygon.hit_s pg r tmin h
   | Height_field f -> Height_field.hit_s f r tmin h
+  | Isosurface i -> Isosurface.hit_s i r tmin h
 
 let hit s r tmin h = hit_s s (Ray.of_ray r) tmin h
 
@@ -296,6 +298,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   | Prism pr -> Prism.normal_into pr p h out
   | Lathe l -> Lathe.normal_into l p h out
   | Superellipsoid se -> Superellipsoid.normal_into se p out
+  | Isosurface i -> Isosurface.normal_into i p h out
 
 let normal s (p : Vec3.t) h =
   let pm = Vec3.m () in
@@ -331,6 +334,7 @@ let[@inline] inside_xyz s x y z =
   | Prism p -> Prism.inside p x y z
   | Lathe l -> Lathe.inside l x y z
   | Superellipsoid se -> Superellipsoid.inside se x y z
+  | Isosurface i -> Isosurface.inside i x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
 let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
@@ -365,3 +369,4 @@ let bounds = function
   | Superellipsoid _ -> Some Superellipsoid.bounds
   | Polygon pg -> Some (Polygon.bounds pg)
   | Height_field f -> Some (Height_field.bounds f)
+  | Isosurface i -> Some (Isosurface.bounds i)

@@ -34,6 +34,7 @@ type t =
   | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
+  | Isosurface of Isosurface.t  (** POV-Ray's [isosurface] *)
 
 (** Constructors. They assume validated arguments (positive radii,
     distinct cone ends, non-degenerate triangles): the scene compiler

@@ -214,6 +214,12 @@ let shape (o : Sdl.obj) =
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
   | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
   | Sdl.Height_field hf -> Shape.Height_field (Height_field.place hf.field o.xform)
+  | Sdl.Isosurface i ->
+      let run = Fn.run i.fn in
+      let fn = Isosurface.fn ~slots:(Fn.frame i.fn) ~result:(Fn.out i.fn) (fun s -> run s 0) in
+      Shape.Isosurface
+        (Isosurface.make ~fn ~container:i.container ~threshold:i.threshold ~accuracy:i.accuracy
+           ~max_gradient:i.max_gradient ~open_:i.iso_open ~max_trace:i.max_trace)
   | Sdl.Polygon pts -> (
       match Polygon.make pts with Ok (p, _) -> Shape.Polygon p | Error e -> Diag.error o.loc "polygon: %s" e)
   | Sdl.Lathe (spline, points) -> (

@@ -18,15 +18,16 @@ type t = {
   run : code;
   unsupported : string option;
   vector : vector option;
+  source : string option;
 }
 
 let nothing : code = fun _ _ -> ()
 
-let make ~params ~frame ~out ~unsupported run =
+let make ?source ~params ~frame ~out ~unsupported run =
   if frame < Array.length params || out < 0 || out >= max frame 1 then invalid_arg "Fn.make: bad frame";
-  { params; frame; out; run; unsupported; vector = None }
+  { params; frame; out; run; unsupported; vector = None; source }
 
-let vector_fn params v = { params; frame = Array.length params; out = 0; run = nothing; unsupported = None; vector = Some v }
+let vector_fn params v = { params; frame = Array.length params; out = 0; run = nothing; unsupported = None; vector = Some v; source = None }
 
 let of_transform tr =
   let apply (a : float array) =
@@ -44,6 +45,7 @@ let run f = f.run
 let arity f = Array.length f.params
 let params f = Array.to_list f.params
 let unsupported f = f.unsupported
+let source f = f.source
 
 (* POV-Ray's members of a vector function's value; gray weighs the
    channels as POV-Ray's colours do *)

@@ -16,9 +16,10 @@ type code = float array -> int -> unit
     it calls a transform or spline function. *)
 
 val make :
-  params:string array -> frame:int -> out:int -> unsupported:string option -> code -> t
+  ?source:string -> params:string array -> frame:int -> out:int -> unsupported:string option -> code -> t
 (** [make ~params ~frame ~out ~unsupported code], [frame] at least the
-    number of parameters, [out] below [frame]. *)
+    number of parameters, [out] below [frame]; [source] is the body as
+    {!source} gives it. *)
 
 val of_transform : Camlray.Transform.t -> t
 (** [function { transform { ... } }]: a vector function of [x, y, z]
@@ -67,6 +68,11 @@ val call_vector : Loc.t -> t -> float list -> float array
 
 val arity : t -> int
 val params : t -> string list
+
+val source : t -> string option
+(** The body of a float function read by {!Fnparse}, as text that reads
+    back to the same function: its tokens, with declared floats written
+    as their values (declared functions it calls stay names). *)
 
 val unsupported : t -> string option
 (** Why this function cannot be evaluated ([internal(n)], pattern

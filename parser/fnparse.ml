@@ -102,6 +102,7 @@ type st = {
   mutable unsupported : string option;
   mutable consts : (int * float) list;  (** slots holding constants, written on entry *)
   mutable callee : int;  (** the largest frame of a function called *)
+  mutable subst : (int * float) list;  (** tokens naming declared floats, and their values *)
   top : int ref;
       (** where called functions' frames start, after the own slots (known
           once the body is compiled) *)
@@ -348,7 +349,7 @@ and primary st =
       | Some i -> V { slot = i; code = None }
       | None -> (
           match st.resolve t.loc name with
-          | Const k -> K k
+          | Const k -> st.subst <- (st.i - 1, k) :: st.subst; K k
           | Vec _ ->
               Diag.error t.loc "%s is a vector: functions take only floats (POV-Ray's rule)" name
           | Func f -> (
@@ -476,10 +477,38 @@ and builtin st loc name =
           | ("min" | "max"), [] -> Diag.error loc "%s needs at least one argument" name
           | _ -> Diag.error loc "%s cannot be used in a function" name))
 
+(* the text of a body's token, as the lexer reads it back *)
+let token_text (r : raw) =
+  match r with
+  | Tok (Parser.FLOAT f) -> Printf.sprintf "%.17g" f
+  | Tok (Parser.FUNC n) -> n
+  | Tok (Parser.MEMBER m) -> "." ^ m
+  | Tok Parser.LPAREN -> "(" | Tok Parser.RPAREN -> ")" | Tok Parser.LBRACE -> "{" | Tok Parser.RBRACE -> "}"
+  | Tok Parser.COMMA -> "," | Tok Parser.PLUS -> "+" | Tok Parser.MINUS -> "-" | Tok Parser.STAR -> "*"
+  | Tok Parser.SLASH -> "/" | Tok Parser.LT -> "<" | Tok Parser.LE -> "<=" | Tok Parser.GT -> ">"
+  | Tok Parser.GE -> ">=" | Tok Parser.EQ -> "=" | Tok Parser.NE -> "!=" | Tok Parser.AND -> "&"
+  | Tok Parser.OR -> "|"
+  | r -> ( match word r with Some w -> w | None -> describe r)
+
+let source st =
+  let n = Array.length st.toks in
+  let b = Buffer.create 64 in
+  for i = 0 to n - 1 do
+    match st.toks.(i).raw with
+    | Eof -> ()
+    | r ->
+        if Buffer.length b > 0 then Buffer.add_char b ' ';
+        Buffer.add_string b
+          (match List.assoc_opt i st.subst with
+           | Some k -> Printf.sprintf "(%.17g)" k
+           | None -> token_text r)
+  done;
+  Buffer.contents b
+
 let compile ~resolve ~params toks =
   let st =
     { toks; i = 0; slots = List.mapi (fun i p -> (p, i)) params; nslots = List.length params; resolve;
-      unsupported = None; consts = []; callee = 0; top = ref 0 }
+      unsupported = None; consts = []; callee = 0; subst = []; top = ref 0 }
   in
   let body = expr st in
   (match peek st with
@@ -499,4 +528,4 @@ let compile ~resolve ~params toks =
       done;
       code s k
   in
-  Fn.make ~params:(Array.of_list params) ~frame ~out ~unsupported:st.unsupported run
+  Fn.make ~source:(source st) ~params:(Array.of_list params) ~frame ~out ~unsupported:st.unsupported run

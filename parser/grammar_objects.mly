@@ -12,6 +12,8 @@
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
 %token <string> IMAGE_KIND
 
+%token ISOSURFACE CONTAINED_BY ACCURACY MAX_GRADIENT EVALUATE MAX_TRACE ALL_INTERSECTIONS
+
 %%
 
 %public object_:
@@ -82,6 +84,8 @@
              (Array.of_list (List.map (fun (l, p) -> Value.to_vec3 l p) pts))) ms }
   | SUPERELLIPSOID LBRACE e = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.superellipsoid (loc $loc(e)) e) ms }
+  | ISOSURFACE LBRACE f = FUNCTION_LIT items = list(iso_item) RBRACE
+      { Shapes.isosurface (loc $loc) (loc $loc(f)) f items }
   | UNION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Union cs }
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
@@ -89,6 +93,21 @@
   | OBJECT LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | OBJECT LBRACE o = object_ ms = list(object_mod) RBRACE { List.fold_left (fun o f -> f o) o ms }
+
+(* an isosurface's parameters and its modifiers, in any order *)
+iso_item:
+  | CONTAINED_BY LBRACE BOX LBRACE a = param COMMA? b = param RBRACE RBRACE
+      { Shapes.Iso_container (Isosurface.Box (v3 $loc(a) a, v3 $loc(b) b)) }
+  | CONTAINED_BY LBRACE SPHERE LBRACE c = param COMMA? r = param RBRACE RBRACE
+      { Shapes.Iso_container (Shapes.iso_sphere (loc $loc(r)) (v3 $loc(c) c) (fl $loc(r) r)) }
+  | THRESHOLD e = param { Shapes.Iso_threshold (fl $loc(e) e) }
+  | ACCURACY e = param { Shapes.Iso_accuracy (loc $loc(e), fl $loc(e) e) }
+  | MAX_GRADIENT e = param { Shapes.Iso_max_gradient (loc $loc(e), fl $loc(e) e) }
+  | EVALUATE a = param COMMA? b = param COMMA? c = param
+      { Shapes.Iso_evaluate (loc $loc, (fl $loc(a) a, fl $loc(b) b, fl $loc(c) c)) }
+  | MAX_TRACE e = param { Shapes.Iso_max_trace (loc $loc(e), Value.to_int (loc $loc(e)) e) }
+  | ALL_INTERSECTIONS { Shapes.Iso_max_trace (loc $loc, max_int) }
+  | m = object_mod { Shapes.Iso_mod m }
 
 prism_point: COMMA? p = param { (loc $loc(p), p) }
 

@@ -59,6 +59,9 @@ let object_keywords =
     ("gif", IMAGE_KIND "gif"); ("tga", IMAGE_KIND "tga"); ("iff", IMAGE_KIND "iff"); ("ppm", IMAGE_KIND "ppm");
     ("pgm", IMAGE_KIND "pgm"); ("sys", IMAGE_KIND "sys"); ("jpeg", IMAGE_KIND "jpeg"); ("tiff", IMAGE_KIND "tiff");
     ("bmp", IMAGE_KIND "bmp"); ("exr", IMAGE_KIND "exr"); ("hdr", IMAGE_KIND "hdr"); ("pot", IMAGE_KIND "pot");
+    ("isosurface", ISOSURFACE); ("contained_by", CONTAINED_BY);
+    ("accuracy", ACCURACY); ("max_gradient", MAX_GRADIENT); ("evaluate", EVALUATE); ("max_trace", MAX_TRACE);
+    ("all_intersections", ALL_INTERSECTIONS);
   ]
 
 (* grammar_texture.mly *)

@@ -158,6 +158,21 @@ let rec parts (o : Sdl.obj) =
         (Printf.sprintf "height_field { %s%s%s" src (if hf.smooth then " smooth" else "")
            (if hf.water <> 0. then " water_level " ^ float hf.water else ""))
   | Sdl.Superellipsoid (e, n) -> simple (Printf.sprintf "superellipsoid { <%s, %s>" (float e) (float n))
+  | Sdl.Isosurface i ->
+      let params = Fn.params i.fn in
+      simple
+        (Printf.sprintf "isosurface { function %s{ %s } contained_by { %s } threshold %s accuracy %s max_gradient %s%s%s%s"
+           (if params = [ "x"; "y"; "z" ] then "" else "(" ^ String.concat ", " params ^ ") ")
+           (Option.value (Fn.source i.fn) ~default:"0")
+           (match i.container with
+            | Isosurface.Box (a, b) -> Printf.sprintf "box { %s, %s }" (vec a) (vec b)
+            | Isosurface.Sphere (c, r) -> Printf.sprintf "sphere { %s, %s }" (vec c) (float r))
+           (float i.threshold) (float i.accuracy) (float i.max_gradient)
+           (match i.evaluate with
+            | Some (a, b, c) -> Printf.sprintf " evaluate %s, %s, %s" (float a) (float b) (float c)
+            | None -> "")
+           (if i.iso_open then " open" else "")
+           (if i.max_trace = max_int then " all_intersections" else Printf.sprintf " max_trace %d" i.max_trace))
   | Sdl.Polygon pts ->
       simple
         (Printf.sprintf "polygon { %d%s" (Array.length pts)

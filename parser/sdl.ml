@@ -20,6 +20,7 @@ type shape =
   | Superellipsoid of float * float  (** e, n *)
   | Polygon of Vec3.t array  (** the points as written *)
   | Height_field of height_field
+  | Isosurface of isosurface
   | Csg of csg * obj list
       (** children in source order, transforms and texture of their own *)
   | Inverse of obj
@@ -69,6 +70,17 @@ and prism = {
   height2 : float;
   points : (float * float) array;
   no_caps : bool;  (** [open] *)
+}
+
+and isosurface = {
+  fn : Fn.t;  (** a float function of 3 parameters, supported *)
+  container : Isosurface.container;  (** [contained_by], box [{-1, 1}] unless given *)
+  threshold : float;
+  accuracy : float;
+  max_gradient : float;
+  evaluate : (float * float * float) option;  (** read, not used (see docs/language.md) *)
+  iso_open : bool;
+  max_trace : int;  (** [max_int] for [all_intersections] *)
 }
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }

@@ -38,6 +38,7 @@ let set_open loc (o : Sdl.obj) =
   match o.shape with
   | Sdl.Cone c -> { o with shape = Sdl.Cone { c with open_ = true } }
   | Sdl.Prism p -> { o with shape = Sdl.Prism { p with no_caps = true } }
+  | Sdl.Isosurface i -> { o with shape = Sdl.Isosurface { i with iso_open = true } }
   | _ -> Diag.warning loc "'open' only applies to cylinders and cones; ignored"; o
 
 let wrap (o : Sdl.obj) shape =
@@ -204,6 +205,54 @@ let height_field src opts =
        Diag.error loc "height_field image %s is %d x %d: at least 2 x 2 pixels are needed" file w h
    | _ -> ());
   Sdl.Height_field { source; smooth; water; field = Height_field.make ~width:w ~depth:h ~heights:v ~smooth ~water }
+type iso_item =
+  | Iso_container of Isosurface.container
+  | Iso_threshold of float
+  | Iso_accuracy of Loc.t * float
+  | Iso_max_gradient of Loc.t * float
+  | Iso_evaluate of Loc.t * (float * float * float)
+  | Iso_max_trace of Loc.t * int
+  | Iso_mod of (Sdl.obj -> Sdl.obj)
+
+let iso_sphere loc c r =
+  if not (r > 0.) then Diag.error loc "a contained_by sphere's radius must be positive, found %g" r;
+  Isosurface.Sphere (c, r)
+
+(* POV-Ray's defaults: contained_by { box { -1, 1 } }, threshold 0,
+   accuracy 0.001, max_gradient 1.1, max_trace 1 *)
+let isosurface loc floc (f : Fn.t) items =
+  (match Fn.unsupported f with Some u -> Diag.error floc "%s" u | None -> ());
+  if Fn.is_vector f then Diag.error floc "an isosurface's function must return a float, not a vector";
+  if Fn.arity f <> 3 then
+    Diag.error floc "an isosurface's function takes 3 parameters (x, y, z), this one takes %d" (Fn.arity f);
+  let iso =
+    { Sdl.fn = f; container = Isosurface.Box (Vec3.make (-1.) (-1.) (-1.), Vec3.make 1. 1. 1.); threshold = 0.;
+      accuracy = 0.001; max_gradient = 1.1; evaluate = None; iso_open = false; max_trace = 1 }
+  in
+  let o = { Sdl.loc; shape = Sdl.Isosurface iso; xform = Transform.identity; texture = None; interior = None;
+            no_shadow = false; hollow = false; flags = 0 } in
+  List.fold_left
+    (fun (o : Sdl.obj) item ->
+      let set g = match o.shape with Sdl.Isosurface i -> { o with shape = Sdl.Isosurface (g i) } | _ -> o in
+      match item with
+      | Iso_container c -> set (fun i -> { i with container = c })
+      | Iso_threshold x -> set (fun i -> { i with threshold = x })
+      | Iso_accuracy (l, x) ->
+          if not (x > 0.) then Diag.error l "an isosurface's accuracy must be positive, found %g" x;
+          set (fun i -> { i with accuracy = x })
+      | Iso_max_gradient (l, x) ->
+          if not (x > 0.) then Diag.error l "an isosurface's max_gradient must be positive, found %g" x;
+          set (fun i -> { i with max_gradient = x })
+      | Iso_evaluate (l, e) ->
+          Diag.warning l
+            "evaluate is read and not used: camlray searches with max_gradient (POV-Ray's estimate \
+             changes with the order rays are traced)";
+          set (fun i -> { i with evaluate = Some e })
+      | Iso_max_trace (l, n) ->
+          if n < 1 then Diag.error l "an isosurface's max_trace must be at least 1, found %d" n;
+          set (fun i -> { i with max_trace = n })
+      | Iso_mod m -> m o)
+    o items
 
 let superellipsoid loc v =
   match v with

@@ -54,6 +54,25 @@ val prism : Loc.t -> string list -> float -> float -> Loc.t * int -> (Loc.t * Va
 val lathe : Loc.t -> string list -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
 (** [lathe loc kinds (nloc, n) points] (checked with located errors). *)
 
+(** An isosurface's parameters and modifiers, in the order written. *)
+type iso_item =
+  | Iso_container of Camlray.Isosurface.container
+  | Iso_threshold of float
+  | Iso_accuracy of Loc.t * float
+  | Iso_max_gradient of Loc.t * float
+  | Iso_evaluate of Loc.t * (float * float * float)
+  | Iso_max_trace of Loc.t * int
+  | Iso_mod of (Sdl.obj -> Sdl.obj)
+
+val iso_sphere : Loc.t -> Camlray.Vec3.t -> float -> Camlray.Isosurface.container
+(** A [contained_by { sphere { c, r } }]: the radius positive. *)
+
+val isosurface : Loc.t -> Loc.t -> Fn.t -> iso_item list -> Sdl.obj
+(** [isosurface loc floc f items]: POV-Ray's defaults for what is not
+    given; located errors for an unsupported function or one that does
+    not take 3 parameters ([floc]), a non-positive accuracy or
+    max_gradient, a max_trace below 1. *)
+
 val polygon : Loc.t -> Loc.t * int -> (Loc.t * Value.t) list -> Sdl.shape
 (** [polygon { n, p1, ... pn }]: the count checked, the points in one
     plane (2-vectors have z 0); an outline left open is closed with a

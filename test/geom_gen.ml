@@ -112,6 +112,30 @@ let gheight_field =
     (fun hs water -> Shape.Height_field (Height_field.make ~width:w ~depth:d ~heights:(Array.of_list hs) ~smooth:false ~water))
     (list_size (return (w * d)) (int_range 0 65535))
     (oneof_list [ 0.; 0.; 0.3 ])
+(* isosurfaces of distance functions (slope 1) found to 1e-9: a sphere
+   and a torus, in a box container just around them *)
+let giso =
+  let open QCheck.Gen in
+  let iso f e =
+    Shape.Isosurface
+      (Isosurface.make ~fn:(Isosurface.fn_of_closure f)
+         ~container:(Isosurface.Box (Vec3.make (-.e.(0)) (-.e.(1)) (-.e.(2)), Vec3.make e.(0) e.(1) e.(2)))
+         ~threshold:0. ~accuracy:1e-9 ~max_gradient:1.1 ~open_:false ~max_trace:1)
+  in
+  oneof
+    [
+      map (fun r -> iso (fun x y z -> Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) -. r) [| r +. 0.1; r +. 0.1; r +. 0.1 |])
+        (fr 0.3 1.5);
+      map2
+        (fun r1 r2 ->
+          let e = r1 +. r2 +. 0.1 in
+          iso
+            (fun x y z ->
+              let q = Float.sqrt ((x *. x) +. (z *. z)) -. r1 in
+              Float.sqrt ((q *. q) +. (y *. y)) -. r2)
+            [| e; r2 +. 0.1; e |])
+        (fr 0.5 1.5) (fr 0.1 0.5);
+    ]
 
 (* A non-degenerate shape around the origin (within ~2 units). *)
 let gshape =
@@ -132,6 +156,7 @@ let gshape =
       gblob;
       gpolygon;
       gheight_field;
+      giso;
     ]
 
 let gxform =
@@ -204,6 +229,15 @@ let residual (s : Shape.t) (p : Vec3.t) =
   | Shape.Polygon pg -> Float.abs (Vec3.dot (Polygon.normal pg) (Vec3.sub p (Polygon.point pg)))
   | Shape.Height_field f -> hf_residual f p
   | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Superellipsoid _ -> 0.
+  | Shape.Isosurface i -> (
+      (* the container's faces, or the function (a distance: slope 1) *)
+      let f = Float.abs (Isosurface.value i p.x p.y p.z) in
+      let lo, hi = Isosurface.bounds i in
+      let out = Vec3.length (Vec3.sub p (Vec3.max lo (Vec3.min hi p))) in
+      let face = Float.min (Float.min (Float.abs (p.x -. lo.x)) (Float.abs (p.x -. hi.x)))
+          (Float.min (Float.min (Float.abs (p.y -. lo.y)) (Float.abs (p.y -. hi.y)))
+             (Float.min (Float.abs (p.z -. lo.z)) (Float.abs (p.z -. hi.z)))) in
+      if out > 0. then out +. f else Float.min f face)
   | Shape.Blob b ->
       (* the field's distance from the generator's threshold over its slope *)
       let f x y z = Blob.field b x y z in
@@ -222,6 +256,7 @@ let closed = function
   | Shape.Sphere _ | Shape.Box _ | Shape.Torus _ -> true
   | Shape.Algebraic _ -> false (* inside up to 1e-4 of its value: see test_shape *)
   | Shape.Blob _ -> true
+  | Shape.Isosurface _ -> true
   | Shape.Cone { open_; _ } -> not open_
   | _ -> false
 
@@ -238,6 +273,7 @@ let shape_name (s : Shape.t) =
   | Shape.Superellipsoid _ -> "superellipsoid"
   | Shape.Polygon _ -> "polygon"
   | Shape.Height_field _ -> "height_field"
+  | Shape.Isosurface _ -> "isosurface"
 
 (* Scene text through the real parser and compiler. *)
 let scene_of_string src =
