@@ -164,9 +164,18 @@ let operands st args =
   let ops = List.map (operand st) args in
   (Array.of_list (List.map fst ops), Array.of_list (List.map snd ops))
 
-let call_fn st loc (f : Fn.t) args =
+let call_fn st loc name (f : Fn.t) args =
   match Fn.unsupported f with
   | Some u ->
+      (* the name it is called by, for POV-Ray's internal functions
+         (functions.inc's f_sphere is internal(61)) *)
+      let u =
+        let tail = " is not supported by camlray" in
+        let n = String.length u and k = String.length tail in
+        if String.length u > 7 && String.sub u 0 7 = "POV-Ray" && n > k && String.sub u (n - k) k = tail then
+          Printf.sprintf "%s (%s)%s" name (String.sub u 0 (n - k)) tail
+        else u
+      in
       (* POV-Ray's internal functions take their own number of arguments:
          the call is read, and the function calling it is unsupported *)
       if st.unsupported = None then st.unsupported <- Some u;
@@ -359,7 +368,7 @@ and primary st =
                   let mloc = (tok st).loc in
                   advance st;
                   call_member st t.loc f a mloc m
-              | _ -> call_fn st t.loc f a)
+              | _ -> call_fn st t.loc name f a)
           | Unknown -> Diag.error t.loc "undefined identifier %s in a function" name))
   | r -> err st "in a function: unexpected %s" (describe r)
 
@@ -500,7 +509,7 @@ let source st =
         if Buffer.length b > 0 then Buffer.add_char b ' ';
         Buffer.add_string b
           (match List.assoc_opt i st.subst with
-           | Some k -> Printf.sprintf "(%.17g)" k
+           | Some k -> if k < 0. then Printf.sprintf "( - %.17g )" (-.k) else Printf.sprintf "%.17g" k
            | None -> token_text r)
   done;
   Buffer.contents b

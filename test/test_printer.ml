@@ -128,7 +128,12 @@ let fixpoint () =
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
      lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
      superellipsoid { <0.3, 2> scale 2 }\n\
-     height_field { function 4, 3 { x * y + 0.1 } smooth water_level 0.1 hierarchy off scale <2, 1, 2> }\n"
+     height_field { function 4, 3 { x * y + 0.1 } smooth water_level 0.1 hierarchy off scale <2, 1, 2> }\n\
+     #declare R = 0.25; #declare N = -2;\n\
+     isosurface { function { sqrt(x*x + y*y + z*z) - R + 0.1*sin(4*x) } open max_gradient 2.5 threshold -0.1 translate y }\n\
+     isosurface { function { abs(x) + pow(y, 2) - min(z, 0.5) * N } contained_by { sphere { <0, 0.5, 0>, 2 } } accuracy 1e-4\n\
+       all_intersections pigment { rgb 1 } }\n\
+     isosurface { function (a, b, c) { a*b - c } contained_by { box { -2, <1, 2, 3> } } max_trace 3 }\n"
   in
   let text =
     if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then
@@ -143,4 +148,4 @@ let fixpoint () =
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe, superellipsoid print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe, superellipsoid, isosurface print back to themselves" `Quick fixpoint ] )

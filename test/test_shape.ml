@@ -592,6 +592,110 @@ let patch_units =
           (err (Printf.sprintf "bicubic_patch { u_steps 11 %s }" (pts (fun x y -> (x, y, 0.))))));
   ]
 
+(* Isosurfaces: known answers. The scene's own shapes come through the
+   parser and compiler (the function compiled as scenes compile it). *)
+let iso_of src =
+  let s = Scn.compile src in
+  match s.objects.(0).geom with
+  | Object.Prim (Shape.Isosurface i as sh) -> (i, sh)
+  | _ -> Alcotest.fail "not an isosurface"
+
+let iso_units =
+  let hit sh o d = let h = Hit.create infinity in if Shape.hit sh (Ray.make o d) 1e-9 h then Some h else None in
+  [
+    Alcotest.test_case "isosurface: x*x+y*y+z*z-r*r is hit where the sphere is, with its normals and inside" `Quick
+      (fun () ->
+        let i, sh =
+          iso_of "isosurface { function { x*x + y*y + z*z - 0.64 } accuracy 1e-7 max_gradient 4 }" in
+        let sp = Shape.sphere Vec3.zero 0.8 in
+        let rng = Random.State.make [| 7 |] in
+        let r () = Random.State.float rng 2. -. 1. in
+        let hits = ref 0 in
+        for _ = 1 to 2000 do
+          let o = Vec3.scale 3. (Vec3.normalize (v (r ()) (r ()) (r ()))) in
+          let d = Vec3.normalize (Vec3.sub (v (0.9 *. r ()) (0.9 *. r ()) (0.9 *. r ())) o) in
+          match (hit sh o d, hit sp o d) with
+          | Some a, Some b ->
+              incr hits;
+              (* POV-Ray's hit: the end of a stretch no longer than the
+                 accuracy, past the crossing *)
+              if not (a.t >= b.t -. 1e-9 && a.t <= b.t +. 2e-7) then
+                Alcotest.failf "hit at %.9f, the sphere at %.9f" a.t b.t;
+              let p = Vec3.madd o a.t d in
+              let n = Shape.normal sh p a and ns = Shape.normal sp p b in
+              if not (vclose ~eps:1e-5 n ns) then
+                Alcotest.failf "normal %s, the sphere's %s" (Vec3.to_string n) (Vec3.to_string ns)
+          | None, None -> ()
+          | Some a, None -> Alcotest.failf "isosurface hit at %g, the sphere missed" a.t
+          | None, Some b ->
+              (* only a graze closer than the accuracy may be missed *)
+              let p = Vec3.madd o b.t d in
+              if Float.abs (Vec3.dot (Shape.normal sp p b) d) > 1e-3 then
+                Alcotest.failf "isosurface missed, the sphere hit at %g" b.t
+        done;
+        if !hits < 500 then Alcotest.failf "only %d hits" !hits;
+        for _ = 1 to 2000 do
+          let p = v (r ()) (r ()) (r ()) in
+          if Float.abs (Vec3.length p -. 0.8) > 1e-6 then
+            Alcotest.(check bool) "inside" (Vec3.length p < 0.8) (Isosurface.inside i p.x p.y p.z)
+        done);
+    Alcotest.test_case "isosurface: threshold moves the surface" `Quick (fun () ->
+        let _, sh = iso_of "isosurface { function { sqrt(x*x + y*y + z*z) } threshold 0.5 accuracy 1e-6 }" in
+        match hit sh (v 0. 0. (-3.)) z with
+        | Some h -> Alcotest.(check (float 2e-6)) "at r = 0.5" 2.5 h.t
+        | None -> Alcotest.fail "missed");
+    Alcotest.test_case "isosurface: the container shows where the function is inside, unless open" `Quick (fun () ->
+        (* f = y: the half-space below y = 0, in the box -1..1 *)
+        let i, closed = iso_of "isosurface { function { y } }" in
+        let _, opened = iso_of "isosurface { function { y } open }" in
+        (match hit closed (v 0. 3. 0.) down with
+        | Some h ->
+            Alcotest.(check (float 1e-3)) "the surface y = 0 from above" 3. h.t;
+            Alcotest.(check bool) "normal +y" true (vclose ~eps:1e-6 (Shape.normal closed (v 0. 0. 0.) h) y)
+        | None -> Alcotest.fail "missed from above");
+        (match hit closed (v (-3.) (-0.5) 0.) x with
+        | Some h ->
+            Alcotest.(check (float 1e-12)) "the box face x = -1" 2. h.t;
+            Alcotest.(check bool) "normal -x" true
+              (vclose (Shape.normal closed (v (-1.) (-0.5) 0.) h) (Vec3.neg x))
+        | None -> Alcotest.fail "the container face is not shown");
+        Alcotest.(check bool) "open: no container face" true (hit opened (v (-3.) (-0.5) 0.) x = None);
+        (match hit opened (v 0. 3. 0.) down with
+        | Some h -> Alcotest.(check (float 1e-3)) "open: the surface still" 3. h.t
+        | None -> Alcotest.fail "open: missed from above");
+        (* from below, inside the function: open looks for where it rises *)
+        (match hit opened (v 0. (-3.) 0.) y with
+        | Some h -> Alcotest.(check (float 1e-3)) "open from below" 3. h.t
+        | None -> Alcotest.fail "open: missed from below");
+        (match hit closed (v 0. (-3.) 0.) y with
+        | Some h -> Alcotest.(check (float 1e-12)) "closed from below: the box face" 2. h.t
+        | None -> Alcotest.fail "closed: missed from below");
+        Alcotest.(check bool) "inside below" true (Isosurface.inside i 0.5 (-0.5) 0.5);
+        Alcotest.(check bool) "outside above" false (Isosurface.inside i 0.5 0.5 0.5);
+        Alcotest.(check bool) "outside the container" false (Isosurface.inside i 0.5 (-0.5) 1.5));
+    Alcotest.test_case "isosurface: contained_by sphere" `Quick (fun () ->
+        let _, sh = iso_of "isosurface { function { -1 } contained_by { sphere { <0, 0, 1>, 0.5 } } }" in
+        match hit sh (v 0. 0. (-3.)) z with
+        | Some h ->
+            Alcotest.(check (float 1e-12)) "the sphere" 3.5 h.t;
+            Alcotest.(check bool) "its normal" true (vclose (Shape.normal sh (v 0. 0. 0.5) h) (Vec3.neg z))
+        | None -> Alcotest.fail "missed");
+    Alcotest.test_case "isosurface: a hit allocates nothing" `Quick (fun () ->
+        let _, sh = iso_of "isosurface { function { sqrt(x*x + y*y + z*z) - 0.9 + 0.1*sin(5*x) } max_gradient 2 }" in
+        let r = Ray.scratch () and h = Hit.create infinity in
+        Ray.load r (Ray.make (v 0. 0.1 (-3.)) z);
+        let go k =
+          r.ox <- 0.001 *. float_of_int k;
+          h.t <- infinity;
+          ignore (Shape.hit_s sh r 1e-9 h)
+        in
+        go 0;
+        let before = Gc.minor_words () in
+        for k = 1 to 1000 do go k done;
+        let words = Gc.minor_words () -. before in
+        if words > 0. then Alcotest.failf "%.0f words for 1000 isosurface hits" words);
+  ]
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units
+  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units @ iso_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
