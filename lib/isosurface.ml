@@ -1,8 +1,9 @@
 (* Isosurfaces (see isosurface.mli), searched as POV-Ray describes its
-   method: halving the ray's stretch in the container, a half dropped
+   method (checked with its trace()): halving the ray's stretch in the container, a half dropped
    when f(a) + f(b) >= max_gradient * (b - a) (the function cannot reach
    the threshold between a and b if its slope is below max_gradient),
-   down to halves of length accuracy. *)
+   down to stretches of at most accuracy, the hit at the end of the
+   first one whose end is inside. *)
 
 type container = Box of Vec3.t * Vec3.t | Sphere of Vec3.t * float
 
@@ -225,9 +226,18 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     end
   end
 
+(* POV-Ray's normal: a box container's faces their own; the function's
+   gradient elsewhere, on a sphere container's surface too (a constant
+   function's gradient, zero, gives +x) *)
 let normal_into t (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   match int_of_float h.id with
-  | 0 ->
+  | 1 -> Vec3.set out (-1.) 0. 0.
+  | 2 -> Vec3.set out 1. 0. 0.
+  | 3 -> Vec3.set out 0. (-1.) 0.
+  | 4 -> Vec3.set out 0. 1. 0.
+  | 5 -> Vec3.set out 0. 0. (-1.)
+  | 6 -> Vec3.set out 0. 0. 1.
+  | _ ->
       let x = p.mx and y = p.my and z = p.mz and d = t.accuracy in
       let f0 = eval t x y z in
       let gx = eval t (x +. d) y z -. f0 in
@@ -238,17 +248,5 @@ let normal_into t (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
         Vec3.set out gx gy gz;
         Vec3.normalize_m out
       end
-  | 1 -> Vec3.set out (-1.) 0. 0.
-  | 2 -> Vec3.set out 1. 0. 0.
-  | 3 -> Vec3.set out 0. (-1.) 0.
-  | 4 -> Vec3.set out 0. 1. 0.
-  | 5 -> Vec3.set out 0. 0. (-1.)
-  | 6 -> Vec3.set out 0. 0. 1.
-  | _ -> (
-      match t.container with
-      | Sphere (c, r) ->
-          let k = 1. /. r in
-          Vec3.set out (k *. (p.mx -. c.x)) (k *. (p.my -. c.y)) (k *. (p.mz -. c.z))
-      | Box _ -> Vec3.set out 0. 1. 0.)
 
 let bounds t = (t.lo, t.hi)

@@ -4,15 +4,19 @@
     finds it: the ray's stretch in the container is cut in halves, a half
     dropped when its two end values show (with [max_gradient] as a bound
     on the function's slope) that it cannot cross the threshold, down to
-    halves of length [accuracy]; the leftmost half kept gives the hit (its
-    start). The ray's direction is taken to unit length in the object's
+    stretches of at most [accuracy]; the hit is the end of the first such
+    stretch whose end is inside (so hits lie up to [accuracy] inside, as
+    POV-Ray's do). The ray's direction is taken to unit length in the object's
     own space, so [accuracy] and [max_gradient] are in the function's
     units whatever the object's transform. When the function is below the
     threshold where the search starts, the search looks for where it
-    rises above it (POV-Ray's sign flip). Unless [open], the container's
-    surface shows where the function is inside at it. The normal is the
-    function's gradient by forward differences of step [accuracy]
-    (POV-Ray's), the container's own normal on its surface. *)
+    rises above it (POV-Ray's sign flip); a search starting on the
+    surface (the function within [max_gradient * accuracy] below the
+    threshold) looks past a crossing closer than 5 accuracies. Unless
+    [open], the container's surface shows where the function is inside
+    at it. The normal is the function's gradient by forward differences
+    of step [accuracy] ([+x] where it is zero), on a sphere container's
+    surface too, as POV-Ray's; a box container's faces have their own. *)
 
 type container =
   | Box of Vec3.t * Vec3.t  (** two opposite corners *)

@@ -214,9 +214,9 @@ type iso_item =
   | Iso_max_trace of Loc.t * int
   | Iso_mod of (Sdl.obj -> Sdl.obj)
 
-let iso_sphere loc c r =
-  if not (r > 0.) then Diag.error loc "a contained_by sphere's radius must be positive, found %g" r;
-  Isosurface.Sphere (c, r)
+(* POV-Ray takes a negative radius as its size (functions.inc's own
+   sample writes sphere { 0, -3.3 }) *)
+let iso_sphere _loc c r = Isosurface.Sphere (c, Float.abs r)
 
 (* POV-Ray's defaults: contained_by { box { -1, 1 } }, threshold 0,
    accuracy 0.001, max_gradient 1.1, max_trace 1 *)

@@ -65,7 +65,8 @@ type iso_item =
   | Iso_mod of (Sdl.obj -> Sdl.obj)
 
 val iso_sphere : Loc.t -> Camlray.Vec3.t -> float -> Camlray.Isosurface.container
-(** A [contained_by { sphere { c, r } }]: the radius positive. *)
+(** A [contained_by { sphere { c, r } }]: a negative radius taken as its
+    size, as POV-Ray takes it. *)
 
 val isosurface : Loc.t -> Loc.t -> Fn.t -> iso_item list -> Sdl.obj
 (** [isosurface loc floc f items]: POV-Ray's defaults for what is not

@@ -74,6 +74,16 @@ let suggest t name =
 
 (* ---------- the sub-parse driver ---------- *)
 
+(* the words only an isosurface reads *)
+let iso_word = function
+  | Parser.ACCURACY -> Some "accuracy"
+  | Parser.MAX_GRADIENT -> Some "max_gradient"
+  | Parser.EVALUATE -> Some "evaluate"
+  | Parser.MAX_TRACE -> Some "max_trace"
+  | Parser.ALL_INTERSECTIONS -> Some "all_intersections"
+  | Parser.CONTAINED_BY -> Some "contained_by"
+  | _ -> None
+
 let acceptable_probe : Parser.token list =
   Parser.[ LBRACE; RBRACE; LPAREN; RPAREN; LT; GT; COMMA; SEMI; FLOAT 0.; STRING "";
            UNDEFINED_ID ""; EQ ]
@@ -357,6 +367,13 @@ and parse : 'a. t -> (Lexing.position -> 'a I.checkpoint) -> 'a =
           if t.depth = 1 then release_behind t;
           let from_raw = t.pending = [] in
           let ((tok, first) as x) = next t in
+          (* an isosurface's words elsewhere (a normal's accuracy): POV-Ray
+             words camlray does not know there *)
+          (match iso_word tok with
+           | Some name when not (I.acceptable cp tok first.start) ->
+               unsupported t first { feature = name; feature_loc = first; declared = first; failure = None }
+                 "%s is not supported by camlray" name
+           | _ -> ());
           (* a run is read only where the parser takes its first token:
              nothing is read past where the parser would stop *)
           let (tok, loc), orig =
