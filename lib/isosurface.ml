@@ -67,6 +67,10 @@ let inside t x y z = in_container t x y z && not (eval t x y z > 0.)
    be (POV-Ray's isosurface tolerance) *)
 let tolerance = 1e-6
 
+(* a crossing closer than this many accuracies to a search started on the
+   surface is the surface the ray leaves (fitted to POV-Ray's pictures:
+   its speckled self-shadow near a sphere's terminator, 48.9 dB at
+   160x120 with 5, 44.2 with 10, 35.1 with 3) *)
 let skip_factor = 5.
 
 (* The parts hit: the function's surface, a box container's faces (as
@@ -202,9 +206,10 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
         (* below the threshold where the search starts: look for where
            the function rises above it *)
         let sg = if fa < 0. then -1. else 1. in
-        (* a start on the surface (within max_gradient * accuracy of the
-           threshold, as hits found from outside are) *)
-        let on_surface = fa < 0. && fa > -.(t.max_gradient *. t.accuracy) && !a <= tolerance in
+        (* a search from the ray's origin with the function within
+           max_gradient * accuracy of the threshold: a ray leaving the
+           surface *)
+        let on_surface = Float.abs fa < t.max_gradient *. t.accuracy && !a <= tolerance in
         let root = find_root t sg px py pz ux uy uz !a (sg *. fa) s2 (sg *. eval_ray t px py pz ux uy uz s2) in
         if Float.is_nan root then stop := true
         else if on_surface && root -. !a <= skip_factor *. t.accuracy then

@@ -10,9 +10,10 @@
     own space, so [accuracy] and [max_gradient] are in the function's
     units whatever the object's transform. When the function is below the
     threshold where the search starts, the search looks for where it
-    rises above it (POV-Ray's sign flip); a search starting on the
-    surface (the function within [max_gradient * accuracy] below the
-    threshold) looks past a crossing closer than 5 accuracies. Unless
+    rises above it (POV-Ray's sign flip); a search starting at the ray's
+    origin on the surface (the function within [max_gradient *
+    accuracy] of the threshold) looks past a crossing closer than 5
+    accuracies. Unless
     [open], the container's surface shows where the function is inside
     at it. The normal is the function's gradient by forward differences
     of step [accuracy] ([+x] where it is zero), on a sphere container's

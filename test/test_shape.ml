@@ -682,6 +682,23 @@ let iso_units =
             (* POV-Ray: the function's gradient, here zero, so +x *)
             Alcotest.(check bool) "the gradient's normal" true (vclose (Shape.normal sh (v 0. 0. 0.5) h) x)
         | None -> Alcotest.fail "missed");
+    Alcotest.test_case "isosurface: rays leaving a hit see the far side, not the surface they leave" `Quick
+      (fun () ->
+        let _, sh = iso_of "isosurface { function { sqrt(x*x + y*y + z*z) - 0.8 } }" in
+        let o = v 0.1 0.2 (-3.) in
+        match hit sh o z with
+        | None -> Alcotest.fail "missed"
+        | Some h ->
+            let p = Vec3.madd o h.t z in
+            let n = Shape.normal sh p h in
+            Alcotest.(check bool) "outward: nothing" true (hit sh p n = None);
+            (match hit sh p z with
+            | Some h' ->
+                let q = Vec3.madd p h'.t z in
+                (* the far side, within two accuracies of the sphere *)
+                Alcotest.(check (float 2e-3)) "through: the far side" 0.8 (Vec3.length q);
+                Alcotest.(check bool) "beyond the centre" true (q.z > 0.)
+            | None -> Alcotest.fail "through: missed the far side"));
     Alcotest.test_case "isosurface: a hit allocates nothing" `Quick (fun () ->
         let _, sh = iso_of "isosurface { function { sqrt(x*x + y*y + z*z) - 0.9 + 0.1*sin(5*x) } max_gradient 2 }" in
         let r = Ray.scratch () and h = Hit.create infinity in
