@@ -98,4 +98,16 @@ let tests =
           Scn.check_message "#declare P = function(a) { pigment { rgb 1 } }" "no parameter list");
       Alcotest.test_case "internal functions declare but cannot be called" `Quick (fun () ->
           Scn.check_message "#declare F = function { internal(3) } sphere {0, F(1,2,3)}" "internal function 3");
+      Alcotest.test_case "f_sphere, f_torus, f_rounded_box, f_superellipsoid = POV-Ray's values" `Quick (fun () ->
+          (* values POV-Ray 3.7 printed for these calls *)
+          let prelude = "#include \"functions.inc\"" in
+          let p = "-1.560188485207, 0.277405011998, -0.667199350583" in
+          let f e = Scn.float ~prelude e in
+          Scn.close ~eps:1e-11 "f_sphere" 1.019388444614 (f ("f_sphere(" ^ p ^ ", 0.7)"));
+          Scn.close ~eps:1e-11 "f_torus" 0.358178277131 (f ("f_torus(" ^ p ^ ", 1.1, 0.3)"));
+          Scn.close ~eps:1e-11 "f_rounded_box" 0.578357629346 (f ("f_rounded_box(" ^ p ^ ", 0.2, 1, 0.5, 0.7)"));
+          Scn.close ~eps:1e-11 "f_superellipsoid" (-1.227777511482) (f ("f_superellipsoid(" ^ p ^ ", 0.5, 2)"));
+          Scn.close ~eps:1e-8 "f_superellipsoid 0.7, 1.3" (-0.826646919)
+            (Scn.float ~prelude "f_superellipsoid(-1.560188485207, 0.277405011998, -0.667199350583, 0.7, 1.3)");
+          Scn.check_message (prelude ^ " #declare G = function { f_torus(x, y, z, 1) }") "takes 5 arguments");
     ] )
