@@ -9,7 +9,9 @@ type t = {
   mutable v : float;  (** barycentric v for triangles *)
   mutable id : float;
       (** which part was hit: box face, cylinder cap, triangle index
-          (an integer stored as a float) *)
+          (an integer stored as a float; never negative in a shape's
+          record: the scene marks the spheres it keeps flat with
+          negative ids) *)
   mutable floor : float;
       (** a further lower bound: crossings at or before it are not
           accepted ([neg_infinity] but while a walk over an object's

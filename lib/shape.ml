@@ -22,6 +22,7 @@ type t =
   | Blob of Blob.t
   | Prism of Prism.t
   | Lathe of Lathe.t
+  | Sor of Sor.t
   | Superellipsoid of Superellipsoid.t
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
@@ -227,6 +228,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Blob b -> Blob.hit_s b r tmin h
   | Prism p -> Prism.hit_s p r tmin h
   | Lathe l -> Lathe.hit_s l r tmin h
+  | Sor s -> Sor.hit_s s r tmin h
   | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
   | Polygon pg -> Polygon.hit_s pg r tmin h
   | Height_field f -> Height_field.hit_s f r tmin h
@@ -297,6 +299,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   | Blob b -> Blob.normal_into b p out
   | Prism pr -> Prism.normal_into pr p h out
   | Lathe l -> Lathe.normal_into l p h out
+  | Sor s -> Sor.normal_into s p h out
   | Superellipsoid se -> Superellipsoid.normal_into se p out
   | Isosurface i -> Isosurface.normal_into i p h out
 
@@ -333,6 +336,7 @@ let[@inline] inside_xyz s x y z =
   | Blob b -> Blob.inside b x y z
   | Prism p -> Prism.inside p x y z
   | Lathe l -> Lathe.inside l x y z
+  | Sor s -> Sor.inside s x y z
   | Superellipsoid se -> Superellipsoid.inside se x y z
   | Isosurface i -> Isosurface.inside i x y z
 
@@ -366,6 +370,7 @@ let bounds = function
   | Blob b -> Blob.bounds b
   | Prism p -> Some (Prism.bounds p)
   | Lathe l -> Some (Lathe.bounds l)
+  | Sor s -> Some (Sor.bounds s)
   | Superellipsoid _ -> Some Superellipsoid.bounds
   | Polygon pg -> Some (Polygon.bounds pg)
   | Height_field f -> Some (Height_field.bounds f)

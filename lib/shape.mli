@@ -31,6 +31,7 @@ type t =
   | Blob of Blob.t  (** POV-Ray's [blob] *)
   | Prism of Prism.t  (** POV-Ray's [prism] *)
   | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
+  | Sor of Sor.t  (** POV-Ray's [sor] *)
   | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)

@@ -222,6 +222,8 @@ let shape (o : Sdl.obj) =
            ~max_gradient:i.max_gradient ~open_:i.iso_open ~max_trace:i.max_trace)
   | Sdl.Polygon pts -> (
       match Polygon.make pts with Ok (p, _) -> Shape.Polygon p | Error e -> Diag.error o.loc "polygon: %s" e)
+  | Sdl.Sor { points; sor_open } -> (
+      match Sor.make ~open_:sor_open points with Ok s -> Shape.Sor s | Error e -> Diag.error o.loc "sor: %s" e)
   | Sdl.Lathe (spline, points) -> (
       match Lathe.make spline points with Ok l -> Shape.Lathe l | Error e -> Diag.error o.loc "lathe: %s" e)
   | Sdl.Prism p -> (

@@ -6,7 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
-%token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS
+%token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
@@ -70,6 +70,8 @@
     pts = list(prism_point) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc)
           (Shapes.prism (loc $loc) kinds (fl $loc(h1) h1) (fl $loc(h2) h2) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
+  | SOR LBRACE n = param pts = list(prism_point) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.sor (loc $loc) (loc $loc(n), Value.to_int (loc $loc(n)) n) pts ~open_:false) ms }
   | LATHE LBRACE kinds = list(SPLINE_KIND) n = param pts = list(prism_point) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.lathe (loc $loc) kinds (loc $loc(n), Value.to_int (loc $loc(n)) n) pts) ms }
   | POLYGON LBRACE n = param pts = list(prism_point) ms = list(object_mod) RBRACE

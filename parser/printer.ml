@@ -177,6 +177,11 @@ let rec parts (o : Sdl.obj) =
       simple
         (Printf.sprintf "polygon { %d%s" (Array.length pts)
            (String.concat "" (Array.to_list (Array.map (fun p -> ", " ^ vec p) pts))))
+  | Sdl.Sor { points; sor_open } ->
+      simple
+        (Printf.sprintf "sor { %d%s%s" (Array.length points)
+           (String.concat "" (Array.to_list (Array.map (fun (x, y) -> Printf.sprintf ", <%s, %s>" (float x) (float y)) points)))
+           (if sor_open then " open" else ""))
   | Sdl.Lathe (spline, points) ->
       simple
         (Printf.sprintf "lathe { %s %d%s" (spline_kw spline) (Array.length points)

@@ -17,6 +17,7 @@ type shape =
   | Blob of float * Blob.component list  (** threshold, components *)
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
+  | Sor of { points : (float * float) array; sor_open : bool }
   | Superellipsoid of float * float  (** e, n *)
   | Polygon of Vec3.t array  (** the points as written *)
   | Height_field of height_field

@@ -21,6 +21,7 @@ type shape =
   | Blob of float * Blob.component list  (** threshold, components *)
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
+  | Sor of { points : (float * float) array; sor_open : bool }  (** POV-Ray's [sor] *)
   | Superellipsoid of float * float  (** e, n *)
   | Polygon of Vec3.t array  (** the points as written *)
   | Height_field of height_field

@@ -38,8 +38,9 @@ let set_open loc (o : Sdl.obj) =
   match o.shape with
   | Sdl.Cone c -> { o with shape = Sdl.Cone { c with open_ = true } }
   | Sdl.Prism p -> { o with shape = Sdl.Prism { p with no_caps = true } }
+  | Sdl.Sor s -> { o with shape = Sdl.Sor { s with sor_open = true } }
   | Sdl.Isosurface i -> { o with shape = Sdl.Isosurface { i with iso_open = true } }
-  | _ -> Diag.warning loc "'open' only applies to cylinders and cones; ignored"; o
+  | _ -> Diag.warning loc "'open' only applies to cylinders, cones, prisms and sors; ignored"; o
 
 let wrap (o : Sdl.obj) shape =
   { o with shape; xform = Transform.identity; texture = o.texture; interior = o.interior; no_shadow = false; flags = 0 }
@@ -125,6 +126,11 @@ let points_2d what (nloc, n) pts =
     | v -> Diag.error l "a %s's point is a 2-vector, found %s" what (Value.type_name v)
   in
   Array.of_list (List.map point pts)
+
+let sor loc count pts ~open_ =
+  let points = points_2d "sor" count pts in
+  (match Sor.make ~open_ points with Ok _ -> () | Error e -> Diag.error loc "sor: %s" e);
+  Sdl.Sor { points; sor_open = open_ }
 
 let lathe loc kinds count pts =
   let spline, _ = spline_words loc "lathe" kinds in

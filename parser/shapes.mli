@@ -156,3 +156,7 @@ val bicubic_patch : Loc.t -> u_steps:int -> v_steps:int -> Camlray.Vec3.t array 
 (** POV-Ray's [bicubic_patch] of 16 control points, as a smooth mesh of
     2^u_steps x 2^v_steps cells (two triangles each) with the patch's
     normals at their corners. *)
+
+val sor : Loc.t -> Loc.t * int -> (Loc.t * Value.t) list -> open_:bool -> Sdl.shape
+(** POV-Ray's [sor { n, <r, y> ... [open] }]: the count checked, the
+    points 2-vectors with rising heights. *)

@@ -83,6 +83,18 @@ let gblob =
   in
   map (fun cs -> Shape.Blob (Blob.make ~threshold:0.25 cs)) (list_size (int_range 2 3) comp)
 
+(* surfaces of revolution of 4 to 7 points, heights rising by 0.2 to
+   0.8, radii 0.3 to 1.2, open or closed *)
+let gsor =
+  let open QCheck.Gen in
+  int_range 4 7 >>= fun n ->
+  map3
+    (fun steps radii open_ ->
+      let y = ref (-1.) in
+      let pts = List.map2 (fun dy r -> y := !y +. dy; (r, !y)) steps radii in
+      match Sor.make ~open_ (Array.of_list pts) with Ok s -> Shape.Sor s | Error e -> failwith e)
+    (list_size (return n) (fr 0.2 0.8)) (list_size (return n) (fr 0.3 1.2)) bool
+
 (* a star-shaped outline of 3 to 8 points in a random plane, closed *)
 let gpolygon =
   let open QCheck.Gen in
@@ -154,6 +166,7 @@ let gshape =
       map3 Shape.triangle (gvec 1.5) (gvec 1.5) (gvec 1.5);
       galgebraic;
       gblob;
+      gsor;
       gpolygon;
       gheight_field;
       giso;
@@ -228,7 +241,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       Float.abs (Vec3.dot (Vec3.sub p a) n)
   | Shape.Polygon pg -> Float.abs (Vec3.dot (Polygon.normal pg) (Vec3.sub p (Polygon.point pg)))
   | Shape.Height_field f -> hf_residual f p
-  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Superellipsoid _ -> 0.
+  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Sor _ | Shape.Superellipsoid _ -> 0.
   | Shape.Isosurface i -> (
       (* the container's faces, or the function (a distance: slope 1) *)
       let f = Float.abs (Isosurface.value i p.x p.y p.z) in
@@ -270,6 +283,7 @@ let shape_name (s : Shape.t) =
   | Shape.Blob _ -> "blob"
   | Shape.Prism _ -> "prism"
   | Shape.Lathe _ -> "lathe"
+  | Shape.Sor _ -> "sor"
   | Shape.Superellipsoid _ -> "superellipsoid"
   | Shape.Polygon _ -> "polygon"
   | Shape.Height_field _ -> "height_field"

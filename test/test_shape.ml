@@ -715,6 +715,59 @@ let iso_units =
         if words > 0. then Alcotest.failf "%.0f words for 1000 isosurface hits" words);
   ]
 
+(* sor: the radii, normals, caps and inside test POV-Ray's trace() and
+   inside() give for the same profile *)
+let sor_units =
+  let pts = [| (0., -0.5); (1., 0.); (0.5, 0.6); (1.5, 1.2); (0.8, 2.); (0.3, 3.) |] in
+  let mk open_ = match Sor.make ~open_ pts with Ok s -> Shape.Sor s | Error e -> Alcotest.fail e in
+  let closed = mk false and opened = mk true in
+  let cross s o d =
+    let r = Ray.make o d in
+    let h = Hit.create infinity in
+    if Shape.hit s r 0. h then let p = Ray.at r h.t in Some (p, Shape.normal s p h) else None
+  in
+  [
+    Alcotest.test_case "sor: radii and normals as POV-Ray traces them" `Quick (fun () ->
+        List.iter
+          (fun (y, rx, nx, ny) ->
+            match cross closed (Vec3.make 5. y 0.) (Vec3.make (-1.) 0. 0.) with
+            | Some (p, n) ->
+                Alcotest.(check (float 1e-6)) (Printf.sprintf "radius at %g" y) rx p.x;
+                Alcotest.(check (float 1e-5)) (Printf.sprintf "normal x at %g" y) nx n.x;
+                Alcotest.(check (float 1e-5)) (Printf.sprintf "normal y at %g" y) ny n.y
+            | None -> Alcotest.failf "missed at %g" y)
+          [ (0.01, 1.0040439, 0.942393, -0.334509); (0.3, 0.8135919, 0.593527, 0.804814);
+            (0.6, 0.5, 0.923077, -0.384615); (0.9, 1.1104214, 0.424631, -0.905367);
+            (1.5, 1.3751075, 0.735917, 0.677072); (1.99, 0.8069879, 0.807579, 0.589759) ]);
+    Alcotest.test_case "sor: caps unless open; inside; bounds" `Quick (fun () ->
+        let down s x = cross s (Vec3.make x 5. 0.) (Vec3.make 0. (-1.) 0.) in
+        (match down closed 0.2 with
+         | Some (p, n) -> Alcotest.(check (float 1e-9)) "top cap" 2. p.y; Alcotest.(check (float 0.)) "up" 1. n.y
+         | None -> Alcotest.fail "no top cap");
+        (match cross closed (Vec3.make 0.7 (-5.) 0.) (Vec3.make 0. 1. 0.) with
+         | Some (p, n) -> Alcotest.(check (float 1e-9)) "bottom cap" 0. p.y; Alcotest.(check (float 0.)) "down" (-1.) n.y
+         | None -> Alcotest.fail "no bottom cap");
+        Alcotest.(check bool) "open: through the top" true (down opened 0.2 = None);
+        (match down opened 0.7 with
+         | Some (p, _) -> Alcotest.(check (float 1e-6)) "open: the wall below" 0.7238736 p.y
+         | None -> Alcotest.fail "open: missed the wall");
+        Alcotest.(check (list bool)) "inside" [ true; false; false; true ]
+          [ Shape.inside closed (Vec3.make 0.3 1. 0.); Shape.inside closed (Vec3.make 1.6 1. 0.);
+            Shape.inside closed (Vec3.make 0.2 2.5 0.); Shape.inside opened (Vec3.make 0.3 1. 0.) ];
+        match Shape.bounds closed with
+        | Some (lo, hi) ->
+            Alcotest.(check (float 1e-6)) "widest" 1.504536 hi.x;
+            Alcotest.(check (float 0.)) "bottom" 0. lo.y;
+            Alcotest.(check (float 0.)) "top" 2. hi.y
+        | None -> Alcotest.fail "unbounded");
+    Alcotest.test_case "sor: bad profiles" `Quick (fun () ->
+        let err p = match Sor.make ~open_:false p with Ok _ -> "" | Error e -> e in
+        Alcotest.(check string) "3 points" "a sor needs at least 4 points, found 3" (err [| (1., 0.); (1., 1.); (1., 2.) |]);
+        Alcotest.(check bool) "falling" true (err [| (1., 0.); (1., 1.); (1., 0.5); (1., 2.) |] <> "");
+        (* POV-Ray's sor1.pov: the first point level with the second *)
+        Alcotest.(check string) "first two level" "" (err [| (0., 0.); (0.1, 0.); (0.6, 0.5); (0.2, 0.8); (0.3, 1.) |]));
+  ]
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ superellipsoid_units @ iso_units
+  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ superellipsoid_units @ iso_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
