@@ -243,7 +243,14 @@ let () =
             exit 1)
     | l -> Array.of_list l
   in
-  match Cmd.eval_value ~argv ~err main with
+  (* an exception escaping is a bug in camlray, never the scene's fault:
+     say which, on one line, with cmdliner's internal-error status *)
+  match Cmd.eval_value ~catch:false ~argv ~err main with
+  | exception e ->
+      prerr_endline
+        ("camlray: internal error: " ^ Printexc.to_string e
+         ^ " (a bug in camlray, not in the scene: please report it with the scene)");
+      exit Cmd.Exit.internal_error
   | Ok (`Ok code) -> exit code
   | Ok (`Version | `Help) -> exit 0
   | Error _ ->
