@@ -46,6 +46,7 @@ type kind =
   | Quilted of { c0 : float; c1 : float }
   | Mandel of fractal
   | Julia of { cr : float; ci : float; fractal : fractal }
+  | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
   | Function of fn
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
@@ -278,6 +279,49 @@ let fractal_into f ~cx ~cy x y (w : work) =
   done;
   if !escaped then w.r.v <- exterior_shade f !n !a !b else w.r.v <- interior_shade f !a !b !m2
 
+(* magnet 1 and 2 (POV-Ray's, measured through pigment functions): the
+   orbit is done when z is within 0.01 of the fixed point 1 or farther
+   than 100 from 0; shaded as
+   mandel's, the least |z|^2 over the iterates (not the start) *)
+let magnet_into f formula ~julia ~cr ~ci x y (w : work) =
+  let zr = ref (if julia then x else 0.) and zi = ref (if julia then y else 0.) in
+  let cr = if julia then cr else x and ci = if julia then ci else y in
+  let m2 = ref (if julia then (x *. x) +. (y *. y) else infinity) in
+  let n = ref 0 and escaped = ref false in
+  while (not !escaped) && !n < f.iterations do
+    let a = !zr and b = !zi in
+    (* numerator p and denominator q, complex (in local refs: a tuple of
+       floats would be allocated) *)
+    let pr = ref 0. and pi = ref 0. and qr = ref 0. and qi = ref 0. in
+    if formula = 1 then begin
+      pr := (a *. a) -. (b *. b) +. cr -. 1.;
+      pi := (2. *. a *. b) +. ci;
+      qr := (2. *. a) +. cr -. 2.;
+      qi := (2. *. b) +. ci
+    end
+    else begin
+      (* z^3 + 3 (c - 1) z + (c - 1)(c - 2) over 3 z^2 + 3 (c - 2) z + (c - 1)(c - 2) + 1 *)
+      let a2 = (a *. a) -. (b *. b) and b2 = 2. *. a *. b in
+      let a3 = (a2 *. a) -. (b2 *. b) and b3 = (a2 *. b) +. (b2 *. a) in
+      let c1r = cr -. 1. and c2r = cr -. 2. in
+      let kr = (c1r *. c2r) -. (ci *. ci) and ki = (c1r *. ci) +. (ci *. c2r) in
+      pr := a3 +. (3. *. ((c1r *. a) -. (ci *. b))) +. kr;
+      pi := b3 +. (3. *. ((c1r *. b) +. (ci *. a))) +. ki;
+      qr := (3. *. a2) +. (3. *. ((c2r *. a) -. (ci *. b))) +. kr +. 1.;
+      qi := (3. *. b2) +. (3. *. ((c2r *. b) +. (ci *. a))) +. ki
+    end;
+    let pr = !pr and pi = !pi and qr = !qr and qi = !qi in
+    let d = (qr *. qr) +. (qi *. qi) in
+    let ur = ((pr *. qr) +. (pi *. qi)) /. d and ui = ((pi *. qr) -. (pr *. qi)) /. d in
+    zr := (ur *. ur) -. (ui *. ui);
+    zi := 2. *. ur *. ui;
+    let z2 = (!zr *. !zr) +. (!zi *. !zi) in
+    if z2 < !m2 then m2 := z2;
+    let dr = !zr -. 1. in
+    if z2 > 1e4 || (dr *. dr) +. (!zi *. !zi) < 1e-4 then escaped := true else incr n
+  done;
+  if !escaped then w.r.v <- exterior_shade f !n !zr !zi else w.r.v <- interior_shade f !zr !zi !m2
+
 (* The raw pattern at [w.p] into [w.r.v]: each case stores its value
    itself (a value joined from the cases would be boxed). *)
 let raw_m kind (w : work) =
@@ -345,6 +389,7 @@ let raw_m kind (w : work) =
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
   | Mandel f -> fractal_into f ~cx:x ~cy:y x y w
   | Julia { cr; ci; fractal } -> fractal_into fractal ~cx:cr ~cy:ci x y w
+  | Magnet { formula; julia; cr; ci; fractal } -> magnet_into fractal formula ~julia ~cr ~ci x y w
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)

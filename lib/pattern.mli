@@ -68,6 +68,11 @@ type kind =
   | Mandel of fractal  (** the Mandelbrot set in the xy plane *)
   | Julia of { cr : float; ci : float; fractal : fractal }
       (** the Julia set of c = cr + i ci in the xy plane (z from the point) *)
+  | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
+      (** POV-Ray's [magnet 1|2 mandel|julia]: z <- ((z^2 + c - 1) / (2z + c -
+          2))^2 (formula 1) or its cubic counterpart (2), from z = 0 with c
+          the point (mandel) or from the point with c = cr + i ci (julia),
+          until z comes within 0.01 of 1 or leaves |z| <= 100 (exterior) *)
   | Function of fn
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes

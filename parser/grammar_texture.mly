@@ -19,7 +19,7 @@
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
-%token JULIA
+%token JULIA MAGNET
 %token MEDIA ABSORPTION SCATTERING ECCENTRICITY EXTINCTION DENSITY METHOD INTERVALS SAMPLES
 %token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION
 
@@ -240,6 +240,18 @@
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 then Diag.error (loc $loc(e)) "mandel needs at least 1 iteration";
         Pattern.Mandel (Pattern.mandel n) }
+  | MAGNET k = param MANDEL e = param
+      { let k = Value.to_int (loc $loc(k)) k and n = Value.to_int (loc $loc(e)) e in
+        if k <> 1 && k <> 2 then Diag.error (loc $loc(k)) "magnet is 1 or 2, found %d" k;
+        if n < 1 then Diag.error (loc $loc(e)) "magnet needs at least 1 iteration";
+        Pattern.Magnet { formula = k; julia = false; cr = 0.; ci = 0.; fractal = Pattern.mandel n } }
+  | MAGNET k = param JULIA c = param COMMA? e = param
+      { let k = Value.to_int (loc $loc(k)) k and n = Value.to_int (loc $loc(e)) e in
+        if k <> 1 && k <> 2 then Diag.error (loc $loc(k)) "magnet is 1 or 2, found %d" k;
+        if n < 1 then Diag.error (loc $loc(e)) "magnet needs at least 1 iteration";
+        match c with
+        | Value.Vector [| cr; ci |] -> Pattern.Magnet { formula = k; julia = true; cr; ci; fractal = Pattern.mandel n }
+        | _ -> Diag.error (loc $loc(c)) "magnet julia needs a 2-vector <re, im>, then the iterations" }
   | JULIA c = param COMMA? e = param
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 then Diag.error (loc $loc(e)) "julia needs at least 1 iteration";
@@ -390,6 +402,7 @@
         Texdesc.kind_mod (function
           | Pattern.Mandel f -> Pattern.Mandel { f with interior = t; ifactor = x }
           | Pattern.Julia j -> Pattern.Julia { j with fractal = { j.fractal with interior = t; ifactor = x } }
+          | Pattern.Magnet m -> Pattern.Magnet { m with fractal = { m.fractal with interior = t; ifactor = x } }
           | _ -> Diag.error (loc $loc) "interior (in a pattern) can only be used with mandel") }
   | EXTERIOR t = param COMMA? e = param
       { let t = Value.to_int (loc $loc(t)) t and x = fl $loc(e) e in
@@ -397,6 +410,7 @@
         Texdesc.kind_mod (function
           | Pattern.Mandel f -> Pattern.Mandel { f with exterior = t; efactor = x }
           | Pattern.Julia j -> Pattern.Julia { j with fractal = { j.fractal with exterior = t; efactor = x } }
+          | Pattern.Magnet m -> Pattern.Magnet { m with fractal = { m.fractal with exterior = t; efactor = x } }
           | _ -> Diag.error (loc $loc) "exterior can only be used with mandel") }
 
 (* normal { ... } changes the normal it is written over: modifiers alone

@@ -343,6 +343,35 @@ let julia () =
       ("julia <0.2, 0.5>, 20 interior 6, 0.3 exterior 6, 0.2", [ 0.065386; 0.474810; 0.445753; 0.557297; 0.057603; 0.109655 ]);
     ]
 
+(* magnet 1 and 2, mandel and julia: the values POV-Ray prints through
+   pigment functions; nothing allocated *)
+let magnet () =
+  let pts = [ (0.1, 0.2, 0.); (0.5, -0.3, 0.); (-0.7, 0.1, 0.); (1.2, 0.9, 0.); (0., 0., 0.); (-0.2, -0.6, 0.);
+              (1.5, 0.2, 0.); (2.5, -1., 0.) ] in
+  List.iter
+    (fun (src, expected) ->
+      let p = fn_pattern src in
+      List.iter2
+        (fun (x, y, z) e -> Scn.close ~eps:1e-6 (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e (Pattern.value p (Vec3.make x y z)))
+        pts expected)
+    [
+      ("magnet 1 mandel 50", [ 1.000000; 1.000000; 0.080000; 1.000000; 1.000000; 1.000000; 1.000000; 0.280000 ]);
+      ("magnet 2 mandel 50", [ 1.000000; 1.000000; 0.040000; 0.120000; 0.200000; 1.000000; 0.420000; 0.040000 ]);
+      ("magnet 1 julia <0.5, 0.3>, 30", [ 1.000000; 1.000000; 1.000000; 1.000000; 1.000000; 1.000000; 0.133333; 1.000000 ]);
+      ("magnet 2 julia <0.5, 0.3>, 30", [ 1.000000; 1.000000; 1.000000; 0.100000; 1.000000; 1.000000; 0.066667; 1.000000 ]);
+      ("magnet 1 mandel 50 interior 1, 1", [ 0.232877; 0.145299; 0.080000; 0.074789; 0.250000; 0.135259; 0.002234; 0.280000 ]);
+    ];
+  let p = fn_pattern "magnet 2 mandel 50 interior 1, 1" in
+  let q = Vec3.m () and w = Pattern.work () in
+  Vec3.set q 0.3 0.2 0.;
+  Pattern.eval_m p q w;
+  let before = Gc.minor_words () in
+  for i = 1 to 1000 do
+    Vec3.set q (0.001 *. float_of_int i) 0.2 0.;
+    Pattern.eval_m p q w
+  done;
+  Alcotest.(check (float 0.)) "words over 1000 evaluations" 0. (Gc.minor_words () -. before)
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -461,6 +490,7 @@ let tests =
       Alcotest.test_case "slope_map heights" `Quick slope_map;
       Alcotest.test_case "warps: repeat, black_hole, order with transforms = POV-Ray" `Quick warps;
       Alcotest.test_case "julia = POV-Ray" `Quick julia;
+      Alcotest.test_case "magnet = POV-Ray, allocation-free" `Quick magnet;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
