@@ -1,4 +1,4 @@
-type t = { pattern : Pattern.t; amount : float; xform : Transform.t; slope : Float.Array.t }
+type t = { pattern : Pattern.t; amount : float; xform : Transform.t; slope : Float.Array.t; accuracy : float }
 
 let slope_height m v =
   let n = Float.Array.length m / 3 in
@@ -22,7 +22,11 @@ let slope_height m v =
       (t3 *. (s0 +. s1 +. (2. *. (h0 -. h1)))) -. (t2 *. ((2. *. s0) +. s1 +. (3. *. (h0 -. h1)))) +. (t *. s0) +. h0
   end
 
-let make kind amount = { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0 }
+(* POV-Ray's default accuracy: the samples' distance (see [perturb_m]) *)
+let default_accuracy = 0.02
+
+let make kind amount =
+  { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0; accuracy = default_accuracy }
 let transform t nm = { nm with xform = Transform.then_ nm.xform t }
 
 (* Bump strength per unit of amount and of pattern-space slope, calibrated
@@ -34,8 +38,8 @@ let strength = 2. /. 15.
    pattern are 0.02 wide ahead and 0.01 behind, and their shading matches
    to 5 digits): the pattern sampled at the four corners of a regular
    tetrahedron of radius [delta] around the point, one corner on +y;
-   g = 3/(4 delta) sum v_i f(q + delta v_i), exact for a linear pattern. *)
-let delta = 0.02
+   g = 3/(4 delta) sum v_i f(q + delta v_i), exact for a linear pattern;
+   delta is the normal's accuracy, 0.02 by default. *)
 let tetra =
   let a = 2. *. Float.sqrt 2. /. 3. and b = Float.sqrt 2. /. 3. and c = Float.sqrt (2. /. 3.) in
   [| Vec3.make a (-1. /. 3.) 0.; Vec3.make (-.b) (-1. /. 3.) c; Vec3.make (-.b) (-1. /. 3.) (-.c);
@@ -69,7 +73,9 @@ let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   match nm.pattern.kind with
   | Pattern.Quilted { c0; c1 } -> quilted_m nm c0 c1 q n out
   | _ ->
-  (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order *)
+  (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order; delta the
+     normal's accuracy *)
+  let delta = nm.accuracy in
   let gx = ref 0. and gy = ref 0. and gz = ref 0. in
   for i = 0 to Array.length tetra - 1 do
     let (v : Vec3.t) = Array.unsafe_get tetra i in

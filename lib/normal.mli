@@ -14,7 +14,11 @@ type t = {
       (** POV-Ray's [slope_map]: (value, height, slope) triples by rising
           value, the pattern's value taken to a height by Hermite cubics
           between them; empty: none (the height is the value) *)
+  accuracy : float;  (** the distance of the samples the slope is taken from (0.02) *)
 }
+
+val default_accuracy : float
+(** POV-Ray's 0.02. *)
 
 val make : Pattern.kind -> float -> t
 val transform : Transform.t -> t -> t

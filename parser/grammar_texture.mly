@@ -444,6 +444,7 @@ bump_size: COMMA? a = param { a }
   | t = transformation { Texdesc.transform t }
   | m = pattern_mod { m }
   | SLOPE_MAP LBRACE es = list(slope_entry) RBRACE { Texdesc.slope_map (loc $loc) es }
+  | ACCURACY e = param { Texdesc.accuracy (loc $loc(e)) (fl $loc(e) e) }
 
 (* [value, <height, slope>] *)
 slope_entry:

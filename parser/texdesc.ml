@@ -9,13 +9,15 @@ type pat = {
   amount : float;
   average : bool;  (** [average]: [entries] are weights, not values *)
   slope : Float.Array.t;
+  accuracy : float;
 }
 
 type modifier = pat -> pat
 
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
-    amount = 0.5; average = false; slope = Float.Array.create 0 }
+    amount = 0.5; average = false; slope = Float.Array.create 0;
+    accuracy = Normal.default_accuracy }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -82,8 +84,8 @@ let pigment p =
 
 let normal p =
   match p.pattern with
-  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform; slope = p.slope }
-  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform; slope = p.slope }
+  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform; slope = p.slope; accuracy = p.accuracy }
+  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy }
 
 let image_map loc ~gamma_decode file mods =
   let img =
@@ -121,3 +123,7 @@ let warp loc k p =
   | None ->
       Diag.warning loc "a warp on a plain colour changes nothing";
       p
+
+let accuracy loc a p =
+  if not (a > 0.) then Diag.error loc "a normal's accuracy must be positive, found %g" a;
+  { p with accuracy = a }

@@ -14,6 +14,7 @@ type pat = {
   amount : float;  (** normals: bump amount *)
   average : bool;  (** [average pigment_map]: the entries' values are weights *)
   slope : Float.Array.t;  (** normals: [slope_map] (see {!Normal.t}) *)
+  accuracy : float;  (** normals: the slope's sample distance *)
 }
 
 type modifier = pat -> pat
@@ -41,3 +42,6 @@ val slope_map : Loc.t -> (float * float * float) list -> modifier
 
 val warp : Loc.t -> Pattern.warp_kind -> modifier
 (** [warp { ... }]: after the pattern's transformations so far. *)
+
+val accuracy : Loc.t -> float -> modifier
+(** A normal's [accuracy] (positive). *)
