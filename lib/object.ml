@@ -2,6 +2,7 @@ type t = {
   geom : geom;
   xform : Transform.t;
   texture : Texture.t;
+  back : Texture.t;
   interior : Interior.t;
   no_shadow : bool;
   inverted : bool;
@@ -88,12 +89,13 @@ let inverse_matrix xf =
 
 let identity_matrix = inverse_matrix Transform.identity
 
-let make ?(xform = Transform.identity) ?(texture = Texture.default) ?(interior = Interior.default)
+let make ?(xform = Transform.identity) ?(texture = Texture.default) ?back ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
   let xform, shape = fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
   let inv = if Transform.is_identity xform then identity_matrix else inverse_matrix xform in
-  { geom = Prim shape; xform; texture; interior; no_shadow; inverted; clip; bound = [||]; bounds = clip_box clip b;
+  let back = match back with Some b -> b | None -> texture in
+  { geom = Prim shape; xform; texture; back; interior; no_shadow; inverted; clip; bound = [||]; bounds = clip_box clip b;
     index = None; inv }
 
 let node geom clip b =
@@ -101,6 +103,7 @@ let node geom clip b =
     geom;
     xform = Transform.identity;
     texture = Texture.default;
+    back = Texture.default;
     interior = Interior.default;
     no_shadow = false;
     inverted = false;

@@ -12,6 +12,9 @@ type t = private {
   geom : geom;
   xform : Transform.t;  (** object space to world space (leaves) *)
   texture : Texture.t;
+  back : Texture.t;
+      (** POV-Ray's [interior_texture]: what the inner side of the surface
+          shows (seen from inside the solid); [texture] itself when none *)
   interior : Interior.t;
   no_shadow : bool;
   inverted : bool;  (** leaf: inside and outside swapped, normal flipped *)
@@ -37,7 +40,7 @@ and index = {
 }
 
 val make :
-  ?xform:Transform.t -> ?texture:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
+  ?xform:Transform.t -> ?texture:Texture.t -> ?back:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
   ?inverted:bool -> ?clip:t array -> Shape.t -> t
 (** A leaf. A sphere under a similarity (rotations, uniform scales,
     translations) is stored moved, with the identity transform. *)

@@ -194,13 +194,14 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
      the top layer's normal or an opaque texture says otherwise *)
   let guess = total_internal eta (-.dot d n0) in
   let c = fr.c and tr = fr.tr in
-  layers s d level media fr (not guess) c tr obj.texture;
+  let tex = if entering then obj.texture else obj.back in
+  layers s d level media fr (not guess) c tr tex;
   let n = if fr.top_set then fr.top else n0 in
   if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.dot d n)) then begin
     fr.top_set <- false;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
-    layers s d level media fr guess c tr obj.texture
+    layers s d level media fr guess c tr tex
   end;
   if Color.acc_luminance tr <= bailout then Color.acc_set out c.ar c.ag c.ab
   else

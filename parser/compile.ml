@@ -237,6 +237,7 @@ let shape (o : Sdl.obj) =
 type ctx = {
   xf : Transform.t;
   tex : Texture.t option;
+  inner : Texture.t option;  (** interior_texture, from the parents *)
   inter : Interior.t option;
   no_shadow : bool;
   flags : int;  (** Sdl.no_image, no_reflection, double_illuminate, from the parents *)
@@ -270,7 +271,8 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   let o = Sdl.transform_obj ctx.xf o in
   let tex = match o.texture with Some _ -> o.texture | None -> ctx.tex in
   let inter = interior_of ctx o in
-  let ctx' = { ctx with xf = o.xform; tex; inter; no_shadow = ctx.no_shadow || o.no_shadow; flags = ctx.flags lor o.flags } in
+  let inner = match o.inner with Some _ -> o.inner | None -> ctx.inner in
+  let ctx' = { ctx with xf = o.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o.no_shadow; flags = ctx.flags lor o.flags } in
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
   | Sdl.Light l ->
@@ -328,13 +330,15 @@ and leaf ctx o tex inter =
   let texture = match tex with Some t -> Shapes.share_texture t | None -> Texture.default in
   let texture = if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both texture else texture in
   let interior = Option.value ~default:Interior.default inter in
-  Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow (shape o)
+  let back = Option.map (fun t -> let t = Shapes.share_texture t in
+                                  if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both t else t) ctx.inner in
+  Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow (shape o)
 
 (* An object compiled on its own while the scene is still being read
    (POV-Ray's trace(), inside(), min_extent() and max_extent() ask
    declared objects): its lights are dropped. *)
 let standalone (o : Sdl.obj) =
-  let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; flags = 0; lights = ref [] } in
+  let ctx = { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights = ref [] } in
   Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts) (fun () -> obj ctx o)
 
 (* Top-level unions (not clipped, not inverted) are flattened into the
@@ -345,7 +349,8 @@ let rec top ctx (o : Sdl.obj) acc =
       let o' = Sdl.transform_obj ctx.xf o in
       let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
       let inter = interior_of ctx o' in
-      let ctx' = { ctx with xf = o'.xform; tex; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags } in
+      let inner = match o'.inner with Some _ -> o'.inner | None -> ctx.inner in
+      let ctx' = { ctx with xf = o'.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags } in
       List.fold_left (fun acc c -> top ctx' c acc) acc l
   | _ -> ( match obj ctx o with Some x -> (x, ctx.flags lor o.flags) :: acc | None -> acc)
 
@@ -365,7 +370,7 @@ and scene_ (s : Sdl.scene) =
     List.iter
       (function
         | Sdl.Object o ->
-            let ctx = { xf = Transform.identity; tex = None; inter = None; no_shadow = false; flags = 0; lights } in
+            let ctx = { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights } in
             objects := top ctx o !objects
         | Sdl.Sky_sphere k -> sky := k
         | Sdl.Fog f -> fog := f :: !fog

@@ -6,7 +6,7 @@
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
-%token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR
+%token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR INTERIOR_TEXTURE
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
@@ -169,6 +169,8 @@ items_rev:
 
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }
+  | INTERIOR_TEXTURE LBRACE t = texture_body RBRACE
+      { fun (o : Sdl.obj) -> { o with inner = Some (match o.inner with Some layers -> t @ layers | None -> t) } }
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
           | Some layers -> t @ layers | None -> t) } }

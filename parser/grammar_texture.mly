@@ -37,7 +37,7 @@
                   media_interaction = true; media_attenuation = false;
                   area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
-                  texture = None; interior = None; no_shadow = false; hollow = false; flags = 0 } in
+                  texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None } in
         List.fold_left (fun o f -> f o) o ms }
 
 %public light_mod:

@@ -64,8 +64,20 @@ let rec parts (o : Sdl.obj) =
     | None -> []
     | Some layers -> List.rev_map layer layers (* bottom layer first *)
   in
+  let inner =
+    match o.inner with
+    | None -> []
+    | Some layers ->
+        (* interior_texture { ... }: each layer's body, bottom first *)
+        List.rev_map
+          (fun l ->
+            let t = layer l in
+            "interior_" ^ t)
+          layers
+  in
   let mods =
     tex
+    @ inner
     @ (match o.interior with Some i -> [ interior i ] | None -> [])
     @ (if o.no_shadow then [ "no_shadow" ] else [])
     @ List.filter_map

@@ -114,6 +114,7 @@ and obj = {
   shape : shape;
   xform : Transform.t;
   texture : Texture.t option;
+  inner : Texture.t option;
   interior : Interior.t option;
   no_shadow : bool;
   hollow : bool;
@@ -166,6 +167,7 @@ let transform_texture t tex = Texture.transform t tex
 
 let transform_obj t o =
   { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture;
+    inner = Option.map (transform_texture t) o.inner;
     interior = Option.map (Interior.transform t) o.interior }
 
 let no_image = 1

@@ -118,6 +118,7 @@ and obj = {
   shape : shape;
   xform : Transform.t;
   texture : Texture.t option;  (** [None]: inherit from a CSG parent *)
+  inner : Texture.t option;  (** [interior_texture] ([None]: inherit, or the texture) *)
   interior : Interior.t option;
   no_shadow : bool;
   hollow : bool;

@@ -48,7 +48,7 @@ let gen_obj =
   QCheck.Gen.(
     map
       (fun (shape, xform, texture, (interior, no_shadow, (hollow, flags))) ->
-        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow; flags })
+        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow; flags; inner = None })
       (quad
          (oneof
             [
@@ -91,7 +91,7 @@ let same_xform a b =
 let normalise (o : Sdl.obj) =
   (* lights keep no texture or interior *)
   match o.shape with
-  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false; flags = 0 }
+  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None }
   | _ -> o
 
 let round_trip =
@@ -128,6 +128,8 @@ let fixpoint () =
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
      lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
      superellipsoid { <0.3, 2> scale 2 }\n\
+     sor { 5, <0, 0>, <1, 0.2>, <0.5, 1>, <0.8, 1.5>, <0, 2> open interior_texture { pigment { rgb <1, 0, 0> } } }\n\
+     union { sphere { 0, 1 } cylinder { 0, y, 0.5 open } interior_texture { pigment { rgb 0.5 } finish { ambient 0.3 } } }\n\
      height_field { function 4, 3 { x * y + 0.1 } smooth water_level 0.1 hierarchy off scale <2, 1, 2> }\n\
      #declare R = 0.25; #declare N = -2;\n\
      isosurface { function { sqrt(x*x + y*y + z*z) - R + 0.1*sin(4*x) } open max_gradient 2.5 threshold -0.1 translate y }\n\
@@ -143,6 +145,12 @@ let fixpoint () =
   let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
   let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
   let once = print (parse text) in
+  (* what is printed is all there: each kind of object, and the
+     modifiers that are easy to drop *)
+  List.iter
+    (fun w -> if not (Scn.contains once w) then Alcotest.failf "%S is not printed" w)
+    [ "sor {"; "interior_texture {"; "isosurface {"; "height_field {"; "lathe {"; "prism {"; "blob {";
+      "superellipsoid {"; " open" ];
   Alcotest.(check string) "fixpoint" once (print (parse once))
 
 let tests =
