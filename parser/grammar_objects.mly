@@ -223,5 +223,10 @@ patch_option:
         if t <> 0 && t <> 1 then Diag.error (loc $loc(e)) "a bicubic_patch's type is 0 or 1, found %d" t;
         (`T, t) }
   | FLATNESS e = param { ignore (fl $loc(e) e); (`F, 0) }
+  (* the corners' uv coordinates: uv_mapping is not supported, so they
+     change nothing *)
+  | UV_VECTORS a = param COMMA? b = param COMMA? c = param COMMA? d = param
+      { List.iter (fun (l, v) -> ignore (Value.to_vec3 l v)) [ (loc $loc(a), a); (loc $loc(b), b); (loc $loc(c), c); (loc $loc(d), d) ];
+        (`F, 0) }
   | U_STEPS e = param { (`U, Value.to_int (loc $loc(e)) e) }
   | V_STEPS e = param { (`V, Value.to_int (loc $loc(e)) e) }

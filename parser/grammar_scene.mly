@@ -61,6 +61,10 @@ fog_item:
   | APERTURE e = param { Sdl.Aperture (fl $loc(e) e) }
   | FOCAL_POINT e = param { Sdl.Focal_point (v3 $loc(e) e) }
   | BLUR_SAMPLES e = param { Sdl.Blur_samples (Value.to_int (loc $loc(e)) e) }
+  (* POV-Ray's adaptive focal blur: camlray takes blur_samples as they
+     are (read, not used) *)
+  | CONFIDENCE e = param { ignore (fl $loc(e) e); Sdl.Cam_transform Transform.identity }
+  | VARIANCE e = param { ignore (fl $loc(e) e); Sdl.Cam_transform Transform.identity }
   | t = transformation { Sdl.Cam_transform t }
   (* camera words camlray knows elsewhere, named when met here *)
   | CYLINDER e = param

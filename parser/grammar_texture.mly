@@ -625,8 +625,9 @@ warp_body:
           ms }
   | TURBULENCE e = param ms = list(warp_turb_item)
       { Pattern.Turbulence (List.fold_left (fun t m -> m t) (Pattern.default_turbulence (v3 $loc(e) e)) ms) }
-  | PLANAR | SPHERICAL | CYLINDRICAL
-      { Diag.error (loc $loc) "mapping warps (warp { planar | spherical | cylindrical | toroidal | cubic }) are not supported by camlray" }
+  | PLANAR { Diag.error (loc $loc) "planar (a mapping warp) is not supported by camlray" }
+  | SPHERICAL { Diag.error (loc $loc) "spherical (a mapping warp) is not supported by camlray" }
+  | CYLINDRICAL { Diag.error (loc $loc) "cylindrical (a mapping warp) is not supported by camlray" }
 
 repeat_item:
   | OFFSET e = param { `Offset (v3 $loc(e) e) }

@@ -174,7 +174,7 @@ let height_field src opts =
     | Hf_file (loc, kind, file) -> (
         (match kind with
          | Some ("gif" | "tga" | "iff" | "sys" | "jpeg" | "tiff" | "bmp" | "exr" | "hdr" | "pot" as k) ->
-             Diag.error loc "height_field: %s files are not supported by camlray (png, pgm and ppm are)" k
+             Diag.error loc "%s (a height_field file type) is not supported by camlray: png, pgm and ppm are" k
          | _ -> ());
         let path =
           match Defaults.find_file loc file with
