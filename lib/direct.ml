@@ -44,7 +44,7 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
-    if not light.shadowless then if sampled then Shadow.point s w p else Shadow.light s w light p;
+    if not light.shadowless then if sampled then Shadow.point s w light p else Shadow.light s w light p;
     let sh = Shadow.passed w in
     let lr = if light.shadowless then lr else lr *. sh.ar
     and lg = if light.shadowless then lg else lg *. sh.ag

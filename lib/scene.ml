@@ -26,6 +26,7 @@ type t = {
   background : Color.t;
   sky : Sky.t;
   fog : Fog.t list;
+  atmosphere : Interior.t list;
   settings : settings;
   accel : accel;
   all : accel;
@@ -136,9 +137,12 @@ let accelerate ?par objects =
   let reach = List.filter (fun o -> (not (in_bvh o)) || beyond o) (Array.to_list objects) in
   { finite; bvh; infinite = Array.of_list infinite; spheres; reach = Array.of_list reach }
 
-let make ?(sky = Sky.none) ?(fog = []) ~objects ~lights ~camera ~background ~settings () =
+let atmosphere = function [] -> [] | media -> [ { Interior.default with hollow = true; media } ]
+
+let make ?(sky = Sky.none) ?(fog = []) ?(media = []) ~objects ~lights ~camera ~background ~settings () =
   let accel = accelerate objects in
-  { objects; lights; camera; background; sky; fog; settings; accel; all = accel; views = { image = None; reflected = None } }
+  { objects; lights; camera; background; sky; fog; atmosphere = atmosphere media; settings; accel; all = accel;
+    views = { image = None; reflected = None } }
 
 let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }
 

@@ -23,6 +23,10 @@ type t = {
   background : Color.t;
   sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
   fog : Fog.t list;  (** in source order; whitted mode draws them *)
+  atmosphere : Interior.t list;
+      (** scene-level (atmospheric) media: [[]], or one hollow interior
+          holding them in source order (see {!atmosphere}); whitted mode
+          draws them where a ray is in the open *)
   settings : settings;
   accel : accel;
       (** built from [objects] by {!accelerate} (see {!with_objects}); for
@@ -54,8 +58,11 @@ val accelerate : ?par:(int -> (int -> unit) -> unit) -> Object.t array -> accel
 (** Build the BVH (binned SAH) over the objects' world bounds; with [par],
     in parallel (see {!Bvh.build}; the same tree). *)
 
+val atmosphere : Media.t list -> Interior.t list
+(** The [atmosphere] field for scene-level media. *)
+
 val make :
-  ?sky:Sky.t -> ?fog:Fog.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
+  ?sky:Sky.t -> ?fog:Fog.t list -> ?media:Media.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
   background:Color.t -> settings:settings -> unit -> t
 (** A scene with its acceleration structure built. *)
 

@@ -20,9 +20,11 @@ val toward : walk -> Light.dir
 (** The direction and distance to the light being shaded, which the
     caller sets ({!Light.direction_into}) before {!point} or {!light}. *)
 
-val point : Scene.t -> walk -> Vec3.m -> unit
-(** [point s w p]: the light let through from the point light whose
-    direction is in [toward w] to [p], into [passed w]. *)
+val point : Scene.t -> walk -> Light.t -> Vec3.m -> unit
+(** [point s w l p]: the light let through from the point light [l]
+    (or one sample of it) whose direction is in [toward w] to [p], into
+    [passed w]; the scene's atmospheric media dim it when [l] has
+    media_attenuation on. *)
 
 val light : Scene.t -> walk -> Light.t -> Vec3.m -> unit
 (** [light s w l p]: the same for light [l] at [p] (its direction in

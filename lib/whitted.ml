@@ -122,6 +122,26 @@ let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec
     Volume.apply s o d t media out
   end
 
+(* Scene-level (atmospheric) media: seen by a ray in the open (as fog),
+   after the media of the hollow solids it is inside, as a second layer
+   (POV-Ray 3.7 does so, measured: the atmosphere's emission inside a
+   hollow sphere is not dimmed by the sphere's absorbing media, the
+   sphere's emission is dimmed by the atmosphere's absorption); a ray
+   that hits nothing crosses POV-Ray's 2e10 units of it (measured:
+   absorption 1e-10 before a white background gives exp(-2)). Inside a
+   solid, its own media alone. *)
+let[@inline never] aired_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
+  let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
+  let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
+  Volume.apply s o d t media out;
+  if in_open media then Volume.apply s o d t s.atmosphere out
+
+let[@inline never] aired_sky (s : Scene.t) (o : Vec3.m) (d : Vec3.m) media out =
+  if in_open media then begin
+    let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
+    Volume.apply s o d (Fog.missed /. dl) s.atmosphere out
+  end
+
 (* POV-Ray's iridescence, on the reflected light [rc]: a thin film of the
    finish's thickness (varied by camlray's noise with [irid_turb]) seen at
    cosines [ci] in and [cr] out shifts each channel's phase by its
@@ -156,6 +176,7 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
         Vec3.normalize_m u;
         Sky.eval_into s.sky ~background:s.background u out
       end;
+      if s.atmosphere <> [] then aired_sky s o d media out;
       fogged_sky s o d media out
     end
     else begin
@@ -174,7 +195,8 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
-      if has_media media then mediated_hit s o d p media out;
+      if s.atmosphere <> [] then aired_hit s o d p media out
+      else if has_media media then mediated_hit s o d p media out;
       fogged_hit s o d p media out;
       leave ()
     end

@@ -364,7 +364,7 @@ and scene_ (s : Sdl.scene) =
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
-    let sky = ref Sky.none and fog = ref [] in
+    let sky = ref Sky.none and fog = ref [] and media = ref [] in
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
@@ -374,6 +374,7 @@ and scene_ (s : Sdl.scene) =
             objects := top ctx o !objects
         | Sdl.Sky_sphere k -> sky := k
         | Sdl.Fog f -> fog := f :: !fog
+        | Sdl.Media m -> media := m :: !media
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
         | Sdl.Global_settings (_, gs) ->
@@ -412,6 +413,7 @@ and scene_ (s : Sdl.scene) =
         background = !background;
         sky = !sky;
         fog = List.rev !fog;
+        atmosphere = Scene.atmosphere (List.rev !media);
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }
     in

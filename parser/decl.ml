@@ -13,6 +13,8 @@ type t =
   | Normal of Camlray.Normal.t option
   | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
   | Sky_sphere of Camlray.Sky.t
+  | Media of Camlray.Media.t  (** [media { ... }] *)
+  | Density of Camlray.Pigment.t  (** [density { ... }]: a density is a pigment's pattern of values *)
 
 let kind_name = function
   | Value v -> Value.type_name v
@@ -29,3 +31,5 @@ let kind_name = function
   | Normal _ -> "a normal"
   | Material _ -> "a material"
   | Sky_sphere _ -> "a sky_sphere"
+  | Media _ -> "a media"
+  | Density _ -> "a density"

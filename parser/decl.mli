@@ -16,6 +16,8 @@ type t =
   | Normal of Camlray.Normal.t option
   | Material of (Camlray.Texture.t option * Camlray.Interior.t option)
   | Sky_sphere of Camlray.Sky.t
+  | Media of Camlray.Media.t  (** [media { ... }] *)
+  | Density of Camlray.Pigment.t  (** [density { ... }]: a density is a pigment's pattern of values *)
 
 val kind_name : t -> string
 (** "a float", "an object", "a pigment", ... for messages. *)

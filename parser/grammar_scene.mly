@@ -18,7 +18,8 @@
   | BACKGROUND LBRACE c = color_value RBRACE
       { Sdl.Background (Value.to_color (loc $loc(c)) c) }
   | GLOBAL_SETTINGS LBRACE g = list(global_item) RBRACE { Sdl.Global_settings (loc $loc, g) }
-  | MEDIA { Diag.error (loc $loc) "media at scene level (atmospheric media) is not supported by camlray" }
+  (* atmospheric media: all space outside non-hollow objects *)
+  | MEDIA LBRACE m = media_body RBRACE { Sdl.Media m }
   | FOG LBRACE fs = list(fog_item) RBRACE
       { Sdl.Fog (Fogdesc.fog (loc $loc) (List.fold_left (fun d f -> f d) Fogdesc.empty fs)) }
 

@@ -21,7 +21,9 @@
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
 %token JULIA MAGNET
 %token MEDIA ABSORPTION SCATTERING ECCENTRICITY EXTINCTION DENSITY METHOD INTERVALS SAMPLES
-%token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION
+%token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION DENSITY_MAP
+%token <Camlray.Media.t> MEDIA_ID
+%token <Camlray.Pigment.t> DENSITY_ID
 
 %%
 
@@ -537,7 +539,36 @@ slope_entry:
 (* media { ... }: POV-Ray's participating media, sampled as POV-Ray 3.7
    does (see Camlray.Volume) *)
 %public media_body:
-  | ms = list(media_item) { List.fold_left (fun m f -> f m) Media.default ms }
+  | m = ioption(MEDIA_ID) ms = list(media_item)
+      { List.fold_left (fun m f -> f m) (Option.value ~default:Media.default m) ms }
+
+(* density { [D] ... }: a density is read as a pigment whose colour is
+   the density per channel (white: 1) *)
+%public density_body:
+  | d = DENSITY_ID ms = list(pigment_mod) { Texdesc.(pigment (apply ms (of_pigment d))) }
+  | e = pigment_edit { e (Pigment.solid (Color.rgbft 1. 1. 1. 0. 0.)) }
+
+%public declare_rhs:
+  | m = MEDIA_ID { Decl.Media m }
+  | MEDIA LBRACE m = media_body RBRACE { Decl.Media m }
+  | d = DENSITY_ID { Decl.Density d }
+  | DENSITY LBRACE d = density_body RBRACE { Decl.Density d }
+
+%public any_value:
+  | m = MEDIA_ID { Decl.Media m }
+  | MEDIA LBRACE m = media_body RBRACE { Decl.Media m }
+  | d = DENSITY_ID { Decl.Density d }
+  | DENSITY LBRACE d = density_body RBRACE { Decl.Density d }
+
+(* density_map { [v DENSITY] ... }: a pigment_map of densities (camlray
+   reads it wherever a pigment_map may stand) *)
+%public pigment_mod:
+  | DENSITY_MAP LBRACE es = list(density_map_entry) RBRACE { Texdesc.map es }
+
+density_map_entry:
+  | e = pigment_map_entry { e }
+  | LBRACKET v = param COMMA? d = DENSITY_ID ms = list(pigment_mod) RBRACKET
+      { (fl $loc(v) v, Texdesc.(pigment (apply ms (of_pigment d)))) }
 
 media_item:
   | EMISSION c = color_value { let c = Value.to_rgb (loc $loc(c)) c in fun (m : Media.t) -> { m with emission = c } }
@@ -548,9 +579,7 @@ media_item:
         let s = List.fold_left (fun s f -> f s) (Media.scattering k (Value.to_rgb (loc $loc(c)) c)) ss in
         fun (m : Media.t) -> { m with scattering = Some s } }
   (* several densities multiply *)
-  | DENSITY LBRACE e = pigment_edit RBRACE
-      { let d = e (Pigment.solid (Color.rgbft 1. 1. 1. 0. 0.)) in
-        fun (m : Media.t) -> { m with density = m.density @ [ d ] } }
+  | DENSITY LBRACE d = density_body RBRACE { fun (m : Media.t) -> { m with density = m.density @ [ d ] } }
   | METHOD e = param
       { let k = Value.to_int (loc $loc(e)) e in
         if k = 1 then Diag.error (loc $loc) "media method 1 (random sampling) is not supported by camlray: use method 2 or 3";

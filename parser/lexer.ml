@@ -104,6 +104,7 @@ let texture_keywords =
     ("method", METHOD); ("intervals", INTERVALS); ("samples", SAMPLES); ("confidence", CONFIDENCE);
     ("variance", VARIANCE); ("ratio", RATIO); ("aa_threshold", AA_THRESHOLD); ("aa_level", AA_LEVEL);
     ("media_interaction", MEDIA_INTERACTION); ("media_attenuation", MEDIA_ATTENUATION);
+    ("density_map", DENSITY_MAP);
   ]
 
 (* Keywords to their tokens, each token made once and shared by every
@@ -203,6 +204,7 @@ let describe = function
       | PIGMENT_ID _ -> "a pigment identifier" | FINISH_ID _ -> "a finish identifier"
       | TEXTURE_ID _ -> "a texture identifier" | INTERIOR_ID _ -> "an interior identifier"
       | TRANSFORM_ID _ -> "a transform identifier" | CAMERA_ID _ -> "a camera identifier"
+      | MEDIA_ID _ -> "a media identifier" | DENSITY_ID _ -> "a density identifier"
       | UNDEFINED_ID s -> "undefined identifier " ^ s
       | FLOAT f -> Printf.sprintf "number %g" f
       | STRING s -> Printf.sprintf "string %S" s

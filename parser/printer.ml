@@ -44,10 +44,31 @@ let finish (f : Finish.t) =
 
 let layer (l : Texture.layer) = Printf.sprintf "texture { %s %s }" (pigment l.pigment) (finish l.finish)
 
+(* densities print as their colours: patterned ones are not printed, as
+   pigments *)
+let density = function
+  | Pigment.Solid c -> Printf.sprintf " density { %s }" (rgbft c)
+  | _ -> invalid_arg "Printer: patterned densities are not printed"
+
+let media (m : Media.t) =
+  Printf.sprintf
+    "media { emission %s absorption %s%s%s method %d intervals %d samples %d, %d confidence %s variance %s \
+     ratio %s jitter %s aa_threshold %s aa_level %d }"
+    (rgb m.emission) (rgb m.absorption)
+    (match m.scattering with
+    | None -> ""
+    | Some s ->
+        Printf.sprintf " scattering { %d, %s eccentricity %s extinction %s }" s.kind (rgb s.color)
+          (float s.eccentricity) (float s.extinction))
+    (String.concat "" (List.map density m.density))
+    m.meth m.intervals m.samples m.samples_max (float m.confidence) (float m.variance) (float m.ratio)
+    (float m.jitter) (float m.aa_threshold) m.aa_level
+
 let interior (i : Interior.t) =
-  Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s%s }" (float i.ior)
+  Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s%s%s }" (float i.ior)
     (float i.fade_distance) (float i.fade_power) (rgb i.fade_color)
     (if i.caustics = 0. then "" else " caustics " ^ float (i.caustics /. 45.))
+    (String.concat "" (List.map (fun m -> " " ^ media m) i.media))
 
 let light_kind = function
   | Light.Point -> ""
@@ -265,6 +286,7 @@ let item = function
   | Sdl.Background c -> Printf.sprintf "background { %s }" (rgbft c)
   | Sdl.Global_settings (_, gs) -> "global_settings { " ^ String.concat " " (List.map global gs) ^ " }"
   | Sdl.Sky_sphere _ -> invalid_arg "Printer: sky_sphere is not printed"
+  | Sdl.Media m -> media m
   | Sdl.Fog f ->
       let kind =
         match f.kind with

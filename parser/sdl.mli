@@ -163,6 +163,7 @@ type item =
   | Global_settings of Loc.t * global list
   | Sky_sphere of Sky.t
   | Fog of Fog.t
+  | Media of Media.t  (** scene-level (atmospheric) media *)
 
 type scene = {
   items : item list;  (** in source order *)

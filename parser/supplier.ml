@@ -45,6 +45,8 @@ let token_of_decl : Decl.t -> Parser.token = function
   | Decl.Normal n -> Parser.NORMAL_ID n
   | Decl.Material m -> Parser.MATERIAL_ID m
   | Decl.Sky_sphere k -> Parser.SKY_SPHERE_ID k
+  | Decl.Media m -> Parser.MEDIA_ID m
+  | Decl.Density d -> Parser.DENSITY_ID d
 
 let suggest t name =
   let d a b =

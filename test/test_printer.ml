@@ -153,7 +153,41 @@ let fixpoint () =
       "superellipsoid {"; " open" ];
   Alcotest.(check string) "fixpoint" once (print (parse once))
 
+(* declared media and densities, used and edited, in interiors and at
+   scene level: printed as plain media that read back equal *)
+let media () =
+  let text =
+    "#declare D = density { rgb <0.5, 0.25, 1> }\n\
+     #declare M = media { emission 0.1 absorption <0.1, 0.2, 0.3> density { D } method 2 intervals 2 samples 3 }\n\
+     sphere { 0, 1 pigment { rgbt 1 } hollow interior { ior 1.2 media { M emission 0.3 } media { scattering { 5, 0.2 eccentricity 0.4 extinction 0.5 } } } }\n\
+     media { M density { D scale 2 } aa_level 2 aa_threshold 0.05 jitter 0.1 }\n\
+     media { scattering { 2, <0.1, 0.2, 0.3> } samples 4, 8 confidence 0.8 variance 0.01 ratio 0.7 }\n"
+  in
+  let parse t = match Parse.string t with Ok s -> s | Error d -> Alcotest.fail (Diag.to_string d) in
+  let media_of (s : Sdl.scene) =
+    List.concat_map
+      (function
+        | Sdl.Media m -> [ m ]
+        | Sdl.Object { interior = Some i; _ } -> i.Interior.media
+        | _ -> [])
+      s.items
+  in
+  let first = parse text in
+  let ms = media_of first in
+  Alcotest.(check int) "four media" 4 (List.length ms);
+  (match ms with
+  | m :: _ ->
+      Alcotest.(check (float 0.)) "M's emission edited" 0.3 m.Media.emission.r;
+      Alcotest.(check (float 0.)) "M's absorption kept" 0.2 m.Media.absorption.g;
+      Alcotest.(check int) "M's method kept" 2 m.Media.meth
+  | [] -> ());
+  let print s = String.concat "\n" (List.map Printer.item s.Sdl.items) in
+  let again = parse (print first) in
+  if media_of again <> ms then Alcotest.failf "media printed as\n%s\nread back otherwise" (print first);
+  Alcotest.(check string) "fixpoint" (print first) (print again)
+
 let tests =
   ( "printer",
     [ QCheck_alcotest.to_alcotest round_trip;
-      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe, superellipsoid, isosurface print back to themselves" `Quick fixpoint ] )
+      Alcotest.test_case "CSG, inverse, clipped_by, bounded_by, mesh2, polynomials, fog, blob, prism, lathe, superellipsoid, isosurface print back to themselves" `Quick fixpoint;
+      Alcotest.test_case "declared media and densities print back" `Quick media ] )

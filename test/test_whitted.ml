@@ -515,6 +515,69 @@ let media () =
     (pixel
        "light_source { <0,0,-1000>, rgb 1 }\nplane { -z, -4 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\nbox { <-2,-2,1>, <2,2,3> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow interior { media { absorption 0.5 } } }\n")
 
+(* Scene-level (atmospheric) media: the camera at the origin looks along
+   +z at a plane z = 3 whose inside is beyond it (the camera inside a
+   plane is inside a solid: no atmosphere there) *)
+let atmosphere () =
+  let glow = "plane { -z, -3 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 1 } }\n" in
+  let dark = "plane { -z, -3 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\n" in
+  gray "absorbing atmosphere: exp(-a d)" (Float.exp (-0.6)) (pixel (glow ^ "media { absorption 0.2 }"));
+  gray "emitting atmosphere: e d" 0.3 (pixel (dark ^ "media { emission 0.1 }"));
+  gray "the camera inside a solid plane sees none" 1.
+    (pixel "plane { z, 3 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 1 } }\nmedia { absorption 0.2 }");
+  (* POV-Ray 3.7: 0.135332 (exp(-2)) with absorption 1e-10 and nothing hit *)
+  gray ~eps:1e-5 "a ray that hits nothing crosses 2e10 units" (Float.exp (-2.))
+    (pixel "background { rgb 1 }\nmedia { absorption 1e-10 }");
+  (* a clear box around the camera, to z = 2 *)
+  let around h = Printf.sprintf "box { -2, 2 pigment { rgbf 1 } finish { ambient 0 diffuse 0 } %s }\n" h in
+  gray "not inside a solid" (Float.exp (-0.2)) (pixel (glow ^ around "" ^ "media { absorption 0.2 }"));
+  gray "inside a hollow object" (Float.exp (-0.6)) (pixel (glow ^ around "hollow" ^ "media { absorption 0.2 }"));
+  (* a hollow object's media first, the atmosphere over them (POV-Ray
+     3.7's picture: 0.9801 for the same at 10 units) *)
+  gray "hollow media under the atmosphere"
+    (* beyond the box: 1 + 0.1 emitted over [2, 3]; the box's media over
+       [0, 2] dim it; the atmosphere adds its 0.2 undimmed by them *)
+    ((1.1 *. Float.exp (-0.1)) +. 0.2)
+    (pixel
+       (glow ^ around "hollow interior { media { absorption 0.05 } }" ^ "media { emission 0.1 }"));
+  (* shadow rays: POV-Ray dims them only for media_attenuation lights,
+     over their whole length (3 to -7: 10 units), solids crossed or not *)
+  let lit att extra =
+    pixel
+      (Printf.sprintf
+         "light_source { <0,0,-7>, rgb 1 %s }\nplane { -z, -3 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n%smedia { absorption 0.05 }"
+         att extra)
+  in
+  gray ~eps:2e-5 "media_attenuation off (POV-Ray 0.860716)" (Float.exp (-0.15)) (lit "" "");
+  gray ~eps:2e-5 "media_attenuation on (POV-Ray 0.522042)" (Float.exp (-0.65)) (lit "media_attenuation on" "");
+  gray ~eps:2e-5 "media_attenuation through a clear solid" (Float.exp (-0.65))
+    (lit "media_attenuation on" "box { <-1,-1,-5>, <1,1,-4> pigment { rgbf 1 } }\n");
+  (* single scattering of a light: none when it has media_interaction off *)
+  gray "media_interaction off" 0.
+    (pixel ("light_source { <0, 5, 1>, rgb 1 media_interaction off }\n" ^ dark ^ "media { scattering { 1, 0.1 } }"));
+  let lit_air = pixel ("light_source { <0, 5, 1>, rgb 1 }\n" ^ dark ^ "media { scattering { 1, 0.1 } }") in
+  if not (lit_air.r > 0.01) then Alcotest.failf "scattered light expected, got %g" lit_air.r
+
+(* #declare'd media and densities, used and edited *)
+let declared_media () =
+  let box ?(d = 2.) decl m =
+    pixel
+      (Printf.sprintf
+         "%s\nbox { <-1,-1,1>, <1,1,%g> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow interior { %s } }\n"
+         decl (1. +. d) m)
+  in
+  gray "a declared media" 0.2 (box "#declare M = media { emission 0.1 }" "media { M }");
+  gray "a declared media edited" 0.3 (box "#declare M = media { emission 0.1 }" "media { M emission 0.15 }");
+  gray "a declared media twice" 0.4 (box "#declare M = media { emission 0.1 }" "media { M } media { M }");
+  gray "a declared density" 0.1 (box "#declare D = density { rgb 0.5 }" "media { emission 0.1 density { D } }");
+  gray "a declared density edited" ~eps:2e-5 (2. *. 0.42771)
+    (box ~d:0.999 "#declare D = density { gradient z }" "media { emission 2 density { D translate z } }");
+  gray "a density_map" ~eps:2e-5 (2. *. 0.42771)
+    (box ~d:0.999 "#declare D = density { rgb 2 }"
+       "media { emission 1 density { gradient z translate z density_map { [0 rgb 0] [1 D] } } }");
+  gray "declared atmosphere" 0.3
+    (pixel "#declare M = media { emission 0.1 }\nplane { -z, -3 pigment { rgb 0 } finish { ambient 0 diffuse 0 } }\nmedia { M }")
+
 let tests =
   ( "whitted",
     [
@@ -528,6 +591,8 @@ let tests =
       Alcotest.test_case "faked caustics" `Quick caustics;
       Alcotest.test_case "iridescence" `Quick irid;
       Alcotest.test_case "media" `Quick media;
+      Alcotest.test_case "atmospheric media" `Quick atmosphere;
+      Alcotest.test_case "declared media and densities" `Quick declared_media;
       Alcotest.test_case "pigment and finish edit what they are written over" `Quick edits;
       Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
       Alcotest.test_case "focal blur" `Quick focal_blur;
