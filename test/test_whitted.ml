@@ -555,6 +555,18 @@ let atmosphere () =
   (* single scattering of a light: none when it has media_interaction off *)
   gray "media_interaction off" 0.
     (pixel ("light_source { <0, 5, 1>, rgb 1 media_interaction off }\n" ^ dark ^ "media { scattering { 1, 0.1 } }"));
+  (* a spotlight scattering in the atmosphere: a located error (POV-Ray
+     samples the stretch through its cone on its own) *)
+  let spot x = Printf.sprintf "light_source { <0, 5, 0>, rgb 1 spotlight point_at 0 radius 5 falloff 10%s }\nmedia { scattering { 1, 0.1 } }\n" x in
+  (match Camlray_lang.Parse.string (header ^ spot "") with
+  | Error d -> Alcotest.failf "parse: %s" (Camlray_lang.Diag.to_string d)
+  | Ok sdl -> (
+      match Camlray_lang.Compile.scene sdl with
+      | Ok _ -> Alcotest.fail "a spotlight in atmospheric media should be refused"
+      | Error (d : Camlray_lang.Diag.t) ->
+          if not (contains d.msg "spotlight in atmospheric media is not supported") then Alcotest.failf "message %S" d.msg;
+          if d.loc.start.pos_lnum <> 3 then Alcotest.failf "error at line %d, not the light's 3" d.loc.start.pos_lnum));
+  ignore (compile (spot " media_interaction off"));
   let lit_air = pixel ("light_source { <0, 5, 1>, rgb 1 }\n" ^ dark ^ "media { scattering { 1, 0.1 } }") in
   if not (lit_air.r > 0.01) then Alcotest.failf "scattered light expected, got %g" lit_air.r
 
