@@ -110,4 +110,15 @@ let tests =
           Scn.close ~eps:1e-8 "f_superellipsoid 0.7, 1.3" (-0.826646919)
             (Scn.float ~prelude "f_superellipsoid(-1.560188485207, 0.277405011998, -0.667199350583, 0.7, 1.3)");
           Scn.check_message (prelude ^ " #declare G = function { f_torus(x, y, z, 1) }") "takes 5 arguments");
+      Alcotest.test_case "f_noise3d and what functions.inc builds on it: camlray's noise, in [0, 1]" `Quick (fun () ->
+          let prelude = "#include \"functions.inc\"" in
+          List.iter
+            (fun (x, y, z) ->
+              let p = Printf.sprintf "%g, %g, %g" x y z in
+              let n = Camlray.Noise.noise3 x y z in
+              Scn.close ~eps:1e-15 "f_noise3d" n (Scn.float ~prelude ("f_noise3d(" ^ p ^ ")"));
+              Scn.close ~eps:1e-15 "f_snoise3d" ((2. *. n) -. 1.) (Scn.float ~prelude ("f_snoise3d(" ^ p ^ ")"));
+              Scn.close ~eps:1e-15 "f_dents" (n ** 3.) (Scn.float ~prelude ("f_dents(" ^ p ^ ")"));
+              if n < 0. || n > 1. then Alcotest.failf "f_noise3d(%s) = %g" p n)
+            [ (0.3, 1.7, -2.2); (10.5, -3.25, 0.125); (0., 0., 0.); (-7.1, 4.4, 9.9) ]);
     ] )
