@@ -176,3 +176,11 @@ let pigment_pattern loc p =
       code s 0;
       let v = Array.unsafe_get s 3 in
       Array.unsafe_set s 3 (if v < 0. then 0. else if v > 1. then 1. -. 1e-5 else v))
+
+(* function { pattern { P } }: each domain its own point and work *)
+let of_pattern (p : Pattern.t) xform =
+  let key = Scratch.key (fun () -> (Vec3.m (), Pattern.work ())) in
+  make ~source:"pattern" ~params:[| "x"; "y"; "z" |] ~frame:4 ~out:3 ~unsupported:None (fun s b ->
+      let q, w = Scratch.get key in
+      Vec3.set q (Array.unsafe_get s b) (Array.unsafe_get s (b + 1)) (Array.unsafe_get s (b + 2));
+      Array.unsafe_set s (b + 3) (Pattern.eval_at p xform q w))

@@ -96,3 +96,8 @@ val pattern : Loc.t -> t -> Camlray.Pattern.fn
 val pigment_pattern : Loc.t -> Camlray.Pigment.t -> Camlray.Pattern.fn
 (** POV-Ray's [pigment_pattern { P }]: the grey of [P]'s colour
     ([0.297 red + 0.589 green + 0.114 blue]) clipped to [[0, 1]]. *)
+
+val of_pattern : Camlray.Pattern.t -> Camlray.Transform.t -> t
+(** [function { pattern { ... } }]: the pattern's value at the point taken
+    into its space by the transform's inverse (waves, frequency and
+    warps applied, as in a pigment); nothing allocated per call. *)

@@ -515,8 +515,8 @@ let source st =
   Buffer.contents b
 
 (* POV-Ray's internal functions camlray has (functions.inc's f_sphere,
-   f_torus, f_rounded_box, f_superellipsoid; f_noise3d with camlray's
-   noise), by the values POV-Ray's own
+   f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph; f_noise3d
+   with camlray's noise), by the values POV-Ray's own
    give (checked at 30 random points to 1e-12): the parameters after x, y,
    z, and the code from slot [b] *)
 let internal_fn n : (int * Fn.code) option =
@@ -549,6 +549,19 @@ let internal_fn n : (int * Fn.code) option =
         let x = Float.abs (g s b 0) and y = Float.abs (g s b 1) and z = Float.abs (g s b 2) in
         let a = Float.pow (Float.pow (Float.pow x (2. /. e) +. Float.pow y (2. /. e)) (e /. n) +. Float.pow z (2. /. n)) (n /. 2.) in
         set s (b + 5) (1. -. a))
+  | 57 ->
+      (* f_r: the distance from the origin *)
+      Some (0, fun s b ->
+        let x = g s b 0 and y = g s b 1 and z = g s b 2 in
+        set s (b + 3) (Float.sqrt ((x *. x) +. (y *. y) +. (z *. z))))
+  | 69 ->
+      (* f_th: the angle about y, atan2(x, z) *)
+      Some (0, fun s b -> set s (b + 3) (Float.atan2 (g s b 0) (g s b 2)))
+  | 47 ->
+      (* f_ph: the angle from +y, atan2(sqrt(x^2 + z^2), y) *)
+      Some (0, fun s b ->
+        let x = g s b 0 and z = g s b 2 in
+        set s (b + 3) (Float.atan2 (Float.sqrt ((x *. x) +. (z *. z))) (g s b 1)))
   | 76 ->
       (* f_noise3d: camlray's own noise, in [0, 1] like POV-Ray's (whose
          noise camlray does not rebuild: the values differ) *)

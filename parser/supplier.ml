@@ -294,6 +294,16 @@ and function_body t loc params =
           expect_tok t Parser.RBRACE "'}' to close the function";
           (Fn.of_pigment p, None)
       | _ -> fail t loc "expected a pigment { ... } in this function")
+  | Ident "pattern" when params = [ "x"; "y"; "z" ] -> (
+      (* function { pattern { P } }: P's value, read as a pigment's
+         pattern is (its transformations, waves and warps) *)
+      let ploc = (raw_next t).loc in
+      t.pending <- [ (Parser.PIGMENT, ploc) ];
+      match parse t Parser.Incremental.declare_rhs with
+      | Decl.Pigment (Camlray.Pigment.Map { pattern; xform; _ } | Camlray.Pigment.Blocks { pattern; xform; _ }) ->
+          expect_tok t Parser.RBRACE "'}' to close the function";
+          (Fn.of_pattern pattern xform, None)
+      | _ -> fail t ploc "expected a pattern in pattern { ... }: gradient x, checker, bozo, ...")
   | _ ->
   let rec body depth acc =
     let tok = raw_next t in

@@ -110,6 +110,40 @@ let tests =
           Scn.close ~eps:1e-8 "f_superellipsoid 0.7, 1.3" (-0.826646919)
             (Scn.float ~prelude "f_superellipsoid(-1.560188485207, 0.277405011998, -0.667199350583, 0.7, 1.3)");
           Scn.check_message (prelude ^ " #declare G = function { f_torus(x, y, z, 1) }") "takes 5 arguments");
+      Alcotest.test_case "f_r, f_th, f_ph = POV-Ray's values" `Quick (fun () ->
+          let prelude = "#include \"functions.inc\"" in
+          List.iter
+            (fun (p, r, th, ph) ->
+              Scn.close ~eps:1e-9 ("f_r " ^ p) r (Scn.float ~prelude ("f_r(" ^ p ^ ")"));
+              Scn.close ~eps:1e-9 ("f_th " ^ p) th (Scn.float ~prelude ("f_th(" ^ p ^ ")"));
+              Scn.close ~eps:1e-9 ("f_ph " ^ p) ph (Scn.float ~prelude ("f_ph(" ^ p ^ ")")))
+            [ ("0.3, 0.2, 0.1", 0.374165739, 1.249045772, 1.006853685);
+              ("-1.7, 0.5, -0.2", 1.783255450, -1.687905071, 1.286600030);
+              ("0.2, -1.2, 0.8", 1.456021978, 0.244978663, 2.539519733);
+              ("-0.5, 0, -0.5", 0.707106781, -2.356194490, 1.570796327) ]);
+      Alcotest.test_case "function { pattern { ... } } = POV-Ray's values" `Quick (fun () ->
+          let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (-0.9, 1.2, 0.8); (0.05, -0.35, 0.6) ] in
+          List.iter
+            (fun (src, expected) ->
+              List.iter2
+                (fun (x, y, z) e ->
+                  Scn.close ~eps:1e-6 (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e
+                    (Scn.float ~prelude:(Printf.sprintf "#declare F = function { pattern { %s } }" src)
+                       (Printf.sprintf "F(%g, %g, %g)" x y z)))
+                pts expected)
+            [
+              ("gradient x", [ 0.300000; 0.700000; 0.100000; 0.050000 ]);
+              ("checker", [ 0.000000; 0.000000; 0.000000; 1.000000 ]);
+              ("onion scale 0.5", [ 0.748331; 0.566511; 0.400000; 0.392839 ]);
+              ("leopard scale 0.2", [ 0.597215; 0.034285; 0.000383; 0.039397 ]);
+              ("gradient y sine_wave frequency 2", [ 0.793893; 0.500000; 0.793893; 0.975528 ]);
+              ("boxed", [ 0.700000; 0.000000; 0.000000; 0.400000 ]);
+              ("spiral1 3", [ 0.982591; 0.917128; 0.214418; 0.042588 ]);
+              ("gradient x warp { repeat x*0.7 flip x }", [ 0.300000; 0.300000; 0.500000; 0.050000 ]);
+              ("hexagon", [ 0.000000; 1.000000; 2.000000; 0.000000 ]);
+              ("mandel 20", [ 1.000000; 0.000000; 0.050000; 1.000000 ]);
+              ("brick", [ 1.000000; 1.000000; 1.000000; 0.000000 ]);
+            ]);
       Alcotest.test_case "f_noise3d and what functions.inc builds on it: camlray's noise, in [0, 1]" `Quick (fun () ->
           let prelude = "#include \"functions.inc\"" in
           List.iter
