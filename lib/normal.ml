@@ -1,4 +1,13 @@
-type t = { pattern : Pattern.t; amount : float; xform : Transform.t; slope : Float.Array.t; accuracy : float }
+type t = {
+  pattern : Pattern.t;
+  amount : float;
+  xform : Transform.t;
+  slope : Float.Array.t;
+  accuracy : float;
+  map : map;
+}
+
+and map = Leaf | Blend of (float * t) array | Average of (float * t) array | Cells of t array
 
 let slope_height m v =
   let n = Float.Array.length m / 3 in
@@ -26,7 +35,8 @@ let slope_height m v =
 let default_accuracy = 0.02
 
 let make kind amount =
-  { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0; accuracy = default_accuracy }
+  { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0;
+    accuracy = default_accuracy; map = Leaf }
 let transform t nm = { nm with xform = Transform.then_ nm.xform t }
 
 (* Bump strength per unit of amount and of pattern-space slope, calibrated
@@ -47,9 +57,15 @@ let tetra =
 
 (* Per domain: the point in pattern space, a sample around it, the
    pattern's work. *)
-type work = { q : Vec3.m; s : Vec3.m; pw : Pattern.work }
+type level = { lq : Vec3.m; ln : Vec3.m; t0 : Vec3.m; t1 : Vec3.m }
 
-let work_key = Scratch.key (fun () -> { q = Vec3.m (); s = Vec3.m (); pw = Pattern.work () })
+type work = { q : Vec3.m; s : Vec3.m; pw : Pattern.work; lv : level Scratch.levels; mutable used : int }
+
+let work_key =
+  Scratch.key (fun () ->
+      { q = Vec3.m (); s = Vec3.m (); pw = Pattern.work ();
+        lv = Scratch.levels (fun () -> { lq = Vec3.m (); ln = Vec3.m (); t0 = Vec3.m (); t1 = Vec3.m () });
+        used = 0 })
 
 (* POV-Ray's quilted normal: in pattern space, the offset from the
    cell's centre scaled by quilted's cubic of its length, times the
@@ -66,8 +82,7 @@ let quilted_m nm c0 c1 (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
   else Vec3.normalize_m out
 
-let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
-  let w = Scratch.get work_key in
+let leaf_m w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let q = w.q in
   Transform.inv_point_m nm.xform point q;
   match nm.pattern.kind with
@@ -108,3 +123,72 @@ let perturb_m nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   Transform.normal_m nm.xform out;
   if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
   else Vec3.normalize_m out
+
+(* POV-Ray's normal_map, average and block lists (measured with povray
+   3.7, see docs/language.md): the point and the unit normal are taken to
+   the map's own pattern space; there the entries perturb the normal (their
+   transforms relative to that space), their unit results are summed with
+   the weights (the two entries around the pattern's value: 1 - k and k;
+   average: the weights over their sum), and the sum is brought back to
+   world space and normalised. Depth [d] keeps a level's work apart from
+   the nested maps' below it. *)
+let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
+  match nm.map with
+  | Leaf -> leaf_m w nm point n out
+  | map ->
+      let l = Scratch.level w.lv d in
+      if w.used <= d then w.used <- d + 1;
+      (match map with
+      | Blend entries ->
+          let v = Pattern.eval_at nm.pattern nm.xform point w.pw in
+          into_space nm point n l;
+          let k = Array.length entries in
+          let i = Pattern.around entries v in
+          if i = 0 then perturb_d w (snd entries.(0)) l.lq l.ln out (d + 1)
+          else if i >= k then perturb_d w (snd entries.(k - 1)) l.lq l.ln out (d + 1)
+          else begin
+            let vi, ei = entries.(i) and vp, ep = entries.(i - 1) in
+            if vi -. vp <= 0. then perturb_d w ei l.lq l.ln out (d + 1)
+            else begin
+              let k = (v -. vp) /. (vi -. vp) in
+              perturb_d w ep l.lq l.ln l.t0 (d + 1);
+              perturb_d w ei l.lq l.ln l.t1 (d + 1);
+              let a = 1. -. k in
+              Vec3.set out ((a *. l.t0.mx) +. (k *. l.t1.mx)) ((a *. l.t0.my) +. (k *. l.t1.my))
+                ((a *. l.t0.mz) +. (k *. l.t1.mz))
+            end
+          end
+      | Cells cells ->
+          let v = Pattern.eval_at nm.pattern nm.xform point w.pw in
+          into_space nm point n l;
+          let k = Array.length cells in
+          perturb_d w cells.(Int.min (k - 1) (Int.max 0 (int_of_float v))) l.lq l.ln out (d + 1)
+      | Average entries ->
+          into_space nm point n l;
+          Vec3.set l.t1 0. 0. 0.;
+          for i = 0 to Array.length entries - 1 do
+            let wt, e = Array.unsafe_get entries i in
+            perturb_d w e l.lq l.ln l.t0 (d + 1);
+            Vec3.set l.t1 (l.t1.mx +. (wt *. l.t0.mx)) (l.t1.my +. (wt *. l.t0.my)) (l.t1.mz +. (wt *. l.t0.mz))
+          done;
+          Vec3.set out l.t1.mx l.t1.my l.t1.mz
+      | Leaf -> ());
+      Transform.normal_m nm.xform out;
+      if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
+      else Vec3.normalize_m out
+
+and into_space nm point n l =
+  Transform.inv_point_m nm.xform point l.lq;
+  Vec3.set l.ln n.mx n.my n.mz;
+  Transform.normal_inverse_m nm.xform l.ln;
+  Vec3.normalize_m l.ln
+
+let perturb_m nm point n out =
+  let w = Scratch.get work_key in
+  match nm.map with
+  | Leaf -> leaf_m w nm point n out
+  | _ ->
+      (* a normal in a pattern function may start inside another's work *)
+      let base = w.used in
+      perturb_d w nm point n out base;
+      w.used <- base

@@ -15,17 +15,33 @@ type t = {
           value, the pattern's value taken to a height by Hermite cubics
           between them; empty: none (the height is the value) *)
   accuracy : float;  (** the distance of the samples the slope is taken from (0.02) *)
+  map : map;
 }
+
+(** A normal made of other normals (POV-Ray's [normal_map], [average] and
+    block patterns' normal lists): the entries perturb the normal in this
+    normal's pattern space (their transforms are relative to it), their
+    unit results are weighted, summed, brought back and normalised. *)
+and map =
+  | Leaf  (** the pattern's own slope *)
+  | Blend of (float * t) array
+      (** [normal_map]: entries by rising value; the two around the
+          pattern's value weighted 1 - k and k *)
+  | Average of (float * t) array  (** [average]: weights summing to 1; the pattern is unused *)
+  | Cells of t array  (** checker, hexagon, brick: the cell's normal *)
 
 val default_accuracy : float
 (** POV-Ray's 0.02. *)
 
 val make : Pattern.kind -> float -> t
 val transform : Transform.t -> t -> t
+(** Applied after the normal's transform (a map's entries, relative to
+    it, follow). *)
 
 val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
 (** [perturb_m nm point n out]: the perturbed unit normal at a world
-    point, into [out] (not [n]), allocating nothing. *)
+    point, into [out] (not [n]), allocating nothing (per domain, nested
+    maps' work is kept by depth). *)
 
 val slope_height : Float.Array.t -> float -> float
 (** [slope_height map v]: the height a slope map gives the value [v]:

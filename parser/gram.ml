@@ -34,6 +34,9 @@ let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =
 let moved ms (n : Normal.t option) =
   Option.map
     (fun (n : Normal.t) ->
-      Texdesc.normal
-        (Texdesc.apply ms { (Texdesc.of_pattern Pattern.Bumps) with pattern = Some n.pattern; xform = n.xform; amount = n.amount }))
+      Texdesc.normal (Texdesc.apply ms (Texdesc.of_normal n)))
     n
+
+(* a normal_map entry written without a pattern: flat *)
+let flat (n : Normal.t option) =
+  match n with Some n -> n | None -> Texdesc.normal (Texdesc.of_pigment Pigment.black)

@@ -27,3 +27,6 @@ val tmap_pattern : Texdesc.modifier -> Camlray.Texture.layer -> Camlray.Texture.
 
 val moved : Texdesc.modifier list -> Camlray.Normal.t option -> Camlray.Normal.t option
 (** A normal with more modifiers (transformations, pattern modifiers). *)
+
+val flat : Camlray.Normal.t option -> Camlray.Normal.t
+(** A normal_map entry written without a pattern: flat. *)

@@ -18,7 +18,7 @@
 %token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
-%token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE
+%token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE NORMAL_MAP
 %token JULIA MAGNET
 %token MEDIA ABSORPTION SCATTERING ECCENTRICITY EXTINCTION DENSITY METHOD INTERVALS SAMPLES
 %token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION DENSITY_MAP
@@ -419,7 +419,9 @@
    move the perturbation already there; a pattern or an identifier
    replaces it. [normal_body] is the one written over none. *)
 %public normal_edit:
-  | AVERAGE { Diag.error (loc $loc) "average (of normals) is not supported by camlray" }
+  (* the weighted mean of its normal_map's entries' normals *)
+  | AVERAGE ms = list(normal_mod)
+      { let n = Some (Texdesc.normal (Texdesc.apply ms (Texdesc.average ()))) in fun _ -> n }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
       { if k = Pattern.Checker then
           (* povray 3.7 shades alternate squares as facing away: not rebuilt *)
@@ -427,6 +429,10 @@
         let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
+        fun _ -> n }
+  (* checker, hexagon, brick with a list of normals, one a cell *)
+  | k = block_kind cs = normal_cells ms = list(normal_mod)
+      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_pattern k) with ncells = cs })) in
         fun _ -> n }
   | n = NORMAL_ID ms = list(normal_mod) { let n = moved ms n in fun _ -> n }
   | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
@@ -449,6 +455,15 @@ bump_size: COMMA? a = param { a }
   | ACCURACY e = param { Texdesc.accuracy (loc $loc(e)) (fl $loc(e) e) }
   (* the bump amount, written as a modifier *)
   | BUMP_SIZE e = param { let a = fl $loc(e) e in fun (p : Texdesc.pat) -> { p with amount = a } }
+  | NORMAL_MAP LBRACE es = list(normal_map_entry) RBRACE { Texdesc.normal_map (loc $loc) es }
+
+normal_cells:
+  | NORMAL LBRACE n = normal_body RBRACE { [ flat n ] }
+  | NORMAL LBRACE n = normal_body RBRACE COMMA? cs = normal_cells { flat n :: cs }
+
+(* [value NORMAL_BODY] *)
+normal_map_entry:
+  | LBRACKET v = param COMMA? n = normal_body RBRACKET { (fl $loc(v) v, flat n) }
 
 (* [value, <height, slope>] *)
 slope_entry:

@@ -98,7 +98,7 @@ let texture_keywords =
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
     ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED);
     ("control0", CONTROL0); ("control1", CONTROL1); ("mandel", MANDEL); ("exterior", EXTERIOR);
-    ("average", AVERAGE); ("caustics", CAUSTICS);
+    ("average", AVERAGE); ("normal_map", NORMAL_MAP); ("caustics", CAUSTICS);
     ("media", MEDIA); ("absorption", ABSORPTION); ("scattering", SCATTERING);
     ("eccentricity", ECCENTRICITY); ("extinction", EXTINCTION); ("density", DENSITY);
     ("method", METHOD); ("intervals", INTERVALS); ("samples", SAMPLES); ("confidence", CONFIDENCE);

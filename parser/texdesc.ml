@@ -10,6 +10,8 @@ type pat = {
   average : bool;  (** [average]: [entries] are weights, not values *)
   slope : Float.Array.t;
   accuracy : float;
+  nmap : (float * Normal.t) array option;  (** normals: [normal_map] *)
+  ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
 }
 
 type modifier = pat -> pat
@@ -17,7 +19,7 @@ type modifier = pat -> pat
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
     amount = 0.5; average = false; slope = Float.Array.create 0;
-    accuracy = Normal.default_accuracy }
+    accuracy = Normal.default_accuracy; nmap = None; ncells = [] }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -34,7 +36,9 @@ let apply ms p = List.fold_left (fun p m -> m p) p ms
 let transform t p =
   match p.pattern with
   | None when p.average ->
-      { p with entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries }
+      (* a normal's entries are relative to its transform: they follow it *)
+      { p with entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries;
+        xform = Transform.then_ p.xform t }
   | None -> { p with base = Pigment.transform t p.base }
   | Some _ ->
       {
@@ -83,9 +87,50 @@ let pigment p =
         Pigment.Map { pattern; entries; xform = p.xform }
 
 let normal p =
+  let leaf pattern amount =
+    { Normal.pattern; amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy; map = Normal.Leaf }
+  in
   match p.pattern with
-  | None -> { Normal.pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = p.xform; slope = p.slope; accuracy = p.accuracy }
-  | Some pattern -> { Normal.pattern; amount = p.amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy }
+  | None when p.average ->
+      (* POV-Ray divides by the weights' sum *)
+      let es = Option.value ~default:[||] p.nmap in
+      let total = Array.fold_left (fun s (w, _) -> s +. w) 0. es in
+      let n = leaf (Pattern.make Pattern.Bozo) 0. in
+      if Array.length es = 0 || total = 0. then n
+      else { n with map = Normal.Average (Array.map (fun (w, q) -> (w /. total, q)) es) }
+  | None -> leaf (Pattern.make Pattern.Bozo) 0.
+  | Some pattern when Pattern.is_block pattern.kind && p.ncells <> [] ->
+      let given = Array.of_list p.ncells in
+      (* cells left out are flat *)
+      let flat = { (leaf (Pattern.make Pattern.Bozo) 0.) with xform = Transform.identity } in
+      let cells =
+        Array.init (Pattern.block_count pattern.kind) (fun i -> if i < Array.length given then given.(i) else flat)
+      in
+      { (leaf pattern p.amount) with map = Normal.Cells cells }
+  | Some pattern -> (
+      match p.nmap with
+      | Some es when Array.length es > 0 -> { (leaf pattern p.amount) with map = Normal.Blend es }
+      | _ -> leaf pattern p.amount)
+
+let of_normal (n : Normal.t) =
+  let p = { empty with xform = n.xform; amount = n.amount; slope = n.slope; accuracy = n.accuracy } in
+  match n.map with
+  | Normal.Average es -> { p with average = true; nmap = Some es }
+  | Normal.Leaf -> { p with pattern = Some n.pattern }
+  | Normal.Blend es -> { p with pattern = Some n.pattern; nmap = Some es }
+  | Normal.Cells cs -> { p with pattern = Some n.pattern; ncells = Array.to_list cs }
+
+let normal_map loc es p =
+  if es = [] then Diag.error loc "a normal_map needs at least one entry";
+  let rec sorted = function
+    | (v0, _) :: ((v1, _) :: _ as rest) ->
+        if v1 < v0 && not p.average then
+          Diag.error loc "normal_map entries must come in order of value (%g after %g)" v1 v0;
+        sorted rest
+    | _ -> ()
+  in
+  sorted es;
+  { p with nmap = Some (Array.of_list es) }
 
 let image_map loc ~gamma_decode file mods =
   let img =

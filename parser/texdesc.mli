@@ -15,6 +15,8 @@ type pat = {
   average : bool;  (** [average pigment_map]: the entries' values are weights *)
   slope : Float.Array.t;  (** normals: [slope_map] (see {!Normal.t}) *)
   accuracy : float;  (** normals: the slope's sample distance *)
+  nmap : (float * Normal.t) array option;  (** normals: [normal_map] (an average's weights) *)
+  ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
 }
 
 type modifier = pat -> pat
@@ -26,6 +28,15 @@ val apply : modifier list -> pat -> pat
 
 val pigment : pat -> Pigment.t
 val normal : pat -> Normal.t
+(** A leaf, or a map of normals: [normal_map] over a pattern, [average]
+    (weights divided by their sum), a block pattern's list. *)
+
+val of_normal : Normal.t -> pat
+(** A declared normal, to be modified further. *)
+
+val normal_map : Loc.t -> (float * Normal.t) list -> modifier
+(** [normal_map { [v N] ... }]: at least one entry, by rising value
+    (an average's weights in any order). *)
 
 val transform : Transform.t -> modifier
 val pattern_mod : (Pattern.t -> Pattern.t) -> modifier
