@@ -212,6 +212,54 @@ let normal_slope () =
   gray "before the jump" 0.20097 (at 0.985);
   gray "after the jump" 0.17383 (at 1.005)
 
+(* normal_map, average and block lists of normals, as povray 3.7 shades
+   them (probes: a plane lit by a parallel light towards [light], one
+   sample at (x, 0.25), +FN16 File_Gamma=1.0): the entries' unit normals
+   weighted, summed and normalised *)
+let normal_maps () =
+  let at ?(x = 0.5) light n =
+    pixel
+      (Printf.sprintf
+         "camera { orthographic location <%g,0.25,-10> look_at <%g,0.25,0> right 0.001*x up 0.001*y }\n\
+          light_source { <0,0,0>, rgb 1 parallel point_at %s }\n\
+          plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } normal { %s } }\n"
+         x x light n)
+  in
+  let mirror = "gradient y normal_map { [0 gradient x, 1] [1 gradient x, -1] }" in
+  (* weights 0.75 and 0.25 of (-s, 0, c) and (s, 0, c): c / |(-s/2, 0, c)| head-on *)
+  gray "blend of a normal and its mirror, head-on" 0.99779 (at "<0,0,1>" mirror);
+  gray "blend, lit from +x" 0.92219 (at "<1,0,2>" mirror);
+  gray "blend, lit from +y" 0.89244 (at "<0,1,2>" mirror);
+  gray "blend, the map scaled" 0.99504 (at "<0,0,1>" (mirror ^ " scale 2"));
+  gray "blend, the map scaled, from +x" 0.93449 (at "<1,0,2>" (mirror ^ " scale 2"));
+  let avg = "average normal_map { [1 gradient x, 1] [1 gradient x, -1] }" in
+  gray "average of a normal and its mirror: flat" 1. (at "<0,0,1>" avg);
+  gray "average flat, lit from +x" 0.89442 (at "<1,0,2>" avg);
+  let w13 = "average normal_map { [1 gradient x, 1] [3 gradient y, 1] }" in
+  gray "average weighted 1:3, head-on" 0.99449 (at "<0,0,1>" w13);
+  gray "average weighted 1:3, from +x" 0.90433 (at "<1,0,2>" w13);
+  gray "average weighted 1:3, from +y" 0.93397 (at "<0,1,2>" w13);
+  (* an entry's rotation is its own; the map's applies to all *)
+  let turned = "gradient y normal_map { [0 gradient x, 1 rotate 90*z] [1 gradient x, -1] }" in
+  gray "an entry keeps its rotation (+x)" 0.87468 (at "<1,0,2>" turned);
+  gray "an entry keeps its rotation (+y)" 0.93397 (at "<0,1,2>" turned);
+  gray "the map's rotation moves all (+x)" 0.86079 (at "<1,0,2>" (turned ^ " rotate 90*z"));
+  gray "the map's rotation moves all (+y)" 0.86079 (at "<0,1,2>" (turned ^ " rotate 90*z"));
+  (* a declared normal as an entry is the same normal *)
+  let declared =
+    pixel
+      "#declare N = normal { gradient x, 1 rotate 90*z }\n\
+       camera { orthographic location <0.5,0.25,-10> look_at <0.5,0.25,0> right 0.001*x up 0.001*y }\n\
+       light_source { <0,0,0>, rgb 1 parallel point_at <1,0,2> }\n\
+       plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 }\n\
+         normal { gradient y normal_map { [0 N] [1 gradient x, -1] } } }\n"
+  in
+  gray "a declared entry" 0.87468 declared;
+  let cells = "checker normal { gradient x, 1 } normal { gradient x, 1 rotate 90*z }" in
+  gray "checker's first cell (+x)" 0.94569 (at "<1,0,2>" cells);
+  gray "checker's second cell (+x)" 0.88658 (at ~x:1.5 "<1,0,2>" cells);
+  gray "checker's second cell (+y)" 0.94569 (at ~x:1.5 "<0,1,2>" cells)
+
 let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
                plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
 
@@ -334,7 +382,8 @@ let allocation () =
 
 (* The same with textures as POV-Ray scenes write them: pattern pigments
    through colour maps, pigment maps and blocks (with turbulence and
-   waves), normal perturbation, a metallic finish, a texture map, shadows
+   waves), normal perturbation (normal_map, a nested average, a checker
+   of normals), a metallic finish, a texture map, shadows
    through patterned transparent spheres, a fading interior seen through
    and casting shadows, and a sky_sphere, for camera
    rays that end on the sky and rays that start inside an object (the
@@ -348,13 +397,14 @@ let allocation_textures () =
        sky_sphere { pigment { gradient y color_map { [0 rgb <0.6, 0.7, 1>] [1 rgb <0.1, 0.2, 0.6>] } } }\n\
        sphere { 0, 100 hollow pigment { rgbt 1 } }\n\
        plane { y, 0 pigment { hexagon rgb 1, rgb <0.2, 0.3, 0.5>, rgb <0.7, 0.2, 0.1> scale 0.5 }\n\
-         normal { bumps 0.4 scale 0.3 } }\n\
+         normal { gradient x normal_map { [0 bumps 0.4 scale 0.3]\n\
+           [1 average normal_map { [1 leopard 0.5 scale 0.2] [2 dents 0.3] }] } } }\n\
        sphere { <-1, 1, 0>, 1 pigment { bozo turbulence 0.5 octaves 4 color_map { [0 rgb 1] [1 rgb <0.8, 0.2, 0.1>] } }\n\
          normal { ripples 0.5 } finish { specular 0.5 } }\n\
        sphere { <1.2, 0.8, 0.5>, 0.8 pigment { granite pigment_map { [0 rgb 0.9] [1 onion color_map { [0 rgb 0] [1 rgb 1] }] } }\n\
          finish { reflection 0.4 metallic } }\n\
        box { <-0.5, 0, -2>, <0.5, 0.6, -1.4> pigment { brick rgb 0.8, rgb <0.6, 0.2, 0.1> scale 0.05 }\n\
-         normal { dents 0.5 scale 0.1 } }\n\
+         normal { checker normal { dents 0.5 scale 0.1 } normal { onion 0.3 } scale 0.2 } }\n\
        sphere { <2, 0.4, -1.5>, 0.4 pigment { marble sine_wave frequency 3 turbulence 0.3\n\
          color_map { [0 rgb 1] [0.5 rgb <0.3, 0.5, 0.2>] [1 rgb 0] } } normal { wrinkles 0.6 } }\n\
        sphere { <-2.2, 0.6, -1>, 0.6 texture { gradient x texture_map {\n\
@@ -610,6 +660,7 @@ let tests =
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
+      Alcotest.test_case "normal_map and average as POV-Ray" `Quick normal_maps;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
