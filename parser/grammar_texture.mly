@@ -421,7 +421,10 @@
 %public normal_edit:
   (* the weighted mean of its normal_map's entries' normals *)
   | AVERAGE ms = list(normal_mod)
-      { let n = Some (Texdesc.normal (Texdesc.apply ms (Texdesc.average ()))) in fun _ -> n }
+      { let p = Texdesc.apply ms (Texdesc.average ()) in
+        if p.Texdesc.nmap = None then Diag.error (loc $loc) "an average normal needs a normal_map";
+        let n = Some (Texdesc.normal p) in
+        fun _ -> n }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
       { if k = Pattern.Checker then
           (* povray 3.7 shades alternate squares as facing away: not rebuilt *)
@@ -461,9 +464,11 @@ normal_cells:
   | NORMAL LBRACE n = normal_body RBRACE { [ flat n ] }
   | NORMAL LBRACE n = normal_body RBRACE COMMA? cs = normal_cells { flat n :: cs }
 
-(* [value NORMAL_BODY] *)
+(* [value NORMAL_BODY]; without a value, a weight (or value) of 1, as
+   POV-Ray reads it (textures/normals/normavg.pov) *)
 normal_map_entry:
   | LBRACKET v = param COMMA? n = normal_body RBRACKET { (fl $loc(v) v, flat n) }
+  | LBRACKET n = normal_body RBRACKET { (1., flat n) }
 
 (* [value, <height, slope>] *)
 slope_entry:

@@ -130,6 +130,9 @@ let normal_map loc es p =
     | _ -> ()
   in
   sorted es;
+  (* POV-Ray divides by the sum: 0 gives it no normal (black) *)
+  if p.average && List.fold_left (fun s (w, _) -> s +. w) 0. es = 0. then
+    Diag.error loc "the weights of an average's normal_map must not sum to 0";
   { p with nmap = Some (Array.of_list es) }
 
 let image_map loc ~gamma_decode file mods =

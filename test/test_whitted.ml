@@ -239,6 +239,14 @@ let normal_maps () =
   gray "average weighted 1:3, head-on" 0.99449 (at "<0,0,1>" w13);
   gray "average weighted 1:3, from +x" 0.90433 (at "<1,0,2>" w13);
   gray "average weighted 1:3, from +y" 0.93397 (at "<0,1,2>" w13);
+  (* an entry without a weight weighs 1 (textures/normals/normavg.pov) *)
+  let w13' = "average normal_map { [gradient x, 1] [3 gradient y, 1] }" in
+  gray "a missing weight is 1 (+x)" 0.90433 (at "<1,0,2>" w13');
+  gray "a missing weight is 1 (+y)" 0.93397 (at "<0,1,2>" w13');
+  let neg = "average normal_map { [1 gradient x, 1] [-2 gradient y, 1] }" in
+  gray "negative weights (+x)" 0.8 (at "<1,0,2>" neg);
+  gray "negative weights (+y)" 0.97144 (at "<0,1,2>" neg);
+  gray "negative weights (head-on)" 0.95831 (at "<0,0,1>" neg);
   (* an entry's rotation is its own; the map's applies to all *)
   let turned = "gradient y normal_map { [0 gradient x, 1 rotate 90*z] [1 gradient x, -1] }" in
   gray "an entry keeps its rotation (+x)" 0.87468 (at "<1,0,2>" turned);
