@@ -8,7 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
-%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE
+%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -101,6 +101,14 @@
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
   | k = block_kind ts = list(block_texture) ms = list(tmap_mod)
       { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
+        [ List.fold_left (fun l f -> f l) l ms ] }
+
+(* POV-Ray's old tiles { texture { A } tile2 texture { B } }: a checker
+   of two textures *)
+%public texture_body:
+  | TILES LBRACE a = block_texture TILE2 b = block_texture RBRACE ms = list(tmap_mod)
+      { (* tile2 on the checker's first cells: measured *)
+        let l = Texture.patterned (Pattern.make Pattern.Checker) [| (0., b); (1., a) |] in
         [ List.fold_left (fun l f -> f l) l ms ] }
 
 %public block_texture:
