@@ -237,6 +237,7 @@ let li_into t sampler ~max_depth (st : state) =
           (thr.ab *. Interior.fade_channel i c.b th)
       end;
       let m = st.mat in
+      Pattern.set_normal ng;
       Material.into m (if entering then obj.texture else obj.back) obj.interior p n wo ~entering;
       if not (Color.acc_is_black m.em) then begin
         let w =

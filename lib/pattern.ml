@@ -47,6 +47,7 @@ type kind =
   | Mandel of fractal
   | Julia of { cr : float; ci : float; fractal : fractal }
   | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
+  | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
   | Function of fn
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
@@ -236,9 +237,17 @@ type result = { mutable v : float }
 
 (* the value in a record of its own, flat: a float field of a record with
    other fields is boxed, and each store would allocate *)
-type work = { p : Vec3.m; d : Vec3.m; r : result }
+type work = { p : Vec3.m; d : Vec3.m; r : result; n : Vec3.m }
 
-let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
+let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. }; n = Vec3.m () }
+
+(* The surface normal (world space, unit) at the point being shaded, for
+   the slope pattern: set by the shader, per domain *)
+let normal_key = Scratch.key (fun () -> Vec3.m ())
+
+let set_normal (n : Vec3.m) =
+  let m = Scratch.get normal_key in
+  Vec3.set m n.mx n.my n.mz
 
 (* mandel: z <- z^e + c from z = c = x + iy (julia: c fixed), until |z|^2 > 4 or the
    iterations run out; exponents 2, 3 and 4 written out, others summed
@@ -390,6 +399,16 @@ let raw_m kind (w : work) =
   | Mandel f -> fractal_into f ~cx:x ~cy:y x y w
   | Julia { cr; ci; fractal } -> fractal_into fractal ~cx:cr ~cy:ci x y w
   | Magnet { formula; julia; cr; ci; fractal } -> magnet_into fractal formula ~julia ~cr ~ci x y w
+  | Slope { dir; lo; hi; wdir; alt; alo; ahi; walt } ->
+      (* POV-Ray's (measured): the normal's angle to the direction, 0.5 +
+         asin(n . d) / pi, and the altitude p . a, each taken from [lo,
+         hi] to [0, 1], weighed by the vectors' lengths *)
+      let n = w.n in
+      let c = (n.mx *. dir.x) +. (n.my *. dir.y) +. (n.mz *. dir.z) in
+      let c = if c > 1. then 1. else if c < -1. then -1. else c in
+      let s = (0.5 +. (Float.asin c /. Float.pi) -. lo) /. (hi -. lo) in
+      let a = if walt = 0. then 0. else (((x *. alt.x) +. (y *. alt.y) +. (z *. alt.z)) -. alo) /. (ahi -. alo) in
+      w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)
@@ -528,6 +547,14 @@ let eval_m t (q : Vec3.m) (w : work) =
    (inlined: the value is not boxed). [eval_m] reads its point before
    writing [w.p], which may therefore hold it. *)
 let[@inline] eval_at t xform (point : Vec3.m) (w : work) =
+  (match t.kind with
+   | Slope _ ->
+       (* the shaded surface's normal, as it is in the world: POV-Ray
+          does not turn it with the pattern's transformations (measured;
+          the altitude's point is the pattern's) *)
+       let m = Scratch.get normal_key in
+       Vec3.set w.n m.mx m.my m.mz
+   | _ -> ());
   Transform.inv_point_m xform point w.p;
   eval_m t w.p w;
   w.r.v

@@ -73,6 +73,13 @@ type kind =
           2))^2 (formula 1) or its cubic counterpart (2), from z = 0 with c
           the point (mandel) or from the point with c = cr + i ci (julia),
           until z comes within 0.01 of 1 or leaves |z| <= 100 (exterior) *)
+  | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
+      (** POV-Ray's [slope]: [0.5 + asin(n . dir) / pi] for the shaded
+          surface's world normal [n] (see {!set_normal}; not turned by the
+          pattern's transformations, as POV-Ray), taken from [[lo, hi]]
+          to [[0, 1]], and the altitude [p . alt] from [[alo, ahi]],
+          weighed [wdir] and [walt] (the lengths of the vectors written;
+          [dir] and [alt] are unit) *)
   | Function of fn
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes
@@ -155,12 +162,17 @@ val value : t -> Vec3.t -> float
 
 type result = { mutable v : float }
 
-type work = { p : Vec3.m; d : Vec3.m; r : result }
+type work = { p : Vec3.m; d : Vec3.m; r : result; n : Vec3.m }
 (** Where {!eval_m} works: the warped point, the turbulence, the value
     (in a flat record: storing a float into a record with other fields
     would allocate). *)
 
 val work : unit -> work
+
+val set_normal : Vec3.m -> unit
+(** The unit normal (world space) of the surface being shaded, for the
+    slope pattern; per domain, set by the shader before it evaluates a
+    texture. *)
 
 val eval_m : t -> Vec3.m -> work -> unit
 (** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]

@@ -206,6 +206,8 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
 and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out : Color.acc) =
   let weight = fr.k.weight in
   let n0 = fr.n0 in
+  (* the slope pattern reads the surface's own (outward) normal *)
+  Pattern.set_normal n0;
   let entering = dot n0 d < 0. in
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   let inner = obj.interior in

@@ -40,3 +40,25 @@ let moved ms (n : Normal.t option) =
 (* a normal_map entry written without a pattern: flat *)
 let flat (n : Normal.t option) =
   match n with Some n -> n | None -> Texdesc.normal (Texdesc.of_pigment Pigment.black)
+
+let slope vloc v range alt =
+  let unit what l v =
+    let d = v3 l v in
+    let len = Vec3.length d in
+    if len = 0. then Diag.error (loc l) "the %s direction of a slope pattern cannot be <0,0,0>" what;
+    (Vec3.scale (1. /. len) d, len)
+  in
+  let span (lo, hi) = if lo = hi then Diag.error (loc vloc) "a slope range needs two different ends, found %g twice" lo in
+  let dir, wdir = unit "slope" vloc v in
+  let lo, hi = Option.value range ~default:(0., 1.) in
+  span (lo, hi);
+  let alt, walt, alo, ahi =
+    match alt with
+    | None -> (Vec3.unit_y, 0., 0., 1.)
+    | Some (aloc, a, r) ->
+        let d, w = unit "altitude" aloc a in
+        let alo, ahi = Option.value r ~default:(0., 1.) in
+        span (alo, ahi);
+        (d, w, alo, ahi)
+  in
+  Pattern.Slope { dir; lo; hi; wdir; alt; alo; ahi; walt }

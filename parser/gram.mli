@@ -30,3 +30,9 @@ val moved : Texdesc.modifier list -> Camlray.Normal.t option -> Camlray.Normal.t
 
 val flat : Camlray.Normal.t option -> Camlray.Normal.t
 (** A normal_map entry written without a pattern: flat. *)
+
+val slope :
+  Lexing.position * Lexing.position -> Value.t -> (float * float) option ->
+  ((Lexing.position * Lexing.position) * Value.t * (float * float) option) option -> Camlray.Pattern.kind
+(** POV-Ray's [slope { <dir> [, lo, hi] [altitude <dir> [, lo, hi]] }]:
+    the directions normalised, their lengths the weights. *)

@@ -8,7 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
-%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2
+%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -244,6 +244,10 @@
   | CRACKLE { Pattern.Crackle }
   (* POV-Ray truncates the number of arms (to a short) *)
   | SPIRAL1 e = param { Pattern.Spiral1 (truncate (fl $loc(e) e)) }
+  (* slope { <dir> [, lo, hi] [altitude <dir> [, lo, hi]] }, or slope <dir> *)
+  | SLOPE LBRACE v = param r = ioption(slope_range) a = ioption(slope_altitude) RBRACE
+      { Gram.slope $loc(v) v r a }
+  | SLOPE v = param { Gram.slope $loc(v) v None None }
   | SPIRAL2 e = param { Pattern.Spiral2 (truncate (fl $loc(e) e)) }
   | QUILTED { Pattern.Quilted { c0 = 1.; c1 = 1. } }
   | MANDEL e = param
@@ -706,3 +710,7 @@ warp_turb_item:
         fun (t : Pattern.turbulence) -> { t with octaves = n } }
   | OMEGA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with omega = x } }
   | LAMBDA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with lambda = x } }
+
+slope_range: COMMA lo = param COMMA hi = param { (fl $loc(lo) lo, fl $loc(hi) hi) }
+
+slope_altitude: ALTITUDE v = param r = ioption(slope_range) { ($loc(v), v, r) }

@@ -372,6 +372,32 @@ let magnet () =
   done;
   Alcotest.(check (float 0.)) "words over 1000 evaluations" 0. (Gc.minor_words () -. before)
 
+(* slope: the values POV-Ray renders on a unit sphere (orthographic,
+   16-bit, decoded), at known normals *)
+let slope () =
+  let v src (nx, ny, nz) (px, py, pz) =
+    let p = fn_pattern src in
+    let n = Vec3.m () in
+    let l = Float.sqrt ((nx *. nx) +. (ny *. ny) +. (nz *. nz)) in
+    Vec3.set n (nx /. l) (ny /. l) (nz /. l);
+    Pattern.set_normal n;
+    let q = Vec3.m () in
+    Vec3.set q px py pz;
+    Pattern.eval_at p Transform.identity q (Pattern.work ())
+  in
+  let r = 0.762 in
+  let z = -.Float.sqrt (1. -. (r *. r)) in
+  Scn.close ~eps:1e-9 "slope y, facing the camera" 0.5 (v "slope y" (0., 0., -1.) (0., 0., -1.));
+  (* 0.5 + asin(0.762) / pi = 0.77574; POV-Ray's pixel decodes to 0.7758 *)
+  Scn.close ~eps:1e-4 "slope y at 0.762 up" 0.77574 (v "slope y" (0., r, z) (0., r, z));
+  Scn.close ~eps:1e-4 "slope y at 0.762 down" 0.22426 (v "slope y" (0., -.r, z) (0., -.r, z));
+  Scn.close ~eps:1e-4 "slope { y, 0.2, 0.8 }" 0.95957 (v "slope { y, 0.2, 0.8 }" (0., r, z) (0., r, z));
+  (* with altitude, weights 3:1: (3 s + a) / 4 *)
+  Scn.close ~eps:1e-4 "slope { y*3 altitude y }" 0.77231 (v "slope { y*3 altitude y }" (0., r, z) (0., r, z));
+  Scn.close ~eps:1e-4 "slope { y altitude y, -1, 1 }" 0.82834 (v "slope { y altitude y, -1, 1 }" (0., r, z) (0., r, z));
+  Scn.check_message "sphere { 0, 1 pigment { slope { 0 } } }" "cannot be <0,0,0>";
+  Scn.check_message "sphere { 0, 1 pigment { slope { y, 0.5, 0.5 } } }" "two different ends"
+
 let function_values () =
   let pts = [ (0.5, 0.1); (1.2, 0.3); (-0.5, -0.5); (1., 0.); (1., 1.); (0., -2.3); (2., -0.1); (0., -1.) ] in
   let cases =
@@ -491,6 +517,7 @@ let tests =
       Alcotest.test_case "warps: repeat, black_hole, order with transforms = POV-Ray" `Quick warps;
       Alcotest.test_case "julia = POV-Ray" `Quick julia;
       Alcotest.test_case "magnet = POV-Ray, allocation-free" `Quick magnet;
+      Alcotest.test_case "slope = POV-Ray" `Quick slope;
       Alcotest.test_case "function patterns = POV-Ray" `Quick function_values;
       Alcotest.test_case "function patterns: declared functions" `Quick function_declared;
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
