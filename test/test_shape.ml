@@ -352,6 +352,10 @@ let superellipsoid_prop =
         let a = Vec3.madd pt 1e-5 nn and b = Vec3.madd pt (-1e-5) nn in
         ((not (Superellipsoid.inside t a.x a.y a.z)) && Superellipsoid.inside t b.x b.y b.z)
         || Float.abs (Vec3.dot nn (Vec3.normalize r.dir)) < 1e-2
+        (* within 1e-4 of a coordinate plane an exponent above 2 makes a
+           crease, where the normal turns through a right angle over a
+           distance shorter than the step (found: z = 1.8e-6, n = 2.19) *)
+        || ((e > 2. || n > 2.) && Float.min (Float.abs pt.x) (Float.min (Float.abs pt.y) (Float.abs pt.z)) < 1e-4)
         || QCheck.Test.fail_reportf "at %s normal %s" (Vec3.to_string pt) (Vec3.to_string nn)
       end)
 
