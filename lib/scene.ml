@@ -74,6 +74,7 @@ let test_cost (o : Object.t) =
     | Object.Prim (Shape.Text t) -> 8. *. float (Text.glyph_count t)
     | Object.Prim (Shape.Blob _) -> 32.
     | Object.Prim (Shape.Prism _ | Shape.Lathe _ | Shape.Sor _ | Shape.Superellipsoid _) -> 32.
+    | Object.Prim (Shape.Julia _) -> 64.
     | Object.Prim (Shape.Isosurface _) -> 64.
     | Object.Prim (Shape.Mesh _) | Object.Union _ | Object.Merge _ | Object.Intersection _ -> 8.
 

@@ -24,6 +24,7 @@ type t =
   | Lathe of Lathe.t
   | Sor of Sor.t
   | Superellipsoid of Superellipsoid.t
+  | Julia of Julia.t
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
   | Isosurface of Isosurface.t  (** POV-Ray's [isosurface] *)
@@ -230,6 +231,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Lathe l -> Lathe.hit_s l r tmin h
   | Sor s -> Sor.hit_s s r tmin h
   | Superellipsoid se -> Superellipsoid.hit_s se r tmin h
+  | Julia j -> Julia.hit_s j r tmin h
   | Polygon pg -> Polygon.hit_s pg r tmin h
   | Height_field f -> Height_field.hit_s f r tmin h
   | Isosurface i -> Isosurface.hit_s i r tmin h
@@ -301,6 +303,7 @@ let normal_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
   | Lathe l -> Lathe.normal_into l p h out
   | Sor s -> Sor.normal_into s p h out
   | Superellipsoid se -> Superellipsoid.normal_into se p out
+  | Julia j -> Julia.normal_into j p out
   | Isosurface i -> Isosurface.normal_into i p h out
 
 let normal s (p : Vec3.t) h =
@@ -338,6 +341,7 @@ let[@inline] inside_xyz s x y z =
   | Lathe l -> Lathe.inside l x y z
   | Sor s -> Sor.inside s x y z
   | Superellipsoid se -> Superellipsoid.inside se x y z
+  | Julia j -> Julia.inside j x y z
   | Isosurface i -> Isosurface.inside i x y z
 
 let inside_s s (p : Ray.scratch) = inside_xyz s p.ox p.oy p.oz
@@ -372,6 +376,7 @@ let bounds = function
   | Lathe l -> Some (Lathe.bounds l)
   | Sor s -> Some (Sor.bounds s)
   | Superellipsoid _ -> Some Superellipsoid.bounds
+  | Julia j -> Some (Julia.bounds j)
   | Polygon pg -> Some (Polygon.bounds pg)
   | Height_field f -> Some (Height_field.bounds f)
   | Isosurface i -> Some (Isosurface.bounds i)

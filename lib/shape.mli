@@ -33,6 +33,7 @@ type t =
   | Lathe of Lathe.t  (** POV-Ray's [lathe] *)
   | Sor of Sor.t  (** POV-Ray's [sor] *)
   | Superellipsoid of Superellipsoid.t  (** POV-Ray's [superellipsoid] *)
+  | Julia of Julia.t  (** POV-Ray's [julia_fractal] (quaternion) *)
   | Polygon of Polygon.t  (** POV-Ray's [polygon] *)
   | Height_field of Height_field.t  (** POV-Ray's [height_field] *)
   | Isosurface of Isosurface.t  (** POV-Ray's [isosurface] *)

@@ -9,6 +9,7 @@
 %token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR INTERIOR_TEXTURE
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
+%token JULIA_FRACTAL QUATERNION CUBE MAX_ITERATION PRECISION SLICE
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
 %token <string> IMAGE_KIND
 
@@ -84,6 +85,8 @@
         Shapes.obj (loc $loc)
           (Shapes.bicubic_patch (loc $loc) ~u_steps:(steps `U) ~v_steps:(steps `V)
              (Array.of_list (List.map (fun (l, p) -> Value.to_vec3 l p) pts))) ms }
+  | JULIA_FRACTAL LBRACE c = param ws = list(julia_word) ms = list(object_mod) RBRACE
+      { Shapes.obj (loc $loc) (Shapes.julia (loc $loc(c)) c ws) ms }
   | SUPERELLIPSOID LBRACE e = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.superellipsoid (loc $loc(e)) e) ms }
   | ISOSURFACE LBRACE f = FUNCTION_LIT items = list(iso_item) RBRACE
@@ -110,6 +113,14 @@ iso_item:
   | MAX_TRACE e = param { Shapes.Iso_max_trace (loc $loc(e), Value.to_int (loc $loc(e)) e) }
   | ALL_INTERSECTIONS { Shapes.Iso_max_trace (loc $loc, max_int) }
   | m = object_mod { Shapes.Iso_mod m }
+
+julia_word:
+  | QUATERNION { `Quat }
+  | f = FUNC { if f = "sqr" then `Sqr else Diag.error (loc $loc) "%s (a julia_fractal function) is not supported by camlray: sqr and cube are" f }
+  | CUBE { `Cube }
+  | MAX_ITERATION n = param { `Iter (loc $loc(n), n) }
+  | PRECISION p = param { `Prec (loc $loc(p), p) }
+  | SLICE v = param COMMA d = param { `Slice (loc $loc, v, d) }
 
 prism_point: COMMA? p = param { (loc $loc(p), p) }
 

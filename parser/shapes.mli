@@ -88,6 +88,14 @@ val height_field : hf_source -> hf_option list -> Sdl.shape
     unreadable), the function sampled at W x H points; see
     {!Camlray.Height_field}. *)
 
+val julia :
+  Loc.t ->
+  Value.t ->
+  [< `Cube | `Iter of Loc.t * Value.t | `Prec of Loc.t * Value.t | `Quat | `Slice of Loc.t * Value.t * Value.t | `Sqr ] list ->
+  Sdl.shape
+(** POV-Ray's [julia_fractal { <a, b, c, d> ... }] (quaternion sqr or cube;
+    defaults max_iteration 20, precision 20; only the default slice). *)
+
 val superellipsoid : Loc.t -> Value.t -> Sdl.shape
 (** [superellipsoid { <e, n> }]: both exponents positive. *)
 

@@ -241,7 +241,7 @@ let residual (s : Shape.t) (p : Vec3.t) =
       Float.abs (Vec3.dot (Vec3.sub p a) n)
   | Shape.Polygon pg -> Float.abs (Vec3.dot (Polygon.normal pg) (Vec3.sub p (Polygon.point pg)))
   | Shape.Height_field f -> hf_residual f p
-  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Sor _ | Shape.Superellipsoid _ -> 0.
+  | Shape.Mesh _ | Shape.Text _ | Shape.Prism _ | Shape.Lathe _ | Shape.Sor _ | Shape.Superellipsoid _ | Shape.Julia _ -> 0.
   | Shape.Isosurface i -> (
       (* the container's faces, or the function (a distance: slope 1) *)
       let f = Float.abs (Isosurface.value i p.x p.y p.z) in
@@ -285,6 +285,7 @@ let shape_name (s : Shape.t) =
   | Shape.Lathe _ -> "lathe"
   | Shape.Sor _ -> "sor"
   | Shape.Superellipsoid _ -> "superellipsoid"
+  | Shape.Julia _ -> "julia_fractal"
   | Shape.Polygon _ -> "polygon"
   | Shape.Height_field _ -> "height_field"
   | Shape.Isosurface _ -> "isosurface"
