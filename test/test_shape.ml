@@ -721,6 +721,59 @@ let iso_units =
 
 (* sor: the radii, normals, caps and inside test POV-Ray's trace() and
    inside() give for the same profile *)
+let julia_units =
+  let mk c cube n =
+    match Julia.make ~c ~cube ~max_iteration:n ~precision:15. with Ok j -> Shape.Julia j | Error e -> Alcotest.fail e
+  in
+  let c1 = [| -0.083; 0.0; -0.83; -0.025 |] in
+  let cross s o d =
+    let r = Ray.make o d in
+    let h = Hit.create infinity in
+    if Shape.hit s r 0. h then let p = Ray.at r h.t in Some (p, Shape.normal s p h) else None
+  in
+  let check s (o, d, (px, py, pz), (nx, ny, nz)) =
+    match cross s o d with
+    | Some (p, n) ->
+        Alcotest.(check (float 2e-7)) "hit x" px p.x;
+        Alcotest.(check (float 2e-7)) "hit y" py p.y;
+        Alcotest.(check (float 2e-7)) "hit z" pz p.z;
+        Alcotest.(check (float 2e-6)) "normal x" nx n.x;
+        Alcotest.(check (float 2e-6)) "normal y" ny n.y;
+        Alcotest.(check (float 2e-6)) "normal z" nz n.z
+    | None -> Alcotest.fail "missed"
+  in
+  let v = Vec3.make in
+  [
+    Alcotest.test_case "julia_fractal: c = 0 (sqr and cube) is the unit ball" `Quick (fun () ->
+        List.iter
+          (fun cube ->
+            let s = mk [| 0.; 0.; 0.; 0. |] cube 8 in
+            check s (v 0.3 0.2 (-5.), v 0. 0. 1., (0.3, 0.2, -0.9327379), (0.3, 0.2, -0.9327379));
+            Alcotest.(check bool) "inside" true (Shape.inside s (v 0.5 0.5 0.5));
+            Alcotest.(check bool) "outside" false (Shape.inside s (v 0.6 0.6 0.6)))
+          [ false; true ]);
+    Alcotest.test_case "julia_fractal: fractal1's parameters as POV-Ray traces them" `Quick (fun () ->
+        (* povray 3.7 trace() on julia_fractal { <-0.083,0,-0.83,-0.025> quaternion sqr|cube max_iteration 8 precision 15 } *)
+        let sq = mk c1 false 8 and cu = mk c1 true 8 in
+        List.iter (check sq)
+          [ (v 0. 0. (-5.), v 0. 0. 1., (0., 0., -0.9754510505), (0.3544145673, 0., -0.9350883993));
+            (v 0.3 0.2 (-5.), v 0. 0. 1., (0.3, 0.2, -0.3294082741), (-0.2611676484, 0.3807701202, -0.8870206170));
+            (v (-5.) 0.1 0.2, v 1. 0. 0., (-0.3672825323, 0.1, 0.2), (-0.7498815037, -0.0168651354, 0.6613571635));
+            (v 0.1 5. 0.2, v 0. (-1.) 0., (0.1, 0.9624901445, 0.2), (-0.0474455491, 0.9804864584, 0.1907753255));
+            (* from inside: the way out *)
+            (v 0. 0. (-0.5), v 0. 0. 1., (0., 0., 0.5029182255), (-0.3494658948, 0., 0.9369490853)) ];
+        List.iter (check cu)
+          [ (v 0. 0. (-5.), v 0. 0. 1., (0., 0., -1.1521441994), (0.8006510844, 0., -0.5991309047));
+            (v 0.3 0.2 (-5.), v 0. 0. 1., (0.3, 0.2, -0.4793117570), (-0.7485837245, 0.2554183615, -0.6118691592));
+            (v (-5.) 0.1 0.2, v 1. 0. 0., (-0.8426412654, 0.1, 0.2), (-0.8770580433, -0.4216553082, -0.2301651359));
+            (v 0.1 5. 0.2, v 0. (-1.) 0., (0.1, 0.7686501643, 0.2), (0.9679233246, 0.2362007936, 0.0856365737)) ]);
+    Alcotest.test_case "julia_fractal: bad parameters" `Quick (fun () ->
+        let bad r = match r with Ok _ -> false | Error _ -> true in
+        Alcotest.(check bool) "3-vector" true (bad (Julia.make ~c:[| 0.; 0.; 0. |] ~cube:false ~max_iteration:8 ~precision:1.));
+        Alcotest.(check bool) "0 iterations" true (bad (Julia.make ~c:c1 ~cube:false ~max_iteration:0 ~precision:1.));
+        Alcotest.(check bool) "precision 0" true (bad (Julia.make ~c:c1 ~cube:false ~max_iteration:8 ~precision:0.)));
+  ]
+
 let sor_units =
   let pts = [| (0., -0.5); (1., 0.); (0.5, 0.6); (1.5, 1.2); (0.8, 2.); (0.3, 3.) |] in
   let mk open_ = match Sor.make ~open_ pts with Ok s -> Shape.Sor s | Error e -> Alcotest.fail e in
@@ -773,5 +826,5 @@ let sor_units =
   ]
 
 let tests =
-  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ superellipsoid_units @ iso_units
+  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ julia_units @ superellipsoid_units @ iso_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
