@@ -128,6 +128,7 @@ let fixpoint () =
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
      lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
      superellipsoid { <0.3, 2> scale 2 }\n\
+     julia_fractal { <-0.083, 0.0, -0.83, -0.025> quaternion cube max_iteration 8 precision 15 scale 2 }\n\
      sor { 5, <0, 0>, <1, 0.2>, <0.5, 1>, <0.8, 1.5>, <0, 2> open interior_texture { pigment { rgb <1, 0, 0> } } }\n\
      union { sphere { 0, 1 } cylinder { 0, y, 0.5 open } interior_texture { pigment { rgb 0.5 } finish { ambient 0.3 } } }\n\
      height_field { function 4, 3 { x * y + 0.1 } smooth water_level 0.1 hierarchy off scale <2, 1, 2> }\n\
@@ -150,7 +151,7 @@ let fixpoint () =
   List.iter
     (fun w -> if not (Scn.contains once w) then Alcotest.failf "%S is not printed" w)
     [ "sor {"; "interior_texture {"; "isosurface {"; "height_field {"; "lathe {"; "prism {"; "blob {";
-      "superellipsoid {"; " open" ];
+      "superellipsoid {"; " open"; "julia_fractal {"; "cube" ];
   Alcotest.(check string) "fixpoint" once (print (parse once))
 
 (* declared media and densities, used and edited, in interiors and at
