@@ -122,39 +122,8 @@ let png s =
 (* {2 PGM and PPM (P2, P3, P5, P6)} *)
 
 let pnm s =
-  let n = String.length s and pos = ref 2 in
-  let is_space c = String.contains " \t\n\r\011\012" c in
-  let rec skip () =
-    if !pos < n && is_space s.[!pos] then (incr pos; skip ())
-    else if !pos < n && s.[!pos] = '#' then begin
-      while !pos < n && s.[!pos] <> '\n' do incr pos done;
-      skip ()
-    end
-  in
-  let int what =
-    skip ();
-    let start = !pos in
-    while !pos < n && s.[!pos] >= '0' && s.[!pos] <= '9' do incr pos done;
-    if !pos = start || !pos - start > 9 then failwith ("bad or missing " ^ what);
-    int_of_string (String.sub s start (!pos - start))
-  in
-  let kind = s.[1] in
-  let w = int "width" in
-  let h = int "height" in
-  let maxval = int "maxval" in
-  if w <= 0 || h <= 0 || w * h > 1 lsl 26 then failwith "bad or too large size";
-  if maxval < 1 || maxval > 65535 then failwith "maxval out of 1..65535";
-  let channels = if kind = '2' || kind = '5' then 1 else 3 in
+  let w, h, channels, maxval, sample = Image.pnm s ~max_pixels:(1 lsl 26) in
   let count = w * h * channels in
-  let sample =
-    if kind = '2' || kind = '3' then fun _ -> int "sample"
-    else begin
-      if !pos >= n || not (is_space s.[!pos]) then failwith "bad header";
-      let base = !pos + 1 and bytes = if maxval < 256 then 1 else 2 in
-      if n - base < count * bytes then failwith "truncated pixel data";
-      if bytes = 1 then fun i -> Char.code s.[base + i] else fun i -> String.get_uint16_be s (base + (2 * i))
-    end
-  in
   let raw = Array.init count sample in
   if Array.exists (fun x -> x > maxval) raw then failwith "sample exceeds maxval";
   (* other maxvals scaled to 8 or 16 bits *)

@@ -260,8 +260,9 @@ let read_png path s =
   (* load_as_rgb24 refuses palettes with transparency; Png.load reads them *)
   try load Png.load_as_rgb24 with Failure _ when ct = 3 -> load Png.load
 
-(* PPM P6 or P3, any maxval up to 65535, scaled to 8 bits with rounding. *)
-let read_ppm s =
+(* A PNM file (P2, P3 text; P5, P6 binary): its size, samples per pixel
+   (1 grey, 3 colour), maxval and its samples in order, read on demand *)
+let pnm s ~max_pixels =
   let n = String.length s and pos = ref 2 in
   let is_space c = String.contains " \t\n\r\011\012" c in
   let rec skip () =
@@ -279,16 +280,18 @@ let read_ppm s =
       failwith ("bad or missing " ^ what);
     int_of_string (String.sub s start (!pos - start))
   in
+  let kind = s.[1] in
   let w = int "width" in
   let h = int "height" in
   let maxval = int "maxval" in
-  if w <= 0 || h <= 0 || w * h > 1 lsl 28 then failwith "bad or too large size";
+  if w <= 0 || h <= 0 || w * h > max_pixels then failwith "bad or too large size";
   if maxval < 1 || maxval > 65535 then failwith "maxval out of 1..65535";
-  let count = w * h * 3 in
+  let channels = if kind = '2' || kind = '5' then 1 else 3 in
+  let count = w * h * channels in
   let sample =
-    if s.[1] = '3' then fun _ -> int "sample"
+    if kind = '2' || kind = '3' then fun _ -> int "sample"
     else begin
-      (* exactly one whitespace byte ends the header of a binary PPM *)
+      (* exactly one whitespace byte ends the header of a binary PNM *)
       if !pos >= n || not (is_space s.[!pos]) then failwith "bad header";
       let base = !pos + 1 and bytes = if maxval < 256 then 1 else 2 in
       if n - base < count * bytes then failwith "truncated pixel data";
@@ -296,6 +299,12 @@ let read_ppm s =
       else fun i -> String.get_uint16_be s (base + (2 * i))
     end
   in
+  (w, h, channels, maxval, sample)
+
+(* PPM P6 or P3, any maxval up to 65535, scaled to 8 bits with rounding. *)
+let read_ppm s =
+  let w, h, _, maxval, sample = pnm s ~max_pixels:(1 lsl 28) in
+  let count = w * h * 3 in
   let data = Bytes.create count in
   for i = 0 to count - 1 do
     let v = sample i in

@@ -103,3 +103,9 @@ val read : string -> rgb8
 val png_text : string -> (string * string) list
 (** The tEXt chunks of a PNG file, in file order, as raw (Latin-1) bytes.
     Raises [Failure] naming the file if it is not a well-formed PNG. *)
+
+val pnm : string -> max_pixels:int -> int * int * int * int * (int -> int)
+(** [pnm contents ~max_pixels]: a PNM file's (P2, P3, P5, P6) width,
+    height, samples per pixel (1 or 3), maxval, and its [i]th sample (text
+    samples are read in order: ask for them in order). Raises [Failure]
+    on a bad header, a size beyond [max_pixels] or truncated data. *)
