@@ -17,6 +17,10 @@ let fn ~slots ~result run =
   if slots < 3 || result < 0 || result >= slots then invalid_arg "Pattern.fn: bad slot counts";
   { result; run; frames = Scratch.key (fun () -> Array.make slots 0.) }
 
+type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
+
+let crackle_default = { form = Vec3.make (-1.) 1. 0.; metric = 2.; offset = 0.; solid = false }
+
 type kind =
   | Checker
   | Hexagon
@@ -40,7 +44,7 @@ type kind =
   | Ripples
   | Waves
   | Wrinkles
-  | Crackle
+  | Crackle of crackle
   | Spiral1 of int
   | Spiral2 of int
   | Quilted of { c0 : float; c1 : float }
@@ -149,11 +153,15 @@ let clamp01 x = Float.min 1. (Float.max 0. x)
    coordinate [k] of the point for cell (cx, cy, cz), as floats. *)
 let[@inline] feature_h cx cy cz k = 0.5 +. (0.5 *. Noise.snoise3 (cx +. 0.31 +. k) (cy +. 0.47) (cz +. 0.73 -. k))
 
-(* crackle: distance to the second nearest feature point minus the
-   nearest (POV-Ray's default form <-1, 1, 0>) *)
-let[@inline] crackle3 x y z =
+(* crackle: by default the distance to the second nearest feature point
+   minus the nearest (POV-Ray's form <-1, 1, 0>); else form . (F1, F2,
+   F3) + offset with distances in the metric's norm, or with [solid] the
+   nearest point's own value (camlray's noise at it) *)
+let crackle3 (c : crackle) x y z =
   let fx = int_of_float (Float.floor x) and fy = int_of_float (Float.floor y) and fz = int_of_float (Float.floor z) in
-  let d1 = ref infinity and d2 = ref infinity in
+  let d1 = ref infinity and d2 = ref infinity and d3 = ref infinity in
+  let n1x = ref 0. and n1y = ref 0. and n1z = ref 0. in
+  let m = c.metric in
   for i = -1 to 1 do
     for j = -1 to 1 do
       for k = -1 to 1 do
@@ -161,15 +169,27 @@ let[@inline] crackle3 x y z =
         let dx = x -. (cx +. feature_h cx cy cz 0.)
         and dy = y -. (cy +. feature_h cx cy cz 17.3)
         and dz = z -. (cz +. feature_h cx cy cz 41.9) in
-        let d = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
-        if d < !d1 then (
+        let d =
+          if m = 2. then Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))
+          else
+            Float.pow
+              (Float.pow (Float.abs dx) m +. Float.pow (Float.abs dy) m +. Float.pow (Float.abs dz) m)
+              (1. /. m)
+        in
+        if d < !d1 then begin
+          d3 := !d2;
           d2 := !d1;
-          d1 := d)
-        else if d < !d2 then d2 := d
+          d1 := d;
+          n1x := cx; n1y := cy; n1z := cz
+        end
+        else if d < !d2 then (d3 := !d2; d2 := d)
+        else if d < !d3 then d3 := d
       done
     done
   done;
-  clamp01 (!d2 -. !d1)
+  if c.solid then 0.5 +. (0.5 *. Noise.snoise3 (!n1x +. 0.13) (!n1y +. 0.57) (!n1z +. 0.91))
+  else if c == crackle_default || c = crackle_default then clamp01 (!d2 -. !d1)
+  else clamp01 ((c.form.x *. !d1) +. (c.form.y *. !d2) +. (c.form.z *. !d3) +. c.offset)
 
 (* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
 let[@inline] tri v =
@@ -391,7 +411,7 @@ let raw_m kind (w : work) =
         acc := !acc +. (0.5 +. (0.5 *. wave))
       done;
       w.r.v <- !acc /. float_of_int (Array.length sources)
-  | Crackle -> w.r.v <- crackle3 x y z
+  | Crackle c -> w.r.v <- crackle3 c x y z
   | Wrinkles -> w.r.v <- clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal3 10 x y z))
   | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))

@@ -35,6 +35,15 @@ val fn : slots:int -> result:int -> (float array -> unit) -> fn
     the same [fn] again (functions are defined before they are used, so
     this holds for functions of the scene language). *)
 
+type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
+(** POV-Ray's crackle parameters: [form] weighs the distances to the
+    three nearest feature points, [metric] is the exponent of the
+    distance's norm, [offset] is added; [solid] gives each cell one
+    value. *)
+
+val crackle_default : crackle
+(** form <-1, 1, 0>, metric 2, offset 0, not solid. *)
+
 type kind =
   | Checker
   | Hexagon
@@ -58,7 +67,7 @@ type kind =
   | Ripples
   | Waves
   | Wrinkles
-  | Crackle  (** F2 - F1 cellular noise (camlray's own feature points) *)
+  | Crackle of crackle  (** F2 - F1 cellular noise by default (camlray's own feature points) *)
   | Spiral1 of int
       (** arms: z + r + arms phi / 2 pi around the z axis (triangle wave) *)
   | Spiral2 of int  (** arms: tri(spiral1's value) + tri(r) (triangle wave) *)

@@ -8,7 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
-%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE
+%token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -241,7 +241,7 @@
   | RIPPLES { Pattern.Ripples }
   | WAVES { Pattern.Waves }
   | WRINKLES { Pattern.Wrinkles }
-  | CRACKLE { Pattern.Crackle }
+  | CRACKLE { Pattern.Crackle Pattern.crackle_default }
   (* POV-Ray truncates the number of arms (to a short) *)
   | SPIRAL1 e = param { Pattern.Spiral1 (truncate (fl $loc(e) e)) }
   (* slope { <dir> [, lo, hi] [altitude <dir> [, lo, hi]] }, or slope <dir> *)
@@ -386,6 +386,14 @@
         Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
   | BRICK_SIZE e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with size = v } | k -> k) }
+  | METRIC e = param { let x = fl $loc(e) e in
+      if not (x > 0.) then Diag.error (loc $loc(e)) "crackle's metric must be positive, found %g" x;
+      Texdesc.kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with metric = x } | k -> k) }
+  | FORM e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Crackle c -> Pattern.Crackle { c with form = v } | k -> k) }
+  | OFFSET e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+      | Pattern.Crackle c -> Pattern.Crackle { c with offset = x } | k -> k) }
+  | SOLID { Texdesc.kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with solid = true } | k -> k) }
   | MORTAR e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
   | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
