@@ -257,9 +257,9 @@ type result = { mutable v : float }
 
 (* the value in a record of its own, flat: a float field of a record with
    other fields is boxed, and each store would allocate *)
-type work = { p : Vec3.m; d : Vec3.m; r : result; n : Vec3.m }
+type work = { p : Vec3.m; d : Vec3.m; r : result }
 
-let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. }; n = Vec3.m () }
+let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
 
 (* The surface normal (world space, unit) at the point being shaded, for
    the slope pattern: set by the shader, per domain *)
@@ -423,7 +423,10 @@ let raw_m kind (w : work) =
       (* POV-Ray's (measured): the normal's angle to the direction, 0.5 +
          asin(n . d) / pi, and the altitude p . a, each taken from [lo,
          hi] to [0, 1], weighed by the vectors' lengths *)
-      let n = w.n in
+      (* the surface's world normal: POV-Ray does not turn it with the
+         pattern's transformations (measured; the altitude's point is the
+         pattern's) *)
+      let n = Scratch.get normal_key in
       let c = (n.mx *. dir.x) +. (n.my *. dir.y) +. (n.mz *. dir.z) in
       let c = if c > 1. then 1. else if c < -1. then -1. else c in
       let s = (0.5 +. (Float.asin c /. Float.pi) -. lo) /. (hi -. lo) in
@@ -567,14 +570,6 @@ let eval_m t (q : Vec3.m) (w : work) =
    (inlined: the value is not boxed). [eval_m] reads its point before
    writing [w.p], which may therefore hold it. *)
 let[@inline] eval_at t xform (point : Vec3.m) (w : work) =
-  (match t.kind with
-   | Slope _ ->
-       (* the shaded surface's normal, as it is in the world: POV-Ray
-          does not turn it with the pattern's transformations (measured;
-          the altitude's point is the pattern's) *)
-       let m = Scratch.get normal_key in
-       Vec3.set w.n m.mx m.my m.mz
-   | _ -> ());
   Transform.inv_point_m xform point w.p;
   eval_m t w.p w;
   w.r.v

@@ -171,7 +171,7 @@ val value : t -> Vec3.t -> float
 
 type result = { mutable v : float }
 
-type work = { p : Vec3.m; d : Vec3.m; r : result; n : Vec3.m }
+type work = { p : Vec3.m; d : Vec3.m; r : result }
 (** Where {!eval_m} works: the warped point, the turbulence, the value
     (in a flat record: storing a float into a record with other fields
     would allocate). *)
