@@ -104,14 +104,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       for j = 0 to k - 1 do
         let s = Float.Array.unsafe_get w.found j in
         let rho = (((ar *. s) +. br) *. s +. cr) *. s +. dr in
-        let a = (r.dx *. r.dx) +. (r.dz *. r.dz) and b = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
-        and c = (r.ox *. r.ox) +. (r.oz *. r.oz) -. (rho *. rho) in
-        let disc = (b *. b) -. (4. *. a *. c) in
-        if a > 0. && disc >= 0. then begin
-          let sq = Float.sqrt disc in
-          if Hit.keep h tmin ((-.b -. sq) /. (2. *. a)) (float i) s then found := true;
-          if Hit.keep h tmin ((-.b +. sq) /. (2. *. a)) (float i) s then found := true
-        end
+        if Prism.keep_circle h tmin r (rho *. rho) (float i) s then found := true
       done
     end
   done;

@@ -263,3 +263,18 @@ let normal_into t (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
     let nx = out.mx and ny = out.my and nz = out.mz in
     if inside t (x +. (e *. nx)) (y +. (e *. ny)) (z +. (e *. nz)) then Vec3.set out (-.nx) (-.ny) (-.nz)
   end
+
+(* A level ray (dy = 0) against the circle of squared radius [rr] about
+   the y axis at its height: its crossings kept in [h] with the part [id]
+   and the parameter [u] (lathes and sors) *)
+let[@inline] keep_circle (h : Hit.t) tmin (r : Ray.scratch) rr id u =
+  let a = (r.dx *. r.dx) +. (r.dz *. r.dz) and b = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
+  and c = (r.ox *. r.ox) +. (r.oz *. r.oz) -. rr in
+  let disc = (b *. b) -. (4. *. a *. c) in
+  if a > 0. && rr >= 0. && disc >= 0. then begin
+    let sq = Float.sqrt disc in
+    let k1 = Hit.keep h tmin ((-.b -. sq) /. (2. *. a)) id u in
+    let k2 = Hit.keep h tmin ((-.b +. sq) /. (2. *. a)) id u in
+    k1 || k2
+  end
+  else false

@@ -40,3 +40,8 @@ val all_roots : Poly.scratch -> Float.Array.t -> int -> Float.Array.t -> float -
 (** [all_roots sc coefficients degree found lo hi]: the polynomial's roots
     in [[lo, hi)] in increasing order, into [found] (room for [degree]);
     their number. *)
+
+val keep_circle : Hit.t -> float -> Ray.scratch -> float -> float -> float -> bool
+(** [keep_circle h tmin r rr id u]: a level ray's crossings of the circle
+    of squared radius [rr] about the y axis, kept in [h] (part [id],
+    parameter [u]) when in range; whether one was (lathes and sors). *)

@@ -115,15 +115,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     end
     else if q >= y0 && q <= y1 then begin
       (* a level ray: the circle of the curve's radius at its height *)
-      let rr = f a b c d q in
-      let aa = (r.dx *. r.dx) +. (r.dz *. r.dz) and bb = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
-      and cc = (r.ox *. r.ox) +. (r.oz *. r.oz) -. rr in
-      let disc = (bb *. bb) -. (4. *. aa *. cc) in
-      if aa > 0. && rr >= 0. && disc >= 0. then begin
-        let sq = Float.sqrt disc in
-        if Hit.keep h tmin ((-.bb -. sq) /. (2. *. aa)) (float i) q then found := true;
-        if Hit.keep h tmin ((-.bb +. sq) /. (2. *. aa)) (float i) q then found := true
-      end
+      if Prism.keep_circle h tmin r (f a b c d q) (float i) q then found := true
     end
   done;
   if (not t.open_) && e <> 0. then begin
