@@ -8,7 +8,8 @@
       anti-aliasing and thread count (+WT), POV-Ray's own trace time and
       the whole wall time;
    3. the Ray Tracing in One Weekend final scene in mc mode at 400x225,
-      32 spp, depth 50, one domain, as samples per second.
+      32 spp, depth 50, one domain, as samples per second, beside the
+      C++ reference (bench/rtiow-ref) timed in the same rounds.
 
    Writes bench/results/*.md and docs/scaling.svg. Usage:
      whole.exe [--quick] [--runs N] [--exe PATH] [--out DIR] *)
@@ -95,6 +96,33 @@ let povray s ~threads ~w ~h ~aa =
   (wall, Option.value trace ~default:nan)
 
 let rep n f = List.init n (fun _ -> f ())
+
+(* The C++ reference of the third benchmark (bench/rtiow-ref/rtiow.cc, the
+   design of Ray Tracing in One Weekend: one thread, no BVH), built with
+   g++ -O3 when there is a g++; None otherwise. *)
+let reference_exe () =
+  let src = "bench/rtiow-ref/rtiow.cc" in
+  if not (Sys.file_exists src && Sys.command "command -v g++ >/dev/null 2>&1" = 0) then begin
+    prerr_endline "whole: no g++, so the C++ reference is not timed (apt-get install g++)";
+    None
+  end
+  else
+    let exe = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "camlray-rtiow-%d" (Unix.getpid ())) in
+    if Sys.command (Printf.sprintf "g++ -O3 -o %s %s" (Filename.quote exe) (Filename.quote src)) <> 0 then begin
+      prerr_endline "whole: the C++ reference did not build; not timed";
+      None
+    end
+    else begin
+      at_exit (fun () -> try Sys.remove exe with Sys_error _ -> ());
+      Some exe
+    end
+
+(* (spheres, render seconds) as the reference reports them on stderr *)
+let run_reference exe ~w ~h ~spp =
+  let _, text = timed (Printf.sprintf "%s %d %d %d 50" (Filename.quote exe) w h spp) in
+  match (find_float_after "spheres" text, find_float_after "seconds" text) with
+  | Some n, Some t -> (int_of_float n, t)
+  | _ -> failwith ("the C++ reference printed no time: " ^ text)
 
 (* Runs interleaved: run 1 of every domain count, then run 2, ..., so that
    a slow spell of this shared machine falls on all counts alike. For a
@@ -265,13 +293,30 @@ let () =
     let w, h = sz 400 225 in
     let spp = if !quick then 2 else 32 in
     let one = { rtiow with args = [ "--mode"; "mc"; "--spp"; string_of_int spp; "--depth"; "50" ] } in
-    let r = rep !runs (fun () -> camlray one ~domains:1 ~w ~h []) in
-    let t = median (List.map snd r) in
+    let reference = reference_exe () in
+    (* interleaved with the C++ reference, which takes some 15 s a run on
+       a quiet machine: three rounds at most *)
+    let rounds = if reference = None then !runs else min 3 !runs in
+    let r =
+      rep rounds (fun () ->
+          let c = camlray one ~domains:1 ~w ~h [] in
+          (c, Option.map (fun exe -> run_reference exe ~w ~h ~spp) reference))
+    in
+    let t = median (List.map (fun (c, _) -> snd c) r) in
     let sps = float (w * h * spp) /. t in
+    let ref_cell, ratio_cell =
+      match List.filter_map snd r with
+      | [] -> ("-", "-")
+      | l ->
+          let rs = float (w * h * spp) /. median (List.map snd l) in
+          (Printf.sprintf "%.0f (%d spheres)" rs (fst (List.hd l)), Printf.sprintf "**%.2fx**" (sps /. rs))
+    in
     let text =
       Printf.sprintf
-        "| render | camlray samples/s (1 domain) | C++ reference (perf-anchors.md) | ratio |\n|---|---|---|---|\n| RTIOW final%s %dx%d, %d spp, depth 50 | %.0f | 204000 | %.2fx |\n"
-        (variant rtiow_file) w h spp sps (sps /. 204000.)
+        "| render | camlray samples/s (1 domain) | C++ reference, same run | ratio | C++ reference (perf-anchors.md) | ratio |\n\
+         |---|---|---|---|---|---|\n\
+         | RTIOW final%s %dx%d, %d spp, depth 50 | %.0f | %s | %s | 204000 | %.2fx |\n"
+        (variant rtiow_file) w h spp sps ref_cell ratio_cell (sps /. 204000.)
     in
     print_string text;
     write (Filename.concat !out_dir "rtiow.md") text
