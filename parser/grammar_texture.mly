@@ -529,7 +529,7 @@ slope_entry:
   | REFLECTION c = color_value
       { let c = Value.to_rgb (loc $loc(c)) c in
         fun (f : Finish.t) -> { f with reflection = { f.reflection with rmin = c; rmax = c } } }
-  | REFLECTION LBRACE a = color_value b = ioption(preceded(COMMA, color_value)) ms = list(reflection_item) RBRACE
+  | REFLECTION LBRACE a = color_value b = ioption(reflection_max) ms = list(reflection_item) RBRACE
       { let a = Value.to_rgb (loc $loc(a)) a in
         let b = Option.map (fun b -> Value.to_rgb (loc $loc) b) b in
         fun (f : Finish.t) ->
@@ -552,6 +552,15 @@ slope_entry:
 
 %public finish_item:
   | CRAND e = param { ignore e; fun f -> f }  (* random grain: not reproducible, ignored *)
+
+(* reflection { MIN, MAX }: POV-Ray lets the comma go, as between a
+   vector's components (reflection { 0.0 1.0 fresnel on }) *)
+reflection_max:
+  | COMMA c = color_value { c }
+  | f = FLOAT { Value.Float f }
+  | f = FLOAT_ID { Value.Float f }
+  | v = VECTOR_ID { Value.Vector v }
+  | k = RGB e = unary { Value.rgb_kind (loc $loc) k e }
 
 %public reflection_item:
   | FRESNEL b = ioption(param)

@@ -207,6 +207,26 @@ let declared_use () =
   | Ok _ -> Alcotest.fail "unexpected scene"
   | Error d -> Alcotest.fail (Diag.to_string d)
 
+(* reflection { MIN MAX }: the comma is optional, as POV-Ray reads it
+   (its gamma_showcase.pov writes reflection { 0.0 1.0 fresnel on }); a
+   sign after MIN is still a subtraction *)
+let reflection_without_comma () =
+  let refl text =
+    match Parse.string ("sphere { 0, 1 finish { reflection { " ^ text ^ " } } }") with
+    | Ok { Sdl.items = [ Sdl.Object o ]; _ } -> (
+        match o.texture with
+        | Some (l :: _) -> (l.finish.reflection.rmin.r, l.finish.reflection.rmax.r)
+        | _ -> Alcotest.fail "no texture")
+    | Ok _ -> Alcotest.fail "unexpected scene"
+    | Error d -> Alcotest.fail (Diag.to_string d)
+  in
+  let pair = Alcotest.(pair (float 1e-12) (float 1e-12)) in
+  Alcotest.check pair "comma" (0.1, 0.7) (refl "0.1, 0.7");
+  Alcotest.check pair "no comma" (0.1, 0.7) (refl "0.1 0.7");
+  Alcotest.check pair "no comma, fresnel" (0.0, 1.0) (refl "0.0 1.0 fresnel on");
+  Alcotest.check pair "rgb, no comma" (0.2, 0.5) (refl "rgb 0.2 rgb 0.5");
+  Alcotest.check pair "minus is arithmetic" (0.5, 0.5) (refl "0.7 -0.2")
+
 (* mesh2 items: vectors of three are read straight from the block's
    store, every other form through its value; both give the same mesh *)
 let mesh2_items () =
@@ -231,6 +251,7 @@ let tests =
       Alcotest.test_case "rand matches povray" `Quick rand_sequence;
       Alcotest.test_case "standard includes parse" `Quick std_includes;
       Alcotest.test_case "declared identifiers reused" `Quick declared_use;
+      Alcotest.test_case "reflection { MIN MAX } without a comma" `Quick reflection_without_comma;
       Alcotest.test_case "unsupported use reported" `Quick
         (expect_error
            "#declare Swirl = pigment { cells color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
