@@ -115,6 +115,9 @@ and argument t =
   match bare with
   | Some x -> x
   | None ->
+      (* POV-Ray's commas between arguments are optional: M(A -y, B) is
+         M(A, -y, B) when A is an object (its incdemo/shapes.pov) *)
+      t.optional_sep <- Some Parser.COMMA;
       let d, closed = Cursor.parse t Parser.Incremental.macro_arg in
       ((Env.Decl d, None), closed)
 let include_file t loc =
