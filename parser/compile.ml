@@ -222,8 +222,8 @@ let shape (o : Sdl.obj) =
   | Sdl.Text t -> Shape.Text t.glyphs
   | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
   | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
-  | Sdl.Julia { jc; cube; max_iteration; precision } -> (
-      match Julia.make ~c:jc ~cube ~max_iteration ~precision with
+  | Sdl.Julia { jc; hypercomplex; cube; max_iteration; precision } -> (
+      match Julia.make ~c:jc ~hypercomplex ~cube ~max_iteration ~precision with
       | Ok j -> Shape.Julia j
       | Error e -> Diag.error o.loc "julia_fractal: %s" e)
   | Sdl.Height_field hf -> Shape.Height_field (Height_field.place hf.field o.xform)

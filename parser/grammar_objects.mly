@@ -9,7 +9,7 @@
 %token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR INTERIOR_TEXTURE
 %token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
-%token JULIA_FRACTAL QUATERNION CUBE MAX_ITERATION PRECISION SLICE
+%token JULIA_FRACTAL QUATERNION HYPERCOMPLEX CUBE MAX_ITERATION PRECISION SLICE
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
 %token <string> IMAGE_KIND
 
@@ -116,6 +116,7 @@ iso_item:
 
 julia_word:
   | QUATERNION { `Quat }
+  | HYPERCOMPLEX { `Hyper (loc $loc) }
   | f = FUNC { if f = "sqr" then `Sqr else Diag.error (loc $loc) "%s (a julia_fractal function) is not supported by camlray: sqr and cube are" f }
   | CUBE { `Cube }
   | MAX_ITERATION n = param { `Iter (loc $loc(n), n) }

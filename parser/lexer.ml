@@ -54,7 +54,7 @@ let object_keywords =
     ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
     ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID); ("polygon", POLYGON);
-    ("bicubic_patch", BICUBIC_PATCH); ("sor", SOR); ("julia_fractal", JULIA_FRACTAL); ("quaternion", QUATERNION); ("cube", CUBE);
+    ("bicubic_patch", BICUBIC_PATCH); ("sor", SOR); ("julia_fractal", JULIA_FRACTAL); ("quaternion", QUATERNION); ("hypercomplex", HYPERCOMPLEX); ("cube", CUBE);
     ("max_iteration", MAX_ITERATION); ("precision", PRECISION); ("slice", SLICE); ("interior_texture", INTERIOR_TEXTURE); ("type", TYPE); ("flatness", FLATNESS); ("u_steps", U_STEPS); ("v_steps", V_STEPS);
     ("height_field", HEIGHT_FIELD); ("water_level", WATER_LEVEL); ("smooth", SMOOTH);
     ("gif", IMAGE_KIND "gif"); ("tga", IMAGE_KIND "tga"); ("iff", IMAGE_KIND "iff"); ("ppm", IMAGE_KIND "ppm");

@@ -191,10 +191,11 @@ let rec parts (o : Sdl.obj) =
         (Printf.sprintf "height_field { %s%s%s" src (if hf.smooth then " smooth" else "")
            (if hf.water <> 0. then " water_level " ^ float hf.water else ""))
   | Sdl.Superellipsoid (e, n) -> simple (Printf.sprintf "superellipsoid { <%s, %s>" (float e) (float n))
-  | Sdl.Julia { jc; cube; max_iteration; precision } ->
+  | Sdl.Julia { jc; hypercomplex; cube; max_iteration; precision } ->
       simple
-        (Printf.sprintf "julia_fractal { <%s> quaternion %s max_iteration %d precision %s"
+        (Printf.sprintf "julia_fractal { <%s> %s %s max_iteration %d precision %s"
            (String.concat ", " (Array.to_list (Array.map float jc)))
+           (if hypercomplex then "hypercomplex" else "quaternion")
            (if cube then "cube" else "sqr") max_iteration (float precision))
   | Sdl.Isosurface i ->
       let params = Fn.params i.fn in

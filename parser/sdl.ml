@@ -19,7 +19,7 @@ type shape =
   | Lathe of Prism.spline * (float * float) array
   | Sor of { points : (float * float) array; sor_open : bool }
   | Superellipsoid of float * float  (** e, n *)
-  | Julia of { jc : float array; cube : bool; max_iteration : int; precision : float }
+  | Julia of { jc : float array; hypercomplex : bool; cube : bool; max_iteration : int; precision : float }
   | Polygon of Vec3.t array  (** the points as written *)
   | Height_field of height_field
   | Isosurface of isosurface

@@ -23,7 +23,7 @@ type shape =
   | Lathe of Prism.spline * (float * float) array
   | Sor of { points : (float * float) array; sor_open : bool }  (** POV-Ray's [sor] *)
   | Superellipsoid of float * float  (** e, n *)
-  | Julia of { jc : float array; cube : bool; max_iteration : int; precision : float }
+  | Julia of { jc : float array; hypercomplex : bool; cube : bool; max_iteration : int; precision : float }
       (** POV-Ray's [julia_fractal] (quaternion, default slice) *)
   | Polygon of Vec3.t array  (** the points as written *)
   | Height_field of height_field

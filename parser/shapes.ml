@@ -267,28 +267,32 @@ let julia loc c words =
     | v -> Diag.error loc "a julia_fractal needs a 4-vector <a, b, c, d> first, found %s" (Value.type_name v)
   in
   (* POV-Ray's defaults: quaternion, sqr, max_iteration 20, precision 20 (measured) *)
-  let cube, max_iteration, precision =
+  let hyper, cube, max_iteration, precision =
     List.fold_left
-      (fun (cube, n, p) w ->
+      (fun (h, cube, n, p) w ->
         match w with
-        | `Sqr -> (false, n, p)
-        | `Cube -> (true, n, p)
-        | `Quat -> (cube, n, p)
+        | `Sqr -> (h, false, n, p)
+        | `Cube -> (h, true, n, p)
+        | `Quat -> (None, cube, n, p)
+        | `Hyper l -> (Some l, cube, n, p)
         | `Iter (l, v) ->
             let n = Value.to_int l v in
             if n < 1 then Diag.error l "a julia_fractal's max_iteration must be at least 1, found %d" n;
-            (cube, n, p)
+            (h, cube, n, p)
         | `Prec (l, v) ->
             let p = Value.to_float l v in
             if not (p > 0.) then Diag.error l "a julia_fractal's precision must be positive, found %g" p;
-            (cube, n, p)
+            (h, cube, n, p)
         | `Slice (l, v, d) -> (
             match v with
-            | Value.Vector [| 0.; 0.; 0.; w |] when w > 0. && Value.to_float l d = 0. -> (cube, n, p)
+            | Value.Vector [| 0.; 0.; 0.; w |] when w > 0. && Value.to_float l d = 0. -> (h, cube, n, p)
             | _ -> Diag.error l "slice (other than <0, 0, 0, 1>, 0) is not supported by camlray"))
-      (false, 20, 20.) words
+      (None, false, 20, 20.) words
   in
-  Sdl.Julia { jc; cube; max_iteration; precision }
+  (match hyper with
+  | Some l when cube -> Diag.error l "a hypercomplex julia_fractal takes sqr only: cube is not supported by camlray"
+  | _ -> ());
+  Sdl.Julia { jc; hypercomplex = hyper <> None; cube; max_iteration; precision }
 
 let superellipsoid loc v =
   match v with

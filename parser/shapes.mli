@@ -91,7 +91,7 @@ val height_field : hf_source -> hf_option list -> Sdl.shape
 val julia :
   Loc.t ->
   Value.t ->
-  [< `Cube | `Iter of Loc.t * Value.t | `Prec of Loc.t * Value.t | `Quat | `Slice of Loc.t * Value.t * Value.t | `Sqr ] list ->
+  [< `Cube | `Iter of Loc.t * Value.t | `Prec of Loc.t * Value.t | `Quat | `Hyper of Loc.t | `Slice of Loc.t * Value.t * Value.t | `Sqr ] list ->
   Sdl.shape
 (** POV-Ray's [julia_fractal { <a, b, c, d> ... }] (quaternion sqr or cube;
     defaults max_iteration 20, precision 20; only the default slice). *)

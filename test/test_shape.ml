@@ -727,8 +727,10 @@ let iso_units =
 (* sor: the radii, normals, caps and inside test POV-Ray's trace() and
    inside() give for the same profile *)
 let julia_units =
-  let mk c cube n =
-    match Julia.make ~c ~cube ~max_iteration:n ~precision:15. with Ok j -> Shape.Julia j | Error e -> Alcotest.fail e
+  let mk ?(hypercomplex = false) ?(precision = 15.) c cube n =
+    match Julia.make ~c ~hypercomplex ~cube ~max_iteration:n ~precision with
+    | Ok j -> Shape.Julia j
+    | Error e -> Alcotest.fail e
   in
   let c1 = [| -0.083; 0.0; -0.83; -0.025 |] in
   let cross s o d =
@@ -774,9 +776,29 @@ let julia_units =
             (v 0.1 5. 0.2, v 0. (-1.) 0., (0.1, 0.7686501643, 0.2), (0.9679233246, 0.2362007936, 0.0856365737)) ]);
     Alcotest.test_case "julia_fractal: bad parameters" `Quick (fun () ->
         let bad r = match r with Ok _ -> false | Error _ -> true in
-        Alcotest.(check bool) "3-vector" true (bad (Julia.make ~c:[| 0.; 0.; 0. |] ~cube:false ~max_iteration:8 ~precision:1.));
-        Alcotest.(check bool) "0 iterations" true (bad (Julia.make ~c:c1 ~cube:false ~max_iteration:0 ~precision:1.));
-        Alcotest.(check bool) "precision 0" true (bad (Julia.make ~c:c1 ~cube:false ~max_iteration:8 ~precision:0.)));
+        Alcotest.(check bool) "3-vector" true (bad (Julia.make ~c:[| 0.; 0.; 0. |] ~hypercomplex:false ~cube:false ~max_iteration:8 ~precision:1.));
+        Alcotest.(check bool) "0 iterations" true (bad (Julia.make ~c:c1 ~hypercomplex:false ~cube:false ~max_iteration:0 ~precision:1.));
+        Alcotest.(check bool) "precision 0" true (bad (Julia.make ~c:c1 ~hypercomplex:false ~cube:false ~max_iteration:8 ~precision:0.));
+        Alcotest.(check bool) "hypercomplex cube" true
+          (bad (Julia.make ~c:c1 ~hypercomplex:true ~cube:true ~max_iteration:8 ~precision:1.)));
+    Alcotest.test_case "julia_fractal: hypercomplex, as POV-Ray traces it" `Quick (fun () ->
+        (* povray 3.7 trace() on julia_fractal { <-0.083,0,-0.83,-0.025>
+           hypercomplex sqr max_iteration 8 precision 15 } and
+           { <-0.745,0,0.113,0.05> hypercomplex max_iteration 9 precision 20 }
+           (objects/fractal4.pov's parameters) *)
+        let h1 = mk ~hypercomplex:true c1 false 8 in
+        let h2 = mk ~hypercomplex:true ~precision:20. [| -0.745; 0.; 0.113; 0.05 |] false 9 in
+        List.iter (check h1)
+          [ (v 0. 0. (-5.), v 0. 0. 1., (0., 0., -0.9800288459), (0.3085967803, 0.6718131842, -0.6733758777));
+            (v 0.3 0.2 (-5.), v 0. 0. 1., (0.3, 0.2, -0.1764329287), (-0.2261680645, 0.6872666234, -0.6902989171));
+            (v (-5.) 0.1 0.2, v 1. 0. 0., (-0.3629285927, 0.1, 0.2), (-0.9890313454, -0.1040699148, -0.1048162705));
+            (v 0.1 5. 0.2, v 0. (-1.) 0., (0.1, 0.6352572440, 0.2), (0.6229495615, 0.5531556392, -0.5531298967));
+            (v 0. 0. (-0.5), v 0. 0. 1., (0., 0., 0.5508528848), (-0.8843140983, -0.2602043118, 0.3876626004)) ];
+        List.iter (check h2)
+          [ (v 0.2 0.1 (-5.), v 0. 0. 1., (0.2, 0.1, -0.5673751947), (0.4744921545, 0.6224353031, -0.6224399479));
+            (v (-5.) 0.05 0.1, v 1. 0. 0., (-1.4040170967, 0.05, 0.1), (-0.7351438983, 0.4793541137, 0.4793569468)) ];
+        Alcotest.(check bool) "inside" true (Shape.inside h1 (v 0.1 0.1 0.1));
+        Alcotest.(check bool) "outside" false (Shape.inside h1 (v 0.5 0.6 0.2)));
   ]
 
 let sor_units =
