@@ -138,7 +138,7 @@ let mesh_data kind n =
 let mesh ~width ~height ~domains kind n =
   let verts, faces = mesh_data kind n in
   let m, t_build =
-    time (fun () -> Mesh.make ~par:(par domains) ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None)
+    time (fun () -> Mesh.make ~par:(par domains) ~verts ~normals:(Float.Array.create 0) ~faces ~normal_faces:[||] ~inside_vector:None ())
   in
   let tris = Mesh.triangles m in
   let texture = Texture.plain (Pigment.Solid { c = Color.make 0.3 0.7 0.4; filter = 0.; transmit = 0. }) Finish.default in

@@ -12,6 +12,7 @@ type t = {
   nfaces : int array;
   bvh : Bvh.t;
   inside_vector : Vec3.t option;
+  uvs : Float.Array.t;  (* u, v of each corner (6 a triangle, BVH order), or empty: all <0, 0> *)
 }
 
 let fget = Float.Array.unsafe_get
@@ -69,7 +70,7 @@ let smooth_normal (n1 : Vec3.t) (n2 : Vec3.t) (n3 : Vec3.t) u v =
   Vec3.of_m out
 
 
-let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
+let make ?uv ~par ~verts ~normals ~faces ~normal_faces ~inside_vector () =
   let verts = Float.Array.map single verts in
   let normals = Float.Array.copy normals in
   for i = 0 to (Float.Array.length normals / 3) - 1 do
@@ -136,7 +137,34 @@ let make ~par ~verts ~normals ~faces ~normal_faces ~inside_vector =
       done)
     order;
   let nfaces = if smooth then Array.init (3 * k) (fun q -> nfaces'.((3 * order.(q / 3)) + (q mod 3))) else [||] in
-  { tris; normals; nfaces; bvh; inside_vector }
+  let uvs =
+    match uv with
+    | None -> Float.Array.create 0
+    | Some (coords, uv_faces) ->
+        let a = Float.Array.create (6 * k) in
+        Array.iteri
+          (fun j i ->
+            for c = 0 to 2 do
+              let q = uv_faces.((3 * keep.(i)) + c) in
+              Float.Array.set a ((6 * j) + (2 * c)) (Float.Array.get coords (2 * q));
+              Float.Array.set a ((6 * j) + (2 * c) + 1) (Float.Array.get coords ((2 * q) + 1))
+            done)
+          order;
+        a
+  in
+  { tris; normals; nfaces; bvh; inside_vector; uvs }
+
+let uv_into m (h : Hit.t) (out : Vec3.m) =
+  if Float.Array.length m.uvs = 0 then Vec3.set out 0. 0. 0.
+  else begin
+    let i = 6 * int_of_float h.id and a = m.uvs in
+    let wb = h.u and wc = h.v in
+    let wa = 1. -. wb -. wc in
+    Vec3.set out
+      ((wa *. fget a i) +. (wb *. fget a (i + 2)) +. (wc *. fget a (i + 4)))
+      ((wa *. fget a (i + 1)) +. (wb *. fget a (i + 3)) +. (wc *. fget a (i + 5)))
+      0.
+  end
 
 let triangles m = Bigarray.Array1.dim m.tris / 9
 

@@ -8,15 +8,18 @@
 type t
 
 val make :
+  ?uv:Float.Array.t * int array ->
   par:(int -> (int -> unit) -> unit) option -> verts:Float.Array.t -> normals:Float.Array.t -> faces:int array -> normal_faces:int array ->
-  inside_vector:Vec3.t option -> t
+  inside_vector:Vec3.t option -> unit -> t
 (** [verts] and [normals] hold 3 floats per vertex / normal; [faces] 3
     vertex indices per triangle; [normal_faces] is either empty (flat
     triangles) or 3 normal indices per triangle (smooth triangles; an index
     [< 0] makes that triangle flat). Indices must be in range (the caller
     checks them); normals are normalised here. Degenerate triangles (zero area) are dropped; see
     {!triangles}. [inside_vector] enables the inside test (POV-Ray's rule:
-    odd crossings along it). [par]: build the BVH in parallel with it
+    odd crossings along it). [uv]: the surface coordinates (2 floats
+    each) and 3 indices into them per triangle (in range: the caller
+    checks them), for {!uv_into}. [par]: build the BVH in parallel with it
     (see {!Bvh.build}; the same tree). *)
 
 val triangles : t -> int
@@ -46,6 +49,11 @@ val normal : t -> Hit.t -> Vec3.t
 
 val normal_into : t -> Hit.t -> Vec3.m -> unit
 (** {!normal} written into a vector the caller owns. *)
+
+val uv_into : t -> Hit.t -> Vec3.m -> unit
+(** [uv_into m h out]: POV-Ray's uv coordinates of the hit, [<u, v, 0>]:
+    the triangle's corners' interpolated by the hit's barycentric
+    weights; [<0, 0, 0>] for a mesh made without [uv] (as POV-Ray). *)
 
 val inside : t -> Vec3.t -> bool
 

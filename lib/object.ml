@@ -11,6 +11,7 @@ type t = {
   bounds : (Vec3.t * Vec3.t) option;
   index : index option;
   inv : Float.Array.t;
+  uv : bool;
 }
 
 and geom = Prim of Shape.t | Union of t array | Intersection of t array | Merge of t array
@@ -91,12 +92,14 @@ let identity_matrix = inverse_matrix Transform.identity
 
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?back ?(interior = Interior.default)
     ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) shape =
-  let xform, shape = fold xform shape in
+  let back = match back with Some b -> b | None -> texture in
+  let uv = Texture.uses_uv texture || Texture.uses_uv back in
+  (* a uv-mapped sphere keeps its transform: its uv is taken in its own frame *)
+  let xform, shape = if uv then (xform, shape) else fold xform shape in
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
   let inv = if Transform.is_identity xform then identity_matrix else inverse_matrix xform in
-  let back = match back with Some b -> b | None -> texture in
   { geom = Prim shape; xform; texture; back; interior; no_shadow; inverted; clip; bound = [||]; bounds = clip_box clip b;
-    index = None; inv }
+    index = None; inv; uv }
 
 let node geom clip b =
   {
@@ -112,6 +115,7 @@ let node geom clip b =
     bounds = clip_box clip b;
     index = None;
     inv = identity_matrix;
+    uv = false;
   }
 
 (* A BVH over the children of a large union. *)
@@ -449,6 +453,16 @@ let normal_into o (p : Vec3.m) h out =
       end;
       if o.inverted then Vec3.set out (-.out.mx) (-.out.my) (-.out.mz)
   | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
+
+let uv_into o (p : Vec3.m) h out =
+  match o.geom with
+  | Prim s ->
+      if Transform.is_identity o.xform then Shape.uv_into s p h out
+      else begin
+        Transform.inv_point_m o.xform p out;
+        Shape.uv_into s out h out
+      end
+  | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.uv_into: not a leaf"
 
 let normal o (p : Vec3.t) h =
   let pm = Vec3.m () and out = Vec3.m () in

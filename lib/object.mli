@@ -25,6 +25,7 @@ type t = private {
   bounds : (Vec3.t * Vec3.t) option;  (** world box; [None] when infinite *)
   index : index option;  (** a BVH over the children of a large union *)
   inv : Float.Array.t;  (** leaves: the inverse of [xform], 3x4 row-major, translation last *)
+  uv : bool;  (** leaves: the texture is uv-mapped somewhere (the shader sets the hit's uv) *)
 }
 
 and geom =
@@ -111,6 +112,11 @@ val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
 (** [normal_into leaf p h n]: {!normal} with the point and the normal
     written in place ({!normal} goes through it): nothing allocated, for
     every shape, transformed or not. *)
+
+val uv_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
+(** [uv_into leaf p h out]: the leaf's uv coordinates ({!Shape.uv_into}
+    in its own frame) at the world point [p] found by [h], into [out]
+    ([<u, v, 0>]), allocating nothing. *)
 
 val solid_box : t -> (Vec3.t * Vec3.t) option
 (** Where {!inside} can be true: [bounds] (the same value), except where a

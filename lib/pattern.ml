@@ -269,6 +269,13 @@ let set_normal (n : Vec3.m) =
   let m = Scratch.get normal_key in
   Vec3.set m n.mx n.my n.mz
 
+(* The surface's <u, v, 0> at the point being shaded, for uv-mapped
+   pigments, normals and textures: set by the shader, per domain *)
+let uv_key = Scratch.key (fun () -> Vec3.m ())
+
+let set_uv u v = Vec3.set (Scratch.get uv_key) u v 0.
+let uv_point () = Scratch.get uv_key
+
 (* mandel: z <- z^e + c from z = c = x + iy (julia: c fixed), until |z|^2 > 4 or the
    iterations run out; exponents 2, 3 and 4 written out, others summed
    by the binomial expansion (signed coefficients, as POV-Ray sums them) *)

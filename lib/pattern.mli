@@ -183,6 +183,15 @@ val set_normal : Vec3.m -> unit
     slope pattern; per domain, set by the shader before it evaluates a
     texture. *)
 
+val set_uv : float -> float -> unit
+(** [set_uv u v]: the surface coordinates of the point being shaded, per
+    domain, set by the shader (when the object's texture is uv-mapped)
+    before it evaluates a texture. *)
+
+val uv_point : unit -> Vec3.m
+(** The point [<u, v, 0>] last set by {!set_uv} on this domain (the
+    domain's own vector: read it, never write it). *)
+
 val eval_m : t -> Vec3.m -> work -> unit
 (** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]
     (the same arithmetic), allocating nothing. *)

@@ -12,6 +12,7 @@ type t =
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
   | Image_map of { image : image; xform : Transform.t }
   | Average of (float * t) array
+  | Uv of t
 
 let solid c = Solid c
 let black = Solid (Color.opaque Color.black)
@@ -52,6 +53,17 @@ let rec transform t p =
       Blocks { b with xform = Transform.then_ b.xform t; cells = Array.map (transform t) b.cells }
   | Image_map i -> Image_map { i with xform = Transform.then_ i.xform t }
   | Average es -> Average (Array.map (fun (w, q) -> (w, transform t q)) es)
+  (* POV-Ray: transformations written after a uv-mapped pigment (the
+     texture's, the object's) leave it as it is (measured) *)
+  | Uv _ -> p
+
+let uv = function Uv _ as p -> p | p -> Uv p
+
+let rec uses_uv = function
+  | Uv _ -> true
+  | Solid _ | Image_map _ -> false
+  | Map { entries = es; _ } | Average es -> Array.exists (fun (_, q) -> uses_uv q) es
+  | Blocks { cells; _ } -> Array.exists uses_uv cells
 
 let clear = Color.rgbft 0. 0. 0. 0. 1.
 
@@ -119,6 +131,7 @@ let rec opaque = function
   | Blocks { cells; _ } -> cells_opaque cells 0
   | Image_map _ -> false
   | Average es -> entries_opaque es 0
+  | Uv p -> opaque p
 
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
@@ -189,6 +202,7 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
         o.filter <- o.filter +. (k *. t.filter);
         o.transmit <- o.transmit +. (k *. t.transmit)
       done
+  | Uv q -> into_d w q (Pattern.uv_point ()) o d
 
 (* a solid colour, or a plain checker of solid colours, without the
    domain's work *)

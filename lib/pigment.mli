@@ -24,6 +24,10 @@ type t =
   | Average of (float * t) array
       (** POV-Ray's [average pigment_map]: the entries' colours weighted
           (weights summing to 1) *)
+  | Uv of t
+      (** POV-Ray's [uv_mapping]: the pigment taken at the surface's
+          [<u, v, 0>] (see {!Pattern.uv_point}) instead of the point;
+          transformations applied after it leave it unchanged *)
 
 val solid : Color.rgbft -> t
 val black : t
@@ -38,6 +42,13 @@ val default_entries : Pattern.kind -> (float * t) array
 val transform : Transform.t -> t -> t
 (** Move a pigment (and its sub-pigments) by a transform applied after
     its current one. Solid colours are unchanged. *)
+
+val uv : t -> t
+(** [Uv p] (a pigment already uv-mapped is kept). *)
+
+val uses_uv : t -> bool
+(** Some part of the pigment is uv-mapped: the shader must set the
+    surface's uv before evaluating it. *)
 
 val opaque : t -> bool
 (** Filter and transmit are 0 everywhere. *)

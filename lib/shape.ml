@@ -312,6 +312,44 @@ let normal s (p : Vec3.t) h =
   normal_into s pm h pm;
   Vec3.of_m pm
 
+(* POV-Ray 3.7's uv coordinates of a point of the surface (measured
+   against POV-Ray: its colours at gradient-mapped uv) *)
+let uv_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
+  let two_pi = 2. *. Float.pi in
+  let turn a = (if a < 0. then a +. two_pi else a) /. two_pi in
+  match s with
+  | Sphere { center; _ } ->
+      let x = p.mx -. center.x and y = p.my -. center.y and z = p.mz -. center.z in
+      let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      if l = 0. then Vec3.set out 0. 0. 0.
+      else
+        (* u: the longitude from +x towards +z; v: the latitude, 0 at -y *)
+        let v = 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi) in
+        let u = if (x *. x) +. (z *. z) > 1e-20 *. l *. l then turn (Float.atan2 z x) else 0. in
+        Vec3.set out u v 0.
+  | Box { lo; hi } ->
+      (* the faces unfolded into a cross: -x, -z, +x, +z around the
+         middle band v in [1/3, 2/3]; -y below and +y above the +z face *)
+      let nx = if hi.x > lo.x then (p.mx -. lo.x) /. (hi.x -. lo.x) else p.mx -. lo.x
+      and ny = if hi.y > lo.y then (p.my -. lo.y) /. (hi.y -. lo.y) else p.my -. lo.y
+      and nz = if hi.z > lo.z then (p.mz -. lo.z) /. (hi.z -. lo.z) else p.mz -. lo.z in
+      let third = 1. /. 3. in
+      (match int_of_float h.id with
+      | 0 -> Vec3.set out (nz /. 4.) (third +. (ny /. 3.)) 0.
+      | 1 -> Vec3.set out (0.75 -. (nz /. 4.)) (third +. (ny /. 3.)) 0.
+      | 2 -> Vec3.set out (0.25 +. (nx /. 4.)) (nz /. 3.) 0.
+      | 3 -> Vec3.set out (0.25 +. (nx /. 4.)) (1. -. (nz /. 3.)) 0.
+      | 4 -> Vec3.set out (1. -. (nx /. 4.)) (third +. (ny /. 3.)) 0.
+      | _ -> Vec3.set out (0.25 +. (nx /. 4.)) (third +. (ny /. 3.)) 0.)
+  | Torus { major; _ } ->
+      (* u around the axis from -x towards +z; v around the tube from
+         the inner equator, down through the outer one *)
+      let x = p.mx and y = p.my and z = p.mz in
+      let rho = Float.sqrt ((x *. x) +. (z *. z)) in
+      Vec3.set out (turn (Float.atan2 z (-.x))) (turn (Float.atan2 (-.y) (major -. rho))) 0.
+  | Mesh m -> Mesh.uv_into m h out
+  | _ -> Vec3.set out 0. 0. 0.
+
 let[@inline] inside_xyz s x y z =
   match s with
   | Sphere { center = c; radius } ->

@@ -76,6 +76,14 @@ val normal : t -> Vec3.t -> Hit.t -> Vec3.t
 (** Outward unit normal at a point on the surface, given the record of the
     hit that found it. *)
 
+val uv_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
+(** [uv_into s p h out]: POV-Ray's uv coordinates, [<u, v, 0>], of the
+    point [p] of the surface (shape space) found by the hit [h]: sphere
+    (longitude, latitude), box (its faces unfolded into a cross; the face
+    from [h.id]), torus (the angles around the axis and around the tube),
+    mesh (the corners' uvs interpolated). Other shapes: [<0, 0, 0>], as
+    POV-Ray gives shapes without uv coordinates. *)
+
 val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
 (** {!normal} written into a vector, nothing allocated ({!normal} goes
     through it); the point and the result may be the same vector. *)

@@ -5,7 +5,7 @@ type layer = {
   tmap : tmap option;
 }
 
-and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t }
+and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool }
 and t = layer list
 
 let layer pigment finish = { pigment; normal = None; finish; tmap = None }
@@ -14,7 +14,7 @@ let default = plain Pigment.black Finish.default
 
 let patterned pattern entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern; entries; xform = Transform.identity } }
+    tmap = Some { pattern; entries; xform = Transform.identity; uv = false } }
 
 type weights = { mutable k0 : float; mutable k1 : float }
 type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
@@ -30,6 +30,7 @@ let[@inline] one pk t =
 let work_key = Scratch.key Pattern.work
 
 let blend_m m (point : Vec3.m) pk =
+  let point = if m.uv then Pattern.uv_point () else point in
   let v = Pattern.eval_at m.pattern m.xform point (Scratch.get work_key) in
   let n = Array.length m.entries in
   if n = 0 then one pk default
@@ -55,8 +56,11 @@ let blend_m m (point : Vec3.m) pk =
 let blocks_light (t : t) =
   List.exists (fun l -> match l.tmap with None -> Pigment.opaque l.pigment | Some _ -> false) t
 
+(* POV-Ray: transformations written after a uv-mapped texture (the
+   object's) leave it as it is (measured) *)
 let rec transform_layer tr l =
-  {
+  if match l.tmap with Some m -> m.uv | None -> false then l
+  else {
     l with
     pigment = Pigment.transform tr l.pigment;
     normal = Option.map (Normal.transform tr) l.normal;
@@ -72,3 +76,20 @@ let rec transform_layer tr l =
   }
 
 and transform tr t = List.map (transform_layer tr) t
+
+let rec uv_layer l =
+  {
+    l with
+    pigment = Pigment.uv l.pigment;
+    tmap = Option.map (fun m -> { m with uv = true; entries = Array.map (fun (v, t) -> (v, uv t)) m.entries }) l.tmap;
+  }
+
+and uv t = List.map uv_layer t
+
+let rec uses_uv t =
+  List.exists
+    (fun l ->
+      match l.tmap with
+      | Some m -> m.uv || Array.exists (fun (_, t) -> uses_uv t) m.entries
+      | None -> Pigment.uses_uv l.pigment)
+    t

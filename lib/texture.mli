@@ -16,6 +16,9 @@ and tmap = {
   pattern : Pattern.t;
   entries : (float * t) array;  (** by value; for block patterns, one per cell *)
   xform : Transform.t;
+  uv : bool;
+      (** [uv_mapping]: the pattern taken at the surface's [<u, v, 0>]
+          (see {!Pattern.uv_point}); later transformations leave it *)
 }
 
 and t = layer list
@@ -43,6 +46,16 @@ val blend_m : tmap -> Vec3.m -> pick -> unit
 (** [blend_m m point pk]: the textures to shade at a world point with
     their weights (summing to 1), one or the two around the pattern's
     value, into [pk], allocating nothing. *)
+
+val uv : t -> t
+(** POV-Ray's [texture { uv_mapping ... }]: every pigment and texture
+    pattern of the texture taken at the surface's [<u, v, 0>]; the
+    transformations written after it leave it unchanged. (A uv-mapped
+    normal is not supported: the caller refuses one.) *)
+
+val uses_uv : t -> bool
+(** Some part of the texture is uv-mapped: the shader must set the
+    surface's uv before evaluating it. *)
 
 val blocks_light : t -> bool
 (** Some unpatterned layer is opaque everywhere: no light passes. *)

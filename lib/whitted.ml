@@ -48,12 +48,15 @@ type frame = {
   a : Direct.opacity;  (** the opacity of the layer being shaded *)
   pig : Pigment.out;  (** its pigment *)
   fade : Color.acc;  (** the fade of the medium the ray came through *)
+  uv : Vec3.m;  (** the hit's <u, v, 0>, when [has_uv] (the object's texture is uv-mapped) *)
+  mutable has_uv : bool;
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
-    k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1. }
+    k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
+    uv = Vec3.m (); has_uv = false }
 
 let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
@@ -185,6 +188,8 @@ let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : num
       let p = fr.p in
       Vec3.set p (o.mx +. (t *. d.mx)) (o.my +. (t *. d.my)) (o.mz +. (t *. d.mz));
       Scene.hit_normal_into s f h p fr.n0;
+      fr.has_uv <- obj.uv;
+      if obj.uv then Object.uv_into obj p h fr.uv;
       (* POV-Ray fades what comes through the far side of a medium, not
          the far surface's own shading *)
       let fade = fr.fade in
@@ -267,6 +272,9 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
 and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) = function
   | [] -> ()
   | (layer : Texture.layer) :: rest -> (
+      (* set again for each layer: rays traced for the layers above
+         shaded other surfaces *)
+      if fr.has_uv then Pattern.set_uv fr.uv.mx fr.uv.my;
       match layer.tmap with
       | Some m ->
           (* a patterned layer: blend the textures around the value *)

@@ -167,8 +167,9 @@ and build_mesh (o : Sdl.obj) (m : Sdl.mesh) =
   if Array.length m.faces / 3 > 1 lsl 23 then
     Diag.error o.loc "a mesh is limited to 2^23 (8388608) triangles, found %d" (Array.length m.faces / 3);
   let mm =
-    Mesh.make ~par:!par ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
-      ~inside_vector:m.inside_vector
+    Mesh.make ?uv:(if Array.length m.uv_faces = 0 then None else Some (m.uvs, m.uv_faces))
+      ~par:!par ~verts:m.verts ~normals:m.normals ~faces:m.faces ~normal_faces:m.normal_faces
+      ~inside_vector:m.inside_vector ()
   in
   let n = Array.length m.faces / 3 in
   let dropped = n - Mesh.triangles mm in
@@ -331,7 +332,8 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
         let m' = match Hashtbl.find_opt cache t with
           | Some m' -> m'
           | None ->
-              let m' = { m with faces = pick m.faces; normal_faces = pick m.normal_faces; face_textures = [||] } in
+              let m' = { m with faces = pick m.faces; normal_faces = pick m.normal_faces; uv_faces = pick m.uv_faces;
+                                face_textures = [||] } in
               Hashtbl.replace cache t m';
               m' in
         let texture = if t >= 0 && t < Array.length m.textures then Some m.textures.(t) else tex in

@@ -62,3 +62,10 @@ let slope vloc v range alt =
         (d, w, alo, ahi)
   in
   Pattern.Slope { dir; lo; hi; wdir; alt; alo; ahi; walt }
+
+(* texture { uv_mapping ... }: camlray maps pigments and texture patterns,
+   not normals *)
+let uv_texture l (t : Texture.t) =
+  if List.exists (fun (x : Texture.layer) -> x.normal <> None) t then
+    Diag.error l "uv_mapping of a texture with a normal is not supported by camlray (its pigment can be uv-mapped)";
+  Texture.uv t

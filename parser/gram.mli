@@ -36,3 +36,7 @@ val slope :
   ((Lexing.position * Lexing.position) * Value.t * (float * float) option) option -> Camlray.Pattern.kind
 (** POV-Ray's [slope { <dir> [, lo, hi] [altitude <dir> [, lo, hi]] }]:
     the directions normalised, their lengths the weights. *)
+
+val uv_texture : Loc.t -> Camlray.Texture.t -> Camlray.Texture.t
+(** [texture { uv_mapping ... }] ({!Camlray.Texture.uv}); a texture with a
+    normal is refused (located at the first location). *)

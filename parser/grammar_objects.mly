@@ -158,10 +158,10 @@ mesh_texture: TEXTURE LBRACE t = texture_body RBRACE { t }
 mesh2_block:
   | VERTEX_VECTORS LBRACE n = param vs = items RBRACE { Shapes.vertex_vectors (loc $loc) n vs }
   | NORMAL_VECTORS LBRACE n = param vs = items RBRACE { Shapes.normal_vectors (loc $loc) n vs }
-  | UV_VECTORS LBRACE param items RBRACE { Shapes.ignored_block }
+  | UV_VECTORS LBRACE n = param vs = items RBRACE { Shapes.uv_vectors (loc $loc) n vs }
   | FACE_INDICES LBRACE n = param vs = items RBRACE { Shapes.face_indices (loc $loc) n vs }
   | NORMAL_INDICES LBRACE n = param vs = items RBRACE { Shapes.normal_indices (loc $loc) n vs }
-  | UV_INDICES LBRACE param items RBRACE { Shapes.ignored_block }
+  | UV_INDICES LBRACE n = param vs = items RBRACE { Shapes.uv_indices (loc $loc) n vs }
   | TEXTURE_LIST LBRACE n = param ts = list(texture_list_item) RBRACE
       { Shapes.texture_list (loc $loc) n ts }
 
@@ -184,10 +184,16 @@ items_rev:
   | INTERIOR_TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) -> { o with inner = Some (match o.inner with Some layers -> t @ layers | None -> t) } }
   | TEXTURE LBRACE t = texture_body RBRACE
-      { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
+      { fun (o : Sdl.obj) ->
+          let t = if o.flags land Sdl.uv_mapping <> 0 then uv_texture (loc $loc(t)) t else t in
+          { o with texture = Some (match o.texture with
           | Some layers -> t @ layers | None -> t) } }
   | PIGMENT LBRACE p = pigment_edit RBRACE
-      { with_texture (fun l -> { l with Texture.pigment = p l.pigment }) }
+      { fun (o : Sdl.obj) ->
+          let uv = o.flags land Sdl.uv_mapping <> 0 in
+          with_texture (fun l -> { l with Texture.pigment = (let q = p l.pigment in if uv then Pigment.uv q else q) }) o }
+  (* the textures and pigments written after it are uv-mapped *)
+  | UV_MAPPING { fun (o : Sdl.obj) -> { o with flags = o.flags lor Sdl.uv_mapping } }
   | FINISH LBRACE f = finish_edit RBRACE
       { with_texture (fun l -> { l with Texture.finish = f l.finish }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }

@@ -3,7 +3,7 @@
 
 %token LIGHT_SOURCE SPOTLIGHT PARALLEL POINT_AT RADIUS FALLOFF TIGHTNESS
 %token FADE_DISTANCE FADE_POWER FADE_COLOR SHADOWLESS CAUSTICS
-%token TEXTURE PIGMENT FINISH INTERIOR
+%token TEXTURE PIGMENT FINISH INTERIOR UV_MAPPING
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
@@ -96,6 +96,9 @@
       { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
   | AVERAGE { Diag.error (loc $loc) "average (of textures) is not supported by camlray" }
+  (* every pattern of the texture taken at the surface's uv (transformations
+     written inside still apply, later ones do not: measured) *)
+  | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
   | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
@@ -164,6 +167,7 @@
    colour or an identifier replaces it. [pigment_body] is the one written
    over the default pigment. *)
 %public pigment_edit:
+  | UV_MAPPING e = pigment_edit { fun base -> Pigment.uv (e base) }
   | p = PIGMENT_ID ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (of_pigment p))) in fun _ -> p }
   | c = color_value ms = list(pigment_mod)
       { let p = Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) in
@@ -439,6 +443,7 @@
    move the perturbation already there; a pattern or an identifier
    replaces it. [normal_body] is the one written over none. *)
 %public normal_edit:
+  | UV_MAPPING { Diag.error (loc $loc) "uv_mapping in a normal is not supported by camlray" }
   (* the weighted mean of its normal_map's entries' normals *)
   | AVERAGE ms = list(normal_mod)
       { let p = Texdesc.apply ms (Texdesc.average ()) in

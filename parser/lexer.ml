@@ -47,7 +47,7 @@ let object_keywords =
     ("disc", DISC); ("triangle", TRIANGLE); ("smooth_triangle", SMOOTH_TRIANGLE); ("mesh", MESH);
     ("mesh2", MESH2); ("open", OPEN); ("sturm", STURM); ("vertex_vectors", VERTEX_VECTORS);
     ("normal_vectors", NORMAL_VECTORS); ("uv_vectors", UV_VECTORS); ("face_indices", FACE_INDICES);
-    ("normal_indices", NORMAL_INDICES); ("uv_indices", UV_INDICES); ("texture_list", TEXTURE_LIST);
+    ("normal_indices", NORMAL_INDICES); ("uv_indices", UV_INDICES); ("uv_mapping", UV_MAPPING); ("texture_list", TEXTURE_LIST);
     ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
     ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);

@@ -24,7 +24,7 @@ let matrix t =
 
 let pigment = function
   | Pigment.Solid c -> Printf.sprintf "pigment { %s }" (rgbft c)
-  | Pigment.Map _ | Pigment.Blocks _ | Pigment.Image_map _ | Pigment.Average _ ->
+  | Pigment.Map _ | Pigment.Blocks _ | Pigment.Image_map _ | Pigment.Average _ | Pigment.Uv _ ->
       invalid_arg "Printer: patterned pigments are not printed"
 
 let finish (f : Finish.t) =

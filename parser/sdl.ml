@@ -95,6 +95,8 @@ and mesh = {
   face_textures : int array;  (** empty, or an index into [textures] per triangle (-1: none) *)
   textures : Texture.t array;
   inside_vector : Vec3.t option;
+  uvs : Float.Array.t;
+  uv_faces : int array;
 }
 
 and light = {
@@ -175,3 +177,4 @@ let transform_obj t o =
 let no_image = 1
 let no_reflection = 2
 let double_illuminate = 4
+let uv_mapping = 8

@@ -100,6 +100,8 @@ and mesh = {
   face_textures : int array;  (** empty, or an index into [textures] per triangle (-1: none) *)
   textures : Texture.t array;
   inside_vector : Vec3.t option;
+  uvs : Float.Array.t;  (** 2 floats per uv_vectors entry (u, v) *)
+  uv_faces : int array;  (** empty (no uvs), or 3 uv indices per triangle *)
 }
 
 and light = {
@@ -186,4 +188,6 @@ val no_reflection : int
 (** The object is not seen by rays after a reflection. *)
 
 val double_illuminate : int
+val uv_mapping : int
+(** [uv_mapping] in an object: the textures and pigments written after it are uv-mapped. *)
 (** Lights behind the surface light it too. *)

@@ -381,7 +381,8 @@ let mesh _loc tris =
   in
   Sdl.Mesh
     { verts = fa_of_vecs (List.rev !verts); normals = fa_of_vecs normals; faces; normal_faces;
-      face_textures; textures = Array.of_list textures; inside_vector = None }
+      face_textures; textures = Array.of_list textures; inside_vector = None; uvs = Float.Array.create 0;
+      uv_faces = [||] }
 
 (* POV-Ray's bicubic_patch: the Bezier patch of 16 control points (four
    rows of four, u along a row, v down the rows), cut into 2^u_steps x
@@ -426,12 +427,16 @@ let bicubic_patch loc ~u_steps ~v_steps (pts : Vec3.t array) =
       if Vec3.length m > 0. then Vec3.normalize m else Vec3.zero
   in
   let verts = Float.Array.make (3 * (nu + 1) * (nv + 1)) 0. in
+  (* the patch's own parameters at the grid's points: its uv *)
+  let uvs = Float.Array.make (2 * (nu + 1) * (nv + 1)) 0. in
   let normals = Float.Array.make (3 * (nu + 1) * (nv + 1)) 0. in
   for i = 0 to nv do
     for j = 0 to nu do
       let u = float j /. float nu and v = float i /. float nv in
       let k = 3 * ((i * (nu + 1)) + j) in
       let p = sum (bern u) (bern v) and n = normal u v in
+      Float.Array.set uvs (2 * ((i * (nu + 1)) + j)) u;
+      Float.Array.set uvs ((2 * ((i * (nu + 1)) + j)) + 1) v;
       Float.Array.set verts k p.x; Float.Array.set verts (k + 1) p.y; Float.Array.set verts (k + 2) p.z;
       Float.Array.set normals k n.x; Float.Array.set normals (k + 1) n.y; Float.Array.set normals (k + 2) n.z
     done
@@ -456,12 +461,14 @@ let bicubic_patch loc ~u_steps ~v_steps (pts : Vec3.t array) =
   if Array.length faces = 0 then Diag.error loc "this bicubic_patch is flat to a line or a point";
   Sdl.Mesh
     { verts; normals; faces; normal_faces = Array.copy faces; face_textures = [||]; textures = [||];
-      inside_vector = None }
+      inside_vector = None; uvs; uv_faces = Array.copy faces }
 
 type mesh2_block =
   | Verts of Float.Array.t  (* x y z of each vertex *)
   | Normals of Float.Array.t
   | Faces of Loc.t * int array * int array  (* 3 indices per face; texture index per face *)
+  | Uvs of Float.Array.t  (* u v of each uv_vectors entry *)
+  | Uv_faces of Loc.t * int array  (* 3 uv indices per face *)
   | Nfaces of Loc.t * int array
   | Textures of Texture.t list
   | Ignored
@@ -653,15 +660,33 @@ let texture_list loc n ts =
 
 let ignored_block = Ignored
 
+let uv_vectors loc n b =
+  count loc "uv_vectors" n b.count;
+  let a = Float.Array.create (2 * b.count) in
+  iter_items b (fun i v ->
+      match v with
+      | Value.Vector [| u; w |] -> Float.Array.set a (2 * i) u; Float.Array.set a ((2 * i) + 1) w
+      | Value.Float u -> Float.Array.set a (2 * i) u; Float.Array.set a ((2 * i) + 1) u
+      | v -> Diag.error (item_loc b i) "expected a uv vector <u, v>, found %s" (Value.type_name v));
+  Uvs a
+
+let uv_indices loc n b =
+  count loc "uv_indices" n b.count;
+  let f = Array.make (3 * b.count) 0 in
+  iter_items b (fun i v -> index_triple b i v f (3 * i));
+  Uv_faces (loc, f)
+
 let mesh2 loc blocks =
   let verts = ref (Float.Array.create 0) and normals = ref (Float.Array.create 0) and faces = ref None
-  and nfaces = ref None and texs = ref [] in
+  and nfaces = ref None and texs = ref [] and uvs = ref None and uv_faces = ref None in
   List.iter (function
       | Verts v -> verts := v
       | Normals v -> normals := v
       | Faces (l, f, t) -> faces := Some (l, f, t)
       | Nfaces (l, f) -> nfaces := Some (l, f)
       | Textures t -> texs := t
+      | Uvs a -> uvs := Some a
+      | Uv_faces (l, f) -> uv_faces := Some (l, f)
       | Ignored -> ()) blocks;
   let nv = Float.Array.length !verts / 3 and nn = Float.Array.length !normals / 3 in
   let floc, faces, ftex =
@@ -688,9 +713,23 @@ let mesh2 loc blocks =
         && Float.Array.get normals ((3 * q) + 2) = 0. in
       if z 0 || z 1 || z 2 then -1 else k) normal_faces
   in
+  (* uv_vectors without uv_indices: the face indices pick them (POV-Ray) *)
+  let uvs, uv_faces =
+    match (!uvs, !uv_faces) with
+    | None, None -> (Float.Array.create 0, [||])
+    | None, Some (l, _) -> Diag.error l "uv_indices without uv_vectors"
+    | Some a, f ->
+        let nu = Float.Array.length a / 2 in
+        let l, f = match f with Some (l, f) -> (l, f) | None -> (floc, Array.copy faces) in
+        if Array.length f <> Array.length faces then
+          Diag.error l "uv_indices must have one entry per face (%d), found %d" (Array.length faces / 3)
+            (Array.length f / 3);
+        Array.iter (fun i -> if i < 0 || i >= nu then Diag.error l "uv index %d out of range (0..%d)" i (nu - 1)) f;
+        (a, f)
+  in
   Sdl.Mesh
     { verts = !verts; normals; faces; normal_faces; face_textures = ftex;
-      textures = Array.of_list !texs; inside_vector = None }
+      textures = Array.of_list !texs; inside_vector = None; uvs; uv_faces }
 
 let inside_vector loc v (o : Sdl.obj) =
   match o.shape with

@@ -138,6 +138,12 @@ val face_indices : Loc.t -> Value.t -> items -> mesh2_block
 val normal_indices : Loc.t -> Value.t -> items -> mesh2_block
 val texture_list : Loc.t -> Value.t -> Camlray.Texture.t list -> mesh2_block
 val ignored_block : mesh2_block
+
+val uv_vectors : Loc.t -> Value.t -> items -> mesh2_block
+(** [uv_vectors { n, <u, v>, ... }]: the surface coordinates uv_mapping reads. *)
+
+val uv_indices : Loc.t -> Value.t -> items -> mesh2_block
+(** [uv_indices { n, <a, b, c>, ... }]: one per face (else the face indices pick the uvs). *)
 (** [uv_vectors], [uv_indices]: read and ignored. *)
 
 val mesh2 : Loc.t -> mesh2_block list -> Sdl.shape

@@ -96,7 +96,7 @@ let gmesh_obj =
       let verts = Float.Array.init (9 * n) (fun _ -> c ()) in
       let m =
         Mesh.make ~par:None ~verts ~normals:(Float.Array.create 0) ~faces:(Array.init (3 * n) Fun.id)
-          ~normal_faces:[||] ~inside_vector:None
+          ~normal_faces:[||] ~inside_vector:None ()
       in
       Object.make ~xform:xf (Shape.Mesh m))
     (int_range 1 60) int gxform
