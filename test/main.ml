@@ -39,6 +39,7 @@ let () =
       Test_whitted.tests;
       Test_light.tests;
       Test_pattern.tests;
+      Test_uv.tests;
       Test_aa.tests;
       Test_gamma.tests;
       Test_compare.tests;
