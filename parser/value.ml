@@ -74,6 +74,19 @@ let arith loc op a b =
       Diag.error loc "operator %s does not apply to strings" op
 
 let binop loc op a b =
+  match (op, a, b) with
+  (* POV-Ray 3.7 compares two strings by their bytes (strcmp) *)
+  | ("<" | "<=" | ">" | ">=" | "=" | "!="), String x, String y ->
+      let c = String.compare x y in
+      bool
+        (match op with
+        | "<" -> c < 0
+        | "<=" -> c <= 0
+        | ">" -> c > 0
+        | ">=" -> c >= 0
+        | "=" -> c = 0
+        | _ -> c <> 0)
+  | _ ->
   match op with
   | "+" | "-" | "*" | "/" -> arith loc op a b
   | "<" -> bool (to_float loc a < to_float loc b)
