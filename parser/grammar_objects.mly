@@ -146,12 +146,18 @@ csg_item:
   | m = object_mod { `Mod m }
 
 mesh_triangle:
-  | TRIANGLE LBRACE a = param COMMA? b = param COMMA? c = param t = ioption(mesh_texture) RBRACE
-      { Shapes.mesh_triangle (loc $loc) [| v3 $loc(a) a; v3 $loc(b) b; v3 $loc(c) c |] t }
+  | TRIANGLE LBRACE a = param COMMA? b = param COMMA? c = param uv = ioption(triangle_uv)
+    t = ioption(mesh_texture) RBRACE
+      { Shapes.mesh_triangle (loc $loc) [| v3 $loc(a) a; v3 $loc(b) b; v3 $loc(c) c |] uv t }
   | SMOOTH_TRIANGLE LBRACE a = param COMMA? na = param COMMA? b = param COMMA? nb = param
-    COMMA? c = param COMMA? nc = param t = ioption(mesh_texture) RBRACE
+    COMMA? c = param COMMA? nc = param uv = ioption(triangle_uv) t = ioption(mesh_texture) RBRACE
       { Shapes.mesh_triangle (loc $loc)
-          [| v3 $loc(a) a; v3 $loc(na) na; v3 $loc(b) b; v3 $loc(nb) nb; v3 $loc(c) c; v3 $loc(nc) nc |] t }
+          [| v3 $loc(a) a; v3 $loc(na) na; v3 $loc(b) b; v3 $loc(nb) nb; v3 $loc(c) c; v3 $loc(nc) nc |] uv t }
+
+(* a mesh triangle's corners' uv: uv_vectors UA, UB, UC *)
+triangle_uv:
+  | UV_VECTORS a = param COMMA? b = param COMMA? c = param
+      { [ (loc $loc(a), a); (loc $loc(b), b); (loc $loc(c), c) ] }
 
 mesh_texture: TEXTURE LBRACE t = texture_body RBRACE { t }
 

@@ -336,9 +336,23 @@ let quadric (abc : Vec3.t) (def : Vec3.t) (ghi : Vec3.t) j =
   Sdl.Algebraic
     { order = 2; coef = [| abc.x; def.x; def.y; ghi.x; abc.y; def.z; ghi.y; abc.z; ghi.z; j |]; quadric = true }
 
-type mesh_tri = { p : Vec3.t array; tex : Texture.t option }
+type mesh_tri = { p : Vec3.t array; uv : float array option; tex : Texture.t option }
 
-let mesh_triangle _loc p tex = { p; tex }
+let mesh_triangle _loc p uv tex =
+  let uv =
+    Option.map
+      (fun l ->
+        Array.concat
+          (List.map
+             (fun (loc, v) ->
+               match v with
+               | Value.Vector [| u; w |] -> [| u; w |]
+               | Value.Float u -> [| u; u |]
+               | v -> Diag.error loc "expected a uv vector <u, v>, found %s" (Value.type_name v))
+             l))
+      uv
+  in
+  { p; uv; tex }
 
 let fa_of_vecs (vs : Vec3.t list) =
   let a = Float.Array.create (3 * List.length vs) in
@@ -372,6 +386,15 @@ let mesh _loc tris =
     Array.mapi (fun i k -> let b = 3 * (i / 3) in
       if normal_faces.(b) < 0 || normal_faces.(b + 1) < 0 || normal_faces.(b + 2) < 0 then -1 else k) normal_faces
   in
+  (* triangle { A, B, C uv_vectors UA, UB, UC }: the corners' uv, in
+     order (<0, 0> for a triangle without them) *)
+  let uvs, uv_faces =
+    if Array.for_all (fun t -> t.uv = None) tris then (Float.Array.create 0, [||])
+    else
+      ( Float.Array.of_list
+          (List.concat_map (fun t -> Array.to_list (Option.value t.uv ~default:(Array.make 6 0.))) (Array.to_list tris)),
+        Array.init (3 * n) Fun.id )
+  in
   let textures = List.filter_map (fun t -> t.tex) (Array.to_list tris) in
   let face_textures =
     if textures = [] then [||]
@@ -381,8 +404,7 @@ let mesh _loc tris =
   in
   Sdl.Mesh
     { verts = fa_of_vecs (List.rev !verts); normals = fa_of_vecs normals; faces; normal_faces;
-      face_textures; textures = Array.of_list textures; inside_vector = None; uvs = Float.Array.create 0;
-      uv_faces = [||] }
+      face_textures; textures = Array.of_list textures; inside_vector = None; uvs; uv_faces }
 
 (* POV-Ray's bicubic_patch: the Bezier patch of 16 control points (four
    rows of four, u along a row, v down the rows), cut into 2^u_steps x

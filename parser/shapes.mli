@@ -112,7 +112,9 @@ val quadric : Camlray.Vec3.t -> Camlray.Vec3.t -> Camlray.Vec3.t -> float -> Sdl
 type mesh_tri
 (** A triangle of a [mesh] block. *)
 
-val mesh_triangle : Loc.t -> Camlray.Vec3.t array -> Camlray.Texture.t option -> mesh_tri
+val mesh_triangle :
+  Loc.t -> Camlray.Vec3.t array -> (Loc.t * Value.t) list option -> Camlray.Texture.t option -> mesh_tri
+(** corners (3, or 6 with normals), the corners' uv_vectors, a texture *)
 (** 3 points (flat) or 6 vectors p1 n1 p2 n2 p3 n3 (smooth). *)
 
 val mesh : Loc.t -> mesh_tri list -> Sdl.shape
