@@ -332,7 +332,7 @@ and primary st =
   | Tok (Parser.FUNC name) ->
       advance st;
       builtin st t.loc name
-  | Ident "internal" ->
+  | Tok Parser.INTERNAL ->
       advance st;
       (match args st with
       | [ K n ] ->
@@ -516,7 +516,7 @@ let source st =
 
 (* POV-Ray's internal functions camlray has (functions.inc's f_sphere,
    f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph; f_noise3d
-   with camlray's noise), by the values POV-Ray's own
+   and f_ridged_mf with camlray's noise), by the values POV-Ray's own
    give (checked at 30 random points to 1e-12): the parameters after x, y,
    z, and the code from slot [b] *)
 let internal_fn n : (int * Fn.code) option =
@@ -566,11 +566,33 @@ let internal_fn n : (int * Fn.code) option =
       (* f_noise3d: camlray's own noise, in [0, 1] like POV-Ray's (whose
          noise camlray does not rebuild: the values differ) *)
       Some (0, fun s b -> set s (b + 3) (Camlray.Noise.noise3 (g s b 0) (g s b 1) (g s b 2)))
+  | 59 ->
+      (* f_ridged_mf: Musgrave's ridged multifractal (H, lacunarity,
+         octaves, offset, gain, noise generator), over camlray's signed
+         noise (POV-Ray's noise is its own, so its values differ) *)
+      Some (6, fun s b ->
+        let x = g s b 0 and y = g s b 1 and z = g s b 2 in
+        let h = g s b 3 and lac = g s b 4 and octaves = g s b 5 and offset = g s b 6 and gain = g s b 7 in
+        let ridge x y z =
+          let n = Float.abs ((2. *. Camlray.Noise.noise3 x y z) -. 1.) in
+          let r = offset -. n in
+          r *. r
+        in
+        let signal = ref (ridge x y z) in
+        let result = ref !signal and freq = ref 1. and i = ref 1 in
+        while float_of_int !i < octaves do
+          freq := !freq *. lac;
+          let weight = Float.min 1. (Float.max 0. (!signal *. gain)) in
+          signal := weight *. ridge (x *. !freq) (y *. !freq) (z *. !freq);
+          result := !result +. (!signal *. Float.pow !freq (-.h));
+          incr i
+        done;
+        set s (b + 9) !result)
   | _ -> None
 
 let compile ~resolve ~params toks =
   match Array.map (fun (t : token) -> t.raw) toks with
-  | [| Ident "internal"; Tok Parser.LPAREN; Tok (Parser.FLOAT n); Tok Parser.RPAREN; Eof |]
+  | [| Tok Parser.INTERNAL; Tok Parser.LPAREN; Tok (Parser.FLOAT n); Tok Parser.RPAREN; Eof |]
     when Float.is_integer n && internal_fn (int_of_float n) <> None && params = [ "x"; "y"; "z" ] ->
       let k, code = Option.get (internal_fn (int_of_float n)) in
       let params = Array.append [| "x"; "y"; "z" |] (Array.init k (Printf.sprintf "p%d")) in

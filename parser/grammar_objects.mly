@@ -7,7 +7,7 @@
 %token TEXTURE_LIST INSIDE_VECTOR
 %token UNION INTERSECTION DIFFERENCE MERGE CLIPPED_BY BOUNDED_BY
 %token BICUBIC_PATCH TYPE FLATNESS U_STEPS V_STEPS SOR INTERIOR_TEXTURE
-%token QUARTIC CUBIC POLY QUADRIC TEXT TTF BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
+%token QUARTIC CUBIC POLY QUADRIC TEXT TTF INTERNAL BLOB THRESHOLD STRENGTH COMPONENT HIERARCHY PRISM
 %token <string> SPLINE_KIND
 %token JULIA_FRACTAL QUATERNION HYPERCOMPLEX CUBE MAX_ITERATION PRECISION SLICE
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
@@ -63,6 +63,10 @@
       { Shapes.obj (loc $loc) (Shapes.quadric (v3 $loc(a) a) (v3 $loc(b) b) (v3 $loc(c) c) (fl $loc(j) j)) ms }
   | TEXT LBRACE TTF f = string_arg COMMA? s = string_arg COMMA? th = param COMMA? off = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.text (loc $loc(f)) f s (fl $loc(th) th) (v3 $loc(off) off)) ms }
+  (* POV-Ray's built-in fonts, the files Debian installs with its includes *)
+  | TEXT LBRACE INTERNAL n = param COMMA? s = string_arg COMMA? th = param COMMA? off = param ms = list(object_mod) RBRACE
+      { let f = Shapes.internal_font (loc $loc(n)) (Value.to_int (loc $loc(n)) n) in
+        Shapes.obj (loc $loc) (Shapes.text (loc $loc(n)) f s (fl $loc(th) th) (v3 $loc(off) off)) ms }
   | BLOB LBRACE items = list(blob_item) ms = list(object_mod) RBRACE
       { let threshold = List.fold_left (fun t i -> match i with `Threshold x -> x | `Comp _ -> t) 1. items in
         let comps = List.filter_map (function `Comp c -> Some c | `Threshold _ -> None) items in

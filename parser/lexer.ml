@@ -51,7 +51,7 @@ let object_keywords =
     ("inside_vector", INSIDE_VECTOR); ("union", UNION); ("intersection", INTERSECTION);
     ("difference", DIFFERENCE); ("merge", MERGE); ("clipped_by", CLIPPED_BY);
     ("bounded_by", BOUNDED_BY); ("quartic", QUARTIC); ("cubic", CUBIC); ("poly", POLY);
-    ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("blob", BLOB);
+    ("quadric", QUADRIC); ("text", TEXT); ("ttf", TTF); ("internal", INTERNAL); ("blob", BLOB);
     ("threshold", THRESHOLD); ("strength", STRENGTH); ("component", COMPONENT); ("hierarchy", HIERARCHY);
     ("prism", PRISM); ("lathe", LATHE); ("superellipsoid", SUPERELLIPSOID); ("polygon", POLYGON);
     ("bicubic_patch", BICUBIC_PATCH); ("sor", SOR); ("julia_fractal", JULIA_FRACTAL); ("quaternion", QUATERNION); ("hypercomplex", HYPERCOMPLEX); ("cube", CUBE);

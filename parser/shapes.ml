@@ -294,6 +294,16 @@ let julia loc c words =
   | _ -> ());
   Sdl.Julia { jc; hypercomplex = hyper <> None; cube; max_iteration; precision }
 
+(* text { internal N ... }: POV-Ray 3.7's four built-in fonts are the
+   TrueType files it installs beside its includes (rendered identical) *)
+let internal_font loc n =
+  match n with
+  | 0 -> "povlogo.ttf"
+  | 1 -> "timrom.ttf"
+  | 2 -> "cyrvetic.ttf"
+  | 3 -> "crystal.ttf"
+  | n -> Diag.error loc "POV-Ray's internal fonts are 0 to 3, found %d" n
+
 let superellipsoid loc v =
   match v with
   | Value.Vector [| e; n |] ->

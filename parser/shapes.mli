@@ -96,6 +96,9 @@ val julia :
 (** POV-Ray's [julia_fractal { <a, b, c, d> ... }] (quaternion sqr or cube;
     defaults max_iteration 20, precision 20; only the default slice). *)
 
+val internal_font : Loc.t -> int -> string
+(** the file of POV-Ray's built-in font N (0 to 3) *)
+
 val superellipsoid : Loc.t -> Value.t -> Sdl.shape
 (** [superellipsoid { <e, n> }]: both exponents positive. *)
 

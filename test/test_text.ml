@@ -91,4 +91,38 @@ let damaged =
             with Failure _ -> true)
       end)
 
-let tests = ("text", [ facts; o_ring ] @ List.map QCheck_alcotest.to_alcotest [ surface; damaged ])
+(* text { internal N ... } is POV-Ray's built-in font N: the same picture
+   as the font file Debian installs (POV-Ray 3.7's own renders of the two
+   are identical, pixel for pixel) *)
+let internal_fonts =
+  Alcotest.test_case "internal 0-3 are povlogo, timrom, cyrvetic, crystal" `Quick (fun () ->
+      if not (have_font ()) then print_endline "no POV-Ray fonts: skipped"
+      else begin
+        let scene font =
+          Printf.sprintf
+            "camera { location <1, 0.4, -3> look_at <1, 0.4, 0> }\nlight_source { <0, 2, -5> rgb 1 }\n\
+             text { %s \"AgS\" 0.2, 0 pigment { rgb 1 } }\n" font
+        in
+        let img s = Helpers.render_whitted ~width:48 ~height:24 (scene s) in
+        List.iteri
+          (fun n file ->
+            let a = img (Printf.sprintf "internal %d" n) and b = img (Printf.sprintf "ttf %S" file) in
+            let lit = ref 0 in
+            for y = 0 to 23 do
+              for x = 0 to 47 do
+                if Helpers.pixel a x y <> Helpers.pixel b x y then Alcotest.failf "internal %d differs from %s" n file;
+                let r, _, _ = Helpers.pixel a x y in
+                if r > 0.1 then incr lit
+              done
+            done;
+            if !lit < 20 then Alcotest.failf "internal %d: only %d lit pixels" n !lit)
+          [ "povlogo.ttf"; "timrom.ttf"; "cyrvetic.ttf"; "crystal.ttf" ];
+        match Camlray_lang.Parse.string "text { internal 4 \"A\" 1, 0 }" with
+        | Error d ->
+            let m = Camlray_lang.Diag.to_string d in
+            if not (String.length m > 0 && Str.string_match (Str.regexp ".*1:17: error: POV-Ray's internal fonts are 0 to 3") m 0)
+            then Alcotest.failf "unexpected message %s" m
+        | Ok _ -> Alcotest.fail "internal 4 accepted"
+      end)
+
+let tests = ("text", [ facts; o_ring; internal_fonts ] @ List.map QCheck_alcotest.to_alcotest [ surface; damaged ])
