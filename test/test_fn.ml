@@ -155,4 +155,20 @@ let tests =
               Scn.close ~eps:1e-15 "f_dents" (n ** 3.) (Scn.float ~prelude ("f_dents(" ^ p ^ ")"));
               if n < 0. || n > 1. then Alcotest.failf "f_noise3d(%s) = %g" p n)
             [ (0.3, 1.7, -2.2); (10.5, -3.25, 0.125); (0., 0., 0.); (-7.1, 4.4, 9.9) ]);
+      Alcotest.test_case "f_ridged_mf: the ridged multifractal over camlray's signed noise" `Quick (fun () ->
+          (* octave 1: (offset - |n|)^2; octave 2 adds that of the point
+             times the lacunarity, weighted by the first times the gain
+             (clamped to [0, 1]) and by lacunarity^-H *)
+          let prelude = "#include \"functions.inc\"" in
+          let sn x y z = (2. *. Camlray.Noise.noise3 x y z) -. 1. in
+          let ridge off x y z = let r = off -. Float.abs (sn x y z) in r *. r in
+          List.iter
+            (fun (x, y, z) ->
+              let p = Printf.sprintf "%g, %g, %g" x y z in
+              let one = ridge 0.7 x y z in
+              Scn.close ~eps:1e-12 "1 octave" one (Scn.float ~prelude ("f_ridged_mf(" ^ p ^ ", 0.1, 3.1, 1, 0.7, 0.8, 2)"));
+              let w = Float.min 1. (Float.max 0. (one *. 0.8)) in
+              let two = one +. (w *. ridge 0.7 (3.1 *. x) (3.1 *. y) (3.1 *. z) *. (3.1 ** -0.1)) in
+              Scn.close ~eps:1e-12 "2 octaves" two (Scn.float ~prelude ("f_ridged_mf(" ^ p ^ ", 0.1, 3.1, 2, 0.7, 0.8, 2)")))
+            [ (0.3, 1.7, -2.2); (10.5, -3.25, 0.125); (-7.1, 4.4, 9.9) ]);
     ] )
