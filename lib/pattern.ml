@@ -68,6 +68,10 @@ type warp_kind =
       jitter : Vec3.t;
     }
   | Turbulence of turbulence
+  | Planar_map of { orient : Vec3.t; offset : float }
+  | Spherical_map of { orient : Vec3.t; dist_exp : float }
+  | Cylindrical_map of { orient : Vec3.t; dist_exp : float }
+  | Toroidal_map of { orient : Vec3.t; dist_exp : float; major : float }
 
 type warp = { kind : warp_kind; into : Transform.t; back : Transform.t }
 
@@ -499,8 +503,61 @@ let hole_axis (p : Vec3.m) (c : Vec3.m) axis centre repeat radius jitter =
   end
   else set_component c axis centre
 
+(* The mapping warps' angle about y from +x, towards +z, in turns [0, 1)
+   (acos as POV-Ray does: its values agree to the last bit) *)
+let[@inline] turns x z len =
+  if z = 0. then if x > 0. then 0. else 0.5
+  else
+    let a = Float.acos (x /. len) in
+    (if z < 0. then two_pi -. a else a) /. two_pi
+
+(* [len^e], e = 0 leaving the coordinates unscaled *)
+let[@inline] dist_scale len e = if e = 0. then 1. else if e = 1. then len else Float.pow len e
+
+(* A mapping warp's result (u, v, w) turned to its orientation [o]: u, v,
+   w themselves along z; along x (z, v, -u); along y (u, -w, v); other
+   directions mix these by their components, as POV-Ray does *)
+let[@inline] orient_into (o : Vec3.t) (p : Vec3.m) u v w =
+  if o.x = 0. && o.y = 0. && o.z = 1. then Vec3.set p u v w
+  else
+    Vec3.set p
+      ((o.x *. w) +. (o.y *. u) +. (o.z *. u))
+      ((o.x *. v) -. (o.y *. w) +. (o.z *. v))
+      (-.(o.x *. u) +. (o.y *. v) +. (o.z *. w))
+
 let apply_warp (wp : warp) (p : Vec3.m) (d : Vec3.m) =
   match wp.kind with
+  | Planar_map { orient; offset } -> orient_into orient p p.mx p.my offset
+  | Spherical_map { orient; dist_exp } ->
+      let x = p.mx and y = p.my and z = p.mz in
+      let dist = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      (* the centre stays where it is *)
+      if dist > 0. then begin
+        let x = x /. dist and y = y /. dist and z = z /. dist in
+        let lat = 0.5 +. (Float.asin y /. Float.pi) in
+        let len = Float.sqrt ((x *. x) +. (z *. z)) in
+        let lon = if len = 0. then 0. else turns x z len in
+        let k = dist_scale dist dist_exp in
+        orient_into orient p (lon *. k) (lat *. k) dist
+      end
+  | Cylindrical_map { orient; dist_exp } ->
+      let x = p.mx and z = p.mz in
+      let len = Float.sqrt ((x *. x) +. (z *. z)) in
+      if len > 0. then orient_into orient p (turns x z len *. dist_scale len dist_exp) p.my len
+  | Toroidal_map { orient; dist_exp; major } ->
+      let x = p.mx and y = p.my and z = p.mz in
+      let len = Float.sqrt ((x *. x) +. (z *. z)) in
+      if len > 0. then begin
+        let around = turns x z len in
+        (* the angle about the tube, from the inside of the ring, turning
+           from -y towards +y through the outside *)
+        let r = len -. major in
+        let tube = Float.sqrt ((r *. r) +. (y *. y)) in
+        let a = if tube = 0. then 0. else Float.acos (-.r /. tube) in
+        let a = if y > 0. then two_pi -. a else a in
+        let k = dist_scale tube dist_exp in
+        orient_into orient p (around *. k) (a /. two_pi *. k) tube
+      end
   | Turbulence tb -> add_turbulence tb p d
   | Repeat { axis; width; offset; flip } ->
       let x = component p axis in

@@ -121,6 +121,21 @@ type warp_kind =
           when [inverse]) by [strength (1 - d / radius)^falloff] of their
           distance [d] *)
   | Turbulence of turbulence  (** [warp { turbulence ... }] *)
+  | Planar_map of { orient : Vec3.t; offset : float }
+      (** [planar [orient, offset]]: (x, y, offset), turned so that the
+          mapping's z goes along [orient] (a unit vector; z by default) *)
+  | Spherical_map of { orient : Vec3.t; dist_exp : float }
+      (** [spherical]: (longitude, latitude, distance) from the origin,
+          longitude about y from +x towards +z in turns [0, 1), latitude
+          from the south pole in half-turns [0, 1]; the two angles scaled
+          by distance^[dist_exp] (not at 0), then turned as for [Planar_map] *)
+  | Cylindrical_map of { orient : Vec3.t; dist_exp : float }
+      (** [cylindrical]: (turns about y, y, distance from y), the turns
+          scaled by distance^[dist_exp] (not at 0), turned as above *)
+  | Toroidal_map of { orient : Vec3.t; dist_exp : float; major : float }
+      (** [toroidal]: (turns about y, turns about the ring of radius
+          [major], distance from that ring), both angles scaled by
+          distance^[dist_exp] (not at 0), turned as above *)
 
 type warp = { kind : warp_kind; into : Transform.t; back : Transform.t }
 (** [back]: the transformations written before the warp; [into] their

@@ -69,3 +69,17 @@ let uv_texture l (t : Texture.t) =
   if List.exists (fun (x : Texture.layer) -> x.normal <> None) t then
     Diag.error l "uv_mapping of a texture with a normal is not supported by camlray (its pigment can be uv-mapped)";
   Texture.uv t
+
+(* a mapping warp's orientation: normalised, as POV-Ray does *)
+let orientation l v =
+  let d = v3 l v in
+  let len = Vec3.length d in
+  if len = 0. then Diag.error (loc l) "a mapping warp's orientation cannot be <0,0,0>";
+  Vec3.scale (1. /. len) d
+
+(* the orientation and dist_exp a mapping warp's options leave (the last
+   of each; z and 0 by default) *)
+let mapping ms =
+  List.fold_left
+    (fun (o, e) m -> match m with `Orient v -> (v, e) | `Dist_exp x -> (o, x) | _ -> (o, e))
+    (Vec3.unit_z, 0.) ms

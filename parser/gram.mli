@@ -40,3 +40,10 @@ val slope :
 val uv_texture : Loc.t -> Camlray.Texture.t -> Camlray.Texture.t
 (** [texture { uv_mapping ... }] ({!Camlray.Texture.uv}); a texture with a
     normal is refused (located at the first location). *)
+
+val orientation : Lexing.position * Lexing.position -> Value.t -> Camlray.Vec3.t
+(** A mapping warp's orientation, normalised (an error if zero). *)
+
+val mapping : [> `Orient of Camlray.Vec3.t | `Dist_exp of float ] list -> Camlray.Vec3.t * float
+(** The orientation and [dist_exp] a mapping warp's options leave: the
+    last of each, z and 0 by default. *)

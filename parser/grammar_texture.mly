@@ -8,6 +8,7 @@
 %token REFLECTION FRESNEL EXPONENT REFLECTION_EXPONENT CONSERVE_ENERGY IOR IRID THICKNESS
 %token AREA_LIGHT ADAPTIVE JITTER CIRCULAR ORIENT AREA_ILLUMINATION LOOKS_LIKE SKY_SPHERE NORMAL
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
+%token TOROIDAL ORIENTATION DIST_EXP MAJOR_RADIUS
 %token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
 %token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
@@ -710,9 +711,26 @@ warp_body:
           ms }
   | TURBULENCE e = param ms = list(warp_turb_item)
       { Pattern.Turbulence (List.fold_left (fun t m -> m t) (Pattern.default_turbulence (v3 $loc(e) e)) ms) }
-  | PLANAR { Diag.error (loc $loc) "planar (a mapping warp) is not supported by camlray" }
-  | SPHERICAL { Diag.error (loc $loc) "spherical (a mapping warp) is not supported by camlray" }
-  | CYLINDRICAL { Diag.error (loc $loc) "cylindrical (a mapping warp) is not supported by camlray" }
+  | PLANAR { Pattern.Planar_map { orient = Vec3.unit_z; offset = 0. } }
+  | PLANAR v = param COMMA d = param
+      { Pattern.Planar_map { orient = orientation $loc(v) v; offset = fl $loc(d) d } }
+  | SPHERICAL ms = list(mapping_item)
+      { let orient, dist_exp = mapping ms in Pattern.Spherical_map { orient; dist_exp } }
+  | CYLINDRICAL ms = list(mapping_item)
+      { let orient, dist_exp = mapping ms in Pattern.Cylindrical_map { orient; dist_exp } }
+  | TOROIDAL ms = list(toroidal_item)
+      { let orient, dist_exp = mapping ms in
+        let major = List.fold_left (fun r m -> match m with `Major x -> x | _ -> r) 1. ms in
+        Pattern.Toroidal_map { orient; dist_exp; major } }
+
+(* the mapping warps' options *)
+mapping_item:
+  | ORIENTATION e = param { `Orient (orientation $loc(e) e) }
+  | DIST_EXP e = param { `Dist_exp (fl $loc(e) e) }
+
+toroidal_item:
+  | m = mapping_item { m }
+  | MAJOR_RADIUS e = param { `Major (fl $loc(e) e) }
 
 repeat_item:
   | OFFSET e = param { `Offset (v3 $loc(e) e) }

@@ -327,6 +327,84 @@ let warps () =
   Scn.check_message "sphere { 0, 1 pigment { bozo warp { repeat <1, 1, 0> } } }" "repeat needs a vector along one axis";
   Scn.check_message "sphere { 0, 1 pigment { bozo warp { black_hole 0, 0 } } }" "a black hole's radius must be positive"
 
+(* the mapping warps: the points POV-Ray 3.7 gives, read back as for
+   [warps] (its 5 printed decimals and single precision: 2e-5) *)
+let mapping_warps () =
+  let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6);
+              (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ] in
+  List.iter
+    (fun (w, expected) ->
+      let coord c =
+        let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { function { (%s + 50) / 100 } %s } }" c w) in
+        match s.objects.(0).texture with
+        | { pigment = Pigment.Map { pattern; xform; _ }; _ } :: _ -> (pattern, xform)
+        | _ -> Alcotest.fail "no pattern"
+      in
+      let px = coord "x" and py = coord "y" and pz = coord "z" in
+      List.iter2
+        (fun (x, y, z) (ex, ey, ez) ->
+          let at (p, xf) = (Pattern.value p (Transform.inv_point xf (Vec3.make x y z)) *. 100.) -. 50. in
+          Scn.check_floats ~eps:2e-5 (Printf.sprintf "%s at (%g, %g, %g)" w x y z) [ ex; ey; ez ] [ at px; at py; at pz ])
+        pts expected)
+    [
+      ("warp { spherical }",
+       [ (0.05121, 0.67951, 0.37417); (0.98136, 0.59046, 1.78326); (0.01828, 0.45173, 2.64764); (0.38435, 0.74945, 1.7); (0.53043, 0.51008, 3.15911); (0., 0.77444, 0.92195); (0., 0.64759, 0.1118); (0.05121, 0.18696, 2.28254) ]);
+      ("warp { spherical orientation y dist_exp 0.5 }",
+       [ (0.03132, -0.37417, 0.41565); (1.3105, -1.78325, 0.7885); (0.02975, -2.64764, 0.73503); (0.50113, -1.7, 0.97716); (0.94278, -3.15911, 0.9066); (0., -0.92196, 0.7436); (0., -0.1118, 0.21653); (0.07737, -2.28254, 0.28247) ]);
+      ("warp { cylindrical }",
+       [ (0.05121, 0.2, 0.31623); (0.98136, 0.5, 1.71173); (0.01828, -0.4, 2.61725); (0.38435, 1.2, 1.20416); (0.53043, 0.1, 3.15753); (0., 0.7, 0.6); (0., 0.05, 0.1); (0.05121, -1.9, 1.26491) ]);
+      ("warp { cylindrical orientation x dist_exp 1 }",
+       [ (0.31623, 0.2, -0.01619); (1.71173, 0.5, -1.67982); (2.61725, -0.4, -0.04785); (1.20416, 1.2, -0.46282); (3.15753, 0.1, -1.67484); (0.6, 0.7, 0.); (0.1, 0.05, 0.); (1.26491, -1.9, -0.06477) ]);
+      ("warp { toroidal major_radius 0.5 }",
+       [ (0.05121, 0.86827, 0.27161); (0.98136, 0.56229, 1.31083); (0.01828, 0.47028, 2.1547); (0.38435, 0.66555, 1.39135); (0.53043, 0.50598, 2.65941); (0., 0.72742, 0.70711); (0., 0.98021, 0.40311); (0.05121, 0.31092, 2.04819) ]);
+      ("warp { toroidal orientation y dist_exp 2 major_radius 1.5 }",
+       [ (0.07381, -1.20055, 1.40292); (0.28933, -0.54298, 0.20233); (0.02575, -1.1867, 0.62707); (0.58711, -1.23593, 1.20441); (1.46261, -1.66054, 1.40515); (0., -1.14017, 1.16323); (0., -1.40089, 1.95135); (0.18769, -1.91449, 0.8445) ]);
+      ("warp { planar }",
+       [ (0.3, 0.2, 0.); (1.7, 0.5, 0.); (2.6, -0.4, 0.); (-0.9, 1.2, 0.); (-3.1, 0.1, 0.); (0.6, 0.7, 0.); (0.1, 0.05, 0.); (1.2, -1.9, 0.) ]);
+      ("warp { planar y, 0.25 }",
+       [ (0.3, -0.25, 0.2); (1.7, -0.25, 0.5); (2.6, -0.25, -0.4); (-0.9, -0.25, 1.2); (-3.1, -0.25, 0.1); (0.6, -0.25, 0.7); (0.1, -0.25, 0.05); (1.2, -0.25, -1.9) ]);
+      ("warp { planar <1,1.,0>, 0.25 }",
+       [ (0.38891, -0.03535, -0.07071); (1.37886, 0.17678, -0.84853); (2.01526, -0.45962, -2.12132); (-0.45962, 0.67175, 1.48492); (-2.01525, -0.10607, 2.26274); (0.60104, 0.3182, 0.07071); (0.24748, -0.14142, -0.03535); (1.02531, -1.52028, -2.19203) ]);
+      ("scale 2 warp { cylindrical orientation z }",
+       [ (0.02561, 0.1, 0.15811); (0.49068, 0.25, 0.85586); (0.00914, -0.2, 1.30863); (0.19218, 0.6, 0.60208); (0.26522, 0.05, 1.57877); (0., 0.35, 0.3); (0., 0.025, 0.05); (0.02561, -0.95, 0.63245) ]);
+      ("warp { spherical orientation -x }",
+       [ (-0.37417, -0.67951, 0.05121); (-1.78325, -0.59046, 0.98136); (-2.64764, -0.45173, 0.01828); (-1.7, -0.74945, 0.38435); (-3.15911, -0.51008, 0.53043); (-0.92196, -0.77444, 0.); (-0.1118, -0.64758, 0.); (-2.28254, -0.18696, 0.05121) ]);
+    ];
+  (* the centre (and the axis, for the cylinder and torus) stays put *)
+  let centre w =
+    let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { function { (y + 50) / 100 } %s } }" w) in
+    match s.objects.(0).texture with
+    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> (Pattern.value pattern (Vec3.make 0. 0.3 0.) *. 100.) -. 50.
+    | _ -> Alcotest.fail "no pattern"
+  in
+  Scn.close ~eps:2e-5 "cylindrical on its axis" 0.3 (centre "warp { cylindrical }");
+  Scn.close ~eps:2e-5 "toroidal on its axis" 0.3 (centre "warp { toroidal }");
+  (* evaluated with nothing allocated *)
+  let s =
+    Scn.compile
+      "sphere { 0, 1 pigment { gradient x warp { planar <1,1,0>, 0.2 } warp { spherical orientation y dist_exp 0.5 } \
+       warp { cylindrical orientation x dist_exp 1.5 } warp { toroidal major_radius 0.5 } } }"
+  in
+  let pattern =
+    match s.objects.(0).texture with
+    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
+    | _ -> Alcotest.fail "no pattern"
+  in
+  let q = Vec3.m () and w = Pattern.work () in
+  Vec3.set q 0.3 0.2 0.1;
+  Pattern.eval_m pattern q w;
+  let before = Gc.minor_words () in
+  for i = 1 to 1000 do
+    Vec3.set q (0.001 *. float_of_int i) 0.2 (-0.3);
+    Pattern.eval_m pattern q w
+  done;
+  let words = Gc.minor_words () -. before in
+  if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations through mapping warps" words;
+  Scn.check_message "sphere { 0, 1 pigment { bozo warp { spherical orientation 0 } } }"
+    "a mapping warp's orientation cannot be <0,0,0>";
+  Scn.check_message "sphere { 0, 1 pigment { bozo warp { planar <0,0,0>, 1 } } }"
+    "a mapping warp's orientation cannot be <0,0,0>"
+
 (* julia: the values POV-Ray prints through pigment functions *)
 let julia () =
   let pts = [ (0.1, 0.2, 0.); (0.5, -0.3, 0.); (-0.7, 0.1, 0.4); (1.2, 0.9, 0.); (0., 0., 0.); (-0.2, -0.6, 0.) ] in
@@ -533,6 +611,7 @@ let tests =
       Alcotest.test_case "boxed, cylindrical, pigment_pattern; gradient, onion, radial wraps = POV-Ray" `Quick shape_patterns;
       Alcotest.test_case "slope_map heights" `Quick slope_map;
       Alcotest.test_case "warps: repeat, black_hole, order with transforms = POV-Ray" `Quick warps;
+      Alcotest.test_case "mapping warps: planar, spherical, cylindrical, toroidal = POV-Ray" `Quick mapping_warps;
       Alcotest.test_case "julia = POV-Ray" `Quick julia;
       Alcotest.test_case "magnet = POV-Ray, allocation-free" `Quick magnet;
       Alcotest.test_case "slope = POV-Ray" `Quick slope;
