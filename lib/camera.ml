@@ -20,6 +20,7 @@ type t = {
   focal_distance : float;
   blur_samples : int;
   frame : frame;
+  normal : Normal.t option;
 }
 
 let deg = Float.pi /. 180.
@@ -47,6 +48,7 @@ let default =
     focal_distance = 1.;
     blur_samples = 0;
     frame = frame ~right ~up ~direction ~angle_deg:90. ~v_angle_deg:180.;
+    normal = None;
   }
 
 let[@inline] pixel_x ~width px = (px /. float_of_int width) -. 0.5
@@ -179,7 +181,7 @@ let wide_into c (o : Vec3.m) d =
       Vec3.normalize_m d;
       true
 
-let[@inline] ray_into c sx sy o d =
+let[@inline] base_into c sx sy o d =
   match c.projection with
   | Perspective ->
       Vec3.load o c.location;
@@ -194,6 +196,65 @@ let[@inline] ray_into c sx sy o d =
       Vec3.set o sx sy 0.;
       wide_into c o d
 
+(* the polar angle of (x0, y0) as POV-Ray takes it for a camera normal,
+   into [p]'s x, the radius into its y *)
+let[@inline] polar (p : Vec3.m) x0 y0 =
+  let rad = Float.sqrt ((x0 *. x0) +. (y0 *. y0)) in
+  p.mx <- (if rad = 0. then 0. else if x0 < 0. then Float.pi -. Float.asin (y0 /. rad) else Float.asin (y0 /. rad));
+  p.my <- rad;
+  p.mz <- 0.
+
+(* POV-Ray's point for a camera normal: the screen coordinates as each
+   projection has turned them when the ray is made (perspective and
+   orthographic: sx, sy; the others: their angles), at z = 0; the screen
+   point comes in [p]'s x and y (floats passed to a call not inlined would
+   be boxed) *)
+let normal_point c (p : Vec3.m) =
+  let k = c.frame and sx = p.mx and sy = p.my in
+  match c.projection with
+  | Perspective | Orthographic -> Vec3.set p sx sy 0.
+  | Cylinder n ->
+      if n = 1 || n = 3 then Vec3.set p (sx *. k.angle) (sy *. k.lu) 0.
+      else Vec3.set p (sx *. k.lr) (sy *. k.angle) 0.
+  | Fisheye ->
+      polar p (2. *. sx *. k.lr) (2. *. sy *. k.lu);
+      p.my <- p.my *. k.angle /. 2.
+  | Omnimax ->
+      let aspect = k.lr /. k.lu and wide = 1.283458 in
+      let x0 = 2. *. sx *. if aspect > wide then aspect /. wide else 1. in
+      let y0 = if aspect > 1. then (((2. *. sy) -. 1.) /. Float.min aspect wide) +. 1. else 2. *. sy /. aspect in
+      polar p x0 y0;
+      let rad = p.my in
+      let r3 = rad *. rad *. rad in
+      p.my <- (1.411269 *. rad) -. (0.09439 *. r3) +. (0.25674 *. r3 *. rad *. rad)
+  | Ultra_wide_angle -> Vec3.set p (sx *. k.angle) (sy *. k.angle *. k.lu /. k.lr) 0.
+  | Panoramic -> Vec3.set p ((0.5 -. sx) *. Float.pi) (Float.pi *. sy) 0.
+  | Spherical -> Vec3.set p (sx *. k.angle) (sy *. k.v_angle) 0.
+
+(* the camera normal's scratch: its point and the turned direction *)
+type bend = { bp : Vec3.m; bd : Vec3.m }
+
+let bend_key = Scratch.key (fun () -> { bp = Vec3.m (); bd = Vec3.m () })
+
+(* [d] (a unit vector) turned by the camera's normal as a surface normal
+   is, at the screen point's [normal_point], as POV-Ray does after the
+   ray (and its focal blur) is made *)
+let bend nm c (b : bend) (d : Vec3.m) =
+  normal_point c b.bp;
+  Normal.perturb_m nm b.bp d b.bd;
+  Vec3.set d b.bd.mx b.bd.my b.bd.mz;
+  Vec3.normalize_m d
+
+let[@inline] ray_into c sx sy o d =
+  let seen = base_into c sx sy o d in
+  (match c.normal with
+  | Some nm ->
+      let b = Scratch.get bend_key in
+      Vec3.set b.bp sx sy 0.;
+      bend nm c b d
+  | None -> ());
+  seen
+
 let sees c sx sy = ray_into c sx sy (Vec3.m ()) (Vec3.m ())
 
 let origin c sx sy =
@@ -207,8 +268,8 @@ let origin c sx sy =
 
 let dir c sx sy =
   match c.projection with
-  | Perspective -> span c c.direction sx sy true
-  | Orthographic -> Vec3.normalize c.direction
+  | Perspective when c.normal = None -> span c c.direction sx sy true
+  | Orthographic when c.normal = None -> Vec3.normalize c.direction
   | _ ->
       let o = Vec3.m () and d = Vec3.m () in
       ignore (ray_into c sx sy o d);
@@ -217,7 +278,7 @@ let dir c sx sy =
 let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
 let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
-  let seen = ray_into c sx sy o d in
+  let seen = base_into c sx sy o d in
   if seen && c.aperture > 0. then begin
     (* POV-Ray's lens has radius aperture/4 (checked by rendering a point
        light out of focus); uniform polar mapping of the square onto it *)
@@ -236,6 +297,12 @@ let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
     Vec3.set d (fx -. o.mx) (fy -. o.my) (fz -. o.mz);
     Vec3.normalize_m d
   end;
+  (match c.normal with
+  | Some nm ->
+      let b = Scratch.get bend_key in
+      Vec3.set b.bp sx sy 0.;
+      bend nm c b d
+  | None -> ());
   seen
 
 let ray_lens c sx sy u v =

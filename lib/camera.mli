@@ -37,6 +37,11 @@ type t = {
   focal_distance : float;  (** along the view direction, for depth of field *)
   blur_samples : int;
   frame : frame;  (** what the non-planar projections use *)
+  normal : Normal.t option;
+      (** POV-Ray's [normal { }] in a camera: each ray's direction turned
+          as a surface normal would be, by the normal's pattern at the
+          screen point (x0, y0, 0), x0 and y0 being [sx], [sy] for the
+          planar projections and the angles the others make of them *)
 }
 
 val frame : right:Vec3.t -> up:Vec3.t -> direction:Vec3.t -> angle_deg:float -> v_angle_deg:float -> frame

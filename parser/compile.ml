@@ -102,6 +102,7 @@ let camera items =
          | None, _ -> (90., 45.)
        in
        Camera.frame ~right ~up ~direction ~angle_deg:h ~v_angle_deg:v);
+    normal = find (function Sdl.Cam_normal n -> Some n | _ -> None);
   }
 
 (* where lights with media_attenuation on stand (see [scene_]) *)

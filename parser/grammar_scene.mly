@@ -73,7 +73,9 @@ fog_item:
         if n < 1 || n > 4 then
           Diag.error (loc $loc(e)) "cylinder camera type %d: the types are 1 to 4" n;
         Sdl.Cylinder_camera n }
-  | NORMAL { Diag.error (loc $loc) "normal in a camera is not supported by camlray" }
+  (* turns the rays' directions as a surface normal is turned *)
+  | NORMAL LBRACE n = normal_body RBRACE
+      { match n with Some n -> Sdl.Cam_normal n | None -> Sdl.Cam_transform Transform.identity }
 
 %public global_item:
   | ASSUMED_GAMMA e = param { Sdl.Assumed_gamma (fl $loc(e) e) }

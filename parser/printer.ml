@@ -276,6 +276,8 @@ let camera_item = function
   | Sdl.Focal_point v -> "focal_point " ^ vec v
   | Sdl.Blur_samples n -> Printf.sprintf "blur_samples %d" n
   | Sdl.Cam_transform t -> matrix t
+  (* normals are not printed (as in textures) *)
+  | Sdl.Cam_normal _ -> "/* normal { } */"
 
 let global = function
   | Sdl.Assumed_gamma g -> "assumed_gamma " ^ float g

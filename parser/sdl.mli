@@ -150,6 +150,7 @@ type camera_item =
   | Focal_point of Vec3.t
   | Blur_samples of int
   | Cam_transform of Transform.t
+  | Cam_normal of Normal.t  (** [normal { }]: perturbs the rays' directions *)
 
 type global =
   | Assumed_gamma of float

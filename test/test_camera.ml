@@ -117,6 +117,41 @@ let units =
         Alcotest.(check bool) "top seen" true (Camera.sees c 0. 0.5);
         Alcotest.(check bool) "bottom unseen" false (Camera.sees c 0. (-0.5));
         Alcotest.(check bool) "outside the circle" false (Camera.sees c 0.45 0.45));
+    Alcotest.test_case "normal: rays turned as POV-Ray turns them" `Quick (fun () ->
+        (* POV-Ray 3.7's directions at the pixel centres of a 4x3 image,
+           read back as colours of a sphere around the eye (16-bit PPM,
+           file gamma 1: 3e-5 a step) *)
+        let c = cam "camera { location 0 direction z right 4/3*x up y normal { gradient <1,0.5,0> 0.8 scale 0.3 } }" in
+        let expected =
+          [| (-0.50753, 0.23055, 0.83023); (-0.25017, 0.26314, 0.93176); (0.06230, 0.27126, 0.96048);
+             (0.35073, 0.25057, 0.90234); (-0.51815, -0.04555, 0.85409); (-0.25441, -0.04671, 0.96597);
+             (0.06969, -0.04817, 0.99640); (0.36559, -0.04958, 0.92944); (-0.49502, -0.31499, 0.80978);
+             (-0.24309, -0.34792, 0.90546); (0.06041, -0.35802, 0.93176); (0.34060, -0.34084, 0.87625) |]
+        in
+        Array.iteri
+          (fun i (ex, ey, ez) ->
+            let sx, sy = Camera.pixel_coords ~width:4 ~height:3 (float_of_int (i mod 4) +. 0.5) (float_of_int (i / 4) +. 0.5) in
+            let d = (Camera.ray c sx sy).dir in
+            Scn.check_floats ~eps:1e-4 (Printf.sprintf "pixel %d" i) [ ex; ey; ez ] [ d.x; d.y; d.z ])
+          expected;
+        (* in place, through the lens path too, and nothing allocated *)
+        let o = Vec3.m () and d = Vec3.m () in
+        ignore (Camera.ray_into c 0.1 0.2 o d);
+        let r = Camera.ray c 0.1 0.2 in
+        Scn.check_floats ~eps:1e-15 "ray_into = ray" [ r.dir.x; r.dir.y; r.dir.z ] [ d.mx; d.my; d.mz ];
+        ignore (Camera.lens_into c 0.1 0.2 0.5 0.5 o d);
+        Scn.check_floats ~eps:1e-15 "lens_into, no aperture" [ r.dir.x; r.dir.y; r.dir.z ] [ d.mx; d.my; d.mz ];
+        let before = Gc.minor_words () in
+        for i = 1 to 1000 do
+          ignore (Camera.ray_into c (float_of_int i *. 1e-3 -. 0.5) 0.2 o d)
+        done;
+        let words = Gc.minor_words () -. before in
+        if words > 0. then Alcotest.failf "%.0f words for 1000 camera rays with a normal" words;
+        (* a flat normal leaves the rays alone *)
+        let flat = cam "camera { location 0 direction z right 4/3*x up y normal { gradient x 0 } }" in
+        let plain = cam "camera { location 0 direction z right 4/3*x up y }" in
+        let a = (Camera.ray flat 0.3 (-0.2)).dir and b = (Camera.ray plain 0.3 (-0.2)).dir in
+        Scn.check_floats ~eps:1e-12 "amount 0" [ b.x; b.y; b.z ] [ a.x; a.y; a.z ]);
     Alcotest.test_case "every camera type: rays written in place equal Camera.ray" `Quick (fun () ->
         let o = Vec3.m () and d = Vec3.m () in
         List.iter
