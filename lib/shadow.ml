@@ -28,8 +28,8 @@ let rec filter_into (tex : Texture.t) (q : Vec3.m) (out : Color.acc) d =
             Texture.blend_m m q pk;
             Color.acc_set f 0. 0. 0.;
             for j = 0 to pk.n - 1 do
-              filter_into (if j = 0 then pk.t0 else pk.t1) q sub (d + 1);
-              let k = if j = 0 then pk.w.k0 else pk.w.k1 in
+              filter_into (Texture.entry m pk j) q sub (d + 1);
+              let k = Texture.weight m pk j in
               Color.acc_set f (f.ar +. (k *. sub.ar)) (f.ag +. (k *. sub.ag)) (f.ab +. (k *. sub.ab))
             done;
             Color.acc_set out (out.ar *. f.ar) (out.ag *. f.ag) (out.ab *. f.ab)

@@ -5,7 +5,7 @@ type layer = {
   tmap : tmap option;
 }
 
-and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool }
+and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool; average : bool }
 and t = layer list
 
 let layer pigment finish = { pigment; normal = None; finish; tmap = None }
@@ -14,7 +14,11 @@ let default = plain Pigment.black Finish.default
 
 let patterned pattern entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern; entries; xform = Transform.identity; uv = false } }
+    tmap = Some { pattern; entries; xform = Transform.identity; uv = false; average = false } }
+
+let averaged entries =
+  { (layer Pigment.black Finish.default) with
+    tmap = Some { pattern = Pattern.make Pattern.Bozo; entries; xform = Transform.identity; uv = false; average = true } }
 
 type weights = { mutable k0 : float; mutable k1 : float }
 type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
@@ -30,6 +34,8 @@ let[@inline] one pk t =
 let work_key = Scratch.key Pattern.work
 
 let blend_m m (point : Vec3.m) pk =
+  if m.average then pk.n <- Array.length m.entries
+  else
   let point = if m.uv then Pattern.uv_point () else point in
   let v = Pattern.eval_at m.pattern m.xform point (Scratch.get work_key) in
   let n = Array.length m.entries in
@@ -51,6 +57,11 @@ let blend_m m (point : Vec3.m) pk =
         pk.w.k1 <- k
       end
   end
+
+let[@inline] entry m pk j = if m.average then snd (Array.unsafe_get m.entries j) else if j = 0 then pk.t0 else pk.t1
+
+let[@inline] weight m pk j =
+  if m.average then fst (Array.unsafe_get m.entries j) else if j = 0 then pk.w.k0 else pk.w.k1
 
 (* A layer that lets no light through makes the whole texture block it. *)
 let blocks_light (t : t) =

@@ -13,12 +13,17 @@ type layer = {
 }
 
 and tmap = {
-  pattern : Pattern.t;
-  entries : (float * t) array;  (** by value; for block patterns, one per cell *)
+  pattern : Pattern.t;  (** unused by an average *)
+  entries : (float * t) array;
+      (** by value; for block patterns, one per cell; for an average, the
+          weights (summing to 1) *)
   xform : Transform.t;
   uv : bool;
       (** [uv_mapping]: the pattern taken at the surface's [<u, v, 0>]
           (see {!Pattern.uv_point}); later transformations leave it *)
+  average : bool;
+      (** POV-Ray's [texture { average texture_map { [w T] ... } }]: every
+          entry shaded, the results weighted *)
 }
 
 and t = layer list
@@ -34,6 +39,10 @@ val patterned : Pattern.t -> (float * t) array -> layer
 (** A texture_map layer (entries sorted by value), or a block pattern's
     textures (entry [i] for cell [i]). *)
 
+val averaged : (float * t) array -> layer
+(** An average of textures, the weights summing to 1 (the texture_map
+    may also come later, by a modifier). *)
+
 type weights = { mutable k0 : float; mutable k1 : float }
 
 type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
@@ -45,7 +54,14 @@ val pick : unit -> pick
 val blend_m : tmap -> Vec3.m -> pick -> unit
 (** [blend_m m point pk]: the textures to shade at a world point with
     their weights (summing to 1), one or the two around the pattern's
-    value, into [pk], allocating nothing. *)
+    value, into [pk], allocating nothing; for an average, only their
+    number (read them with {!entry} and {!weight}). *)
+
+val entry : tmap -> pick -> int -> t
+val weight : tmap -> pick -> int -> float
+(** [entry m pk j] and [weight m pk j], [j < pk.n]: after {!blend_m}, the
+    [j]th texture to shade and its weight (an average's entries, else the
+    pick's). *)
 
 val uv : t -> t
 (** POV-Ray's [texture { uv_mapping ... }]: every pigment and texture

@@ -287,8 +287,8 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
             let c' = lv.c1 and f' = lv.f1 in
             Color.acc_set c' 0. 0. 0.;
             Color.acc_set f' 1. 1. 1.;
-            layers s d level media fr refl c' f' (if j = 0 then pk.t0 else pk.t1);
-            let k = if j = 0 then pk.w.k0 else pk.w.k1 in
+            layers s d level media fr refl c' f' (Texture.entry m pk j);
+            let k = Texture.weight m pk j in
             Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
             Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab))
           done;

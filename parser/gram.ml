@@ -83,3 +83,13 @@ let mapping ms =
   List.fold_left
     (fun (o, e) m -> match m with `Orient v -> (v, e) | `Dist_exp x -> (o, x) | _ -> (o, e))
     (Vec3.unit_z, 0.) ms
+
+(* an average texture: its weights over their sum, as POV-Ray divides *)
+let average_texture l (layer : Texture.layer) =
+  match layer.tmap with
+  | Some m ->
+      if Array.length m.entries = 0 then Diag.error l "an average texture needs a texture_map";
+      let total = Array.fold_left (fun s (w, _) -> s +. w) 0. m.entries in
+      if total = 0. then Diag.error l "the weights of an average's texture_map must not sum to 0";
+      { layer with tmap = Some { m with entries = Array.map (fun (w, t) -> (w /. total, t)) m.entries } }
+  | None -> layer

@@ -47,3 +47,7 @@ val orientation : Lexing.position * Lexing.position -> Value.t -> Camlray.Vec3.t
 val mapping : [> `Orient of Camlray.Vec3.t | `Dist_exp of float ] list -> Camlray.Vec3.t * float
 (** The orientation and [dist_exp] a mapping warp's options leave: the
     last of each, z and 0 by default. *)
+
+val average_texture : Loc.t -> Camlray.Texture.layer -> Camlray.Texture.layer
+(** [texture { average texture_map { ... } }] checked (a map, weights not
+    summing to 0) and its weights divided by their sum. *)

@@ -96,7 +96,10 @@
   | t = ioption(TEXTURE_ID) ms = list(texture_mod)
       { let base = match t with Some (_ :: _ as l) -> l | _ -> [ Defaults.texture () ] in
         List.fold_left (fun l f -> f l) base ms }
-  | AVERAGE { Diag.error (loc $loc) "average (of textures) is not supported by camlray" }
+  (* the weighted mean of its texture_map's textures, each shaded *)
+  | AVERAGE ms = list(tmap_mod)
+      { let l = List.fold_left (fun l f -> f l) (Texture.averaged [||]) ms in
+        [ Gram.average_texture (loc $loc) l ] }
   (* every pattern of the texture taken at the surface's uv (transformations
      written inside still apply, later ones do not: measured) *)
   | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
@@ -129,6 +132,8 @@
 
 %public texture_map_entry:
   | LBRACKET v = param COMMA? t = texture_body RBRACKET { (fl $loc(v) v, t) }
+  (* without a value: an average's weight of 1 (other patterns read 1 too) *)
+  | LBRACKET t = texture_body RBRACKET { (1., t) }
 
 %public texture_mod:
   | PIGMENT LBRACE p = pigment_edit RBRACE { top_layer (fun l -> { l with pigment = p l.pigment }) }

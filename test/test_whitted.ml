@@ -268,6 +268,34 @@ let normal_maps () =
   gray "checker's second cell (+x)" 0.88658 (at ~x:1.5 "<1,0,2>" cells);
   gray "checker's second cell (+y)" 0.94569 (at ~x:1.5 "<0,1,2>" cells)
 
+(* texture { average texture_map { ... } }: each entry shaded (its own
+   normal and finish), the colours weighted over the weights' sum; the
+   values POV-Ray 3.7 renders (16-bit, file gamma 1) *)
+let average_textures () =
+  let at light t =
+    pixel
+      (Printf.sprintf
+         "camera { orthographic location <0.5,0.25,-10> look_at <0.5,0.25,0> right 0.001*x up 0.001*y }\n\
+          light_source { <0,0,0>, rgb 1 parallel point_at %s }\n\
+          plane { z, 0 texture { %s } }\n"
+         light t)
+  in
+  color ~eps:1e-4 "weights 1 and 3, finishes their own" (0.25, 0., 0.37501)
+    (at "<0,0,1>"
+       "average texture_map { [1 pigment { rgb <1,0,0> } finish { ambient 0 diffuse 1 }] \
+        [3 pigment { rgb <0,0,1> } finish { ambient 0 diffuse 0.5 }] }");
+  gray ~eps:1e-4 "a normal in one entry, no weights (1 each)" 0.92006
+    (at "<1,0,2>"
+       "average texture_map { [pigment { rgb 1 } normal { gradient x, 1 } finish { ambient 0 diffuse 1 }] \
+        [pigment { rgb 1 } finish { ambient 0 diffuse 1 }] }");
+  color ~eps:1e-4 "weights 2 and 1, ambient, the average scaled" (0.50799, 0.40307, 0.29815)
+    (at "<1,0,2>"
+       "average texture_map { [2 pigment { rgb <1,0.5,0> } normal { gradient x, 1 } finish { ambient 0.1 diffuse 0.7 }] \
+        [1 pigment { rgb <0,0.5,1> } finish { ambient 0 diffuse 1 }] } scale 2");
+  Scn.check_message "sphere { 0, 1 texture { average } }" "an average texture needs a texture_map";
+  Scn.check_message "sphere { 0, 1 texture { average texture_map { [1 pigment { rgb 1 }] [-1 pigment { rgb 0 }] } } }"
+    "the weights of an average's texture_map must not sum to 0"
+
 let mirrors = "plane { z, 1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n\
                plane { z, -1 pigment { rgb 1 } finish { ambient 0.1 diffuse 0 reflection 0.5 } }\n"
 
@@ -418,6 +446,8 @@ let allocation_textures () =
        sphere { <-2.2, 0.6, -1>, 0.6 texture { gradient x texture_map {\n\
          [0 pigment { rgbf <1, 0.2, 0.2, 0.7> }] [1 pigment { rgb <0.2, 0.2, 1> } finish { phong 1 }] } scale 0.4 } }\n\
        sphere { <1, 0.5, -2.8>, 0.5 pigment { checker rgbf <1, 1, 1, 0.8>, rgbt <0.5, 1, 0.5, 0.6> scale 0.3 } }\n\
+       sphere { <2.6, 1.4, 1>, 0.7 texture { average texture_map {\n\
+         [1 pigment { rgbf <1, 0.5, 0.2, 0.5> } normal { leopard 0.4 scale 0.1 }] [2 pigment { rgb <0.2, 0.6, 0.3> } finish { phong 1 }] } } }\n\
        sphere { <-0.3, 0.45, -3.2>, 0.45 pigment { rgbf <0.9, 0.9, 1, 0.9> }\n\
          interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }")
   in
@@ -426,6 +456,9 @@ let allocation_textures () =
   let plain = words "camera { location <0, 2, -6> look_at <0, 0.8, 0> }" in
   if plain > 0.1 then
     Alcotest.failf "%.2f words per camera ray with patterns, normals, texture maps and a sky (at most 0.1)" plain;
+  (* a camera normal turning every ray *)
+  let bent = words "camera { location <0, 2, -6> look_at <0, 0.8, 0> normal { onion 0.3 scale 0.2 } }" in
+  if bent > 0.1 then Alcotest.failf "%.2f words per camera ray with a camera normal (at most 0.1)" bent;
   (* and through a lens: 8 rays a pixel *)
   let blur =
     words "camera { location <0, 2, -6> look_at <0, 0.8, 0> aperture 0.4 focal_point <0, 1, 0> blur_samples 8 }"
@@ -669,6 +702,7 @@ let tests =
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
       Alcotest.test_case "normal_map and average as POV-Ray" `Quick normal_maps;
+      Alcotest.test_case "average of textures as POV-Ray" `Quick average_textures;
       Alcotest.test_case "trace levels" `Quick levels;
       Alcotest.test_case "layers and sky" `Quick layers;
       Alcotest.test_case "declared maps, layered textures, materials" `Quick declared;
