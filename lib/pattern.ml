@@ -53,6 +53,51 @@ type kind =
   | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
   | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
   | Function of fn
+  | Density_file of density
+
+and density = { nx : int; ny : int; nz : int; voxels : Float.Array.t; interpolate : int }
+
+(* df3: three big-endian 16-bit sizes, then the voxels (x fastest), of 1,
+   2 or 4 big-endian bytes each, as fractions of their largest value *)
+let read_df3 path =
+  let d = In_channel.with_open_bin path In_channel.input_all in
+  if String.length d < 6 then failwith "not a df3 file (shorter than its 6-byte header)";
+  let u16 i = (Char.code d.[i] lsl 8) lor Char.code d.[i + 1] in
+  let nx = u16 0 and ny = u16 2 and nz = u16 4 in
+  let n = nx * ny * nz in
+  if n = 0 then failwith (Printf.sprintf "a df3 file of %dx%dx%d voxels" nx ny nz);
+  let bytes = String.length d - 6 in
+  let size = bytes / n in
+  if bytes mod n <> 0 || not (size = 1 || size = 2 || size = 4) then
+    failwith (Printf.sprintf "%d bytes of data for %dx%dx%d voxels (1, 2 or 4 bytes each)" bytes nx ny nz);
+  let top = Float.pow 2. (float_of_int (8 * size)) -. 1. in
+  let voxels =
+    Float.Array.init n (fun k ->
+        let v = ref 0 in
+        for b = 0 to size - 1 do
+          v := (!v lsl 8) lor Char.code d.[6 + (k * size) + b]
+        done;
+        float_of_int !v /. top)
+  in
+  { nx; ny; nz; voxels; interpolate = 0 }
+
+(* POV-Ray's density_file: the unit cube [0, 1)^3, 0 outside; the voxel
+   at floor(p * n), or trilinear between it and the next one up (which
+   wraps to the first at the far faces) *)
+let density3 d x y z =
+  if not (x >= 0. && x < 1. && y >= 0. && y < 1. && z >= 0. && z < 1.) then 0.
+  else
+    let v i j k = Float.Array.unsafe_get d.voxels ((((k * d.ny) + j) * d.nx) + i) in
+    let fx = x *. float_of_int d.nx and fy = y *. float_of_int d.ny and fz = z *. float_of_int d.nz in
+    let i1 = Int.min (d.nx - 1) (int_of_float fx) and j1 = Int.min (d.ny - 1) (int_of_float fy)
+    and k1 = Int.min (d.nz - 1) (int_of_float fz) in
+    if d.interpolate = 0 then v i1 j1 k1
+    else
+      let i2 = (i1 + 1) mod d.nx and j2 = (j1 + 1) mod d.ny and k2 = (k1 + 1) mod d.nz in
+      let tx = fx -. Float.of_int i1 and ty = fy -. Float.of_int j1 and tz = fz -. Float.of_int k1 in
+      let sx = 1. -. tx and sy = 1. -. ty and sz = 1. -. tz in
+      (((((v i1 j1 k1 *. sx) +. (v i2 j1 k1 *. tx)) *. sy) +. (((v i1 j2 k1 *. sx) +. (v i2 j2 k1 *. tx)) *. ty)) *. sz)
+      +. (((((v i1 j1 k2 *. sx) +. (v i2 j1 k2 *. tx)) *. sy) +. (((v i1 j2 k2 *. sx) +. (v i2 j2 k2 *. tx)) *. ty)) *. tz)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 
@@ -443,6 +488,7 @@ let raw_m kind (w : work) =
       let s = (0.5 +. (Float.asin c /. Float.pi) -. lo) /. (hi -. lo) in
       let a = if walt = 0. then 0. else (((x *. alt.x) +. (y *. alt.y) +. (z *. alt.z)) -. alo) /. (ahi -. alo) in
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
+  | Density_file d -> w.r.v <- density3 d x y z
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)

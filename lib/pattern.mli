@@ -93,6 +93,18 @@ type kind =
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes
           them mod 1) *)
+  | Density_file of density
+      (** [density_file df3 "file" [interpolate 0|1]]: the voxels of the
+          unit cube [[0, 1)^3], 0 outside *)
+
+and density = { nx : int; ny : int; nz : int; voxels : Float.Array.t; interpolate : int }
+(** A df3 file's voxels, x fastest, each in [[0, 1]]; interpolation 0
+    (the voxel's value) or 1 (trilinear, wrapping at the far faces, as
+    POV-Ray 3.7 does). *)
+
+val read_df3 : string -> density
+(** The voxels of a df3 file (big-endian sizes x, y, z, then 1, 2 or 4
+    byte values), interpolation 0. Raises [Failure] on a damaged file. *)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 

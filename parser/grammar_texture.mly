@@ -10,7 +10,7 @@
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
 %token TOROIDAL ORIENTATION DIST_EXP MAJOR_RADIUS
 %token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
-%token BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
+%token DENSITY_FILE DF3 BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
 %token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
@@ -243,6 +243,7 @@
   | MARBLE { Pattern.Marble }
   | LEOPARD { Pattern.Leopard }
   | BOZO { Pattern.Bozo }
+  | DENSITY_FILE DF3 f = string_arg { Texdesc.density_file (loc $loc(f)) f }
   | SPOTTED { Pattern.Spotted }
   | BUMPS { Pattern.Bumps }
   | DENTS { Pattern.Dents }
@@ -394,6 +395,18 @@
   | POLY_WAVE e = ioption(param)
       { let x = match e with Some e -> fl $loc(e) e | None -> 1. in
         Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
+  (* density_file's interpolation: 0 none, 1 trilinear (2, tricubic,
+     read as 1 with a warning) *)
+  | INTERPOLATE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        let n =
+          if n = 2 then (
+            Diag.warning (loc $loc) "density_file's tricubic interpolation (2) is drawn trilinear (1) by camlray";
+            1)
+          else if n = 0 || n = 1 then n
+          else Diag.error (loc $loc(e)) "density_file's interpolate is 0, 1 or 2, found %d" n
+        in
+        Texdesc.kind_mod (function Pattern.Density_file d -> Pattern.Density_file { d with interpolate = n } | k -> k) }
   | BRICK_SIZE e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with size = v } | k -> k) }
   | METRIC e = param { let x = fl $loc(e) e in

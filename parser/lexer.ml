@@ -87,7 +87,7 @@ let texture_keywords =
     ("mortar", MORTAR); ("gradient", GRADIENT); ("radial", RADIAL); ("onion", ONION); ("planar", PLANAR); ("spherical", SPHERICAL); ("boxed", BOXED); ("pigment_pattern", PIGMENT_PATTERN); ("slope_map", SLOPE_MAP); ("warp", WARP); ("repeat", REPEAT); ("black_hole", BLACK_HOLE);
     ("offset", OFFSET); ("flip", FLIP); ("quick_color", QUICK_COLOR); ("julia", JULIA); ("bump_size", BUMP_SIZE); ("tiles", TILES); ("tile2", TILE2); ("slope", SLOPE); ("altitude", ALTITUDE); ("metric", METRIC); ("form", FORM); ("solid", SOLID); ("magnet", MAGNET); ("quick_colour", QUICK_COLOR); ("cylindrical", CYLINDRICAL);
     ("toroidal", TOROIDAL); ("orientation", ORIENTATION); ("dist_exp", DIST_EXP); ("major_radius", MAJOR_RADIUS);
-    ("bozo", BOZO); ("spotted", SPOTTED); ("granite", GRANITE); ("marble", MARBLE);
+    ("bozo", BOZO); ("density_file", DENSITY_FILE); ("df3", DF3); ("spotted", SPOTTED); ("granite", GRANITE); ("marble", MARBLE);
     ("wood", WOOD); ("agate", AGATE); ("agate_turb", AGATE_TURB); ("leopard", LEOPARD);
     ("ripples", RIPPLES); ("waves", WAVES); ("wrinkles", WRINKLES); ("bumps", BUMPS);
     ("dents", DENTS); ("turbulence", TURBULENCE); ("octaves", OCTAVES); ("omega", OMEGA);

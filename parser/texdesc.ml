@@ -62,6 +62,18 @@ let turbulence v =
 let map es p = { p with entries = Some (Array.of_list es) }
 let kind_mod f = pattern_mod (fun pt -> { pt with kind = f pt.kind })
 
+(* density_file df3 "file": found beside the scene or on the include
+   path, as POV-Ray looks for it *)
+let density_file loc file =
+  let path =
+    match Defaults.find_file loc file with
+    | Some p -> p
+    | None -> Diag.error loc "cannot find density_file %s (looked in the scene's folder and the include path)" file
+  in
+  match Pattern.read_df3 path with
+  | d -> Pattern.Density_file d
+  | exception (Failure e | Sys_error e) -> Diag.error loc "cannot read density_file %s: %s" file e
+
 let pigment p =
   match p.pattern with
   | None when p.average ->

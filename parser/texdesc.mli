@@ -44,6 +44,10 @@ val turbulence : Vec3.t -> modifier
 val map : (float * Pigment.t) list -> modifier
 val kind_mod : (Pattern.kind -> Pattern.kind) -> modifier
 
+val density_file : Loc.t -> string -> Pattern.kind
+(** [density_file df3 "file"]: the file read (located errors when it is
+    missing or damaged). *)
+
 val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
 (** Read a PNG into a planar image map (values decoded from sRGB when
     [gamma_decode]). Errors are located. *)

@@ -587,6 +587,30 @@ let function_normal () =
       Scn.close ~eps:1e-12 "value" 0.6 (Pattern.value n.pattern (Vec3.make (-0.6) 0. 0.))
   | _ -> Alcotest.fail "no normal"
 
+(* density_file: POV-Ray 3.7's values for its spiral.df3 (50x50x5 voxels
+   of one byte), read by #debug of pigment functions, without
+   interpolation and trilinear; then the located errors *)
+let density_file () =
+  if not (Sys.file_exists "/usr/share/povray-3.7/include/spiral.df3") then print_endline "no spiral.df3: skipped"
+  else begin
+    let prelude i =
+      Printf.sprintf
+        "#declare P = function { pigment { density_file df3 \"spiral.df3\" interpolate %d color_map { [0 rgb 0] [1 rgb 1] } } }" i
+    in
+    List.iter
+      (fun ((x, y, z), none, trilinear) ->
+        let at i = Scn.float ~prelude:(prelude i) (Printf.sprintf "P(%g, %g, %g).red" x y z) in
+        Scn.close ~eps:1e-7 "no interpolation" none (at 0);
+        Scn.close ~eps:1e-7 "trilinear" trilinear (at 1))
+      [ ((0.5, 0.5, 0.5), 1.0, 0.96666664); ((0.3, 0.61, 0.52), 0., 0.);
+        ((0.5, 0.5, 0.995), 0.66274512, 0.66274512); ((0.45, 0.55, 0.505), 0.84705883, 0.80068630);
+        (* outside the unit cube *)
+        ((1.2, 0.5, 0.5), 0., 0.); ((0.5, -0.01, 0.5), 0., 0.) ];
+    Scn.check_message "sphere { 0, 1 pigment { density_file df3 \"nowhere.df3\" } }" "cannot find density_file nowhere.df3";
+    Scn.check_message "sphere { 0, 1 pigment { density_file df3 \"spiral.df3\" interpolate 3 } }"
+      "interpolate is 0, 1 or 2, found 3"
+  end
+
 let function_errors () =
   Scn.check_message "sphere { 0, 1 pigment { function (a, b) { a + b } } }" "takes 3 parameters";
   Scn.check_message "#declare T = function { transform { scale 2 } }\nsphere { 0, 1 pigment { function { T(x, y, z) } } }"
@@ -622,4 +646,5 @@ let tests =
       Alcotest.test_case "function patterns allocate nothing" `Quick function_allocation;
       Alcotest.test_case "function normals" `Quick function_normal;
       Alcotest.test_case "function pattern errors" `Quick function_errors;
+      Alcotest.test_case "density_file: POV-Ray's values, errors" `Quick density_file;
     ] )
