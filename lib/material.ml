@@ -115,12 +115,24 @@ let lobe m i =
   | 4 -> Glossy { color = col m.c; exponent = e }
   | _ -> Glass { eta = e; reflect = col m.c2; transmit = col m.c }
 
+(* A texture_map's or block pattern's texture at [p]: the entry the
+   pattern picks, the heavier of two blended ones (nested maps in turn) *)
+let pick_key = Scratch.key Texture.pick
+
+let rec resolve (tex : Texture.t) (p : Vec3.m) =
+  match tex with
+  | { Texture.tmap = Some m; _ } :: _ ->
+      let pk = Scratch.get pick_key in
+      Texture.blend_m m p pk;
+      resolve (if pk.n = 2 && pk.w.k1 > pk.w.k0 then pk.t1 else pk.t0) p
+  | _ -> tex
+
 (* The material at [p] into [m], as [of_texture] makes it (the same
    arithmetic); inlined into its two callers, so that [cos_o] is not
    boxed *)
 let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o entering =
   m.count <- 0;
-  match tex with
+  match resolve tex p with
   | [] -> Color.acc_set m.em 0. 0. 0.
   | (layer : Texture.layer) :: _ ->
       let f = layer.finish in

@@ -232,6 +232,15 @@ let inside o (p : Vec3.t) =
   f.pt.oz <- p.z;
   inside_s o f
 
+let inside_pattern o =
+  let key = Scratch.key (fun () -> found o) in
+  Pattern.inside (fun (p : Vec3.m) ->
+      let f = Scratch.get key in
+      f.pt.ox <- p.mx;
+      f.pt.oy <- p.my;
+      f.pt.oz <- p.mz;
+      inside_s o f)
+
 (* if-based: Float.min/max are calls with boxed arguments (and order NaN
    and -0, which the comparison below does not need: no slab distance is
    NaN, the zero directions being set apart) *)

@@ -130,6 +130,11 @@ val inside_s : t -> found -> bool
 val inside : t -> Vec3.t -> bool
 (** POV-Ray's inside test at a world point. *)
 
+val inside_pattern : t -> Pattern.inside
+(** The object's inside test as the object pattern asks it (a point of
+    pattern space taken as a world point): scratch per domain, nothing
+    allocated per question. *)
+
 val bounds : t -> (Vec3.t * Vec3.t) option
 (** World-space axis-aligned bounds; [None] when infinite. *)
 

@@ -17,6 +17,10 @@ let fn ~slots ~result run =
   if slots < 3 || result < 0 || result >= slots then invalid_arg "Pattern.fn: bad slot counts";
   { result; run; frames = Scratch.key (fun () -> Array.make slots 0.) }
 
+type inside = { test : Vec3.m -> bool }
+
+let inside test = { test }
+
 type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
 
 let crackle_default = { form = Vec3.make (-1.) 1. 0.; metric = 2.; offset = 0.; solid = false }
@@ -52,6 +56,7 @@ type kind =
   | Julia of { cr : float; ci : float; fractal : fractal }
   | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
   | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
+  | Object of inside
   | Function of fn
   | Density_file of density
 
@@ -143,7 +148,7 @@ let gradient v =
   Gradient (if l = 0. then Vec3.unit_x else Vec3.scale (1. /. l) v)
 
 let default_turbulence amount = { amount; octaves = 6; omega = 0.5; lambda = 2. }
-let is_block = function Checker | Hexagon | Brick _ -> true | _ -> false
+let is_block = function Checker | Hexagon | Brick _ | Object _ -> true | _ -> false
 let block_count = function Hexagon -> 3 | _ -> 2
 let eps = 1e-10
 let frac x = x -. Float.floor x
@@ -489,6 +494,7 @@ let raw_m kind (w : work) =
       let a = if walt = 0. then 0. else (((x *. alt.x) +. (y *. alt.y) +. (z *. alt.z)) -. alo) /. (ahi -. alo) in
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
   | Density_file d -> w.r.v <- density3 d x y z
+  | Object o -> w.r.v <- (if o.test w.p then 1. else 0.)
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)

@@ -35,6 +35,15 @@ val fn : slots:int -> result:int -> (float array -> unit) -> fn
     the same [fn] again (functions are defined before they are used, so
     this holds for functions of the scene language). *)
 
+type inside
+(** An object's inside test at a point written in place (the object
+    pattern's): a closure made once, which allocates nothing when asked. *)
+
+val inside : (Vec3.m -> bool) -> inside
+(** [inside test]: [test p] says whether [p] (pattern space, which is the
+    object's world space) is inside the object. [test] may be called from
+    several domains at once and must not allocate. *)
+
 type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
 (** POV-Ray's crackle parameters: [form] weighs the distances to the
     three nearest feature points, [metric] is the exponent of the
@@ -89,6 +98,9 @@ type kind =
           to [[0, 1]], and the altitude [p . alt] from [[alo, ahi]],
           weighed [wdir] and [walt] (the lengths of the vectors written;
           [dir] and [alt] are unit) *)
+  | Object of inside
+      (** POV-Ray's [object] pattern: cell 1 inside the object, 0 outside
+          (a block pattern of two cells) *)
   | Function of fn
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes
@@ -184,11 +196,11 @@ val default_turbulence : Vec3.t -> turbulence
 (** octaves 6, omega 0.5, lambda 2. *)
 
 val is_block : kind -> bool
-(** checker, hexagon, brick: the value is a cell index, used with a list
+(** checker, hexagon, brick, object: the value is a cell index, used with a list
     of colours or pigments rather than a map. *)
 
 val block_count : kind -> int
-(** Number of cells: 2 (checker, brick) or 3 (hexagon). *)
+(** Number of cells: 2 (checker, brick, object) or 3 (hexagon). *)
 
 val value : t -> Vec3.t -> float
 (** The pattern at a point of pattern space: turbulence warp, the raw

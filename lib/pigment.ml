@@ -20,7 +20,7 @@ let sc r g b = Solid (Color.rgbft r g b 0. 0.)
 
 let default_entries (k : Pattern.kind) =
   match k with
-  | Checker -> [| (0., sc 0. 0. 1.); (1., sc 0. 1. 0.) |]
+  | Checker | Object _ -> [| (0., sc 0. 0. 1.); (1., sc 0. 1. 0.) |]
   | Hexagon -> [| (0., sc 0. 0. 1.); (1., sc 0. 1. 0.); (2., sc 1. 0. 0.) |]
   | Brick _ -> [| (0., sc 0.5 0.5 0.5); (1., sc 0.6 0.15 0.15) |]
   | Bozo ->

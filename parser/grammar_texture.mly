@@ -105,7 +105,9 @@
   | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
-  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
+  | OBJECT LBRACE k = pattern_object ts = list(block_texture) RBRACE ms = list(tmap_mod)
+      { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
+        [ List.fold_left (fun l f -> f l) l ms ] }
   | k = block_kind ts = list(block_texture) ms = list(tmap_mod)
       { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
         [ List.fold_left (fun l f -> f l) l ms ] }
@@ -183,7 +185,8 @@
   | AVERAGE ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (average ()))) in fun _ -> p }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
-  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
+  | OBJECT LBRACE k = pattern_object cs = block_cells RBRACE ms = list(pigment_mod)
+      { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
   | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         let p = Texdesc.(pigment (apply ms (of_pigment p))) in
@@ -225,6 +228,13 @@
       { let x = fl $loc(e) e in
         fun (i : Pigment.image) -> { i with px = Array.map (fun (p : Color.rgbft) ->
           if c = "filter" then { p with filter = x } else if c = "transmit" then { p with transmit = x } else p) i.px } }
+
+(* the object pattern's object: 1 inside, 0 outside (POV-Ray's [object {
+   OBJECT cell0 cell1 }], where the object takes only transformations
+   before the cells in camlray: wrap it in object { } for more) *)
+%public pattern_object:
+  | o = OBJECT_ID ts = list(transformation) { Probe.object_pattern (List.fold_left (fun o t -> Sdl.transform_obj t o) o ts) }
+  | o = object_ ts = list(transformation) { Probe.object_pattern (List.fold_left (fun o t -> Sdl.transform_obj t o) o ts) }
 
 %public block_kind:
   | CHECKER { Pattern.Checker }
@@ -488,7 +498,11 @@
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
   | ms = list(normal_mod) { fun base -> moved ms base }
-  | OBJECT { Diag.error (loc $loc) "object (as a pattern) is not supported by camlray" }
+  | OBJECT LBRACE k = pattern_object cs = normal_cells RBRACE ms = list(normal_mod)
+      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_pattern k) with ncells = cs })) in
+        fun _ -> n }
+  | OBJECT LBRACE pattern_object RBRACE
+      { Diag.error (loc $loc) "the object pattern in a normal needs its two normals (object { OBJECT normal { ... } normal { ... } })" }
 
 %public normal_body: e = normal_edit { e None }
 

@@ -54,3 +54,7 @@ let trace loc o start dir =
       else missed
 
 let inside _loc o p = match compile o with None -> false | Some c -> Object.inside c p
+
+let object_pattern o =
+  Pattern.Object
+    (match compile o with Some c -> Object.inside_pattern c | None -> Pattern.inside (fun _ -> false))

@@ -14,5 +14,10 @@ val trace : Loc.t -> Sdl.obj -> Camlray.Vec3.t -> Camlray.Vec3.t -> Camlray.Vec3
 val inside : Loc.t -> Sdl.obj -> Camlray.Vec3.t -> bool
 (** POV-Ray's inside test of the object at a point. *)
 
+val object_pattern : Sdl.obj -> Camlray.Pattern.kind
+(** POV-Ray's [object] pattern of the object (compiled on its own, lights
+    dropped): 1 inside, 0 outside; an object that compiles to nothing is
+    inside nowhere. *)
+
 val reset : unit -> unit
 (** Forget the compiled objects (a new parse starts). *)

@@ -579,6 +579,64 @@ let function_allocation () =
   let words = Gc.minor_words () -. before in
   if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of a function pattern" words
 
+(* the object pattern, against POV-Ray 3.7's function { pigment { object
+   { ... } } } colours (read with #debug): first entry outside, second
+   inside, blue and green by default; the surface itself is outside; the
+   object moves with the pigment and takes its own transformations *)
+let object_pattern () =
+  let col src x y z =
+    let s = Scn.compile (Printf.sprintf "#declare S = sphere { 0, 1 }\nplane { y, -9 pigment { %s } }" src) in
+    let c = Pigment.eval (List.hd s.objects.(0).texture).pigment (Vec3.make x y z) in
+    [ c.c.r; c.c.g; c.c.b ]
+  in
+  let check src (x, y, z) e =
+    Alcotest.(check (list (float 1e-12))) (Printf.sprintf "%s at (%g, %g, %g)" src x y z) e (col src x y z)
+  in
+  let two = "object { S color rgb <1,0,0> color rgb <0,0,1> }" in
+  check two (2., 0., 0.) [ 1.; 0.; 0. ];
+  check two (0., 0., 0.) [ 0.; 0.; 1. ];
+  check two (1., 0., 0.) [ 1.; 0.; 0. ];
+  check "object { S }" (2., 0., 0.) [ 0.; 0.; 1. ];
+  check "object { S }" (0., 0., 0.) [ 0.; 1.; 0. ];
+  let scaled = "object { sphere { 0, 1 } pigment { rgb <0,1,0> }, pigment { rgb <0,0,1> } } scale 2" in
+  check scaled (2.5, 0., 0.) [ 0.; 1.; 0. ];
+  check scaled (1.5, 0., 0.) [ 0.; 0.; 1. ];
+  let moved = "object { S scale 0.5 translate x color rgb 0 color rgb 1 }" in
+  check moved (1., 0., 0.) [ 1.; 1.; 1. ];
+  check moved (0., 0., 0.) [ 0.; 0.; 0. ];
+  (* CSG: a ring of a sphere minus a slab *)
+  let ring = "object { difference { sphere { 0, 1 } box { <-2,-0.2,-2>, <2,0.2,2> } } rgb 0, rgb 1 }" in
+  check ring (0., 0.5, 0.) [ 1.; 1.; 1. ];
+  check ring (0., 0.1, 0.) [ 0.; 0.; 0. ];
+  (* textures and normals as the two cells *)
+  let s =
+    Scn.compile
+      "sphere { 0, 1 texture { object { sphere { x, 0.5 } texture { pigment { rgb 1 } } texture { pigment { rgb 0.5 } } } }\n\
+       normal { object { sphere { x, 0.5 } normal { bumps 0.5 } normal { dents 0.3 } } } }"
+  in
+  (match s.objects.(0).texture with
+  | { tmap = Some m; _ } :: _ ->
+      Alcotest.(check int) "two textures" 2 (Array.length m.entries);
+      Scn.close "inside" 1. (Pattern.value m.pattern (Vec3.make 0.9 0. 0.));
+      Scn.close "outside" 0. (Pattern.value m.pattern (Vec3.make (-0.9) 0. 0.))
+  | _ -> Alcotest.fail "no texture map");
+  Scn.check_message "sphere { 0, 1 normal { object { sphere { 0, 1 } } } }" "needs its two normals";
+  (* no allocation per evaluation *)
+  let p =
+    match (Scn.compile "sphere { 0, 1 pigment { object { union { sphere { 0, 1 } box { -2, -1 scale <1,2,1> } } rgb 0, rgb 1 } } }").objects.(0).texture with
+    | { pigment = Pigment.Blocks { pattern; _ }; _ } :: _ -> pattern
+    | _ -> Alcotest.fail "no block pigment"
+  in
+  let q = Vec3.m () and w = Pattern.work () in
+  Pattern.eval_m p q w;
+  let before = Gc.minor_words () in
+  for i = 1 to 1000 do
+    Vec3.set q (0.003 *. float_of_int i) 0.2 (-0.3);
+    Pattern.eval_m p q w
+  done;
+  let words = Gc.minor_words () -. before in
+  if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of an object pattern" words
+
 let function_normal () =
   let s = Scn.compile "sphere { 0, 1 normal { function { abs(x) } 0.7 scale 0.5 } }" in
   match s.objects.(0).texture with
@@ -645,6 +703,7 @@ let tests =
       Alcotest.test_case "function patterns: pigment function channels" `Quick pigment_function;
       Alcotest.test_case "function patterns allocate nothing" `Quick function_allocation;
       Alcotest.test_case "function normals" `Quick function_normal;
+      Alcotest.test_case "object pattern = POV-Ray" `Quick object_pattern;
       Alcotest.test_case "function pattern errors" `Quick function_errors;
       Alcotest.test_case "density_file: POV-Ray's values, errors" `Quick density_file;
     ] )
