@@ -56,6 +56,7 @@ type kind =
   | Julia of { cr : float; ci : float; fractal : fractal }
   | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
   | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
+  | Cells
   | Object of inside
   | Function of fn
   | Density_file of density
@@ -495,6 +496,14 @@ let raw_m kind (w : work) =
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
   | Density_file d -> w.r.v <- density3 d x y z
   | Object o -> w.r.v <- (if o.test w.p then 1. else 0.)
+  | Cells ->
+      let i =
+        Cells.index
+          (int_of_float (Float.floor (x +. eps)))
+          (int_of_float (Float.floor (y +. eps)))
+          (int_of_float (Float.floor (z +. eps)))
+      in
+      w.r.v <- Float.Array.unsafe_get Cells.values i
   | Function f ->
       (* [w] is read before the code runs: the code may evaluate other
          patterns (through a pigment function), which may reuse [w] *)

@@ -98,6 +98,7 @@ type kind =
           to [[0, 1]], and the altitude [p . alt] from [[alo, ahi]],
           weighed [wdir] and [walt] (the lengths of the vectors written;
           [dir] and [alt] are unit) *)
+  | Cells  (** one value in [[0, 1)] per unit cube, POV-Ray's ({!Cells}) *)
   | Object of inside
       (** POV-Ray's [object] pattern: cell 1 inside the object, 0 outside
           (a block pattern of two cells) *)

@@ -637,6 +637,40 @@ let object_pattern () =
   let words = Gc.minor_words () -. before in
   if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of an object pattern" words
 
+(* cells, against POV-Ray 3.7's function { pattern { cells } } at the
+   centres of cubes (x from -3 to 3, y from -2 to 2, z 0; then a few
+   more), printed with #debug to six digits; an integer plane belongs to
+   the cube above it (within 1e-10) *)
+let cells () =
+  let pov =
+    [| [| 0.964889; 0.021556; 0.298064; 0.605938; 0.801348 |];
+       [| 0.044166; 0.217732; 0.800280; 0.312386; 0.208935 |];
+       [| 0.678652; 0.800879; 0.566955; 0.554328; 0.320046 |];
+       [| 0.887014; 0.096533; 0.711819; 0.056343; 0.946322 |];
+       [| 0.939083; 0.071445; 0.681271; 0.538597; 0.539091 |];
+       [| 0.430278; 0.110809; 0.099090; 0.354116; 0.473289 |];
+       [| 0.560107; 0.500211; 0.613932; 0.049533; 0.578923 |] |]
+  in
+  let p = fn_pattern "cells" in
+  let v x y z = Pattern.value p (Vec3.make x y z) in
+  Array.iteri
+    (fun i row ->
+      Array.iteri
+        (fun j e ->
+          let x = float_of_int (i - 3) +. 0.5 and y = float_of_int (j - 2) +. 0.5 in
+          Scn.close ~eps:6e-7 (Printf.sprintf "cells at (%g, %g, 0.5)" x y) e (v x y 0.5))
+        row)
+    pov;
+  List.iter
+    (fun ((x, y, z), e) -> Scn.close ~eps:6e-7 (Printf.sprintf "cells at (%g, %g, %g)" x y z) e (v x y z))
+    [ ((0.5, 0.5, 1.5), 0.992743); ((0.5, 0.5, -0.5), 0.824242); ((0.5, 0.5, 2.5), 0.429254);
+      ((100.5, 0.5, 0.5), 0.154370); ((0.99999999999, 0.5, 0.5), 0.681271); ((0.9999999, 0.5, 0.5), 0.711819);
+      ((-1e-13, 0.5, 0.5), 0.711819) ];
+  (* the default colour map: black to white *)
+  let s = Scn.compile "sphere { 0, 1 pigment { cells } }" in
+  let c = Pigment.eval (List.hd s.objects.(0).texture).pigment (Vec3.make 0.5 0.5 0.5) in
+  Scn.close ~eps:6e-7 "grey" 0.711819 c.c.g
+
 let function_normal () =
   let s = Scn.compile "sphere { 0, 1 normal { function { abs(x) } 0.7 scale 0.5 } }" in
   match s.objects.(0).texture with
@@ -704,6 +738,7 @@ let tests =
       Alcotest.test_case "function patterns allocate nothing" `Quick function_allocation;
       Alcotest.test_case "function normals" `Quick function_normal;
       Alcotest.test_case "object pattern = POV-Ray" `Quick object_pattern;
+      Alcotest.test_case "cells = POV-Ray" `Quick cells;
       Alcotest.test_case "function pattern errors" `Quick function_errors;
       Alcotest.test_case "density_file: POV-Ray's values, errors" `Quick density_file;
     ] )
