@@ -7,7 +7,7 @@ type t = {
   map : map;
 }
 
-and map = Leaf | Blend of (float * t) array | Average of (float * t) array | Cells of t array
+and map = Leaf | Blend of (float * t) array | Average of (float * t) array | Cells of t array | Image of Bump_map.t
 
 let slope_height m v =
   let n = Float.Array.length m / 3 in
@@ -172,6 +172,9 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
             Vec3.set l.t1 (l.t1.mx +. (wt *. l.t0.mx)) (l.t1.my +. (wt *. l.t0.my)) (l.t1.mz +. (wt *. l.t0.mz))
           done;
           Vec3.set out l.t1.mx l.t1.my l.t1.mz
+      | Image b ->
+          into_space nm point n l;
+          Bump_map.tilt b nm.amount l.lq l.ln out
       | Leaf -> ());
       Transform.normal_m nm.xform out;
       if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz

@@ -28,7 +28,11 @@ and map =
       (** [normal_map]: entries by rising value; the two around the
           pattern's value weighted 1 - k and k *)
   | Average of (float * t) array  (** [average]: weights summing to 1; the pattern is unused *)
-  | Cells of t array  (** checker, hexagon, brick: the cell's normal *)
+  | Cells of t array  (** checker, hexagon, brick, object: the cell's normal *)
+  | Image of Bump_map.t
+      (** [bump_map]: the normal tilted by the image's height differences
+          ({!Bump_map.tilt}, [amount] its bump size); the pattern is
+          unused *)
 
 val default_accuracy : float
 (** POV-Ray's 0.02. *)

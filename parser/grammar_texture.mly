@@ -10,7 +10,7 @@
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
 %token TOROIDAL ORIENTATION DIST_EXP MAJOR_RADIUS
 %token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
-%token CELLS
+%token CELLS BUMP_MAP USE_INDEX USE_COLOR
 %token DENSITY_FILE DF3 BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -500,6 +500,15 @@
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
   | ms = list(normal_mod) { fun base -> moved ms base }
+  (* bump_map { png FILE [bump_size F] [interpolate N] [use_index|use_color] [map_type 0] [once] } *)
+  | BUMP_MAP LBRACE ioption(PNG) f = string_arg items = list(bump_item) RBRACE ms = list(normal_mod)
+      { let index = List.fold_left (fun a i -> match i with `Index b -> Some b | _ -> a) None items in
+        let interpolate = List.fold_left (fun a i -> match i with `Interpolate n -> n | _ -> a) 0 items in
+        let once = List.exists (fun i -> i = `Once) items in
+        let p = Texdesc.bump_map (loc $loc(f)) f ~index ~interpolate ~once in
+        let p = List.fold_left (fun (p : Texdesc.pat) i -> match i with `Size a -> { p with amount = a } | _ -> p) p items in
+        let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
+        fun _ -> n }
   | OBJECT LBRACE k = pattern_object cs = normal_cells RBRACE ms = list(normal_mod)
       { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_pattern k) with ncells = cs })) in
         fun _ -> n }
@@ -507,6 +516,21 @@
       { Diag.error (loc $loc) "the object pattern in a normal needs its two normals (object { OBJECT normal { ... } normal { ... } })" }
 
 %public normal_body: e = normal_edit { e None }
+
+bump_item:
+  | BUMP_SIZE e = param { `Size (fl $loc(e) e) }
+  | INTERPOLATE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n <> 0 && n <> 2 && n <> 4 then
+          Diag.error (loc $loc(e)) "a bump_map's interpolate %d is not supported by camlray: 0 (none), 2 (bilinear) and 4 (normalized distance) are" n;
+        `Interpolate n }
+  | USE_INDEX { `Index true }
+  | USE_COLOR { `Index false }
+  | ONCE { `Once }
+  | MAP_TYPE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n <> 0 then Diag.error (loc $loc(e)) "a bump_map's map_type %d is not supported by camlray: only 0 (planar) is" n;
+        `Map_type }
 
 (* normal { PATTERN [,] BUMP_SIZE ... } *)
 bump_size: COMMA? a = param { a }

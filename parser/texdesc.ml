@@ -12,6 +12,7 @@ type pat = {
   accuracy : float;
   nmap : (float * Normal.t) array option;  (** normals: [normal_map] *)
   ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
+  bump : Bump_map.t option;
 }
 
 type modifier = pat -> pat
@@ -19,7 +20,7 @@ type modifier = pat -> pat
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
     amount = 0.5; average = false; slope = Float.Array.create 0;
-    accuracy = Normal.default_accuracy; nmap = None; ncells = [] }
+    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -35,6 +36,7 @@ let apply ms p = List.fold_left (fun p m -> m p) p ms
 
 let transform t p =
   match p.pattern with
+  | None when p.bump <> None -> { p with xform = Transform.then_ p.xform t }
   | None when p.average ->
       (* a normal's entries are relative to its transform: they follow it *)
       { p with entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries;
@@ -103,6 +105,8 @@ let normal p =
     { Normal.pattern; amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy; map = Normal.Leaf }
   in
   match p.pattern with
+  | None when p.bump <> None ->
+      { (leaf (Pattern.make Pattern.Bozo) p.amount) with map = Normal.Image (Option.get p.bump) }
   | None when p.average ->
       (* POV-Ray divides by the weights' sum *)
       let es = Option.value ~default:[||] p.nmap in
@@ -131,6 +135,7 @@ let of_normal (n : Normal.t) =
   | Normal.Leaf -> { p with pattern = Some n.pattern }
   | Normal.Blend es -> { p with pattern = Some n.pattern; nmap = Some es }
   | Normal.Cells cs -> { p with pattern = Some n.pattern; ncells = Array.to_list cs }
+  | Normal.Image b -> { p with bump = Some b }
 
 let normal_map loc es p =
   if es = [] then Diag.error loc "a normal_map needs at least one entry";
@@ -165,6 +170,33 @@ let image_map loc ~gamma_decode file mods =
   in
   let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false } in
   Pigment.Image_map { image = List.fold_left (fun i f -> f i) im mods; xform = Transform.identity }
+
+(* a PNG's colour type (IHDR's byte 25): 3 is a palette *)
+let png_palette file =
+  match In_channel.with_open_bin file (fun ic -> really_input_string ic 26) with
+  | s -> String.sub s 0 8 = Png_codec.signature && Char.code s.[25] = 3
+  | exception (Sys_error _ | End_of_file) -> false
+
+let bump_map loc file ~index ~interpolate ~once =
+  let file =
+    match Defaults.find_file loc file with
+    | Some p -> p
+    | None -> Diag.error loc "cannot find bump_map image %s (looked in the scene's folder and the include path)" file
+  in
+  let palette = png_palette file in
+  (* POV-Ray 3.7 reads a bump map's colours unless use_index (measured on
+     a palette PNG: no keyword and use_color alike, use_index apart) *)
+  if palette && index = Some true then
+    Diag.error loc
+      "a bump_map by palette index is not supported by camlray (%s): add use_color to read its colours' intensity"
+      file;
+  let img =
+    try Image.read file with Sys_error e | Failure e -> Diag.error loc "cannot read bump_map %s: %s" file e
+  in
+  let c i k = float_of_int (Char.code (Bytes.get img.data ((3 * i) + k))) /. 255. in
+  let heights = Float.Array.init (img.w * img.h) (fun i -> Bump_map.grey (c i 0) (c i 1) (c i 2)) in
+  let b = Bump_map.make ~w:img.w ~h:img.h ~once ~interpolate ~by_index:(index = Some true) heights in
+  { empty with bump = Some b; amount = 0.5 }
 
 let slope_map loc entries p =
   let rec sorted = function

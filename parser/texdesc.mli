@@ -17,6 +17,7 @@ type pat = {
   accuracy : float;  (** normals: the slope's sample distance *)
   nmap : (float * Normal.t) array option;  (** normals: [normal_map] (an average's weights) *)
   ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
+  bump : Bump_map.t option;  (** normals: a [bump_map]'s image *)
 }
 
 type modifier = pat -> pat
@@ -32,6 +33,12 @@ val normal : pat -> Normal.t
     (weights divided by their sum), a block pattern's list. *)
 
 val of_normal : Normal.t -> pat
+
+val bump_map : Loc.t -> string -> index:bool option -> interpolate:int -> once:bool -> pat
+(** [normal { bump_map { png FILE ... } }]: the image's heights, the
+    grey of its colours (not gamma-decoded, as POV-Ray); bump size 0.5 (POV-Ray's)
+    until set. A palette image read by index ([use_index]: POV-Ray
+    3.7 reads colours by default) is refused. Errors are located. *)
 (** A declared normal, to be modified further. *)
 
 val normal_map : Loc.t -> (float * Normal.t) list -> modifier

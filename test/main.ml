@@ -40,6 +40,7 @@ let () =
       Test_light.tests;
       Test_pattern.tests;
       Test_uv.tests;
+      Test_bump_map.tests;
       Test_aa.tests;
       Test_gamma.tests;
       Test_compare.tests;
