@@ -50,9 +50,15 @@ let by_hand () =
   let words = Gc.minor_words () -. before in
   if words > 0. then Alcotest.failf "%.0f words for 1000 bump map normals" words
 
-let png = Filename.concat (Helpers.scenes_dir ()) "whitted-extra/bump-map.png"
+(* the committed image, copied where scenes may read (the working folder) *)
+let with_png f =
+  let src = Filename.concat (Helpers.scenes_dir ()) "whitted-extra/bump-map.png" in
+  let png = Printf.sprintf "bump-map-copy-%d.png" (Unix.getpid ()) in
+  Helpers.write_file png (In_channel.with_open_bin src In_channel.input_all);
+  Fun.protect ~finally:(fun () -> Sys.remove png) (fun () -> f png)
 
 let parse () =
+  with_png @@ fun png ->
   let s =
     Scn.compile
       (Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" bump_size 3 interpolate 2 once use_color } scale 2 } }"
@@ -71,6 +77,7 @@ let parse () =
   Scn.close "after" 1.5 (amount "bump_size 1.5")
 
 let errors () =
+  with_png @@ fun png ->
   let m src = Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" %s } } }" png src in
   Scn.check_message (m "map_type 1") "only 0 (planar)";
   Scn.check_message (m "interpolate 3") "interpolate 3 is not supported";
