@@ -115,3 +115,14 @@ let tilt b amount (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
       ((0. *. bx) +. (yy *. bym) +. -.(zy *. bz))
       ((xpz *. bx) +. (yz *. bym) +. -.(zz *. bz))
   end
+
+let pixel ~w ~h ~once x y =
+  let fw = float_of_int w and fh = float_of_int h in
+  let xc = Float.rem (x *. fw) fw +. eps and yc = Float.rem (y *. fh) fh +. eps in
+  let xx = xc /. fw and yy = yc /. fh in
+  if (once && (x < 0. || x > 1. || y < 0. || y > 1.)) || (once && (xx > 1. || yy > 1. || xx < 0. || yy < 0.)) then -1
+  else begin
+    let xc = xc -. (float_of_int (int_of_float xx) *. fw) and yc = yc -. (float_of_int (int_of_float yy) *. fh) in
+    let yc = wrap1 fh (fh -. yc) and xc = wrap1 fw xc in
+    (cell once h yc * w) + cell once w xc
+  end

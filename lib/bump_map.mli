@@ -31,3 +31,9 @@ val tilt : t -> float -> Vec3.m -> Vec3.m -> Vec3.m -> unit
     the unit normal [n] (pattern space), into [out], not normalised; [n]
     itself where the image is not ([once], off the square). Allocates
     nothing. *)
+
+val pixel : w:int -> h:int -> once:bool -> float -> float -> int
+(** [pixel ~w ~h ~once x y]: the pixel (row by row from the top, [row *
+    w + column]) of a [w] x [h] image that POV-Ray's planar mapping
+    ([map_type 0], no interpolation) reads at [(x, y)], or -1 off the
+    image ([once]). *)

@@ -260,6 +260,19 @@ let read_png path s =
   (* load_as_rgb24 refuses palettes with transparency; Png.load reads them *)
   try load Png.load_as_rgb24 with Failure _ when ct = 3 -> load Png.load
 
+let read_indices path =
+  let s = read_file path in
+  if not (String.starts_with ~prefix:Png_codec.signature s) then None
+  else
+    naming path @@ fun () ->
+    if Png_codec.check s <> 3 then None
+    else
+      match Png.load path [] with
+      | Index8 b -> Some (b.width, b.height, Index8.dump b)
+      | _ -> None
+      | exception (Sys_error m | Invalid_argument m) -> failwith m
+      | exception Images.Wrong_file_type -> failwith "unreadable PNG"
+
 (* A PNM file (P2, P3 text; P5, P6 binary): its size, samples per pixel
    (1 grey, 3 colour), maxval and its samples in order, read on demand *)
 let pnm s ~max_pixels =

@@ -93,6 +93,11 @@ val write_pfm : string -> t -> unit
 (** Little-endian colour PFM ("PF", scale -1.0) of the linear values,
     bottom row first as the format requires; written atomically. *)
 
+val read_indices : string -> (int * int * Bytes.t) option
+(** A palette PNG's size and pixel indices, one byte a pixel, row by row
+    from the top; [None] for any other image. Raises [Failure] as
+    {!read}. *)
+
 val read : string -> rgb8
 (** Read a PNG (any colour type camlimages reads; alpha dropped) or a PPM
     (P6 or P3, maxval up to 65535, scaled to 8 bits), told apart by their

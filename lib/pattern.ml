@@ -58,6 +58,7 @@ type kind =
   | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
   | Cells
   | Object of inside
+  | Material of { w : int; h : int; once : bool; numbers : Bytes.t; count : int }
   | Function of fn
   | Density_file of density
 
@@ -149,8 +150,8 @@ let gradient v =
   Gradient (if l = 0. then Vec3.unit_x else Vec3.scale (1. /. l) v)
 
 let default_turbulence amount = { amount; octaves = 6; omega = 0.5; lambda = 2. }
-let is_block = function Checker | Hexagon | Brick _ | Object _ -> true | _ -> false
-let block_count = function Hexagon -> 3 | _ -> 2
+let is_block = function Checker | Hexagon | Brick _ | Object _ | Material _ -> true | _ -> false
+let block_count = function Hexagon -> 3 | Material { count; _ } -> count | _ -> 2
 let eps = 1e-10
 let frac x = x -. Float.floor x
 let two_pi = 2. *. Float.pi
@@ -496,6 +497,11 @@ let raw_m kind (w : work) =
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
   | Density_file d -> w.r.v <- density3 d x y z
   | Object o -> w.r.v <- (if o.test w.p then 1. else 0.)
+  | Material { w = iw; h = ih; once; numbers; count } ->
+      let k = Bump_map.pixel ~w:iw ~h:ih ~once x y in
+      let n = if k < 0 then 0 else Char.code (Bytes.unsafe_get numbers k) in
+      let n = if n > count then n mod count else n in
+      w.r.v <- float_of_int (if n >= count then count - 1 else n)
   | Cells ->
       let i =
         Cells.index

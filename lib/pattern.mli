@@ -102,6 +102,12 @@ type kind =
   | Object of inside
       (** POV-Ray's [object] pattern: cell 1 inside the object, 0 outside
           (a block pattern of two cells) *)
+  | Material of { w : int; h : int; once : bool; numbers : Bytes.t; count : int }
+      (** POV-Ray's [material_map]: the number of the image's pixel
+          under the point ({!Bump_map.pixel}; 0 off the image), a palette
+          index or a red byte, one a pixel in [numbers]; above [count]
+          taken mod [count], then at most [count - 1]: the cell of one of
+          [count] textures *)
   | Function of fn
       (** [function { ... }]: the function at the point, mod 1 above 1
           (values below 0 are left to the frequency step, which takes
@@ -201,7 +207,8 @@ val is_block : kind -> bool
     of colours or pigments rather than a map. *)
 
 val block_count : kind -> int
-(** Number of cells: 2 (checker, brick, object) or 3 (hexagon). *)
+(** Number of cells: 2 (checker, brick, object), 3 (hexagon), a
+    material map's count. *)
 
 val value : t -> Vec3.t -> float
 (** The pattern at a point of pattern space: turbulence warp, the raw

@@ -10,7 +10,7 @@
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
 %token TOROIDAL ORIENTATION DIST_EXP MAJOR_RADIUS
 %token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
-%token CELLS BUMP_MAP USE_INDEX USE_COLOR
+%token CELLS BUMP_MAP USE_INDEX USE_COLOR MATERIAL_MAP
 %token DENSITY_FILE DF3 BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -106,6 +106,12 @@
   | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
+  (* material_map { png FILE [once] [map_type 0] TEXTURE... } *)
+  | MATERIAL_MAP LBRACE ioption(PNG) f = string_arg os = list(material_map_item) ts = list(block_texture) RBRACE
+    ms = list(tmap_mod)
+      { let k = Texdesc.material_map (loc $loc(f)) f ~once:(List.mem `Once os) ~count:(List.length ts) in
+        let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
+        [ List.fold_left (fun l f -> f l) l ms ] }
   | OBJECT LBRACE k = pattern_object ts = list(block_texture) RBRACE ms = list(tmap_mod)
       { let l = Texture.patterned (Pattern.make k) (Array.of_list (List.mapi (fun i t -> (float_of_int i, t)) ts)) in
         [ List.fold_left (fun l f -> f l) l ms ] }
@@ -516,6 +522,17 @@
       { Diag.error (loc $loc) "the object pattern in a normal needs its two normals (object { OBJECT normal { ... } normal { ... } })" }
 
 %public normal_body: e = normal_edit { e None }
+
+material_map_item:
+  | ONCE { `Once }
+  | MAP_TYPE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n <> 0 then Diag.error (loc $loc(e)) "a material_map's map_type %d is not supported by camlray: only 0 (planar) is" n;
+        `Map_type }
+  | INTERPOLATE e = param
+      { if Value.to_int (loc $loc(e)) e <> 0 then
+          Diag.error (loc $loc(e)) "interpolate in a material_map is not supported by camlray";
+        `Map_type }
 
 bump_item:
   | BUMP_SIZE e = param { `Size (fl $loc(e) e) }

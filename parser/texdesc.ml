@@ -198,6 +198,25 @@ let bump_map loc file ~index ~interpolate ~once =
   let b = Bump_map.make ~w:img.w ~h:img.h ~once ~interpolate ~by_index:(index = Some true) heights in
   { empty with bump = Some b; amount = 0.5 }
 
+let material_map loc file ~once ~count =
+  if count = 0 then Diag.error loc "a material_map needs at least one texture";
+  let file =
+    match Defaults.find_file loc file with
+    | Some p -> p
+    | None -> Diag.error loc "cannot find material_map image %s (looked in the scene's folder and the include path)" file
+  in
+  let fail e = Diag.error loc "cannot read material_map %s: %s" file e in
+  (* a palette image's indices, else the red bytes (not gamma-decoded: measured) *)
+  let w, h, numbers =
+    match Image.read_indices file with
+    | Some (w, h, b) -> (w, h, b)
+    | None ->
+        let img = Image.read file in
+        (img.w, img.h, Bytes.init (img.w * img.h) (fun i -> Bytes.get img.data (3 * i)))
+    | exception (Sys_error e | Failure e) -> fail e
+  in
+  Pattern.Material { w; h; once; numbers; count }
+
 let slope_map loc entries p =
   let rec sorted = function
     | (v0, _, _) :: ((v1, _, _) :: _ as rest) ->

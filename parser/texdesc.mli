@@ -59,6 +59,11 @@ val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigmen
 (** Read a PNG into a planar image map (values decoded from sRGB when
     [gamma_decode]). Errors are located. *)
 
+val material_map : Loc.t -> string -> once:bool -> count:int -> Pattern.kind
+(** [texture { material_map { png FILE [once] TEXTURE... } }]: the
+    pattern choosing one of [count] textures by the image's palette index
+    or red byte. Errors are located. *)
+
 val slope_map : Loc.t -> (float * float * float) list -> modifier
 (** A normal's [slope_map { [value, <height, slope>] ... }]. *)
 

@@ -1,4 +1,5 @@
-(* bump_map: POV-Ray's three-pixel rule worked by hand on small images,
+(* bump_map and material_map (both read images through POV-Ray's planar
+   mapping): POV-Ray's three-pixel rule worked by hand on small images,
    the scene language's forms and its errors. *)
 open Camlray
 
@@ -89,10 +90,52 @@ let errors () =
   Scn.check_message (Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" use_index } } }" f) "palette index";
   Sys.remove f
 
+
+
+(* material_map, against POV-Ray 3.7's choices (measured on 8 x 1 images
+   with three textures: palette indices 0..7 gave textures 0 1 2 2 1 2 0
+   1, red bytes 0 1 2 3 4 128 254 255 gave 0 1 2 2 1 2 2 0: a number
+   above the count is taken mod the count, the count itself is the last
+   texture; colours not gamma-decoded) *)
+let material_number src (x, y) =
+  match (Scn.compile src).objects.(0).texture with
+  | { tmap = Some m; _ } :: _ -> int_of_float (Pattern.value m.pattern (Vec3.make x y 0.))
+  | _ -> Alcotest.fail "no material map"
+
+let in_cwd name contents f =
+  Helpers.write_file name contents;
+  Fun.protect ~finally:(fun () -> Sys.remove name) (fun () -> f name)
+
+let material_map () =
+  let textures n = String.concat " " (List.init n (fun i -> Printf.sprintf "texture { pigment { rgb %d } }" i)) in
+  let scene png extra n = Printf.sprintf "plane { z, 0 texture { material_map { png \"%s\" %s %s } } }" png extra (textures n) in
+  let at i j = ((float_of_int i +. 0.5) /. 8., 1. -. ((float_of_int j +. 0.5) /. 1.)) in
+  let reds = Bytes.of_string (String.concat "" (List.map (fun r -> Printf.sprintf "%c\200\050" (Char.chr r)) [ 0; 1; 2; 3; 4; 128; 254; 255 ])) in
+  in_cwd (Printf.sprintf "mm-red-%d.png" (Unix.getpid ())) (Png_codec.encode 8 1 reds) (fun png ->
+      List.iteri
+        (fun i e -> Alcotest.(check int) (Printf.sprintf "red pixel %d" i) e (material_number (scene png "" 3) (at i 0)))
+        [ 0; 1; 2; 2; 1; 2; 2; 0 ];
+      (* once: off the image, the first texture *)
+      Alcotest.(check int) "once, off" 0 (material_number (scene png "once" 3) (1.5, 0.5));
+      Alcotest.(check int) "repeated" 2 (material_number (scene png "" 3) (1. +. fst (at 2 0), 0.5));
+      Scn.check_message (scene png "map_type 2" 3) "only 0 (planar)";
+      Scn.check_message (scene png "interpolate 2" 3) "interpolate in a material_map";
+      Scn.check_message (scene png "" 0) "at least one texture");
+  (* the committed palette image (16 x 16): index 0 at (1, 0), 1 at (5, 3),
+     2 at (7, 6), 5 at (8, 6), 4 on the diagonals *)
+  let src = Filename.concat (Helpers.scenes_dir ()) "whitted-extra/material-map.png" in
+  in_cwd (Printf.sprintf "mm-pal-%d.png" (Unix.getpid ())) (In_channel.with_open_bin src In_channel.input_all) (fun png ->
+      let px i j = ((float_of_int i +. 0.5) /. 16., 1. -. ((float_of_int j +. 0.5) /. 16.)) in
+      List.iter
+        (fun ((i, j), n, e) ->
+          Alcotest.(check int) (Printf.sprintf "palette (%d, %d), %d textures" i j n) e (material_number (scene png "" n) (px i j)))
+        [ ((1, 0), 4, 0); ((5, 3), 4, 1); ((7, 6), 4, 2); ((8, 6), 4, 1); ((0, 0), 4, 3); ((8, 6), 3, 2); ((0, 0), 3, 1) ])
+
 let tests =
   ( "bump_map",
     [
       Alcotest.test_case "the three-pixel rule by hand, allocation-free" `Quick by_hand;
       Alcotest.test_case "parsed: bump_size, interpolate, once, use_color; default 0.5" `Quick parse;
       Alcotest.test_case "errors" `Quick errors;
+      Alcotest.test_case "material_map = POV-Ray's choices" `Quick material_map;
     ] )
