@@ -611,6 +611,31 @@ and declare t ~local loc =
           bind (guarded t nloc (fun () -> Env.Array (Arrays.make t loc)));
           (match (raw_peek t).raw with Tok Parser.SEMI -> ignore (raw_next t) | _ -> ())
       | _ -> (
+          (* #declare A = M(...) where the macro's body ends with a whole
+             array (POV-Ray's benchmark.pov): the call is made and the
+             body's directives run, as the parser's supplier would, up to
+             the body's first token, which the check below then sees *)
+          let rec enter_calls () =
+            let f = top t in
+            if t.pending = [] && Toks.mem f.toks (f.pos + 1) then
+              match ((Toks.get f.toks f.pos).raw, (Toks.get f.toks (f.pos + 1)).raw) with
+              | Ident n, Tok Parser.LPAREN -> (
+                  match Env.find t.env n with
+                  | Some (Env.Macro m) ->
+                      let tok = raw_next t in
+                      Macros.call t m tok.loc;
+                      skip_directives ()
+                  | _ -> ())
+              | _ -> ()
+          and skip_directives () =
+            match (raw_peek t).raw with
+            | Directive d ->
+                let tok = raw_next t in
+                directive t d tok.loc;
+                skip_directives ()
+            | _ -> enter_calls ()
+          in
+          enter_calls ();
           (* #declare A = B; for B a whole array or a function (not a call) *)
           let f = top t in
           let whole =
