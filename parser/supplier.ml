@@ -614,14 +614,33 @@ and declare t ~local loc =
           (* #declare A = M(...) where the macro's body ends with a whole
              array (POV-Ray's benchmark.pov): the call is made and the
              body's directives run, as the parser's supplier would, up to
-             the body's first token, which the check below then sees *)
+             the body's first token, which the check below then sees. Only
+             for a body whose last token names an array it makes
+             (#local X = array ... X): a value the parser reads must be
+             read from the caller's frame *)
+          let returns_array (m : Env.macro) =
+            let b = m.body in
+            let rec last i = if Toks.mem b (i + 1) && (Toks.get b (i + 1)).raw <> Eof then last (i + 1) else i in
+            let k = last 0 in
+            match (Toks.get b k).raw with
+            | Ident x ->
+                let rec makes i =
+                  i + 3 <= k
+                  && ((match ((Toks.get b i).raw, (Toks.get b (i + 1)).raw, (Toks.get b (i + 2)).raw, (Toks.get b (i + 3)).raw) with
+                      | Directive ("local" | "declare"), Ident y, Tok Parser.EQ, Ident "array" -> y = x
+                      | _ -> false)
+                     || makes (i + 1))
+                in
+                k > 0 && (match (Toks.get b (k - 1)).raw with Tok Parser.SEMI | Directive _ | Ident _ -> true | _ -> false) && makes 0
+            | _ -> false
+          in
           let rec enter_calls () =
             let f = top t in
             if t.pending = [] && Toks.mem f.toks (f.pos + 1) then
               match ((Toks.get f.toks f.pos).raw, (Toks.get f.toks (f.pos + 1)).raw) with
               | Ident n, Tok Parser.LPAREN -> (
                   match Env.find t.env n with
-                  | Some (Env.Macro m) ->
+                  | Some (Env.Macro m) when returns_array m ->
                       let tok = raw_next t in
                       Macros.call t m tok.loc;
                       skip_directives ()
