@@ -4,6 +4,7 @@ type image = {
   px : Color.rgbft array;
   once : bool;
   interpolate : bool;
+  map_type : int;
 }
 
 type t =
@@ -103,7 +104,23 @@ let pixel (im : image) i j =
 (* the image at [p] (in its own space) into [o]; interpolated: the lerp of
    two lerps, as [lerp] makes it, channel by channel *)
 let image_into (im : image) (p : Vec3.m) (o : out) =
-  let u = p.mx and v = p.my in
+  let x = p.mx and y = p.my and z = p.mz in
+  (* the longitude from +x towards +z, in turns *)
+  let longitude () =
+    if (x *. x) +. (z *. z) = 0. then 0.
+    else
+      let a = Float.atan2 z x in
+      (if a < 0. then a +. (2. *. Float.pi) else a) /. (2. *. Float.pi)
+  in
+  let u, v =
+    match im.map_type with
+    | 1 ->
+        let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+        if l = 0. then (0., 0.)
+        else (longitude (), 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi))
+    | 2 -> (longitude (), y)
+    | _ -> (x, y)
+  in
   if im.once && (u < 0. || u >= 1. || v < 0. || v >= 1.) then set o clear
   else
     let u = u -. Float.floor u and v = v -. Float.floor v in

@@ -9,9 +9,13 @@ type image = {
   px : Color.rgbft array;  (** row-major, row 0 at the top, linear values *)
   once : bool;
   interpolate : bool;
+  map_type : int;
 }
-(** A planar image map: the image covers the unit square of the xy plane
-    (x to the right, y up) and repeats unless [once]. *)
+(** An image map. [map_type] 0 (planar): the image covers the unit square
+    of the xy plane (x to the right, y up) and repeats unless [once]; 1
+    (spherical): it wraps the unit sphere, u the longitude from +x towards
+    +z, v the latitude from -y to +y; 2 (cylindrical): u the same
+    longitude, v the height y (repeating unless [once]). *)
 
 type t =
   | Solid of Color.rgbft

@@ -14,7 +14,7 @@
 %token DENSITY_FILE DF3 BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
-%token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL
+%token IMAGE_MAP PNG ONCE INTERPOLATE MAP_TYPE ALL GAMMA
 %token <(float * Camlray.Pigment.t) array> COLOR_MAP_ID
 %token <Camlray.Normal.t option> NORMAL_ID
 %token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
@@ -194,8 +194,15 @@
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
   | OBJECT LBRACE k = pattern_object cs = block_cells RBRACE ms = list(pigment_mod)
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
-  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg ims = list(image_item) RBRACE ms = list(pigment_mod)
-      { let p = Texdesc.image_map (loc $loc(f)) ~gamma_decode:(Defaults.version () >= 3.7) f ims in
+  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg g = ioption(preceded(GAMMA, param)) ims = list(image_item) RBRACE
+    ms = list(pigment_mod)
+      { let file_gamma =
+          Option.map (fun g ->
+              let x = fl $loc(g) g in
+              if not (x > 0.) then Diag.error (loc $loc(g)) "an image file's gamma must be positive, found %g" x;
+              x) g
+        in
+        let p = Texdesc.image_map (loc $loc(f)) ?file_gamma ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         let p = Texdesc.(pigment (apply ms (of_pigment p))) in
         fun _ -> p }
   | ms = list(pigment_mod) { fun base -> Texdesc.(pigment (apply ms (of_pigment base))) }
@@ -229,8 +236,12 @@
   | ONCE { fun (i : Pigment.image) -> { i with once = true } }
   | INTERPOLATE e = param { let n = Value.to_int (loc $loc(e)) e in fun (i : Pigment.image) -> { i with interpolate = n > 0 } }
   | MAP_TYPE e = param
-      { if Value.to_int (loc $loc(e)) e <> 0 then Diag.warning (loc $loc) "only map_type 0 (planar) is supported";
-        fun i -> i }
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n < 0 || n > 2 then
+          Diag.warning (loc $loc)
+            (Printf.sprintf "an image_map's map_type %d is drawn planar: camlray has 0 (planar), 1 (spherical) and 2 (cylindrical)" n);
+        let n = if n < 0 || n > 2 then 0 else n in
+        fun (i : Pigment.image) -> { i with map_type = n } }
   | c = CHANNEL ALL e = param
       { let x = fl $loc(e) e in
         fun (i : Pigment.image) -> { i with px = Array.map (fun (p : Color.rgbft) ->

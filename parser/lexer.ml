@@ -94,7 +94,7 @@ let texture_keywords =
     ("lambda", LAMBDA); ("frequency", FREQUENCY); ("phase", PHASE); ("ramp_wave", RAMP_WAVE);
     ("triangle_wave", TRIANGLE_WAVE); ("sine_wave", SINE_WAVE); ("scallop_wave", SCALLOP_WAVE);
     ("cubic_wave", CUBIC_WAVE); ("poly_wave", POLY_WAVE); ("image_map", IMAGE_MAP);
-    ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("map_type", MAP_TYPE);
+    ("png", PNG); ("once", ONCE); ("interpolate", INTERPOLATE); ("gamma", GAMMA); ("map_type", MAP_TYPE);
     ("all", ALL); ("crand", CRAND);
     ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);

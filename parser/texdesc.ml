@@ -152,13 +152,23 @@ let normal_map loc es p =
     Diag.error loc "the weights of an average's normal_map must not sum to 0";
   { p with nmap = Some (Array.of_list es) }
 
-let image_map loc ~gamma_decode file mods =
+let image_map loc ?file_gamma ~gamma_decode file mods =
+  (* beside the scene or on the include path, as POV-Ray looks *)
+  let path =
+    match Defaults.find_file loc file with
+    | Some p -> p
+    | None -> Diag.error loc "cannot find image_map %s (looked in the scene's folder and the include path)" file
+  in
   let img =
-    try Image.read file
+    try Image.read path
     with Sys_error e | Failure e -> Diag.error loc "cannot read image_map %s: %s" file e
   in
   let dec x =
     let c = float_of_int x /. 255. in
+    (* png "file" gamma G: the file's values are c^G *)
+    match file_gamma with
+    | Some g -> Float.pow c g
+    | None ->
     if gamma_decode then
       if c <= 0.04045 then c /. 12.92 else Float.pow ((c +. 0.055) /. 1.055) 2.4
     else c
@@ -168,7 +178,7 @@ let image_map loc ~gamma_decode file mods =
         let b k = dec (Char.code (Bytes.get img.data ((3 * i) + k))) in
         Color.opaque (Color.make (b 0) (b 1) (b 2)))
   in
-  let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false } in
+  let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false; map_type = 0 } in
   Pigment.Image_map { image = List.fold_left (fun i f -> f i) im mods; xform = Transform.identity }
 
 (* a PNG's colour type (IHDR's byte 25): 3 is a palette *)

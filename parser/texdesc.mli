@@ -55,9 +55,11 @@ val density_file : Loc.t -> string -> Pattern.kind
 (** [density_file df3 "file"]: the file read (located errors when it is
     missing or damaged). *)
 
-val image_map : Loc.t -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
-(** Read a PNG into a planar image map (values decoded from sRGB when
-    [gamma_decode]). Errors are located. *)
+val image_map :
+  Loc.t -> ?file_gamma:float -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
+(** Read a PNG (beside the scene or on the include path) into an image
+    map: values c^[file_gamma] when the scene gives the file's gamma,
+    else decoded from sRGB when [gamma_decode]. Errors are located. *)
 
 val material_map : Loc.t -> string -> once:bool -> count:int -> Pattern.kind
 (** [texture { material_map { png FILE [once] TEXTURE... } }]: the
