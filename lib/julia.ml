@@ -41,38 +41,6 @@ let make ~c ~hypercomplex ~cube ~max_iteration ~precision =
 
 let bounds t = (Vec3.make (-.t.r) (-.t.r) (-.t.r), Vec3.make t.r t.r t.r)
 
-(* bounded for n - 1 steps *)
-let[@inline] inside t x y z =
-  let a = ref x and b = ref y and c = ref z and d = ref 0. in
-  let ok = ref true and i = ref 1 in
-  while !ok && !i < t.n do
-    let a0 = !a and vv = (!b *. !b) +. (!c *. !c) +. (!d *. !d) in
-    if t.hyper then begin
-      let b0 = !b and c0 = !c and d0 = !d in
-      a := (a0 *. a0) +. (d0 *. d0) -. (b0 *. b0) -. (c0 *. c0) +. t.ca;
-      b := (2. *. ((a0 *. b0) -. (c0 *. d0))) +. t.cb;
-      c := (2. *. ((a0 *. c0) -. (b0 *. d0))) +. t.cc;
-      d := (2. *. ((a0 *. d0) +. (b0 *. c0))) +. t.cd
-    end
-    else if t.cube then begin
-      let s = (3. *. a0 *. a0) -. vv in
-      a := (a0 *. a0 *. a0) -. (3. *. a0 *. vv) +. t.ca;
-      b := (s *. !b) +. t.cb;
-      c := (s *. !c) +. t.cc;
-      d := (s *. !d) +. t.cd
-    end
-    else begin
-      let s = 2. *. a0 in
-      a := (a0 *. a0) -. vv +. t.ca;
-      b := (s *. !b) +. t.cb;
-      c := (s *. !c) +. t.cc;
-      d := (s *. !d) +. t.cd
-    end;
-    if (!a *. !a) +. (!b *. !b) +. (!c *. !c) +. (!d *. !d) > t.bail then ok := false;
-    incr i
-  done;
-  !ok
-
 let[@inline] unit_into (p : Vec3.m) (out : Vec3.m) gx gy gz =
   let l = Float.sqrt ((gx *. gx) +. (gy *. gy) +. (gz *. gz)) in
   if l > 0. && Float.is_finite l then Vec3.set out (gx /. l) (gy /. l) (gz /. l)
@@ -189,6 +157,24 @@ let[@inline] quaternion_probe t x y z =
   !result
 
 let[@inline] probe t x y z ux uy uz = if t.hyper then hyper_probe t x y z ux uy uz else quaternion_probe t x y z
+
+(* bounded: q_0 ... q_(n-1) within the escape radius (POV-Ray's test) *)
+let[@inline] inside t x y z =
+  if not t.hyper then quaternion_probe t x y z = neg_infinity
+  else begin
+    let a = ref x and b = ref y and c = ref z and d = ref 0. in
+    let ok = ref ((x *. x) +. (y *. y) +. (z *. z) <= t.bail) and i = ref 1 in
+    while !ok && !i < t.n do
+      let a0 = !a and b0 = !b and c0 = !c and d0 = !d in
+      a := (a0 *. a0) +. (d0 *. d0) -. (b0 *. b0) -. (c0 *. c0) +. t.ca;
+      b := (2. *. ((a0 *. b0) -. (c0 *. d0))) +. t.cb;
+      c := (2. *. ((a0 *. c0) -. (b0 *. d0))) +. t.cc;
+      d := (2. *. ((a0 *. d0) +. (b0 *. c0))) +. t.cd;
+      if (!a *. !a) +. (!b *. !b) +. (!c *. !c) +. (!d *. !d) > t.bail then ok := false;
+      incr i
+    done;
+    !ok
+  end
 
 (* POV-Ray's walk: from where the ray enters the bounding sphere, steps
    of [probe]'s length (at least [step]);
