@@ -245,14 +245,19 @@ let bend nm c (b : bend) (d : Vec3.m) =
   Vec3.set d b.bd.mx b.bd.my b.bd.mz;
   Vec3.normalize_m d
 
-let[@inline] ray_into c sx sy o d =
-  let seen = base_into c sx sy o d in
-  (match c.normal with
+(* a camera's normal turns the ray's direction by its pattern at the
+   screen point (sx, sy, 0) *)
+let[@inline] bend_ray c sx sy d =
+  match c.normal with
   | Some nm ->
       let b = Scratch.get bend_key in
       Vec3.set b.bp sx sy 0.;
       bend nm c b d
-  | None -> ());
+  | None -> ()
+
+let[@inline] ray_into c sx sy o d =
+  let seen = base_into c sx sy o d in
+  bend_ray c sx sy d;
   seen
 
 let sees c sx sy = ray_into c sx sy (Vec3.m ()) (Vec3.m ())
@@ -297,12 +302,7 @@ let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
     Vec3.set d (fx -. o.mx) (fy -. o.my) (fz -. o.mz);
     Vec3.normalize_m d
   end;
-  (match c.normal with
-  | Some nm ->
-      let b = Scratch.get bend_key in
-      Vec3.set b.bp sx sy 0.;
-      bend nm c b d
-  | None -> ());
+  bend_ray c sx sy d;
   seen
 
 let ray_lens c sx sy u v =
