@@ -283,12 +283,12 @@ let slope_map () =
 (* warps: the points POV-Ray 3.7's warps give, read back through
    pigment functions whose colour is the warped coordinate (single
    precision there: 1e-5) *)
-let warps () =
-  let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6);
-              (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ] in
+(* each warp's mapped point, read through three patterns (x, y and z,
+   each shifted into [0, 1]) with the pigment's transformations, against
+   the values POV-Ray's pigment functions give *)
+let check_warped ~eps pts cases =
   List.iter
     (fun (w, expected) ->
-      (* the pattern and the pigment's transformations *)
       let coord c =
         let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { function { (%s + 50) / 100 } %s } }" c w) in
         match s.objects.(0).texture with
@@ -299,8 +299,14 @@ let warps () =
       List.iter2
         (fun (x, y, z) (ex, ey, ez) ->
           let at (p, xf) = (Pattern.value p (Transform.inv_point xf (Vec3.make x y z)) *. 100.) -. 50. in
-          Scn.check_floats ~eps:1e-5 (Printf.sprintf "%s at (%g, %g, %g)" w x y z) [ ex; ey; ez ] [ at px; at py; at pz ])
+          Scn.check_floats ~eps (Printf.sprintf "%s at (%g, %g, %g)" w x y z) [ ex; ey; ez ] [ at px; at py; at pz ])
         pts expected)
+    cases
+
+let warps () =
+  let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6);
+              (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ] in
+  check_warped ~eps:1e-5 pts
     [
       ("warp { repeat x*2 }",
        [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (0.6, -0.4, 0.3); (1.1, 1.2, 0.8); (0.9, 0.1, -0.6); (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ]);
@@ -333,20 +339,7 @@ let warps () =
 let mapping_warps () =
   let pts = [ (0.3, 0.2, 0.1); (1.7, 0.5, -0.2); (2.6, -0.4, 0.3); (-0.9, 1.2, 0.8); (-3.1, 0.1, -0.6);
               (0.6, 0.7, 0.0); (0.1, 0.05, 0.0); (1.2, -1.9, 0.4) ] in
-  List.iter
-    (fun (w, expected) ->
-      let coord c =
-        let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { function { (%s + 50) / 100 } %s } }" c w) in
-        match s.objects.(0).texture with
-        | { pigment = Pigment.Map { pattern; xform; _ }; _ } :: _ -> (pattern, xform)
-        | _ -> Alcotest.fail "no pattern"
-      in
-      let px = coord "x" and py = coord "y" and pz = coord "z" in
-      List.iter2
-        (fun (x, y, z) (ex, ey, ez) ->
-          let at (p, xf) = (Pattern.value p (Transform.inv_point xf (Vec3.make x y z)) *. 100.) -. 50. in
-          Scn.check_floats ~eps:2e-5 (Printf.sprintf "%s at (%g, %g, %g)" w x y z) [ ex; ey; ez ] [ at px; at py; at pz ])
-        pts expected)
+  check_warped ~eps:2e-5 pts
     [
       ("warp { spherical }",
        [ (0.05121, 0.67951, 0.37417); (0.98136, 0.59046, 1.78326); (0.01828, 0.45173, 2.64764); (0.38435, 0.74945, 1.7); (0.53043, 0.51008, 3.15911); (0., 0.77444, 0.92195); (0., 0.64759, 0.1118); (0.05121, 0.18696, 2.28254) ]);
