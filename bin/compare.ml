@@ -123,7 +123,13 @@ let write_report out_dir ~width ~height ~aa ~aa_depth rows =
   write "report.tsv" tsv
 
 let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
-  if not (povray_available ()) then begin
+  (* SSIM looks through an 11x11 window *)
+  if width < 11 || height < 11 then begin
+    Printf.eprintf "camlray compare: error: images of at least 11x11 pixels are compared (SSIM's window), not %dx%d\n"
+      width height;
+    1
+  end
+  else if not (povray_available ()) then begin
     print_endline "camlray compare: povray is not installed (not on PATH); nothing was compared";
     0
   end

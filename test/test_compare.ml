@@ -76,9 +76,20 @@ let skips () =
   Alcotest.(check bool) "says povray is not installed" true
     (try ignore (Str.search_forward (Str.regexp_string "not installed") line 0); true with Not_found -> false)
 
+(* below SSIM's 11x11 window: a clear error and status 1, nothing
+   rendered (it was an internal error after both renders) *)
+let too_small () =
+  let out = Filename.concat (Filename.get_temp_dir_name ()) (Printf.sprintf "camlray-tiny-%d" (Unix.getpid ())) in
+  let code, _, err = Helpers.run [ "compare"; "-W"; "8"; "-H"; "6"; "-o"; out; scenes_dir ^ "/checker.pov" ] in
+  Alcotest.(check int) "exit 1" 1 code;
+  Alcotest.(check bool) "says why" true
+    (try ignore (Str.search_forward (Str.regexp_string "at least 11x11 pixels") err 0); true with Not_found -> false);
+  Alcotest.(check bool) "nothing rendered" false (Sys.file_exists (Filename.concat out "checker.camlray.png"))
+
 let tests =
   ( "compare",
     [
       Alcotest.test_case "camlray vs POV-Ray" `Slow cross_render;
       Alcotest.test_case "skips without povray" `Quick skips;
+      Alcotest.test_case "images under 11x11 are refused" `Quick too_small;
     ] )
