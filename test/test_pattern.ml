@@ -214,11 +214,27 @@ let pattern_errors () =
    x*x + y } ... } } at the same points (read with #debug): above 1 the
    value is taken mod 1 (1 itself stays), below 0 the frequency step
    takes it mod 1.00001 then adds 1; at frequency 0 it is v - floor v *)
-let fn_pattern src =
-  let s = Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { %s } }" src) in
+(* the pattern of the first object's pigment *)
+let pattern_of (s : Scene.t) what =
   match s.objects.(0).texture with
   | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
-  | _ -> Alcotest.failf "no pattern pigment in %S" src
+  | _ -> Alcotest.failf "no pattern pigment in %s" what
+
+let fn_pattern src = pattern_of (Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { %s } }" src)) (Printf.sprintf "%S" src)
+
+(* minor words over 1000 evaluations of [p] at (step i, y, z), after one
+   at [prime] (which makes the domain's scratch) *)
+let words_over_1000 ?(prime = (0.3, 0.2, 0.1)) ?(step = 0.001) ~y ~z p =
+  let q = Vec3.m () and w = Pattern.work () in
+  let px, py, pz = prime in
+  Vec3.set q px py pz;
+  Pattern.eval_m p q w;
+  let before = Gc.minor_words () in
+  for i = 1 to 1000 do
+    Vec3.set q (step *. float_of_int i) y z;
+    Pattern.eval_m p q w
+  done;
+  Gc.minor_words () -. before
 
 (* boxed, cylindrical, pigment_pattern: the values POV-Ray 3.7 prints
    for function { pattern { ... } } at the same points *)
@@ -379,20 +395,7 @@ let mapping_warps () =
       "sphere { 0, 1 pigment { gradient x warp { planar <1,1,0>, 0.2 } warp { spherical orientation y dist_exp 0.5 } \
        warp { cylindrical orientation x dist_exp 1.5 } warp { toroidal major_radius 0.5 } } }"
   in
-  let pattern =
-    match s.objects.(0).texture with
-    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
-    | _ -> Alcotest.fail "no pattern"
-  in
-  let q = Vec3.m () and w = Pattern.work () in
-  Vec3.set q 0.3 0.2 0.1;
-  Pattern.eval_m pattern q w;
-  let before = Gc.minor_words () in
-  for i = 1 to 1000 do
-    Vec3.set q (0.001 *. float_of_int i) 0.2 (-0.3);
-    Pattern.eval_m pattern q w
-  done;
-  let words = Gc.minor_words () -. before in
+  let words = words_over_1000 ~y:0.2 ~z:(-0.3) (pattern_of s "the scene") in
   if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations through mapping warps" words;
   Scn.check_message "sphere { 0, 1 pigment { bozo warp { spherical orientation 0 } } }"
     "a mapping warp's orientation cannot be <0,0,0>";
@@ -434,15 +437,7 @@ let magnet () =
       ("magnet 1 mandel 50 interior 1, 1", [ 0.232877; 0.145299; 0.080000; 0.074789; 0.250000; 0.135259; 0.002234; 0.280000 ]);
     ];
   let p = fn_pattern "magnet 2 mandel 50 interior 1, 1" in
-  let q = Vec3.m () and w = Pattern.work () in
-  Vec3.set q 0.3 0.2 0.;
-  Pattern.eval_m p q w;
-  let before = Gc.minor_words () in
-  for i = 1 to 1000 do
-    Vec3.set q (0.001 *. float_of_int i) 0.2 0.;
-    Pattern.eval_m p q w
-  done;
-  Alcotest.(check (float 0.)) "words over 1000 evaluations" 0. (Gc.minor_words () -. before)
+  Alcotest.(check (float 0.)) "words over 1000 evaluations" 0. (words_over_1000 ~prime:(0.3, 0.2, 0.) ~y:0.2 ~z:0. p)
 
 (* slope: the values POV-Ray renders on a unit sphere (orthographic,
    16-bit, decoded), at known normals *)
@@ -557,20 +552,7 @@ let function_allocation () =
        sphere { 0, 1 pigment { function { F(x, y, z) + sin(x) * 0.1 + select(y, 0.1, 0.2) + sum(i, 1, 3, i*z) * 0.01 \
        + max(x, y, 0) + PF(x, z, y).gray } } }"
   in
-  let pattern =
-    match s.objects.(0).texture with
-    | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern
-    | _ -> Alcotest.fail "no pattern"
-  in
-  let q = Vec3.m () and w = Pattern.work () in
-  Vec3.set q 0.3 0.2 0.1;
-  Pattern.eval_m pattern q w;
-  let before = Gc.minor_words () in
-  for i = 1 to 1000 do
-    Vec3.set q (0.001 *. float_of_int i) 0.2 (-0.3);
-    Pattern.eval_m pattern q w
-  done;
-  let words = Gc.minor_words () -. before in
+  let words = words_over_1000 ~y:0.2 ~z:(-0.3) (pattern_of s "the scene") in
   if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of a function pattern" words
 
 (* the object pattern, against POV-Ray 3.7's function { pigment { object
@@ -621,14 +603,7 @@ let object_pattern () =
     | { pigment = Pigment.Blocks { pattern; _ }; _ } :: _ -> pattern
     | _ -> Alcotest.fail "no block pigment"
   in
-  let q = Vec3.m () and w = Pattern.work () in
-  Pattern.eval_m p q w;
-  let before = Gc.minor_words () in
-  for i = 1 to 1000 do
-    Vec3.set q (0.003 *. float_of_int i) 0.2 (-0.3);
-    Pattern.eval_m p q w
-  done;
-  let words = Gc.minor_words () -. before in
+  let words = words_over_1000 ~prime:(0., 0., 0.) ~step:0.003 ~y:0.2 ~z:(-0.3) p in
   if words > 0. then Alcotest.failf "%.0f words for 1000 evaluations of an object pattern" words
 
 (* cells, against POV-Ray 3.7's function { pattern { cells } } at the
