@@ -85,3 +85,12 @@ let apply fogs (o : Vec3.m) (d : Vec3.m) t (c : Color.acc) =
     (Float.Array.get s 3 +. (Float.Array.get s 0 *. c.ar))
     (Float.Array.get s 4 +. (Float.Array.get s 1 *. c.ag))
     (Float.Array.get s 5 +. (Float.Array.get s 2 *. c.ab))
+
+let dim fogs (o : Vec3.m) (d : Vec3.m) width (c : Color.acc) =
+  let w = Scratch.get work_key in
+  Vec3.set w.u d.mx d.my d.mz;
+  let s = w.sums in
+  Float.Array.fill s 0 3 1.;
+  Float.Array.fill s 3 3 0.;
+  through fogs o w width;
+  Color.acc_set c (Float.Array.get s 0 *. c.ar) (Float.Array.get s 1 *. c.ag) (Float.Array.get s 2 *. c.ab)

@@ -37,3 +37,9 @@ val apply : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> unit
     each fog's transmittance [a] (at least its [transmit]), tinted by its
     [filter], and [(1 - a)] of its colour is added. Fogs of zero distance
     are skipped. *)
+
+val dim : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> unit
+(** [dim fogs origin dir width c]: the light [c] of a shadow ray that
+    crosses [width] units of the fogs from [origin] along the unit vector
+    [dir] (POV-Ray does this for lights with [media_attenuation on]):
+    attenuated and tinted as in {!apply}, with no fog colour added. *)

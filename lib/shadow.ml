@@ -55,7 +55,10 @@ type walk = {
   mutable fobjs : Object.t array;
   mutable fts : Float.Array.t;
   mutable nf : int;
-  mutable sorted : Float.Array.t;  (** one object's distances, sorted *)
+  mutable order : int array;  (** the crossings by distance *)
+  mutable inside : Interior.t array;
+      (** the interiors the ray is in along the stretch being walked *)
+  mutable ni : int;
   inside_f : Object.found;  (** a point tested for being inside *)
   ray : Ray.scratch;
   l : Light.dir;
@@ -75,16 +78,22 @@ type walk = {
   mutable air : Media.t list;
       (** the scene's atmospheric media when the light has
           media_attenuation on, else [[]] *)
+  mutable fogs : Fog.t list;
+      (** the scene's fogs when the light has media_attenuation and
+          media_interaction on, else [[]] *)
+  fo : Vec3.m;  (** where a stretch of fog starts *)
+  fd : Vec3.m;  (** the shadow ray's direction, for the fogs *)
 }
 
 let shadow_key =
   Scratch.key (fun () ->
       { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0;
-        sorted = Float.Array.create 0; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
+        order = [||]; inside = [||]; ni = 0; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
         ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
-        filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); air = [] })
+        filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
+        fd = Vec3.m () })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -96,7 +105,8 @@ let add_fader w (o : Object.t) (h : Hit.t) =
     Float.Array.blit w.fts 0 ts 0 k;
     w.fobjs <- objs;
     w.fts <- ts;
-    w.sorted <- Float.Array.create n
+    w.order <- Array.make n 0;
+    w.inside <- Array.make n o.interior
   end;
   w.fobjs.(k) <- o;
   Float.Array.set w.fts k h.t;
@@ -132,65 +142,109 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
     let c = o.interior.caustics in
     let k = if c = 0. then 1. else caustics w o q h c in
     Color.acc_set a (a.ar *. k *. f.ar) (a.ag *. k *. f.ag) (a.ab *. k *. f.ab);
-    if Interior.fades_light o.interior || o.interior.media <> [] then add_fader w o h;
+    if Interior.fades_light o.interior || o.interior.media <> [] || (w.fogs != [] && not o.interior.hollow) then
+      add_fader w o h;
     not (Color.acc_is_black a)
   end
 
 (* where [shadow_hit] is false whatever the crossing *)
 let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
 
-(* Each object crossed, taken last crossed first: the segments between
-   its crossings (and the ray's ends) whose middle is inside it fade what
-   passes. Distances of one object sorted in place. *)
-let fade_segments (w : walk) dist =
+(* Whether the shadow ray is inside [o] just past its crossing at [t]:
+   past a surface of a CSG, the CSG is inside exactly where the leaf
+   crossed is (its other children do not change there) *)
+let entering (w : walk) (o : Object.t) t =
   let r = w.ray and f = w.inside_f in
-  let n = w.nf in
-  for k = n - 1 downto 0 do
-    let o = w.fobjs.(k) in
-    (* an object met again later was taken there *)
-    let later = ref false in
-    for j = k + 1 to n - 1 do
-      if w.fobjs.(j) == o then later := true
+  let t = t +. (1e-6 *. (1. +. t)) and p = f.pt in
+  p.ox <- r.ox +. (t *. r.dx);
+  p.oy <- r.oy +. (t *. r.dy);
+  p.oz <- r.oz +. (t *. r.dz);
+  Object.inside_s o f
+
+let[@inline] index_in (w : walk) (i : Interior.t) =
+  let k = ref (-1) in
+  for j = 0 to w.ni - 1 do
+    if w.inside.(j) == i then k := j
+  done;
+  !k
+
+(* The ray crosses into or out of [i]: in POV-Ray's way, an interior
+   the ray is in is left, any other entered *)
+let toggle (w : walk) (i : Interior.t) =
+  let k = index_in w i in
+  if k < 0 then begin
+    w.inside.(w.ni) <- i;
+    w.ni <- w.ni + 1
+  end
+  else begin
+    w.inside.(k) <- w.inside.(w.ni - 1);
+    w.ni <- w.ni - 1
+  end
+
+(* What a stretch [lo, hi] of the shadow ray takes from the light: the
+   fade and the media of the interiors it runs in, and, in the open
+   (inside hollow objects only), the fogs *)
+let stretch (w : walk) lo hi =
+  let a = w.acc and r = w.ray in
+  let inner = ref true in
+  for j = 0 to w.ni - 1 do
+    let i = w.inside.(j) in
+    if not i.hollow then inner := false;
+    if Interior.fades_light i then begin
+      let d = hi -. lo and fc = i.fade_color in
+      Color.acc_set a
+        (a.ar *. Interior.fade_channel i fc.r d)
+        (a.ag *. Interior.fade_channel i fc.g d)
+        (a.ab *. Interior.fade_channel i fc.b d)
+    end;
+    (* the interior's media dim the light (POV-Ray 3.7 does so whatever
+       the light's media_attenuation) *)
+    if i.media <> [] then Media.transmittance_into i.media r lo hi a
+  done;
+  if w.fogs != [] && !inner then begin
+    Vec3.set w.fo (r.ox +. (lo *. r.dx)) (r.oy +. (lo *. r.dy)) (r.oz +. (lo *. r.dz));
+    Vec3.set w.fd r.dx r.dy r.dz;
+    Fog.dim w.fogs w.fo w.fd (hi -. lo) a
+  end
+
+(* The recorded crossings taken in the order of distance, the stretches
+   between them (and the ray's ends) dimmed by [stretch]. The ray starts
+   inside the interiors whose first crossing leaves them. POV-Ray's fogs
+   dim a media_attenuation light's shadow ray only where it runs outside
+   solids (measured: 0.548806 = exp(-0.6), not exp(-0.65), with a clear
+   solid box 1 unit deep on 10 units of fog of distance 20); the media of
+   a hollow CSG only over the stretches inside it (measured: a shell
+   between spheres of radius 10 and 20 with absorption 0.05, lit from a
+   point inside it through one side: 0.606531 = exp(-0.5)). *)
+let stretches (w : walk) dist =
+  let n = w.nf and ts = w.fts and ord = w.order in
+  for j = 0 to n - 1 do
+    let t = Float.Array.get ts j in
+    let i = ref j in
+    while !i > 0 && Float.Array.get ts ord.(!i - 1) > t do
+      ord.(!i) <- ord.(!i - 1);
+      decr i
     done;
-    if not !later then begin
-      let ts = w.sorted and m = ref 0 in
-      for j = n - 1 downto 0 do
-        if w.fobjs.(j) == o then begin
-          (* insertion, ascending *)
-          let t = Float.Array.get w.fts j in
-          let i = ref !m in
-          while !i > 0 && Float.Array.get ts (!i - 1) > t do
-            Float.Array.set ts !i (Float.Array.get ts (!i - 1));
-            decr i
-          done;
-          Float.Array.set ts !i t;
-          incr m
-        end
+    ord.(!i) <- j
+  done;
+  w.ni <- 0;
+  for a = 0 to n - 1 do
+    let k = ord.(a) in
+    let i = w.fobjs.(k).interior in
+    if index_in w i < 0 then begin
+      let first = ref true in
+      for b = 0 to a - 1 do
+        if w.fobjs.(ord.(b)).interior == i then first := false
       done;
-      let inner = o.interior and fc = o.interior.fade_color and a = w.acc in
-      for j = 0 to !m do
-        let lo = if j = 0 then 0. else Float.Array.get ts (j - 1) in
-        let hi = if j = !m then dist else Float.Array.get ts j in
-        if hi > lo then begin
-          let mid = 0.5 *. (lo +. hi) in
-          let p = f.pt in
-          p.ox <- r.ox +. (mid *. r.dx);
-          p.oy <- r.oy +. (mid *. r.dy);
-          p.oz <- r.oz +. (mid *. r.dz);
-          if Object.inside_s o f then begin
-            let d = hi -. lo in
-            if Interior.fades_light inner then
-              Color.acc_set a
-                (a.ar *. Interior.fade_channel inner fc.r d)
-                (a.ag *. Interior.fade_channel inner fc.g d)
-                (a.ab *. Interior.fade_channel inner fc.b d);
-            (* the interior's media dim the light (POV-Ray 3.7 does so
-               whatever the light's media_attenuation) *)
-            if inner.media <> [] then Media.transmittance_into inner.media r lo hi a
-          end
-        end
-      done
+      if !first && not (entering w w.fobjs.(k) (Float.Array.get ts k)) then toggle w i
     end
+  done;
+  let lo = ref 0. in
+  for a = 0 to n do
+    let hi = if a = n then dist else Float.Array.get ts ord.(a) in
+    if hi > !lo && not (Color.acc_is_black w.acc) then stretch w !lo hi;
+    if a < n then toggle w w.fobjs.(ord.(a)).interior;
+    lo := Float.max !lo hi
   done
 
 (* Light reaching the origin of the walk's ray from [w.seg.len] along its
@@ -207,7 +261,7 @@ let shadow_into (s : Scene.t) (w : walk) =
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
   if not visible then Color.acc_set w.acc 0. 0. 0.
   else begin
-    if w.nf > 0 then fade_segments w dist;
+    if w.nf > 0 || w.fogs != [] then stretches w dist;
     (* atmospheric media: over the whole shadow ray, inside solids too
        (POV-Ray 3.7 does so, measured: a clear solid box on the way
        dims the light as much as a hollow one) *)
@@ -232,6 +286,8 @@ let area_sample (w : walk) i j (out : Color.acc) =
 (* POV-Ray dims shadow rays by atmospheric media only for lights with
    media_attenuation on *)
 let[@inline] aim (s : Scene.t) (w : walk) (light : Light.t) =
+  (let f = if light.media_attenuation && light.media_interaction then s.fog else [] in
+   if w.fogs != f then w.fogs <- f);
   match s.atmosphere with
   | [] -> if w.air != [] then w.air <- []
   | (i : Interior.t) :: _ ->

@@ -105,11 +105,7 @@ let camera items =
     normal = find (function Sdl.Cam_normal n -> Some n | _ -> None);
   }
 
-(* where lights with media_attenuation on stand (see [scene_]) *)
-let attenuating : Loc.t list ref = ref []
-
 let light (o : Sdl.obj) (l : Sdl.light) =
-  if l.media_attenuation then attenuating := o.loc :: !attenuating;
   let x = o.xform in
   let kind =
     match l.kind with
@@ -378,7 +374,6 @@ let rec scene ?par:p (s : Sdl.scene) =
     (fun () -> scene_ s)
 
 and scene_ (s : Sdl.scene) =
-  attenuating := [];
   try
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
@@ -422,11 +417,6 @@ and scene_ (s : Sdl.scene) =
       | true, _ -> Image.Srgb
       | false, _ -> Image.Identity
     in
-    (* POV-Ray dims such a light through fog by a rule camlray has not
-       rebuilt (measured: 0.6405 over one fog distance, not exp(-1)) *)
-    (match (!fog, List.rev !attenuating) with
-     | _ :: _, l :: _ -> Diag.error l "media_attenuation on a light in a scene with fog is not supported by camlray"
-     | _ -> ());
     let camera = match !cams with (_, c) :: _ -> camera c | [] -> Camera.default in
     let flagged = Array.of_list (List.rev !objects) in
     let objects = Array.map fst flagged in

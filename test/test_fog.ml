@@ -85,22 +85,4 @@ let parsed =
            | None -> Alcotest.fail "turbulence")
       | l -> Alcotest.failf "%d fogs" (List.length l))
 
-(* POV-Ray dims a media_attenuation light through fog by a rule camlray
-   has not rebuilt: refused at the light, rather than drawn wrong *)
-let attenuation_refused =
-  Alcotest.test_case "media_attenuation in fog: a located error at the light" `Quick (fun () ->
-      let src =
-        "#version 3.7;\nfog { color rgb 0.5 distance 10 }\nsphere { 0, 1 }\n\
-         light_source { <0, 5, -5> color rgb 1 media_attenuation on }\n"
-      in
-      match Camlray_lang.Parse.string ~name:"f.pov" src with
-      | Error d -> Alcotest.failf "parse: %s" (Camlray_lang.Diag.to_string d)
-      | Ok sdl -> (
-          match Camlray_lang.Compile.scene sdl with
-          | Ok _ -> Alcotest.fail "accepted"
-          | Error d ->
-              Alcotest.(check string) "message"
-                "f.pov:4:1: error: media_attenuation on a light in a scene with fog is not supported by camlray"
-                (List.hd (String.split_on_char '\n' (Camlray_lang.Diag.to_string d)))))
-
-let tests = ("fog", units @ [ parsed; attenuation_refused ])
+let tests = ("fog", units @ [ parsed ])

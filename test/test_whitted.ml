@@ -604,7 +604,14 @@ let media () =
   (* a lit plane behind an absorbing box: the shadow ray is dimmed too *)
   gray ~eps:1e-4 "shadow through media" (Float.exp (-2.))
     (pixel
-       "light_source { <0,0,-1000>, rgb 1 }\nplane { -z, -4 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\nbox { <-2,-2,1>, <2,2,3> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow interior { media { absorption 0.5 } } }\n")
+       "light_source { <0,0,-1000>, rgb 1 }\nplane { -z, -4 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\nbox { <-2,-2,1>, <2,2,3> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow interior { media { absorption 0.5 } } }\n");
+  (* a hollow shell (a difference of spheres of radius 20 and 10) around
+     the lit point: the shadow ray crosses its media over 10 units only,
+     not over each sphere's own inside (POV-Ray 3.7: 0.606531) *)
+  gray ~eps:2e-5 "shadow through a CSG shell's media" (Float.exp (-0.5))
+    (pixel
+       "light_source { <0,0,-100>, rgb 1 }\nplane { -z, -3 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+        difference { sphere { 0, 20 } sphere { 0, 10 } pigment { rgbf 1 } finish { ambient 0 diffuse 0 } hollow interior { media { absorption 0.05 } } }\n")
 
 (* Scene-level (atmospheric) media: the camera at the origin looks along
    +z at a plane z = 3 whose inside is beyond it (the camera inside a
@@ -643,6 +650,42 @@ let atmosphere () =
   gray ~eps:2e-5 "media_attenuation on (POV-Ray 0.522042)" (Float.exp (-0.65)) (lit "media_attenuation on" "");
   gray ~eps:2e-5 "media_attenuation through a clear solid" (Float.exp (-0.65))
     (lit "media_attenuation on" "box { <-1,-1,-5>, <1,1,-4> pigment { rgbf 1 } }\n");
+  (* fog on shadow rays: only for lights with media_attenuation and
+     media_interaction on, and only where the ray runs outside solids;
+     fog of distance 20 over the 3 units to the plane and the 10 back to
+     the light (POV-Ray 3.7's values at 16 bits, linear) *)
+  let fogged att extra fog =
+    pixel
+      (Printf.sprintf
+         "light_source { <0,0,-7>, rgb 1 %s }\nplane { -z, -3 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n%sfog { %s }"
+         att extra fog)
+  in
+  let black = "color rgb 0 distance 20" in
+  gray ~eps:2e-5 "fog, media_attenuation off (POV-Ray 0.860716)" (Float.exp (-0.15)) (fogged "" "" black);
+  gray ~eps:2e-5 "fog, media_attenuation on (POV-Ray 0.522042)" (Float.exp (-0.65))
+    (fogged "media_attenuation on" "" black);
+  gray ~eps:2e-5 "fog, media_interaction off (POV-Ray 0.860716)" (Float.exp (-0.15))
+    (fogged "media_attenuation on media_interaction off" "" black);
+  gray ~eps:2e-5 "fog skips the 1 unit inside a clear solid (POV-Ray 0.548806)" (Float.exp (-0.6))
+    (fogged "media_attenuation on" "box { <-1,-1,-5>, <1,1,-4> pigment { rgbf 1 } }\n" black);
+  gray ~eps:2e-5 "fog through a clear hollow box (POV-Ray 0.522042)" (Float.exp (-0.65))
+    (fogged "media_attenuation on" "box { <-1,-1,-5>, <1,1,-4> pigment { rgbf 1 } hollow }\n" black);
+  (* a ground fog: density 1 / (1 + h^2) above 0 along z, whose mean over
+     [a, b] is (atan b - atan a) / (b - a): the camera ray from 0 to 3,
+     the shadow ray from 3 down to -7 (density 1 below 0) *)
+  let ground a b = if a <= 0. && b <= 0. then 1. else if a <= 0. then (Float.atan b -. a) /. (b -. a) else (Float.atan b -. Float.atan a) /. (b -. a) in
+  gray ~eps:2e-5 "ground fog on a shadow ray (POV-Ray 0.621942)"
+    (Float.exp (-.((3. *. ground 0. 3.) +. (10. *. ground (-7.) 3.)) /. 20.))
+    (fogged "media_attenuation on" "" "fog_type 2 fog_alt 1 fog_offset 0 up z color rgb 0 distance 20");
+  (* a filtering, transmitting fog: the light is tinted by (1 - f + f c)
+     and dimmed by at least the transmit t on each ray; the camera ray
+     adds (1 - a) c *)
+  (let f = 0.5 and t = 0.1 in
+   let a d = Float.max t (Float.exp (-.d /. 20.)) in
+   let seen c = ((1. -. a 3.) *. c) +. (a 3. *. (1. -. f +. (f *. c)) *. a 10. *. (1. -. f +. (f *. c))) in
+   color ~eps:2e-5 "fog filter and transmit on a shadow ray (POV-Ray 0.363302 0.215793 0.130510)"
+     (seen 0.5, seen 0.2, seen 0.)
+     (fogged "media_attenuation on" "" "color rgbft <0.5, 0.2, 0, 0.5, 0.1> distance 20"));
   (* single scattering of a light: none when it has media_interaction off *)
   gray "media_interaction off" 0.
     (pixel ("light_source { <0, 5, 1>, rgb 1 media_interaction off }\n" ^ dark ^ "media { scattering { 1, 0.1 } }"));
