@@ -13,7 +13,16 @@ let whole =
       in
       Alcotest.(check int) "exit" 0 (Sys.command cmd);
       let table = In_channel.with_open_bin (Filename.concat d "scaling.md") In_channel.input_all in
-      Alcotest.(check bool) "has rows" true (Helpers.contains table "| default (whitted) | 1 |"))
+      Alcotest.(check bool) "has rows" true (Helpers.contains table "| default (whitted) | 1 |");
+      (* the 2-domain row carries the machine's ceiling, measured *)
+      let row =
+        List.find (fun l -> Helpers.contains l "| default (whitted) | 2 |") (String.split_on_char '\n' table)
+      in
+      let cells = List.map String.trim (String.split_on_char '|' row) in
+      Alcotest.(check int) "cells" 14 (List.length cells);
+      match Scanf.sscanf_opt (List.nth cells 10) "%fx%!" Fun.id with
+      | Some c when c > 0. -> ()
+      | _ -> Alcotest.failf "ceiling cell %S" (List.nth cells 10))
 
 let objects =
   Alcotest.test_case "object-count benchmark smoke run" `Quick (fun () ->

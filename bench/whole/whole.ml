@@ -3,7 +3,9 @@
    1. domain scaling (the RTIOW final scene in mc mode, the snowman and
       the default scene in whitted mode, a 10^5-triangle mesh): each scene rendered with 1, 2, 4 (and more) domains,
       several runs, median; speed-up and parallel efficiency on the trace
-      time that camlray reports, and on the whole wall time;
+      time that camlray reports, and on the whole wall time; beside them
+      the machine's ceiling for two domains, from two one-domain renders
+      run at once in the same rounds;
    2. camlray against POV-Ray 3.7 on the same whitted scenes, same size,
       anti-aliasing and thread count (+WT), POV-Ray's own trace time and
       the whole wall time;
@@ -73,6 +75,32 @@ let camlray s ~domains ~w ~h extra =
   | Some trace -> (wall, trace)
   | None -> failwith ("no render time in: " ^ text)
 
+(* Two one-domain renders at once, in two processes: the trace times
+   they report, averaged. What the machine gives two independent copies
+   of the same work: 2 t1 / t_pair is the speed-up two domains would reach
+   if camlray's parallel loop cost nothing (a shared cache, memory or a
+   busy neighbour on the host slow both copies alike). *)
+let camlray_pair s ~w ~h =
+  let one () =
+    let out = Filename.temp_file "bench" ".png" and err = Filename.temp_file "bench" ".err" in
+    let cmd =
+      String.concat " "
+        (List.map Filename.quote
+           ([ !exe; "render"; s.file; "-W"; string_of_int w; "-H"; string_of_int h; "--domains"; "1"; "-o"; out ] @ s.args))
+    in
+    (cmd ^ " 2>" ^ Filename.quote err ^ " >/dev/null", out, err)
+  in
+  let c1, o1, e1 = one () and c2, o2, e2 = one () in
+  ignore (Sys.command (Printf.sprintf "( %s ) & ( %s ); wait" c1 c2));
+  let time err =
+    let text = read_file err in
+    List.iter (fun f -> try Sys.remove f with Sys_error _ -> ()) [ err ];
+    match find_float_after "render" text with Some t -> t | None -> failwith ("no render time in: " ^ text)
+  in
+  let t1 = time e1 and t2 = time e2 in
+  List.iter (fun f -> try Sys.remove f with Sys_error _ -> ()) [ o1; o2 ];
+  (t1 +. t2) /. 2.
+
 let povray_available () = Sys.command "command -v povray >/dev/null 2>&1" = 0
 
 let povray s ~threads ~w ~h ~aa =
@@ -132,7 +160,7 @@ let run_reference exe ~w ~h ~spp =
 let scaling_table scenes domain_counts =
   let buf = Buffer.create 1024 in
   Buffer.add_string buf
-    "| scene | domains | trace s (median) | speed-up | efficiency | wall s | wall speed-up | best trace s | best speed-up | POV-Ray speed-up (same rounds) |\n|---|---|---|---|---|---|---|---|---|---|\n";
+    "| scene | domains | trace s (median) | speed-up | efficiency | wall s | wall speed-up | best trace s | best speed-up | machine ceiling (2 one-domain runs at once) | speed-up / ceiling | POV-Ray speed-up (same rounds) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   let curves =
     List.map
       (fun (s, w, h, pov) ->
@@ -140,15 +168,16 @@ let scaling_table scenes domain_counts =
         let rounds =
           List.init !runs (fun _ ->
               let cam = List.map (fun d -> (d, camlray s ~domains:d ~w ~h [])) domain_counts in
+              let pair = camlray_pair s ~w ~h in
               let p =
                 if pov then List.map (fun t -> (t, snd (povray s ~threads:t ~w ~h ~aa:false))) [ 1; 2 ] else []
               in
-              (cam, p))
+              (cam, pair, p))
         in
         let results =
           List.map
             (fun d ->
-              let samples = List.map (fun (cam, _) -> List.assoc d cam) rounds in
+              let samples = List.map (fun (cam, _, _) -> List.assoc d cam) rounds in
               (* best: the fastest run, what the machine gives when nothing
                  else runs on it (these machines are shared) *)
               let best = List.fold_left (fun m (_, t) -> Float.min m t) infinity samples in
@@ -158,15 +187,19 @@ let scaling_table scenes domain_counts =
         let pov_speedup t =
           if not pov then "-"
           else
-            let m k = median (List.map (fun (_, p) -> List.assoc k p) rounds) in
+            let m k = median (List.map (fun (_, _, p) -> List.assoc k p) rounds) in
             if t = 1 then "1.00x" else if t = 2 then Printf.sprintf "%.2fx" (m 1 /. m 2) else "-"
         in
         let _, t1, w1, b1 = List.hd results in
+        let ceiling = 2. *. t1 /. median (List.map (fun (_, pair, _) -> pair) rounds) in
         List.iter
           (fun (d, t, wall, best) ->
+            let ceil =
+              if d = 2 then Printf.sprintf "%.2fx | %.0f%%" ceiling (100. *. t1 /. t /. ceiling) else "- | -"
+            in
             Buffer.add_string buf
-              (Printf.sprintf "| %s | %d | %.3f | %.2fx | %.0f%% | %.3f | %.2fx | %.3f | %.2fx | %s |\n" s.name d t (t1 /. t)
-                 (100. *. t1 /. t /. float d) wall (w1 /. wall) best (b1 /. best) (pov_speedup d)))
+              (Printf.sprintf "| %s | %d | %.3f | %.2fx | %.0f%% | %.3f | %.2fx | %.3f | %.2fx | %s | %s |\n" s.name d t (t1 /. t)
+                 (100. *. t1 /. t /. float d) wall (w1 /. wall) best (b1 /. best) ceil (pov_speedup d)))
           results;
         (s.name, List.map (fun (d, t, _, _) -> (d, t1 /. t)) results))
       scenes
