@@ -19,10 +19,13 @@ let whole =
         List.find (fun l -> Helpers.contains l "| default (whitted) | 2 |") (String.split_on_char '\n' table)
       in
       let cells = List.map String.trim (String.split_on_char '|' row) in
-      Alcotest.(check int) "cells" 14 (List.length cells);
-      match Scanf.sscanf_opt (List.nth cells 10) "%fx%!" Fun.id with
-      | Some c when c > 0. -> ()
-      | _ -> Alcotest.failf "ceiling cell %S" (List.nth cells 10))
+      Alcotest.(check int) "cells" 15 (List.length cells);
+      List.iter
+        (fun (k, what) ->
+          match Scanf.sscanf_opt (List.nth cells k) "%fx%!" Fun.id with
+          | Some c when c > 0. -> ()
+          | _ -> Alcotest.failf "%s cell %S" what (List.nth cells k))
+        [ (5, "paired speed-up"); (11, "ceiling") ])
 
 let objects =
   Alcotest.test_case "object-count benchmark smoke run" `Quick (fun () ->

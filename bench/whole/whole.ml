@@ -153,21 +153,28 @@ let run_reference exe ~w ~h ~spp =
   | _ -> failwith ("the C++ reference printed no time: " ^ text)
 
 (* Runs interleaved: run 1 of every domain count, then run 2, ..., so that
-   a slow spell of this shared machine falls on all counts alike. For a
+   a slow spell of this shared machine falls on all counts alike; every
+   other round takes the counts in reverse order, so that a machine
+   slowing down or speeding up through a round favours no count. Beside
+   the ratio of the medians, the paired speed-up: the median over rounds
+   of each round's own ratio (runs seconds apart, where the medians' runs
+   may be minutes apart on a machine whose speed changes by 2x to 4x
+   within minutes). For a
    whitted scene POV-Ray's own speed-up from 1 to 2 threads on the same
    scene and size is measured in the same rounds: what this machine gives
    a C++ renderer. *)
 let scaling_table scenes domain_counts =
   let buf = Buffer.create 1024 in
   Buffer.add_string buf
-    "| scene | domains | trace s (median) | speed-up | efficiency | wall s | wall speed-up | best trace s | best speed-up | machine ceiling (2 one-domain runs at once) | speed-up / ceiling | POV-Ray speed-up (same rounds) |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    "| scene | domains | trace s (median) | speed-up (of medians) | paired speed-up (median of rounds) | efficiency | wall s | wall speed-up | best trace s | best speed-up | machine ceiling (2 one-domain runs at once, paired) | paired speed-up / ceiling | POV-Ray speed-up (same rounds) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   let curves =
     List.map
       (fun (s, w, h, pov) ->
         let pov = pov && povray_available () in
         let rounds =
-          List.init !runs (fun _ ->
-              let cam = List.map (fun d -> (d, camlray s ~domains:d ~w ~h [])) domain_counts in
+          List.init !runs (fun i ->
+              let counts = if i mod 2 = 0 then domain_counts else List.rev domain_counts in
+              let cam = List.map (fun d -> (d, camlray s ~domains:d ~w ~h [])) counts in
               let pair = camlray_pair s ~w ~h in
               let p =
                 if pov then List.map (fun t -> (t, snd (povray s ~threads:t ~w ~h ~aa:false))) [ 1; 2 ] else []
@@ -186,20 +193,23 @@ let scaling_table scenes domain_counts =
         in
         let pov_speedup t =
           if not pov then "-"
-          else
-            let m k = median (List.map (fun (_, _, p) -> List.assoc k p) rounds) in
-            if t = 1 then "1.00x" else if t = 2 then Printf.sprintf "%.2fx" (m 1 /. m 2) else "-"
+          else if t = 1 then "1.00x"
+          else if t = 2 then
+            Printf.sprintf "%.2fx" (median (List.map (fun (_, _, p) -> List.assoc 1 p /. List.assoc 2 p) rounds))
+          else "-"
         in
         let _, t1, w1, b1 = List.hd results in
-        let ceiling = 2. *. t1 /. median (List.map (fun (_, pair, _) -> pair) rounds) in
+        let trace (cam, _, _) d = snd (List.assoc d cam) in
+        let paired d = median (List.map (fun r -> trace r 1 /. trace r d) rounds) in
+        let ceiling = median (List.map (fun ((_, pair, _) as r) -> 2. *. trace r 1 /. pair) rounds) in
         List.iter
           (fun (d, t, wall, best) ->
             let ceil =
-              if d = 2 then Printf.sprintf "%.2fx | %.0f%%" ceiling (100. *. t1 /. t /. ceiling) else "- | -"
+              if d = 2 then Printf.sprintf "%.2fx | %.0f%%" ceiling (100. *. paired d /. ceiling) else "- | -"
             in
             Buffer.add_string buf
-              (Printf.sprintf "| %s | %d | %.3f | %.2fx | %.0f%% | %.3f | %.2fx | %.3f | %.2fx | %s | %s |\n" s.name d t (t1 /. t)
-                 (100. *. t1 /. t /. float d) wall (w1 /. wall) best (b1 /. best) ceil (pov_speedup d)))
+              (Printf.sprintf "| %s | %d | %.3f | %.2fx | %.2fx | %.0f%% | %.3f | %.2fx | %.3f | %.2fx | %s | %s |\n" s.name d t
+                 (t1 /. t) (paired d) (100. *. t1 /. t /. float d) wall (w1 /. wall) best (b1 /. best) ceil (pov_speedup d)))
           results;
         (s.name, List.map (fun (d, t, _, _) -> (d, t1 /. t)) results))
       scenes
