@@ -20,12 +20,18 @@ let whole =
       in
       let cells = List.map String.trim (String.split_on_char '|' row) in
       Alcotest.(check int) "cells" 15 (List.length cells);
-      List.iter
+      (List.iter
         (fun (k, what) ->
           match Scanf.sscanf_opt (List.nth cells k) "%fx%!" Fun.id with
           | Some c when c > 0. -> ()
           | _ -> Alcotest.failf "%s cell %S" what (List.nth cells k))
-        [ (5, "paired speed-up"); (11, "ceiling") ])
+        [ (5, "paired speed-up"); (11, "ceiling") ]);
+      (* with povray installed, the harness scenes' table too *)
+      if Sys.command "command -v povray >/dev/null 2>&1" = 0 then begin
+        let h = In_channel.with_open_bin (Filename.concat d "harness.md") In_channel.input_all in
+        if not (Helpers.contains h "| default |" && Helpers.contains h "one thread, no anti-aliasing: trace ratio") then
+          Alcotest.failf "harness table: %S" h
+      end)
 
 let objects =
   Alcotest.test_case "object-count benchmark smoke run" `Quick (fun () ->

@@ -9,7 +9,9 @@
    2. camlray against POV-Ray 3.7 on the same whitted scenes, same size,
       anti-aliasing and thread count (+WT), POV-Ray's own trace time and
       the whole wall time;
-   3. the Ray Tracing in One Weekend final scene in mc mode at 400x225,
+   3. every scene of the cross-render harness at 640x480, one thread:
+      camlray's trace time against POV-Ray's;
+   4. the Ray Tracing in One Weekend final scene in mc mode at 400x225,
       32 spp, depth 50, one domain, as samples per second, beside the
       C++ reference (bench/rtiow-ref) timed in the same rounds.
 
@@ -106,8 +108,8 @@ let povray_available () = Sys.command "command -v povray >/dev/null 2>&1" = 0
 let povray s ~threads ~w ~h ~aa =
   let out = Filename.temp_file "bench" ".png" in
   let cmd =
-    Printf.sprintf "povray +I%s +O%s +W%d +H%d -D +FN +WT%d %s" (Filename.quote s.file)
-      (Filename.quote out) w h threads
+    Printf.sprintf "povray +I%s +O%s +W%d +H%d -D +FN +WT%d +L%s %s" (Filename.quote s.file)
+      (Filename.quote out) w h threads (Filename.quote (Filename.dirname s.file))
       (if aa then "+A0.3 +R3 -J" else "-A")
   in
   let wall, text = timed cmd in
@@ -273,10 +275,86 @@ let pov_table scenes =
     scenes;
   Buffer.contents b
 
+(* The scenes of the cross-render harness (the folders make test
+   compares with POV-Ray at 160x120, and the default scene), one thread
+   each, without anti-aliasing: camlray's trace time against POV-Ray's own,
+   [rounds] alternated runs (POV-Ray first in every other round), the
+   ratio of the medians. A scene POV-Ray reports no trace time for is
+   listed without a ratio. *)
+let harness_table files ~w ~h ~rounds =
+  let b = Buffer.create 4096 in
+  Buffer.add_string b
+    (Printf.sprintf
+       "| scene | camlray trace s | POV-Ray trace s | trace ratio |\n|---|---|---|---|\n");
+  let ratios =
+    List.filter_map
+      (fun file ->
+        let sc = { name = Filename.remove_extension (Filename.basename file); file; args = [] } in
+        let runs =
+          List.init rounds (fun i ->
+              let pov () = snd (povray sc ~threads:1 ~w ~h ~aa:false) in
+              let cam () = snd (camlray sc ~domains:1 ~w ~h []) in
+              if i mod 2 = 0 then
+                let c = cam () in
+                (c, pov ())
+              else
+                let p = pov () in
+                (cam (), p))
+        in
+        let c = median (List.map fst runs) and p = median (List.map snd runs) in
+        if Float.is_nan p || p <= 0. then begin
+          Buffer.add_string b (Printf.sprintf "| %s | %.3f | - | - |\n" sc.name c);
+          None
+        end
+        else begin
+          Buffer.add_string b (Printf.sprintf "| %s | %.3f | %.3f | %.2f |\n" sc.name c p (c /. p));
+          Some (sc.name, c /. p)
+        end)
+      files
+  in
+  let n = List.length ratios in
+  if n > 0 then begin
+    let geo = Float.exp (List.fold_left (fun a (_, r) -> a +. Float.log r) 0. ratios /. float n) in
+    let above = List.filter (fun (_, r) -> r > 1.) ratios in
+    let sorted = List.sort compare (List.map snd ratios) in
+    Buffer.add_string b
+      (Printf.sprintf
+         "\n%d scenes at %dx%d, one thread, no anti-aliasing: trace ratio at most 1.0 on %d; geometric mean %.2f, lowest %.2f, highest %.2f%s\n"
+         n w h (n - List.length above) geo (List.hd sorted) (List.nth sorted (n - 1))
+         (if above = [] then ""
+          else
+            "; above 1.0: "
+            ^ String.concat ", " (List.map (fun (name, r) -> Printf.sprintf "%s (%.2f)" name r) above)))
+  end;
+  Buffer.contents b
+
 let write path text =
   (try Sys.mkdir (Filename.dirname path) 0o755 with Sys_error _ -> ());
   Out_channel.with_open_bin path (fun oc -> output_string oc text);
   Printf.printf "wrote %s\n" path
+
+(* the harness table (see [harness_table]) into harness.md *)
+let run_harness () =
+  let files =
+    "scenes/default.scn"
+    :: List.concat_map
+         (fun d ->
+           if Sys.file_exists d && Sys.is_directory d then
+             Sys.readdir d |> Array.to_list
+             |> List.filter (fun f -> Filename.check_suffix f ".pov" || Filename.check_suffix f ".scn")
+             |> List.sort compare
+             |> List.map (Filename.concat d)
+           else [])
+         [ "scenes/seeds"; "scenes/whitted"; "scenes/whitted-extra" ]
+  in
+  let files = List.filter Sys.file_exists files in
+  let files = if !quick then List.filteri (fun i _ -> i < 3) files else files in
+  let w, h = if !quick then (32, 24) else (640, 480) in
+  let t = harness_table files ~w ~h ~rounds:(if !quick then 1 else 2) in
+  print_string t;
+  write (Filename.concat !out_dir "harness.md") t
+
+let harness_only = ref false
 
 let () =
   Arg.parse
@@ -284,9 +362,14 @@ let () =
       ("--runs", Arg.Set_int runs, "N runs per measurement (median)");
       ("--exe", Arg.Set_string exe, "PATH the camlray executable");
       ("--out", Arg.Set_string out_dir, "DIR where the tables go");
-      ("--svg", Arg.Set_string svg_path, "PATH the scaling plot") ]
+      ("--svg", Arg.Set_string svg_path, "PATH the scaling plot");
+      ("--harness-only", Arg.Set harness_only, " only the harness scenes against POV-Ray (harness.md)") ]
     (fun _ -> ()) "whole.exe [options]";
   if !quick then runs := 1;
+  if !harness_only then begin
+    if povray_available () then run_harness () else prerr_endline "whole: povray is not installed";
+    exit 0
+  end;
   let sz w h = if !quick then (max 8 (w / 20), max 6 (h / 20)) else (w, h) in
   let s name file args = { name; file; args } in
   (* the seed scenes, or their bench/scenes variants while camlray lacks a
@@ -330,7 +413,8 @@ let () =
     in
     let t = pov_table pov_scenes in
     print_string t;
-    write (Filename.concat !out_dir "povray.md") t
+    write (Filename.concat !out_dir "povray.md") t;
+    run_harness ()
   end;
   if List.exists (fun (sc, _, _, _) -> sc == rtiow) working then begin
     let w, h = sz 400 225 in
