@@ -6,6 +6,9 @@ type sweep = Linear_sweep | Conic_sweep
 
 type t = {
   seg : Float.Array.t;
+  box : Float.Array.t;
+      (** per segment, the box of its curve in the plane, a little larger:
+          x low, x high, z low, z high *)
   n : int;
   h1 : float;
   h2 : float;
@@ -85,11 +88,19 @@ let extent a b c d =
   let lo = ref (Float.min (f 0.) (f 1.)) and hi = ref (Float.max (f 0.) (f 1.)) in
   let visit s = if s > 0. && s < 1. then (lo := Float.min !lo (f s); hi := Float.max !hi (f s)) in
   let qa = 3. *. a and qb = 2. *. b in
+  (* the zeros of qa s^2 + qb s + c without cancellation: a leading
+     coefficient that is rounding left over (a Catmull-Rom segment
+     between equal points: 2.8e-17) made the textbook formula miss the
+     extreme, and the box too small *)
   (if qa <> 0. then begin
      let disc = (qb *. qb) -. (4. *. qa *. c) in
      if disc >= 0. then begin
-       visit ((-.qb +. Float.sqrt disc) /. (2. *. qa));
-       visit ((-.qb -. Float.sqrt disc) /. (2. *. qa))
+       let q = -0.5 *. (qb +. Float.copy_sign (Float.sqrt disc) qb) in
+       if q <> 0. then begin
+         visit (q /. qa);
+         visit (c /. q)
+       end
+       else visit 0.
      end
    end
    else if qb <> 0. then visit (-.c /. qb));
@@ -106,11 +117,17 @@ let make spline sweep h1 h2 ?(open_ = false) points =
     | Error e -> Error e
     | Ok segs ->
         let seg = Float.Array.create (8 * List.length segs) in
+        let box = Float.Array.create (4 * List.length segs) in
         let xl = ref infinity and xh = ref neg_infinity and zl = ref infinity and zh = ref neg_infinity in
         List.iteri
           (fun i ((ax, az), (bx, bz), (cx, cz), (dx, dz)) ->
             List.iteri (fun k v -> Float.Array.set seg ((8 * i) + k) v) [ ax; az; bx; bz; cx; cz; dx; dz ];
             let a, b = extent ax bx cx dx and c, d = extent az bz cz dz in
+            (* widened by far more than the rounding of the extremes *)
+            let pad l h = 1e-9 *. (1. +. Float.abs l +. Float.abs h) in
+            List.iteri
+              (fun k v -> Float.Array.set box ((4 * i) + k) v)
+              [ a -. pad a b; b +. pad a b; c -. pad c d; d +. pad c d ];
             xl := Float.min !xl a;
             xh := Float.max !xh b;
             zl := Float.min !zl c;
@@ -125,7 +142,7 @@ let make spline sweep h1 h2 ?(open_ = false) points =
             (Vec3.make x0 h1 z0, Vec3.make x1 h2 z1)
           else (Vec3.make !xl h1 !zl, Vec3.make !xh h2 !zh)
         in
-        Ok { seg; n = List.length segs; h1; h2; conic; open_; lo; hi }
+        Ok { seg; box; n = List.length segs; h1; h2; conic; open_; lo; hi }
 
 (* {2 Roots in [0, 1]} *)
 
@@ -157,12 +174,25 @@ let roots w c3 c2 c1 c0 lo hi =
   Float.Array.unsafe_set e 3 c3;
   all_roots w.sc e 3 w.found lo hi
 
+(* Whether the line kx x + kz z + k0 = 0 of the plane misses segment
+   [i]'s box: the function has one strict sign over the box, so over the
+   curve inside it, and the segment's cubic has no root. Saves solving
+   the cubic for most segments (a linear function is extreme at the
+   box's corners). *)
+let[@inline] misses t i kx kz k0 =
+  let b = t.box and o = 4 * i in
+  let x1 = kx *. g b o and x2 = kx *. g b (o + 1) and z1 = kz *. g b (o + 2) and z2 = kz *. g b (o + 3) in
+  Float.min x1 x2 +. Float.min z1 z2 +. k0 > 0. || Float.max x1 x2 +. Float.max z1 z2 +. k0 < 0.
+
 (* crossings of the half-line from (u, v) towards +x with the curves:
    odd inside; a segment owns its start, not its end *)
 let in_curve t u v =
   let w = Scratch.get work_key in
   let count = ref 0 in
   for i = 0 to t.n - 1 do
+    let b = t.box and ob = 4 * i in
+    (* a segment wholly above, below or left of the point is not crossed *)
+    if not (v < g b (ob + 2) || v > g b (ob + 3) || g b (ob + 1) <= u) then begin
     let o = 8 * i in
     let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
     and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
@@ -173,6 +203,7 @@ let in_curve t u v =
       let x = (((ax *. s) +. bx) *. s +. cx) *. s +. dx in
       if x > u && not (end_z = v && s > 0.5) then incr count
     done
+    end
   done;
   !count land 1 = 1
 
@@ -204,7 +235,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
     and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
     if not t.conic then begin
-      if d2 > 0. then begin
+      if d2 > 0. && not (misses t i r.dz (-.r.dx) ((r.oz *. r.dx) -. (r.ox *. r.dz))) then begin
         (* (P(s) - o) x d = 0 in the plane *)
         let k =
           roots w ((ax *. r.dz) -. (az *. r.dx)) ((bx *. r.dz) -. (bz *. r.dx)) ((cx *. r.dz) -. (cz *. r.dx))
@@ -223,6 +254,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       (* the point y (Px, 1, Pz) on the ray: (oz dx - ox dz) + Px (oy dz - oz dy) - Pz (oy dx - ox dy) = 0 *)
       let a = (r.oy *. r.dz) -. (r.oz *. r.dy) and b = (r.oy *. r.dx) -. (r.ox *. r.dy) in
       let k0 = (r.oz *. r.dx) -. (r.ox *. r.dz) in
+      if not (misses t i a (-.b) k0) then begin
       let k =
         roots w ((ax *. a) -. (az *. b)) ((bx *. a) -. (bz *. b)) ((cx *. a) -. (cz *. b))
           ((dx *. a) -. (dz *. b) +. k0) 0. (1. +. 1e-12)
@@ -238,6 +270,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
         let y = r.oy +. (tt *. r.dy) in
         if Float.is_finite tt && y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
       done
+      end
     end
   done;
   !found
