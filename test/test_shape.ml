@@ -234,6 +234,16 @@ let prism_of spline sweep pts =
 
 let prism_units =
   [
+    (* a Catmull-Rom segment between equal points z = -1 has z(s) = 0.6 s^2
+       - 0.6 s - 1 up to a leading coefficient left over from rounding; its
+       extreme -1.15 (at s = 0.5) must be found whatever that coefficient *)
+    Alcotest.test_case "prism: a cubic's extent with a vanishing leading coefficient" `Quick (fun () ->
+        List.iter
+          (fun a ->
+            let lo, hi = Prism.extent a 0.6 (-0.6) (-1.) in
+            Alcotest.(check (float 1e-9)) (Printf.sprintf "low, a = %g" a) (-1.15) lo;
+            Alcotest.(check (float 1e-9)) (Printf.sprintf "high, a = %g" a) (-1.) hi)
+          [ 0.; 2.8e-17; -2.8e-17; 1e-12 ]);
     Alcotest.test_case "prism: a square swept is the box" `Quick (fun () ->
         let sq = [| (-1., -1.); (1., -1.); (1., 1.); (-1., 1.); (-1., -1.) |] in
         let p = Shape.Prism (prism_of Prism.Linear Prism.Linear_sweep sq) in
