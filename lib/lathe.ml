@@ -1,7 +1,16 @@
 (* Lathes (see lathe.mli). A segment is 8 floats: Ar Ay Br By Cr Cy Dr Dy,
    radius r(s) and height y(s) = ((A s + B) s + C) s + D. *)
 
-type t = { seg : Float.Array.t; n : int; lo : Vec3.t; hi : Vec3.t }
+type t = {
+  seg : Float.Array.t;
+  box : Float.Array.t;
+      (** per segment, a little wider than the curve: its lowest and
+          highest y, the squares of its least and greatest distance from
+          the axis, its greatest (signed) radius *)
+  n : int;
+  lo : Vec3.t;
+  hi : Vec3.t;
+}
 
 let bounds t = (t.lo, t.hi)
 let[@inline] g a i = Float.Array.unsafe_get a i
@@ -13,18 +22,25 @@ let make spline points =
   else if spline = Prism.Bezier && np mod 4 <> 0 then Error "a bezier_spline lathe needs four points a segment"
   else begin
     let count = match spline with Prism.Bezier -> np / 4 | s -> np - Prism.reach_of s in
-    let seg = Float.Array.create (8 * count) in
+    let seg = Float.Array.create (8 * count) and box = Float.Array.create (5 * count) in
     let rmax = ref 0. and ylo = ref infinity and yhi = ref neg_infinity in
     for i = 0 to count - 1 do
       let k = match spline with Prism.Bezier -> 4 * i | _ -> i in
       let (ar, ay), (br, by), (cr, cy), (dr, dy) = Prism.spline_segment spline points k in
       List.iteri (fun j v -> Float.Array.set seg ((8 * i) + j) v) [ ar; ay; br; by; cr; cy; dr; dy ];
       let r0, r1 = Prism.extent ar br cr dr and y0, y1 = Prism.extent ay by cy dy in
+      (* widened by far more than the rounding of the extremes *)
+      let ypad = 1e-9 *. (1. +. Float.abs y0 +. Float.abs y1) and rpad = 1e-9 *. (1. +. Float.abs r0 +. Float.abs r1) in
+      let far = Float.max (Float.abs r0) (Float.abs r1) +. rpad in
+      let near = if r0 <= 0. && r1 >= 0. then 0. else Float.max 0. (Float.min (Float.abs r0) (Float.abs r1) -. rpad) in
+      List.iteri
+        (fun j v -> Float.Array.set box ((5 * i) + j) v)
+        [ y0 -. ypad; y1 +. ypad; near *. near; far *. far; r1 +. rpad ];
       rmax := Float.max !rmax (Float.max (Float.abs r0) (Float.abs r1));
       ylo := Float.min !ylo y0;
       yhi := Float.max !yhi y1
     done;
-    Ok { seg; n = count; lo = Vec3.make (-. !rmax) !ylo (-. !rmax); hi = Vec3.make !rmax !yhi !rmax }
+    Ok { seg; box; n = count; lo = Vec3.make (-. !rmax) !ylo (-. !rmax); hi = Vec3.make !rmax !yhi !rmax }
   end
 
 type work = { e : Float.Array.t; found : Float.Array.t; sc : Poly.scratch }
@@ -38,6 +54,10 @@ let inside t x y z =
   let rho = Float.sqrt ((x *. x) +. (z *. z)) in
   let count = ref 0 in
   for i = 0 to t.n - 1 do
+    let b = t.box and ob = 5 * i in
+    (* a segment wholly above or below the point, or nearer the axis, is
+       not crossed *)
+    if not (y < g b ob || y > g b (ob + 1) || g b (ob + 4) <= rho) then begin
     let o = 8 * i in
     let ar = g t.seg o and ay = g t.seg (o + 1) and br = g t.seg (o + 2) and by = g t.seg (o + 3)
     and cr = g t.seg (o + 4) and cy = g t.seg (o + 5) and dr = g t.seg (o + 6) and dy = g t.seg (o + 7) in
@@ -54,9 +74,33 @@ let inside t x y z =
       let r = (((ar *. s) +. br) *. s +. cr) *. s +. dr in
       if r > rho && not (end_y = y && s > 0.5) then incr count
     done
+    end
   done;
   !count land 1 = 1
 
+
+(* Whether a ray that is not level misses segment [i]'s box within
+   (tmin, tmax): over the stretch where its height is within the
+   segment's, its squared distance from the axis (a parabola in t) stays
+   beyond the greatest radius or within the least. Saves solving the
+   degree-6 equation for most segments. *)
+let[@inline] misses t i (r : Ray.scratch) tmin tmax =
+  let b = t.box and ob = 5 * i in
+  let ta = (g b ob -. r.oy) /. r.dy and tb = (g b (ob + 1) -. r.oy) /. r.dy in
+  let t0 = Float.max tmin (Float.min ta tb) and t1 = Float.min tmax (Float.max ta tb) in
+  t0 > t1
+  ||
+  let qa = (r.dx *. r.dx) +. (r.dz *. r.dz) and qb = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
+  and qc = (r.ox *. r.ox) +. (r.oz *. r.oz) in
+  let at tt = (((qa *. tt) +. qb) *. tt) +. qc in
+  let top = Float.max (at t0) (at t1) in
+  let bottom =
+    if qa > 0. then
+      let tv = -.qb /. (2. *. qa) in
+      if tv > t0 && tv < t1 then at tv else Float.min (at t0) (at t1)
+    else Float.min (at t0) (at t1)
+  in
+  bottom > g b (ob + 3) || top < g b (ob + 2)
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
@@ -68,6 +112,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     and cr = g t.seg (o + 4) and cy = g t.seg (o + 5) and dr = g t.seg (o + 6) and dy = g t.seg (o + 7) in
     let e = w.e in
     if r.dy <> 0. then begin
+    if not (misses t i r tmin h.t) then begin
       (* with u(s) = y(s) - oy and t = u / dy: (ox dy + dx u)^2 + (oz dy
          + dz u)^2 - dy^2 r(s)^2 = 0, of degree 6 *)
       let u0 = dy -. r.oy and u1 = cy and u2 = by and u3 = ay in
@@ -91,6 +136,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
         let u = (((ay *. s) +. by) *. s +. cy) *. s +. dy -. r.oy in
         if Hit.keep h tmin (u /. r.dy) (float i) s then found := true
       done
+    end
     end
     else begin
       (* a level ray: the heights where the curve is at the ray's, then
