@@ -79,28 +79,12 @@ let inside t x y z =
   !count land 1 = 1
 
 
-(* Whether a ray that is not level misses segment [i]'s box within
-   (tmin, tmax): over the stretch where its height is within the
-   segment's, its squared distance from the axis (a parabola in t) stays
-   beyond the greatest radius or within the least. Saves solving the
-   degree-6 equation for most segments. *)
+(* Whether a ray that is not level misses segment [i] within (tmin,
+   tmax) (see {!Prism.slab_misses}): saves solving the degree-6 equation
+   for most segments *)
 let[@inline] misses t i (r : Ray.scratch) tmin tmax =
   let b = t.box and ob = 5 * i in
-  let ta = (g b ob -. r.oy) /. r.dy and tb = (g b (ob + 1) -. r.oy) /. r.dy in
-  let t0 = Float.max tmin (Float.min ta tb) and t1 = Float.min tmax (Float.max ta tb) in
-  t0 > t1
-  ||
-  let qa = (r.dx *. r.dx) +. (r.dz *. r.dz) and qb = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
-  and qc = (r.ox *. r.ox) +. (r.oz *. r.oz) in
-  let at tt = (((qa *. tt) +. qb) *. tt) +. qc in
-  let top = Float.max (at t0) (at t1) in
-  let bottom =
-    if qa > 0. then
-      let tv = -.qb /. (2. *. qa) in
-      if tv > t0 && tv < t1 then at tv else Float.min (at t0) (at t1)
-    else Float.min (at t0) (at t1)
-  in
-  bottom > g b (ob + 3) || top < g b (ob + 2)
+  Prism.slab_misses r (g b ob) (g b (ob + 1)) (g b (ob + 2)) (g b (ob + 3)) tmin tmax
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in

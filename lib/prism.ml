@@ -184,6 +184,26 @@ let[@inline] misses t i kx kz k0 =
   let x1 = kx *. g b o and x2 = kx *. g b (o + 1) and z1 = kz *. g b (o + 2) and z2 = kz *. g b (o + 3) in
   Float.min x1 x2 +. Float.min z1 z2 +. k0 > 0. || Float.max x1 x2 +. Float.max z1 z2 +. k0 < 0.
 
+(* Whether a ray that is not level misses, within (tmin, tmax), the
+   solid between heights [ylo] and [yhi] and squared distances [near2]
+   and [far2] from the y axis (a lathe's or a sor's segment): over the
+   stretch where the ray's height is within the segment's, its squared
+   distance from the axis (a parabola in t) stays beyond [far2] or
+   within [near2]. *)
+let[@inline] slab_misses (r : Ray.scratch) ylo yhi near2 far2 tmin tmax =
+  let ta = (ylo -. r.oy) /. r.dy and tb = (yhi -. r.oy) /. r.dy in
+  let t0 = Float.max tmin (Float.min ta tb) and t1 = Float.min tmax (Float.max ta tb) in
+  t0 > t1
+  ||
+  let qa = (r.dx *. r.dx) +. (r.dz *. r.dz) and qb = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
+  and qc = (r.ox *. r.ox) +. (r.oz *. r.oz) in
+  (* no local function: it would keep this one from being inlined, and
+     its floats would be boxed *)
+  let a0 = (((qa *. t0) +. qb) *. t0) +. qc and a1 = (((qa *. t1) +. qb) *. t1) +. qc in
+  let tv = if qa > 0. then -.qb /. (2. *. qa) else t0 in
+  let bottom = if tv > t0 && tv < t1 then (((qa *. tv) +. qb) *. tv) +. qc else Float.min a0 a1 in
+  bottom > far2 || Float.max a0 a1 < near2
+
 (* crossings of the half-line from (u, v) towards +x with the curves:
    odd inside; a segment owns its start, not its end *)
 let in_curve t u v =

@@ -41,6 +41,12 @@ val all_roots : Poly.scratch -> Float.Array.t -> int -> Float.Array.t -> float -
     in [[lo, hi)] in increasing order, into [found] (room for [degree]);
     their number. *)
 
+val slab_misses : Ray.scratch -> float -> float -> float -> float -> float -> float -> bool
+(** [slab_misses r ylo yhi near2 far2 tmin tmax]: whether the ray [r],
+    not level, stays out of the solid between heights [ylo] and [yhi] and
+    squared distances [near2] and [far2] from the y axis for t in (tmin,
+    tmax): a lathe's or a sor's segment it need not solve for. *)
+
 val keep_circle : Hit.t -> float -> Ray.scratch -> float -> float -> float -> bool
 (** [keep_circle h tmin r rr id u]: a level ray's crossings of the circle
     of squared radius [rr] about the y axis, kept in [h] (part [id],

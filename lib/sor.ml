@@ -3,7 +3,10 @@
    [y0, y1]. *)
 
 type t = { seg : Float.Array.t; n : int; ybot : float; ytop : float; rbot2 : float; rtop2 : float;
-           open_ : bool; rmax : float }
+           open_ : bool; rmax : float;
+           range : Float.Array.t
+               (** per segment, the least and greatest squared radius, a
+                   little wider *) }
 
 let[@inline] g a i = Float.Array.unsafe_get a i
 let bounds t = (Vec3.make (-.t.rmax) t.ybot (-.t.rmax), Vec3.make t.rmax t.ytop t.rmax)
@@ -39,30 +42,26 @@ let make ~open_ (pts : (float * float) array) =
     Error "a sor's first (last) point must be at another height than its third (third from last)"
   else begin
     let n = np - 3 in
-    let seg = Float.Array.create (6 * n) in
+    let seg = Float.Array.create (6 * n) and range = Float.Array.create (2 * n) in
     let rmax2 = ref 0. in
     for i = 0 to n - 1 do
       let r0, ym = pts.(i) and r1, y0 = pts.(i + 1) and r2, y1 = pts.(i + 2) and r3, yp = pts.(i + 3) in
       let s0 = 2. *. r1 *. (r2 -. r0) /. (y1 -. ym) and s1 = 2. *. r2 *. (r3 -. r1) /. (yp -. y0) in
       let a, b, c, d = hermite y0 y1 (r1 *. r1) (r2 *. r2) s0 s1 in
       List.iteri (fun j v -> Float.Array.set seg ((6 * i) + j) v) [ y0; y1; a; b; c; d ];
-      (* the largest squared radius: the ends and where f' = 0 *)
-      let consider y = if y >= y0 && y <= y1 then rmax2 := Float.max !rmax2 (f a b c d y) in
-      consider y0;
-      consider y1;
-      let qa = 3. *. a and qb = 2. *. b and qc = c in
-      if qa = 0. then (if qb <> 0. then consider (-.qc /. qb))
-      else begin
-        let disc = (qb *. qb) -. (4. *. qa *. qc) in
-        if disc >= 0. then begin
-          let sq = Float.sqrt disc in
-          consider ((-.qb -. sq) /. (2. *. qa));
-          consider ((-.qb +. sq) /. (2. *. qa))
-        end
-      end
+      (* f over [y0, y1] is the cubic in s of f(y0 + s h), s in [0, 1] *)
+      let h = y1 -. y0 in
+      let lo, hi =
+        Prism.extent (a *. h *. h *. h) (((3. *. a *. y0) +. b) *. h *. h)
+          (((((3. *. a *. y0) +. (2. *. b)) *. y0) +. c) *. h) (f a b c d y0)
+      in
+      let pad = 1e-9 *. (1. +. Float.abs lo +. Float.abs hi) in
+      Float.Array.set range (2 * i) (lo -. pad);
+      Float.Array.set range ((2 * i) + 1) (hi +. pad);
+      rmax2 := Float.max !rmax2 hi
     done;
     let rb, yb = pts.(1) and rt, yt = pts.(np - 2) in
-    Ok { seg; n; ybot = yb; ytop = yt; rbot2 = rb *. rb; rtop2 = rt *. rt; open_; rmax = Float.sqrt !rmax2 }
+    Ok { seg; n; ybot = yb; ytop = yt; rbot2 = rb *. rb; rtop2 = rt *. rt; open_; rmax = Float.sqrt !rmax2; range }
   end
 
 (* the segment holding height [y] (the last one for the top) *)
@@ -97,6 +96,10 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     let y0 = g t.seg o and y1 = g t.seg (o + 1) and a = g t.seg (o + 2) and b = g t.seg (o + 3)
     and c = g t.seg (o + 4) and d = g t.seg (o + 5) in
     if e <> 0. then begin
+    (* most segments are out of the ray's way: not solved for *)
+    let pad = 1e-9 *. (1. +. Float.abs y0 +. Float.abs y1) in
+    if not (Prism.slab_misses r (y0 -. pad) (y1 +. pad) (g t.range (2 * i)) (g t.range ((2 * i) + 1)) tmin h.t)
+    then begin
       (* in the height y along the ray: (ox e + dx (y - q))^2 + (oz e +
          dz (y - q))^2 - e^2 f(y) = 0, a cubic; t = (y - q) / e *)
       let a0 = (r.ox *. e) -. (r.dx *. q) and a1 = r.dx and b0 = (r.oz *. e) -. (r.dz *. q) and b1 = r.dz in
@@ -112,6 +115,7 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
         let y = Float.Array.unsafe_get w.found j in
         if Hit.keep h tmin ((y -. q) /. e) (float i) y then found := true
       done
+    end
     end
     else if q >= y0 && q <= y1 then begin
       (* a level ray: the circle of the curve's radius at its height *)
