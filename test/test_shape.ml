@@ -103,7 +103,12 @@ let props =
         | None -> true
         | Some (_, h, p, n) ->
             if Float.abs (Vec3.length n -. 1.) > 1e-9 then QCheck.Test.fail_reportf "|n| = %g" (Vec3.length n);
-            (* two nearby rays hitting the same part: the chord is tangent *)
+            (* two nearby rays hitting the same part: the chord is tangent.
+               A chord under 1e-6 is left out: the rays' offset is 1e-5 of
+               the hit's distance, and a hit very near the origin (an
+               isosurface at t = 0.0027, seed 64489184) gives a chord of
+               3e-8, where an isosurface's 1e-9 root accuracy tilts it by
+               5 degrees *)
             let ok = ref true in
             List.iter
               (fun e ->
@@ -112,7 +117,7 @@ let props =
                 | Some (_, h', p', _) when h'.id = h.id ->
                     let d = Vec3.sub p' p in
                     let l = Vec3.length d in
-                    if l > 0. && l < 1e-3 && Float.abs (Vec3.dot d n) > 2e-2 *. l then ok := false
+                    if l > 1e-6 && l < 1e-3 && Float.abs (Vec3.dot d n) > 2e-2 *. l then ok := false
                 | _ -> ())
               [ x; y; z ];
             !ok);
