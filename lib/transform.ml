@@ -155,6 +155,16 @@ let inv_point_m t (p : Vec3.m) (out : Vec3.m) =
       ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
       ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
 
+(* [point] in place, the same arithmetic *)
+let point_m t (p : Vec3.m) (out : Vec3.m) =
+  if t.id then Vec3.set out p.mx p.my p.mz
+  else
+    let m = t.m and x = p.mx and y = p.my and z = p.mz in
+    Vec3.set out
+      ((g m 0 *. x) +. (g m 1 *. y) +. (g m 2 *. z) +. (1. *. g m 9))
+      ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
+      ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
+
 let[@inline] transpose_m m (n : Vec3.m) =
   let x = n.mx and y = n.my and z = n.mz in
   Vec3.set n

@@ -40,6 +40,10 @@ val normal : t -> Vec3.t -> Vec3.t
 (** Transform an object-space normal by the inverse transpose; the result
     is not normalised. *)
 
+val point_m : t -> Vec3.m -> Vec3.m -> unit
+(** [point_m t p out]: {!point} in place (the same arithmetic; [p] and
+    [out] may be the same vector). *)
+
 val inv_point_m : t -> Vec3.m -> Vec3.m -> unit
 (** [inv_point_m t p out]: {!inv_point} in place (the same arithmetic;
     [p] and [out] may be the same vector). *)
