@@ -7,6 +7,7 @@ type projection =
   | Ultra_wide_angle
   | Panoramic
   | Spherical
+  | Mesh of Mesh_camera.t
 
 type frame = { ur : Vec3.t; uu : Vec3.t; ud : Vec3.t; lr : float; lu : float; angle : float; v_angle : float }
 
@@ -148,6 +149,7 @@ let wide_into c (o : Vec3.m) d =
   let k = c.frame and sx = o.mx and sy = o.my in
   match c.projection with
   | Perspective | Orthographic -> assert false
+  | Mesh _ -> false
   | Cylinder n ->
       cylinder_into n k c.location sx sy o d;
       true
@@ -212,7 +214,7 @@ let[@inline] polar (p : Vec3.m) x0 y0 =
 let normal_point c (p : Vec3.m) =
   let k = c.frame and sx = p.mx and sy = p.my in
   match c.projection with
-  | Perspective | Orthographic -> Vec3.set p sx sy 0.
+  | Perspective | Orthographic | Mesh _ -> Vec3.set p sx sy 0.
   | Cylinder n ->
       if n = 1 || n = 3 then Vec3.set p (sx *. k.angle) (sy *. k.lu) 0.
       else Vec3.set p (sx *. k.lr) (sy *. k.angle) 0.

@@ -16,6 +16,10 @@ type projection =
   | Ultra_wide_angle  (** [angle] across, [angle * |up| / |right|] down *)
   | Panoramic  (** 180 degrees across, tangent up and down *)
   | Spherical  (** [angle] across, [v_angle] down, as longitude and latitude *)
+  | Mesh of Mesh_camera.t
+      (** POV-Ray's [mesh_camera]: its rays come from
+          {!Mesh_camera.ray_into}, several a pixel; {!ray_into} and the
+          functions built on it give no ray for it ([false]). *)
 
 type frame = {
   ur : Vec3.t;

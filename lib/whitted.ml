@@ -161,17 +161,18 @@ let irid (s : Scene.t) (f : Finish.t) (p : Vec3.m) ci cr (rc : Color.acc) =
     (rc.ag *. (1. +. (a *. Float.cos (phase /. wl.g))))
     (rc.ab *. (1. +. (a *. Float.cos (phase /. wl.b))))
 
-(* The ray from [o] along [d], hits beyond [tmin], its radiance into
-   [out]; its ADC weight is [from.child]; [media]: the interiors the ray
-   is inside, innermost first. [o] and [d] belong to the caller and are
+(* The ray from [o] along [d], hits between [tmin] and [tmax] (infinity
+   but for a mesh camera's maximum distance), its radiance into [out];
+   its ADC weight is [from.child]; [media]: the interiors the ray is
+   inside, innermost first. [o] and [d] belong to the caller and are
    not written. *)
-let rec trace_ray (s : Scene.t) tmin (o : Vec3.m) (d : Vec3.m) level (from : nums) media (out : Color.acc) =
+let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from : nums) media (out : Color.acc) =
   let weight = from.child in
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then Color.acc_set out 0. 0. 0.
   else
     (* read at once, before shading traces anything else *)
     let h, f = Scene.hit_records () in
-    if not (Scene.intersect_into s o d tmin infinity h f) then begin
+    if not (Scene.intersect_into s o d tmin tmax h f) then begin
       if Sky.is_empty s.sky then set_color out s.background
       else begin
         let u = Scratch.get sky_key in
@@ -239,7 +240,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
     if eta = 1. then begin
       (* same index on both sides: straight through, no trace level used *)
       fr.k.child <- w;
-      trace_ray s Ray.epsilon fr.p d level fr.k (Interior.beyond inner media) rc;
+      trace_ray s Ray.epsilon infinity fr.p d level fr.k (Interior.beyond inner media) rc;
       through out c tr fade rc
     end
     else
@@ -251,14 +252,14 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
         let m = 2. *. cos_i in
         Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
         fr.k.child <- weight;
-        trace_ray (Scene.reflected s) Ray.epsilon fr.p rd (level + 1) fr.k media rc;
+        trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
         Color.acc_set out (c.ar +. (fade.ar *. rc.ar)) (c.ag +. (fade.ag *. rc.ag)) (c.ab +. (fade.ab *. rc.ab))
       end
       else begin
         let m = (eta *. cos_i) -. Float.sqrt k in
         Vec3.set rd ((eta *. d.mx) +. (m *. n.mx)) ((eta *. d.my) +. (m *. n.my)) ((eta *. d.mz) +. (m *. n.mz));
         fr.k.child <- w;
-        trace_ray s Ray.epsilon fr.p rd (level + 1) fr.k (Interior.beyond inner media) rc;
+        trace_ray s Ray.epsilon infinity fr.p rd (level + 1) fr.k (Interior.beyond inner media) rc;
         through out c tr fade rc
       end
 
@@ -384,7 +385,7 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
       Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
       fr.k.child <- fr.k.refl *. w;
       (* no_reflection objects are left out from here on *)
-      trace_ray (Scene.reflected s) Ray.epsilon fr.p rd (level + 1) fr.k media rc;
+      trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
       if f.irid > 0. then irid s f fr.p cos_i (Float.abs (dot rd n)) rc;
       if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
       else
@@ -447,18 +448,18 @@ type camera_ray = {
 let camera_key =
   Scratch.key (fun () -> { o = Vec3.m (); d = Vec3.m (); light = Color.acc 0.; k = nums (); at = Vec3.m (); cam = Vec3.m () })
 
-(* the radiance along [r] into [out] *)
-let trace_camera_ray s (r : camera_ray) out =
+(* the radiance along [r] into [out], from hits nearer than [far] *)
+let trace_camera_ray s far (r : camera_ray) out =
   Scratch.reset (Scratch.get frames_key);
   (* no_image objects are left out of what camera rays (and rays refracted
      from them) see *)
-  trace_ray (Scene.image s) 0. r.o r.d 1 r.k (start_media s r.o) out
+  trace_ray (Scene.image s) 0. far r.o r.d 1 r.k (start_media s r.o) out
 
 let trace s (ray : Ray.t) =
   let r = Scratch.get camera_key in
   Vec3.load r.o ray.origin;
   Vec3.load r.d ray.dir;
-  trace_camera_ray s r r.light;
+  trace_camera_ray s infinity r r.light;
   Color.of_acc r.light
 
 (* Focal blur (camera aperture > 0): the mean of [blur_samples] rays
@@ -493,7 +494,7 @@ let focal_blur_into (s : Scene.t) (r : camera_ray) out =
     let u = Float.rem (((float_of_int k +. 0.5) /. float_of_int n) +. du) 1. in
     let v = Float.rem (radical_inverse k +. dv) 1. in
     (* a point the camera sends no ray through stays black, as in POV-Ray *)
-    if Camera.lens_into cam sx sy u v r.o r.d then trace_camera_ray s r r.light
+    if Camera.lens_into cam sx sy u v r.o r.d then trace_camera_ray s infinity r r.light
     else Color.acc_set r.light 0. 0. 0.;
     let l = r.light in
     Color.acc_set sum (sum.ar +. l.ar) (sum.ag +. l.ag) (sum.ab +. l.ab)
@@ -501,20 +502,46 @@ let focal_blur_into (s : Scene.t) (r : camera_ray) out =
   let k = 1. /. float_of_int n in
   Color.acc_set out (k *. sum.ar) (k *. sum.ag) (k *. sum.ab)
 
+(* A mesh camera (POV-Ray's mesh_camera) at the image point in [r.at]:
+   the mean of the rays it shoots there, black where it shoots none (as
+   POV-Ray's TracePixel divides by the rays traced) *)
+let mesh_camera_into (s : Scene.t) m ~width ~height (r : camera_ray) out =
+  let sr = ref 0. and sg = ref 0. and sb = ref 0. and n = ref 0 in
+  for k = 0 to Mesh_camera.rays m - 1 do
+    Vec3.set r.o r.at.mx r.at.my 0.;
+    if Mesh_camera.ray_into m ~width ~height k r.o r.d then begin
+      trace_camera_ray s (Mesh_camera.far m) r r.light;
+      let l = r.light in
+      sr := !sr +. l.ar;
+      sg := !sg +. l.ag;
+      sb := !sb +. l.ab;
+      incr n
+    end
+  done;
+  if !n = 0 then Color.acc_set out 0. 0. 0.
+  else
+    let k = float_of_int !n in
+    Color.acc_set out (!sr /. k) (!sg /. k) (!sb /. k)
+
 (* The light through the image point [(px, py)] into [out]; inlined:
    the coordinates stay unboxed. *)
 let[@inline] sample_in (s : Scene.t) ~width ~height px py out =
   let sx = Camera.pixel_x ~width px and sy = Camera.pixel_y ~height py in
   let cam = s.camera in
   let r = Scratch.get camera_key in
-  if cam.aperture > 0. then begin
-    Vec3.set r.at px py 0.;
-    Vec3.set r.cam sx sy 0.;
-    focal_blur_into s r out
-  end
-  else begin
-    if Camera.ray_into cam sx sy r.o r.d then trace_camera_ray s r out else Color.acc_set out 0. 0. 0.
-  end
+  match cam.projection with
+  | Camera.Mesh m ->
+      (* no focal blur: POV-Ray's mesh camera does not jitter its rays *)
+      Vec3.set r.at px py 0.;
+      mesh_camera_into s m ~width ~height r out
+  | _ ->
+      if cam.aperture > 0. then begin
+        Vec3.set r.at px py 0.;
+        Vec3.set r.cam sx sy 0.;
+        focal_blur_into s r out
+      end
+      else if Camera.ray_into cam sx sy r.o r.d then trace_camera_ray s infinity r out
+      else Color.acc_set out 0. 0. 0.
 
 let sample_into s ~width ~height px py out = sample_in s ~width ~height px py out
 
