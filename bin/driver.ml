@@ -62,12 +62,21 @@ let load ~options scene =
       if Sys.is_directory path then fail "cannot read scene %s: it is a folder" path;
       Parse.file ~options path
 
-let compile ?domains ~options scene =
+let compile ?domains ?(mode = Whitted) ~options scene =
   match load ~options scene with
   | Error d -> Error d
-  | Ok (sdl, files) ->
-      let par = Option.map (fun domains -> Render.parallel ~domains) domains in
-      Result.map (fun s -> (s, files)) (Compile.scene ?par sdl)
+  | Ok (sdl, files) -> (
+      match (mode, Compile.mesh_camera_at sdl) with
+      | Monte_carlo, Some loc ->
+          (* the path tracer takes one camera ray per sample; a mesh
+             camera's several rays a pixel, some of them not shot, are
+             whitted mode's (Whitted.sample) *)
+          Error
+            { Diag.loc; chain = [];
+              msg = "mesh_camera is rendered in whitted mode only (--mode whitted); mc mode does not support it" }
+      | _ ->
+          let par = Option.map (fun domains -> Render.parallel ~domains) domains in
+          Result.map (fun s -> (s, files)) (Compile.scene ?par sdl))
 
 let output_path o =
   match o.output with
@@ -176,7 +185,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
       image_height = o.height; clock; frame_number = frame }
   in
   let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
-  match compile ~domains ~options o.scene with
+  match compile ~domains ~mode:o.mode ~options o.scene with
   | Error d ->
       prerr_string (Diag.to_string d);
       1

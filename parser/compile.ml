@@ -1,25 +1,105 @@
 open Camlray
 
-let camera items =
-  let find f = List.fold_left (fun acc i -> match f i with Some v -> Some v | None -> acc) None items in
-  (* the last type named wins *)
-  let projection =
+module Phys = Hashtbl.Make (struct
+  type t = Sdl.mesh
+
+  let equal = ( == )
+  let hash = Hashtbl.hash
+end)
+
+(* POV-Ray's mesh_camera, checked as POV-Ray's parser checks it (the two
+   numbers truncated to integers), given the camera's final location and
+   direction (only their z counts) *)
+let mesh_camera (m : Sdl.mesh_camera) ~(location : Vec3.t) ~(direction : Vec3.t) =
+  let rloc, r = m.rays and dloc, d = m.distribution in
+  let rays = if Float.is_finite r && r < 1e9 then Float.to_int r else 0 in
+  if rays < 1 then Diag.error rloc "a mesh_camera shoots at least 1 ray per pixel, found %g" r;
+  let dist = if Float.is_finite d && Float.abs d < 1e9 then Float.to_int d else -1 in
+  let distribution =
+    match dist with
+    | 0 -> Mesh_camera.Per_mesh
+    | 1 -> Mesh_camera.Summed
+    | 2 -> Mesh_camera.Side_by_side
+    | 3 -> Mesh_camera.Uv_map
+    | _ -> Diag.error dloc "mesh_camera distribution type %g: the types are 0 to 3" d
+  in
+  if (dist = 2 || dist = 3) && rays <> 1 then
+    Diag.error rloc "a mesh_camera of distribution type %d shoots 1 ray per pixel, found %d" dist rays;
+  Option.iter
+    (fun l -> if dist <> 3 then Diag.error l "smooth applies to mesh_camera distribution type 3 only (this is %d)" dist)
+    m.smooth;
+  let nm = List.length m.meshes in
+  if dist = 0 && rays > nm then
+    Diag.error rloc "a mesh_camera of distribution type 0 takes ray k of a pixel from mesh k: %d rays per pixel need %d meshes, found %d"
+      rays rays nm;
+  let meshes = if dist = 3 then [ List.hd m.meshes ] else m.meshes in
+  if dist = 3 && nm > 1 then
+    Diag.warning (List.nth m.meshes 1).loc "distribution type 3 uses the mesh_camera's first mesh only: this one is ignored";
+  (* one preprocessing per declared mesh, however many times it is used
+     (POV-Ray's ess scenes place one mesh 100 times) *)
+  let seen = Phys.create 8 in
+  let faces (o : Sdl.obj) =
+    match o.shape with
+    | Sdl.Mesh sm -> (
+        match Phys.find_opt seen sm with
+        | Some f -> f
+        | None ->
+            let f =
+              Mesh_camera.mesh ~uv:(dist = 3) ~verts:sm.verts ~faces:sm.faces ~normals:sm.normals
+                ~normal_faces:sm.normal_faces ~uvs:sm.uvs ~uv_faces:sm.uv_faces
+            in
+            let k = Mesh_camera.dropped f in
+            if k > 0 then
+              Diag.warning o.loc
+                (Printf.sprintf "%d degenerate triangle%s of this camera mesh dropped, as POV-Ray drops them: the faces after them move up" k
+                   (if k = 1 then "" else "s"));
+            if dist = 3 && not (Mesh_camera.has_uv f) then
+              Diag.warning o.loc "this camera mesh has no uv_vectors: distribution type 3 finds no face, the image is black";
+            Phys.replace seen sm f;
+            f)
+    | _ -> Diag.error o.loc "a mesh_camera takes meshes (mesh, mesh2, or object { } of a declared mesh), not other objects"
+  in
+  let ms = Array.of_list (List.map (fun (o : Sdl.obj) -> (faces o, o.xform)) meshes) in
+  Mesh_camera.make ?far:m.max_distance ~rays ~distribution ~smooth:(m.smooth <> None) ~push:location.z
+    ~flip:(direction.z < -1e-10) ms
+
+let mesh_camera_at (s : Sdl.scene) =
+  let last_camera = List.fold_left (fun acc i -> match i with Sdl.Camera (_, c) -> Some c | _ -> acc) None s.items in
+  let kind items =
     List.fold_left
       (fun acc i ->
         match i with
-        | Sdl.Orthographic -> Camera.Orthographic
-        | Sdl.Perspective -> Camera.Perspective
-        | Sdl.Cylinder_camera n -> Camera.Cylinder n
-        | Sdl.Fisheye -> Camera.Fisheye
-        | Sdl.Omnimax -> Camera.Omnimax
-        | Sdl.Ultra_wide_angle -> Camera.Ultra_wide_angle
-        | Sdl.Panoramic -> Camera.Panoramic
-        | Sdl.Spherical_camera -> Camera.Spherical
+        | Sdl.Mesh_camera m -> Some m.mc_loc
+        | Sdl.Orthographic | Sdl.Perspective | Sdl.Cylinder_camera _ | Sdl.Fisheye | Sdl.Omnimax
+        | Sdl.Ultra_wide_angle | Sdl.Panoramic | Sdl.Spherical_camera ->
+            None
         | _ -> acc)
-      Camera.Perspective items
+      None items
   in
-  let ortho = projection = Camera.Orthographic in
-  let planar = ortho || projection = Camera.Perspective in
+  Option.bind last_camera kind
+
+let camera items =
+  let find f = List.fold_left (fun acc i -> match f i with Some v -> Some v | None -> acc) None items in
+  (* the last type named wins; a mesh camera is made below, once its
+     location and direction are final *)
+  let kind =
+    List.fold_left
+      (fun acc i ->
+        match i with
+        | Sdl.Orthographic -> `Projection Camera.Orthographic
+        | Sdl.Perspective -> `Projection Camera.Perspective
+        | Sdl.Cylinder_camera n -> `Projection (Camera.Cylinder n)
+        | Sdl.Fisheye -> `Projection Camera.Fisheye
+        | Sdl.Omnimax -> `Projection Camera.Omnimax
+        | Sdl.Ultra_wide_angle -> `Projection Camera.Ultra_wide_angle
+        | Sdl.Panoramic -> `Projection Camera.Panoramic
+        | Sdl.Spherical_camera -> `Projection Camera.Spherical
+        | Sdl.Mesh_camera m -> `Mesh m
+        | _ -> acc)
+      (`Projection Camera.Perspective) items
+  in
+  let ortho = match kind with `Projection Camera.Orthographic -> true | _ -> false in
+  let planar = ortho || match kind with `Projection Camera.Perspective -> true | _ -> false in
   let location = Option.value ~default:Vec3.zero (find (function Sdl.Location v -> Some v | _ -> None)) in
   let dir0 = find (function Sdl.Direction v -> Some v | _ -> None) in
   let up0 = find (function Sdl.Up v -> Some v | _ -> None) in
@@ -83,10 +163,16 @@ let camera items =
   in
   let direction = Transform.vector xf !direction
   and right = Transform.vector xf !right
-  and up = Transform.vector xf !up in
+  and up = Transform.vector xf !up
+  and location = Transform.point xf location in
+  let projection =
+    match kind with
+    | `Projection p -> p
+    | `Mesh m -> Camera.Mesh (mesh_camera m ~location ~direction)
+  in
   {
     Camera.projection;
-    location = Transform.point xf location;
+    location;
     direction;
     right;
     up;
@@ -133,13 +219,8 @@ let positive (o : Sdl.obj) what r =
   if not (r > 0.) then Diag.error o.loc "%s must be positive, found %g" what r
 
 (* Meshes are built once per declared value: every [object { M }] of a
-   declared mesh shares the same triangles and BVH (instancing). *)
-module Phys = Hashtbl.Make (struct
-  type t = Sdl.mesh
-
-  let equal = ( == )
-  let hash = Hashtbl.hash
-end)
+   declared mesh shares the same triangles and BVH (instancing; [Phys]
+   above). *)
 
 let built : Shape.t Phys.t = Phys.create 16
 let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16

@@ -8,6 +8,10 @@ val camera : Sdl.camera_item list -> Camlray.Camera.t
     up/right, angle, look_at, orthographic sizing, then transforms in
     written order). *)
 
+val mesh_camera_at : Sdl.scene -> Loc.t option
+(** Where the camera in force (the scene's last) is made a
+    [mesh_camera], if it is: for the renderers that refuse one. *)
+
 val scene : ?par:(int -> (int -> unit) -> unit) -> Sdl.scene -> (Camlray.Scene.t, Diag.t) result
 (** [par]: build the BVHs of large meshes and of the scene in parallel
     ({!Camlray.Render.parallel}); the trees are the same as without. *)

@@ -53,6 +53,12 @@
       { Shapes.obj (loc $loc) (Shapes.mesh (loc $loc) ts) ms }
   | MESH2 LBRACE bs = nonempty_list(mesh2_block) ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.mesh2 (loc $loc) bs) ms }
+  (* a declared object again, with more modifiers (POV-Ray takes any
+     object's identifier there, as in object { }) *)
+  | MESH LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
+      { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
+  | MESH2 LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
+      { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | QUARTIC LBRACE c = param ms = list(object_mod) RBRACE
       { Shapes.obj (loc $loc) (Shapes.algebraic (loc $loc(c)) "quartic" 4 c) ms }
   | CUBIC LBRACE c = param ms = list(object_mod) RBRACE

@@ -2,7 +2,7 @@
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
 %token CAMERA PERSPECTIVE ORTHOGRAPHIC FISHEYE OMNIMAX ULTRA_WIDE_ANGLE PANORAMIC LOCATION LOOK_AT ANGLE RIGHT UP DIRECTION SKY
-%token APERTURE FOCAL_POINT BLUR_SAMPLES
+%token APERTURE FOCAL_POINT BLUR_SAMPLES MESH_CAMERA
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT IRID_WAVELENGTH
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
 
@@ -73,6 +73,15 @@ fog_item:
         if n < 1 || n > 4 then
           Diag.error (loc $loc(e)) "cylinder camera type %d: the types are 1 to 4" n;
         Sdl.Cylinder_camera n }
+  (* POV-Ray's mesh camera: rays per pixel, the distribution type, an
+     optional maximum distance, the meshes, smooth (checked when the
+     scene is compiled) *)
+  | MESH_CAMERA LBRACE r = param COMMA? d = param COMMA? x = ioption(terminated(param, ioption(COMMA)))
+    ms = nonempty_list(object_) s = ioption(SMOOTH) RBRACE
+      { Sdl.Mesh_camera
+          { mc_loc = loc $loc; rays = (loc $loc(r), fl $loc(r) r); distribution = (loc $loc(d), fl $loc(d) d);
+            max_distance = Option.map (fun x -> fl $loc(x) x) x; meshes = ms;
+            smooth = Option.map (fun () -> loc $loc(s)) s } }
   (* turns the rays' directions as a surface normal is turned *)
   | NORMAL LBRACE n = normal_body RBRACE
       { match n with Some n -> Sdl.Cam_normal n | None -> Sdl.Cam_transform Transform.identity }

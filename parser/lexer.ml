@@ -30,7 +30,7 @@ let scene_keywords =
     ("panoramic", PANORAMIC);
     ("location", LOCATION); ("look_at", LOOK_AT); ("angle", ANGLE); ("right", RIGHT);
     ("up", UP); ("direction", DIRECTION); ("sky", SKY); ("aperture", APERTURE);
-    ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES);
+    ("focal_point", FOCAL_POINT); ("blur_samples", BLUR_SAMPLES); ("mesh_camera", MESH_CAMERA);
     ("background", BACKGROUND); ("global_settings", GLOBAL_SETTINGS);
     ("assumed_gamma", ASSUMED_GAMMA); ("max_trace_level", MAX_TRACE_LEVEL);
     ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);

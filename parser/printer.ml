@@ -278,6 +278,11 @@ let camera_item = function
   | Sdl.Cam_transform t -> matrix t
   (* normals are not printed (as in textures) *)
   | Sdl.Cam_normal _ -> "/* normal { } */"
+  | Sdl.Mesh_camera m ->
+      Printf.sprintf "mesh_camera { %s %s %s%s%s }" (float (snd m.rays)) (float (snd m.distribution))
+        (match m.max_distance with Some x -> float x ^ " " | None -> "")
+        (String.concat " " (List.map obj m.meshes))
+        (if m.smooth <> None then " smooth" else "")
 
 let global = function
   | Sdl.Assumed_gamma g -> "assumed_gamma " ^ float g

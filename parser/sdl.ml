@@ -146,6 +146,16 @@ type camera_item =
   | Blur_samples of int
   | Cam_transform of Transform.t
   | Cam_normal of Normal.t  (** [normal { }]: perturbs the rays' directions *)
+  | Mesh_camera of mesh_camera
+
+and mesh_camera = {
+  mc_loc : Loc.t;
+  rays : Loc.t * float;
+  distribution : Loc.t * float;
+  max_distance : float option;
+  meshes : obj list;
+  smooth : Loc.t option;
+}
 
 type global =
   | Assumed_gamma of float

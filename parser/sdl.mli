@@ -151,6 +151,16 @@ type camera_item =
   | Blur_samples of int
   | Cam_transform of Transform.t
   | Cam_normal of Normal.t  (** [normal { }]: perturbs the rays' directions *)
+  | Mesh_camera of mesh_camera  (** POV-Ray's [mesh_camera { }] *)
+
+and mesh_camera = {
+  mc_loc : Loc.t;  (** the [mesh_camera] word *)
+  rays : Loc.t * float;  (** rays per pixel, as written *)
+  distribution : Loc.t * float;  (** the distribution type, as written *)
+  max_distance : float option;  (** the optional third number: how far camera rays see *)
+  meshes : obj list;  (** the mesh objects in order, with their transforms *)
+  smooth : Loc.t option;  (** [smooth], where written *)
+}
 
 type global =
   | Assumed_gamma of float
