@@ -50,11 +50,13 @@ let has_noise_word text =
   List.exists (fun w -> List.mem w noise_words) words
 
 (* the scene and the files of its own it includes (as the parser reads
-   them); POV-Ray's standard include files count by name (woods.inc, ...)
-   where they are included, not by everything they declare *)
-let uses_noise ~include_dirs file =
+   them, at the size compared: a scene may loop over its pixels); POV-Ray's
+   standard include files count by name (woods.inc, ...) where they are
+   included, not by everything they declare *)
+let uses_noise ~include_dirs ~width ~height file =
+  let options = { Camlray_lang.Parse.default_options with include_dirs; image_width = width; image_height = height } in
   let files =
-    match Camlray_lang.Parse.file ~options:{ Camlray_lang.Parse.default_options with include_dirs } file with
+    match Camlray_lang.Parse.file ~options file with
     | Ok (_, files) -> files
     | Error _ -> [ file ]
   in
@@ -163,7 +165,7 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
                     frames = None; clock = None; clock_range = None; subset = None;
                     tile_order_seed = None; aa; aa_depth; limits = Camlray_lang.Supplier.default_limits })
           in
-          let noise = uses_noise ~include_dirs scene in
+          let noise = uses_noise ~include_dirs ~width ~height scene in
           let row note = { name; noise; psnr = nan; ssim = nan; max_diff = -1; pov_s; cam_s; note } in
           let r =
             if not pov_ok then row (Printf.sprintf "POV-Ray failed (see %s.povray.log)" name)
