@@ -6,6 +6,7 @@ let () =
       Test_transform.tests;
       Test_hits.tests;
       Test_camera.tests;
+      Test_mesh_camera.tests;
       Test_render.tests;
       Test_cli.tests;
       Test_pov_scenes.tests;
