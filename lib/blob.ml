@@ -184,6 +184,30 @@ let collect b w (r : Ray.scratch) =
           else if h0 > len then within w s r2 1. (2. *. fn) f2 neg_infinity infinity
   done
 
+(* Whether the quartic [sum] (constant first) surely has no root in [u,
+   v]: its Bernstein coefficients on the stretch, which bound it there,
+   are all of one sign by more than their rounding. Most stretches a ray
+   crosses near a blob hold no surface; this saves them the root search
+   (and decides nothing else: a stretch not ruled out is searched as
+   before). *)
+let[@inline] surely_rootless (p : Float.Array.t) u v =
+  let g = Float.Array.unsafe_get p in
+  (* Taylor shift to u (Horner's scheme, repeated), then scale to [0, 1] *)
+  let c0 = g 0 and c1 = g 1 and c2 = g 2 and c3 = g 3 and c4 = g 4 in
+  let a0 = (((((c4 *. u) +. c3) *. u +. c2) *. u) +. c1) *. u +. c0 in
+  let a1 = ((((4. *. c4 *. u) +. (3. *. c3)) *. u +. (2. *. c2)) *. u) +. c1 in
+  let a2 = (((6. *. c4 *. u) +. (3. *. c3)) *. u) +. c2 in
+  let a3 = (4. *. c4 *. u) +. c3 in
+  let a4 = c4 in
+  let hh = v -. u in
+  let a1 = a1 *. hh and a2 = a2 *. hh *. hh and a3 = a3 *. hh *. hh *. hh and a4 = a4 *. hh *. hh *. hh *. hh in
+  let b0 = a0 and b1 = a0 +. (a1 /. 4.) and b2 = a0 +. (a1 /. 2.) +. (a2 /. 6.)
+  and b3 = a0 +. (0.75 *. a1) +. (a2 /. 2.) +. (a3 /. 4.) and b4 = a0 +. a1 +. a2 +. a3 +. a4 in
+  let scale = Float.abs a0 +. Float.abs a1 +. Float.abs a2 +. Float.abs a3 +. Float.abs a4 in
+  let eps = 1e-9 *. scale in
+  (b0 > eps && b1 > eps && b2 > eps && b3 > eps && b4 > eps)
+  || (b0 < -.eps && b1 < -.eps && b2 < -.eps && b3 < -.eps && b4 < -.eps)
+
 let hit_s b (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
@@ -229,7 +253,7 @@ let hit_s b (r : Ray.scratch) tmin (h : Hit.t) =
             done
         done;
         Float.Array.unsafe_set sum 0 (Float.Array.unsafe_get sum 0 -. b.threshold);
-        if Poly.first_root_in w.roots sum 4 u v then begin
+        if (not (surely_rootless sum u v)) && Poly.first_root_in w.roots sum 4 u v then begin
           (* the nearest root: nearer than [h.t], or none is *)
           let t = Poly.root w.roots /. dl in
           if t < h.t then begin
