@@ -144,26 +144,20 @@ let normal t (n : Vec3.t) =
       ((g m 1 *. n.x) +. (g m 4 *. n.y) +. (g m 7 *. n.z))
       ((g m 2 *. n.x) +. (g m 5 *. n.y) +. (g m 8 *. n.z))
 
-(* [inv_point] and [normal] in place, the same arithmetic; [p] and [out]
-   (or [n]'s input and output) may be the same vector *)
-let inv_point_m t (p : Vec3.m) (out : Vec3.m) =
-  if t.id then Vec3.set out p.mx p.my p.mz
-  else
-    let m = t.inv and x = p.mx and y = p.my and z = p.mz in
-    Vec3.set out
-      ((g m 0 *. x) +. (g m 1 *. y) +. (g m 2 *. z) +. (1. *. g m 9))
-      ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
-      ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
+(* the affine map of the 3x4 row-major [m] (translation last) applied
+   to the point [p], into [out] ([p] and [out] may be the same vector) *)
+let[@inline] affine_m m (p : Vec3.m) (out : Vec3.m) =
+  let x = p.mx and y = p.my and z = p.mz in
+  Vec3.set out
+    ((g m 0 *. x) +. (g m 1 *. y) +. (g m 2 *. z) +. (1. *. g m 9))
+    ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
+    ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
 
-(* [point] in place, the same arithmetic *)
-let point_m t (p : Vec3.m) (out : Vec3.m) =
-  if t.id then Vec3.set out p.mx p.my p.mz
-  else
-    let m = t.m and x = p.mx and y = p.my and z = p.mz in
-    Vec3.set out
-      ((g m 0 *. x) +. (g m 1 *. y) +. (g m 2 *. z) +. (1. *. g m 9))
-      ((g m 3 *. x) +. (g m 4 *. y) +. (g m 5 *. z) +. (1. *. g m 10))
-      ((g m 6 *. x) +. (g m 7 *. y) +. (g m 8 *. z) +. (1. *. g m 11))
+(* [inv_point] and [point] in place, the same arithmetic *)
+let inv_point_m t (p : Vec3.m) (out : Vec3.m) =
+  if t.id then Vec3.set out p.mx p.my p.mz else affine_m t.inv p out
+
+let point_m t (p : Vec3.m) (out : Vec3.m) = if t.id then Vec3.set out p.mx p.my p.mz else affine_m t.m p out
 
 let[@inline] transpose_m m (n : Vec3.m) =
   let x = n.mx and y = n.my and z = n.mz in
