@@ -146,9 +146,11 @@ let make spline sweep h1 h2 ?(open_ = false) points =
 
 (* {2 Roots in [0, 1]} *)
 
-type work = { eqn : Float.Array.t; sc : Poly.scratch; found : Float.Array.t }
+type work = { eqn : Float.Array.t; sc : Poly.scratch; found : Float.Array.t; uv : Float.Array.t }
 
-let work_key = Scratch.key (fun () -> { eqn = Float.Array.make 4 0.; sc = Poly.scratch 3; found = Float.Array.make 3 0. })
+let work_key =
+  Scratch.key (fun () ->
+      { eqn = Float.Array.make 4 0.; sc = Poly.scratch 3; found = Float.Array.make 3 0.; uv = Float.Array.make 2 0. })
 
 (* the roots of a polynomial of degree [deg] (coefficients in [e],
    constant first) in [lo, hi), in order, into [found]; their number *)
@@ -206,8 +208,8 @@ let[@inline] slab_misses (r : Ray.scratch) ylo yhi near2 far2 tmin tmax =
 
 (* crossings of the half-line from (u, v) towards +x with the curves:
    odd inside; a segment owns its start, not its end *)
-let in_curve t u v =
-  let w = Scratch.get work_key in
+let in_curve_w t (w : work) =
+  let u = Float.Array.unsafe_get w.uv 0 and v = Float.Array.unsafe_get w.uv 1 in
   let count = ref 0 in
   for i = 0 to t.n - 1 do
     let b = t.box and ob = 4 * i in
@@ -227,7 +229,15 @@ let in_curve t u v =
   done;
   !count land 1 = 1
 
-let inside t x y z =
+(* the point (u, v) handed over through the domain's work record: as
+   arguments, the floats of a call that is not inlined are boxed *)
+let[@inline] in_curve t u v =
+  let w = Scratch.get work_key in
+  Float.Array.unsafe_set w.uv 0 u;
+  Float.Array.unsafe_set w.uv 1 v;
+  in_curve_w t w
+
+let[@inline] inside t x y z =
   y > t.h1 && y < t.h2
   && if t.conic then y <> 0. && in_curve t (x /. y) (z /. y) else in_curve t x z
 
