@@ -4,9 +4,9 @@
 
 type t = { seg : Float.Array.t; n : int; ybot : float; ytop : float; rbot2 : float; rtop2 : float;
            open_ : bool; rmax : float;
-           range : Float.Array.t
-               (** per segment, the least and greatest squared radius, a
-                   little wider *) }
+           slab : Float.Array.t
+               (** per segment, a little wider than it: its lowest and
+                   highest y, its least and greatest squared radius *) }
 
 let[@inline] g a i = Float.Array.unsafe_get a i
 let bounds t = (Vec3.make (-.t.rmax) t.ybot (-.t.rmax), Vec3.make t.rmax t.ytop t.rmax)
@@ -42,7 +42,7 @@ let make ~open_ (pts : (float * float) array) =
     Error "a sor's first (last) point must be at another height than its third (third from last)"
   else begin
     let n = np - 3 in
-    let seg = Float.Array.create (6 * n) and range = Float.Array.create (2 * n) in
+    let seg = Float.Array.create (6 * n) and slab = Float.Array.create (4 * n) in
     let rmax2 = ref 0. in
     for i = 0 to n - 1 do
       let r0, ym = pts.(i) and r1, y0 = pts.(i + 1) and r2, y1 = pts.(i + 2) and r3, yp = pts.(i + 3) in
@@ -56,12 +56,12 @@ let make ~open_ (pts : (float * float) array) =
           (((((3. *. a *. y0) +. (2. *. b)) *. y0) +. c) *. h) (f a b c d y0)
       in
       let pad = 1e-9 *. (1. +. Float.abs lo +. Float.abs hi) in
-      Float.Array.set range (2 * i) (lo -. pad);
-      Float.Array.set range ((2 * i) + 1) (hi +. pad);
+      let ypad = 1e-9 *. (1. +. Float.abs y0 +. Float.abs y1) in
+      List.iteri (fun j v -> Float.Array.set slab ((4 * i) + j) v) [ y0 -. ypad; y1 +. ypad; lo -. pad; hi +. pad ];
       rmax2 := Float.max !rmax2 hi
     done;
     let rb, yb = pts.(1) and rt, yt = pts.(np - 2) in
-    Ok { seg; n; ybot = yb; ytop = yt; rbot2 = rb *. rb; rtop2 = rt *. rt; open_; rmax = Float.sqrt !rmax2; range }
+    Ok { seg; n; ybot = yb; ytop = yt; rbot2 = rb *. rb; rtop2 = rt *. rt; open_; rmax = Float.sqrt !rmax2; slab }
   end
 
 (* the segment holding height [y] (the last one for the top) *)
@@ -97,8 +97,8 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
     and c = g t.seg (o + 4) and d = g t.seg (o + 5) in
     if e <> 0. then begin
     (* most segments are out of the ray's way: not solved for *)
-    let pad = 1e-9 *. (1. +. Float.abs y0 +. Float.abs y1) in
-    if not (Prism.slab_misses r (y0 -. pad) (y1 +. pad) (g t.range (2 * i)) (g t.range ((2 * i) + 1)) tmin h.t)
+    let sl = t.slab and ob = 4 * i in
+    if not (Prism.slab_misses r (g sl ob) (g sl (ob + 1)) (g sl (ob + 2)) (g sl (ob + 3)) tmin h.t)
     then begin
       (* in the height y along the ray: (ox e + dx (y - q))^2 + (oz e +
          dz (y - q))^2 - e^2 f(y) = 0, a cubic; t = (y - q) / e *)
