@@ -96,7 +96,7 @@ let camlray_pair s ~w ~h =
   ignore (Sys.command (Printf.sprintf "( %s ) & ( %s ); wait" c1 c2));
   let time err =
     let text = read_file err in
-    List.iter (fun f -> try Sys.remove f with Sys_error _ -> ()) [ err ];
+    (try Sys.remove err with Sys_error _ -> ());
     match find_float_after "render" text with Some t -> t | None -> failwith ("no render time in: " ^ text)
   in
   let t1 = time e1 and t2 = time e2 in
