@@ -20,6 +20,9 @@ type t = {
   aperture : float;
   focal_distance : float;
   blur_samples : int;
+  blur_samples_min : int;
+  blur_thresholds : float array;
+  blur_points : float array;
   frame : frame;
   normal : Normal.t option;
 }
@@ -48,9 +51,94 @@ let default =
     aperture = 0.;
     focal_distance = 1.;
     blur_samples = 0;
+    blur_samples_min = 0;
+    blur_thresholds = [||];
+    blur_points = [||];
     frame = frame ~right ~up ~direction ~angle_deg:90. ~v_angle_deg:180.;
     normal = None;
   }
+
+(* POV-Ray's thresholds for n = 1 .. samples lens rays: the variance of
+   the mean must fall under variance x chi2(n) / chi2(samples - 1), the
+   chi-square quantiles taken at [confidence] (tracepixel.cpp) *)
+let blur_thresholds ~samples ~confidence ~variance =
+  if samples <= 1 then Array.make (max samples 0) 0.
+  else
+    let k = variance /. Chi2.quantile_upper ~df:(float_of_int (samples - 1)) confidence in
+    Array.init samples (fun i -> k *. Chi2.quantile_upper ~df:(float_of_int (i + 1)) confidence)
+
+(* Focal blur's lens points. The first seven are the centre and a
+   hexagon near the rim (radius 0.95): POV-Ray's confidence test stops
+   after them where they all agree, and an edge seen across part of the
+   lens is caught best by points spread out to the rim (a ring at 0.866,
+   POV-Ray's, and one at 0.95 gave 32.8 and 33.2 dB against a 400-ray
+   reference on the clojure-dof seed, one at 0.75 only 30.2). Each later
+   point is the centre of the largest hole left, found on a grid fine
+   enough for [samples] points (farthest-point sampling): the point of
+   the grid farthest from the points before it and from the rim, the rim
+   counting double (a point's share of the disc reaches halfway to its
+   neighbours but all the way to the rim). Past [exact] points the grid
+   would cost too much: random points follow. *)
+let blur_points samples =
+  let exact = 1024 in
+  let p = Array.make (2 * max samples 0) 0. in
+  for i = 1 to min 6 (samples - 1) do
+    let phi = Float.pi /. 3. *. float_of_int (i - 1) in
+    p.(2 * i) <- 0.95 *. Float.cos phi;
+    p.((2 * i) + 1) <- 0.95 *. Float.sin phi
+  done;
+  if samples > 7 then begin
+    (* the grid's points in the disc, each with its squared distance to
+       the nearest point placed and its distance to the rim (doubled) *)
+    let m = max 48 (int_of_float (Float.ceil (2. *. Float.sqrt (float_of_int (min samples exact))))) in
+    let h = 1. /. float_of_int m in
+    let gx = ref [] in
+    for i = -m to m do
+      for j = -m to m do
+        let x = h *. float_of_int i and y = h *. float_of_int j in
+        if (x *. x) +. (y *. y) < 1. then gx := (x, y) :: !gx
+      done
+    done;
+    let g = Array.of_list (List.rev !gx) in
+    let near = Array.make (Array.length g) infinity in
+    let rim = Array.map (fun (x, y) -> 2. *. (1. -. Float.hypot x y)) g in
+    let place i =
+      let px = p.(2 * i) and py = p.((2 * i) + 1) in
+      Array.iteri
+        (fun k (x, y) ->
+          let dx = x -. px and dy = y -. py in
+          near.(k) <- Float.min near.(k) ((dx *. dx) +. (dy *. dy)))
+        g
+    in
+    for i = 0 to 6 do
+      place i
+    done;
+    let rng = Sampler.create ~seed:0x1e45 ~pixel:0 ~sample:0 in
+    for i = 7 to samples - 1 do
+      if i < exact then begin
+        let best = ref 0 and score = ref neg_infinity in
+        Array.iteri
+          (fun k d ->
+            let s = Float.min (Float.sqrt d) rim.(k) in
+            if s > !score then begin
+              score := s;
+              best := k
+            end)
+          near;
+        let x, y = g.(!best) in
+        p.(2 * i) <- x;
+        p.((2 * i) + 1) <- y;
+        place i
+      end
+      else begin
+        Sampler.reset rng ~seed:0x1e45 ~pixel:i ~sample:0;
+        let r = Float.sqrt (Sampler.get rng 0) and phi = 2. *. Float.pi *. Sampler.get rng 1 in
+        p.(2 * i) <- r *. Float.cos phi;
+        p.((2 * i) + 1) <- r *. Float.sin phi
+      end
+    done
+  end;
+  p
 
 let[@inline] pixel_x ~width px = (px /. float_of_int width) -. 0.5
 let[@inline] pixel_y ~height py = 0.5 -. (py /. float_of_int height)
@@ -284,14 +372,12 @@ let dir c sx sy =
 
 let ray c sx sy = Ray.make (origin c sx sy) (dir c sx sy)
 
-let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
+let[@inline] disc_into c sx sy lx ly (o : Vec3.m) (d : Vec3.m) =
   let seen = base_into c sx sy o d in
-  if seen && c.aperture > 0. then begin
+  if seen && c.aperture <> 0. then begin
     (* POV-Ray's lens has radius aperture/4 (checked by rendering a point
-       light out of focus); uniform polar mapping of the square onto it *)
-    let rad = 0.25 *. c.aperture *. Float.sqrt u in
-    let phi = 2. *. Float.pi *. v in
-    let kc = rad *. Float.cos phi and ks = rad *. Float.sin phi in
+       light out of focus) *)
+    let kc = 0.25 *. c.aperture *. lx and ks = 0.25 *. c.aperture *. ly in
     let rt = c.right and up = c.up and dir = c.direction in
     let ox = (kc *. Vec3.unit_k rt.x rt.y rt.z 0) +. (ks *. Vec3.unit_k up.x up.y up.z 0)
     and oy = (kc *. Vec3.unit_k rt.x rt.y rt.z 1) +. (ks *. Vec3.unit_k up.x up.y up.z 1)
@@ -306,6 +392,11 @@ let[@inline] lens_into c sx sy u v (o : Vec3.m) (d : Vec3.m) =
   end;
   bend_ray c sx sy d;
   seen
+
+(* uniform polar mapping of the square onto the disc *)
+let[@inline] lens_into c sx sy u v o d =
+  let rad = Float.sqrt u and phi = 2. *. Float.pi *. v in
+  disc_into c sx sy (rad *. Float.cos phi) (rad *. Float.sin phi) o d
 
 let ray_lens c sx sy u v =
   let o = Vec3.m () and d = Vec3.m () in

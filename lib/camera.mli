@@ -39,7 +39,15 @@ type t = {
   up : Vec3.t;
   aperture : float;  (** 0: pinhole *)
   focal_distance : float;  (** along the view direction, for depth of field *)
-  blur_samples : int;
+  blur_samples : int;  (** 0: no focal blur (POV-Ray draws none without it) *)
+  blur_samples_min : int;  (** lens rays always traced before the confidence test may stop *)
+  blur_thresholds : float array;
+      (** after [n] lens rays, the sampling of a pixel stops once the
+          variance of the mean of each channel is under element [n - 1]
+          (see {!blur_thresholds}) *)
+  blur_points : float array;
+      (** the lens points of focal blur in the unit disc, in the order
+          used, as x0, y0, x1, y1, ... ({!blur_points}) *)
   frame : frame;  (** what the non-planar projections use *)
   normal : Normal.t option;
       (** POV-Ray's [normal { }] in a camera: each ray's direction turned
@@ -50,6 +58,19 @@ type t = {
 
 val frame : right:Vec3.t -> up:Vec3.t -> direction:Vec3.t -> angle_deg:float -> v_angle_deg:float -> frame
 (** The frame of the final vectors. *)
+
+val blur_thresholds : samples:int -> confidence:float -> variance:float -> float array
+(** POV-Ray's confidence test for focal blur: element [n - 1] is
+    [variance * q(n) / q(samples - 1)], [q(d)] the chi-square quantile of
+    [d] degrees of freedom with upper tail [confidence] (so the last
+    threshold is about [variance]); all zero when [samples <= 1]. *)
+
+val blur_points : int -> float array
+(** [blur_points n]: [n] points of the unit disc (x0, y0, x1, y1, ...):
+    the centre, six points of a hexagon of radius 0.95, then each the
+    centre of the largest hole the points before it leave (the rim
+    counting double), so that every prefix covers the disc evenly; random
+    points past the 1024th. *)
 
 val default : t
 (** POV-Ray's default camera (location 0, direction z, right 1.33 x, up y). *)
@@ -71,6 +92,12 @@ val dir : t -> float -> float -> Vec3.t
 val ray_into : t -> float -> float -> Vec3.m -> Vec3.m -> bool
 (** [ray_into c sx sy o d]: {!origin} and {!dir} written into [o] and [d]
     (nothing allocated); the result is {!sees}. *)
+
+val disc_into : t -> float -> float -> float -> float -> Vec3.m -> Vec3.m -> bool
+(** [disc_into cam sx sy lx ly o d]: the ray through the screen point
+    from the point [(lx, ly)] of the unit disc scaled onto the lens (x
+    along right, y along up), into [o] and [d]; [false] where
+    {!sees} is. *)
 
 val lens_into : t -> float -> float -> float -> float -> Vec3.m -> Vec3.m -> bool
 (** [lens_into cam sx sy u v o d]: {!ray_lens} written into [o] and [d]

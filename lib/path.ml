@@ -317,7 +317,7 @@ let pixel_into t ~width ~height ~seed ~spp ~max_depth x y (out : Color.acc) =
     let sx = Camera.pixel_x ~width (float_of_int x +. jx)
     and sy = Camera.pixel_y ~height (float_of_int y +. jy) in
     let seen =
-      if cam.aperture <= 0. then Camera.ray_into cam sx sy st.o st.d
+      if cam.aperture = 0. then Camera.ray_into cam sx sy st.o st.d
       else Camera.lens_into cam sx sy (Sampler.get sampler 2) (Sampler.get sampler 3) st.o st.d
     in
     (* a point the camera sends no ray through stays black, as in POV-Ray *)

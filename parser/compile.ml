@@ -78,7 +78,7 @@ let mesh_camera_at (s : Sdl.scene) =
   in
   Option.bind last_camera kind
 
-let camera items =
+let camera loc items =
   let find f = List.fold_left (fun acc i -> match f i with Some v -> Some v | None -> acc) None items in
   (* the last type named wins; a mesh camera is made below, once its
      location and direction are final *)
@@ -161,6 +161,23 @@ let camera items =
     | Some fp -> Vec3.dot (Vec3.sub fp location) (Vec3.normalize !direction)
     | None -> Vec3.dot (Vec3.sub Vec3.zero location) (Vec3.normalize !direction)
   in
+  (* POV-Ray draws focal blur only when blur_samples is given: without
+     it an aperture changes nothing *)
+  let blur_samples_min, blur_samples =
+    match find (function Sdl.Blur_samples (m, n) -> Some (m, n) | _ -> None) with
+    | Some (m, n) -> (max 0 m, max 0 n)
+    | None -> (0, 0)
+  in
+  let aperture =
+    match find (function Sdl.Aperture a -> Some a | _ -> None) with
+    | Some a when a <> 0. && blur_samples = 0 ->
+        Diag.warning loc
+          "this camera has an aperture but no blur_samples: POV-Ray draws no focal blur then, nor does \
+           camlray (add blur_samples N)";
+        0.
+    | Some a -> a
+    | None -> 0.
+  in
   let direction = Transform.vector xf !direction
   and right = Transform.vector xf !right
   and up = Transform.vector xf !up
@@ -176,9 +193,15 @@ let camera items =
     direction;
     right;
     up;
-    aperture = Option.value ~default:0. (find (function Sdl.Aperture a -> Some a | _ -> None));
+    aperture;
     focal_distance = Float.abs focal;
-    blur_samples = Option.value ~default:0 (find (function Sdl.Blur_samples n -> Some n | _ -> None));
+    blur_samples;
+    blur_samples_min;
+    blur_points = Camera.blur_points blur_samples;
+    blur_thresholds =
+      Camera.blur_thresholds ~samples:blur_samples
+        ~confidence:(Option.value ~default:0.9 (find (function Sdl.Confidence c -> Some c | _ -> None)))
+        ~variance:(Option.value ~default:(1. /. 128.) (find (function Sdl.Variance v -> Some v | _ -> None)));
     frame =
       (* POV-Ray's defaults: 90 degrees; the spherical camera 360 by 180 *)
       (let h, v =
@@ -498,7 +521,7 @@ and scene_ (s : Sdl.scene) =
       | true, _ -> Image.Srgb
       | false, _ -> Image.Identity
     in
-    let camera = match !cams with (_, c) :: _ -> camera c | [] -> Camera.default in
+    let camera = match !cams with (l, c) :: _ -> camera l c | [] -> Camera.default in
     let flagged = Array.of_list (List.rev !objects) in
     let objects = Array.map fst flagged in
     let accel = Scene.accelerate ?par:!par objects in

@@ -3,10 +3,10 @@
     gamma rules and default textures are applied here; semantic errors
     come from here, located. *)
 
-val camera : Sdl.camera_item list -> Camlray.Camera.t
-(** POV-Ray's camera model: keywords applied in its fixed order (type,
-    up/right, angle, look_at, orthographic sizing, then transforms in
-    written order). *)
+val camera : Loc.t -> Sdl.camera_item list -> Camlray.Camera.t
+(** POV-Ray's camera model (the camera at the location given, for its
+    warnings): keywords applied in its fixed order (type, up/right, angle,
+    look_at, orthographic sizing, then transforms in written order). *)
 
 val mesh_camera_at : Sdl.scene -> Loc.t option
 (** Where the camera in force (the scene's last) is made a

@@ -61,11 +61,16 @@ fog_item:
   | SKY e = param { Sdl.Sky (v3 $loc(e) e) }
   | APERTURE e = param { Sdl.Aperture (fl $loc(e) e) }
   | FOCAL_POINT e = param { Sdl.Focal_point (v3 $loc(e) e) }
-  | BLUR_SAMPLES e = param { Sdl.Blur_samples (Value.to_int (loc $loc(e)) e) }
-  (* POV-Ray's adaptive focal blur: camlray takes blur_samples as they
-     are (read, not used) *)
-  | CONFIDENCE e = param { ignore (fl $loc(e) e); Sdl.Cam_transform Transform.identity }
-  | VARIANCE e = param { ignore (fl $loc(e) e); Sdl.Cam_transform Transform.identity }
+  | BLUR_SAMPLES e = param { Sdl.Blur_samples (0, Value.to_int (loc $loc(e)) e) }
+  | BLUR_SAMPLES e = param COMMA f = param
+      { Sdl.Blur_samples (Value.to_int (loc $loc(e)) e, Value.to_int (loc $loc(f)) f) }
+  (* POV-Ray's confidence test, which stops a pixel's lens rays early *)
+  | CONFIDENCE e = param
+      { let c = fl $loc(e) e in
+        if not (c > 0. && c < 1.) then
+          Diag.error (loc $loc(e)) "confidence %g: a probability strictly between 0 and 1 is needed" c;
+        Sdl.Confidence c }
+  | VARIANCE e = param { Sdl.Variance (fl $loc(e) e) }
   | t = transformation { Sdl.Cam_transform t }
   (* camera words camlray knows elsewhere, named when met here *)
   | CYLINDER e = param

@@ -274,7 +274,10 @@ let camera_item = function
   | Sdl.Sky v -> "sky " ^ vec v
   | Sdl.Aperture a -> "aperture " ^ float a
   | Sdl.Focal_point v -> "focal_point " ^ vec v
-  | Sdl.Blur_samples n -> Printf.sprintf "blur_samples %d" n
+  | Sdl.Blur_samples (0, n) -> Printf.sprintf "blur_samples %d" n
+  | Sdl.Blur_samples (m, n) -> Printf.sprintf "blur_samples %d, %d" m n
+  | Sdl.Confidence c -> "confidence " ^ float c
+  | Sdl.Variance v -> "variance " ^ float v
   | Sdl.Cam_transform t -> matrix t
   (* normals are not printed (as in textures) *)
   | Sdl.Cam_normal _ -> "/* normal { } */"

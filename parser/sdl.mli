@@ -148,7 +148,9 @@ type camera_item =
   | Sky of Vec3.t
   | Aperture of float
   | Focal_point of Vec3.t
-  | Blur_samples of int
+  | Blur_samples of int * int  (** [blur_samples [MIN,] MAX]: the minimum (0 when absent), the maximum *)
+  | Confidence of float  (** focal blur's confidence test (0.9) *)
+  | Variance of float  (** and its variance (1/128) *)
   | Cam_transform of Transform.t
   | Cam_normal of Normal.t  (** [normal { }]: perturbs the rays' directions *)
   | Mesh_camera of mesh_camera  (** POV-Ray's [mesh_camera { }] *)

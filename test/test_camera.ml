@@ -173,7 +173,7 @@ let units =
           ]);
     Alcotest.test_case "depth of field: lens radius aperture/4, rays meet on the focal plane" `Quick
       (fun () ->
-        let c = cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> }" in
+        let c = cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> blur_samples 16 }" in
         Alcotest.(check (float 1e-9)) "focal distance" 5. c.focal_distance;
         let pin = Camera.ray c 0.1 0.2 in
         let focus = Ray.at pin (5. /. pin.dir.z) in
@@ -187,6 +187,86 @@ let units =
           [ (0., 0.); (0.999999, 0.3); (0.5, 0.7); (0.25, 0.1) ];
         let edge = Camera.ray_lens c 0. 0. 1. 0. in
         Alcotest.(check (float 1e-9)) "edge" 0.25 (Vec3.dist edge.origin c.location));
+    Alcotest.test_case "an aperture without blur_samples: no focal blur (POV-Ray), with a warning" `Quick
+      (fun () ->
+        let c, w =
+          Camlray_lang.Diag.collect_warnings (fun () ->
+              cam "camera { location <0,0,-5> look_at 0 aperture 1 focal_point <0,0,0> }")
+        in
+        Alcotest.(check (float 0.)) "aperture" 0. c.aperture;
+        if not (Helpers.contains w "no blur_samples") then Alcotest.failf "warning: %S" w;
+        let c = cam "camera { aperture 1 blur_samples 4, 32 }" in
+        Alcotest.(check (pair int int)) "blur_samples 4, 32" (4, 32) (c.blur_samples_min, c.blur_samples));
   ]
 
-let tests = ("camera", units)
+(* POV-Ray's confidence test for focal blur *)
+let confidence =
+  [
+    Alcotest.test_case "chi-square quantiles: the tables' values" `Quick (fun () ->
+        (* x with P(X > x) = p, from the usual tables (5 significant digits) *)
+        List.iter
+          (fun (df, p, x) ->
+            let q = Chi2.quantile_upper ~df p in
+            if Float.abs (q -. x) > 5e-5 *. x then Alcotest.failf "df %g, p %g: %g, table %g" df p q x)
+          [ (1., 0.9, 0.015791); (2., 0.9, 0.21072); (5., 0.9, 1.6103); (10., 0.9, 4.8652);
+            (30., 0.9, 20.599); (100., 0.9, 82.358); (1., 0.05, 3.8415); (10., 0.05, 18.307);
+            (100., 0.05, 124.34); (4., 0.5, 3.3567) ]);
+    Alcotest.test_case "chi-square: quantile and tail are inverses" `Quick (fun () ->
+        List.iter
+          (fun df ->
+            List.iter
+              (fun p ->
+                let x = Chi2.quantile_upper ~df p in
+                Alcotest.(check (float 1e-12)) "tail" p (Chi2.upper_tail ~df x))
+              [ 0.01; 0.1; 0.5; 0.9; 0.99 ])
+          [ 0.5; 1.; 3.; 17.; 63.; 500. ]);
+    Alcotest.test_case "thresholds: variance x q(n) / q(N - 1), rising to about the variance" `Quick
+      (fun () ->
+        let c = cam "camera { aperture 1 blur_samples 64 confidence 0.95 variance 0.01 }" in
+        let t = c.blur_thresholds in
+        Alcotest.(check int) "one a count" 64 (Array.length t);
+        let q d = Chi2.quantile_upper ~df:d 0.95 in
+        Alcotest.(check (float 1e-15)) "n = 7" (0.01 *. q 7. /. q 63.) t.(6);
+        Alcotest.(check (float 1e-15)) "n = 63" 0.01 t.(62);
+        Array.iteri (fun i x -> if i > 0 && x <= t.(i - 1) then Alcotest.fail "not rising") t;
+        (* the defaults: 0.9 and 1/128 *)
+        let d = cam "camera { aperture 1 blur_samples 10 }" in
+        Alcotest.(check (float 1e-15)) "defaults" (1. /. 128.) d.blur_thresholds.(8));
+    Alcotest.test_case "lens points: the centre, a hexagon, then every prefix spread over the disc" `Quick
+      (fun () ->
+        let n = 200 in
+        let p = Camera.blur_points n in
+        Alcotest.(check (pair (float 0.) (float 0.))) "centre" (0., 0.) (p.(0), p.(1));
+        for i = 1 to 6 do
+          Alcotest.(check (float 1e-12)) "hexagon" 0.95 (Float.hypot p.(2 * i) p.((2 * i) + 1))
+        done;
+        for i = 0 to n - 1 do
+          if Float.hypot p.(2 * i) p.((2 * i) + 1) > 1. then Alcotest.failf "point %d outside the disc" i
+        done;
+        (* the largest gap: no point of the disc (a fine grid of them) is
+           farther than 2.1 / sqrt k from the first k points (1.1 / sqrt k
+           is a hexagonal lattice's); k random points leave gaps of 2.9 to
+           4 / sqrt k *)
+        List.iter
+          (fun k ->
+            let gap = ref 0. in
+            for gx = -40 to 40 do
+              for gy = -40 to 40 do
+                let x = float_of_int gx /. 40. and y = float_of_int gy /. 40. in
+                if Float.hypot x y <= 1. then begin
+                  let d = ref infinity in
+                  for j = 0 to k - 1 do
+                    d := Float.min !d (Float.hypot (x -. p.(2 * j)) (y -. p.((2 * j) + 1)))
+                  done;
+                  gap := Float.max !gap !d
+                end
+              done
+            done;
+            if !gap > 2.1 /. Float.sqrt (float_of_int k) then
+              Alcotest.failf "the first %d points leave a gap of %g (at most %g)" k !gap
+                (2.1 /. Float.sqrt (float_of_int k)))
+          [ 7; 10; 13; 19; 25; 37; 64; 100; 200 ]);
+  ]
+
+let tests = ("camera", units @ confidence)
+

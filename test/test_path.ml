@@ -209,7 +209,7 @@ let domains () =
 let lens () =
   let s =
     Helpers.compile_string
-      "#version 3.7;\ncamera { location <0,0,-5> look_at 0 aperture 2 focal_point <0,0,1> }\n"
+      "#version 3.7;\ncamera { location <0,0,-5> look_at 0 aperture 2 focal_point <0,0,1> blur_samples 8 }\n"
   in
   let cam = s.camera in
   let pinhole = Camera.ray cam 0.2 (-0.1) in
