@@ -5,6 +5,15 @@ let light_min_cos = 1e-10
 
 type opacity = { mutable alpha : float }
 
+(* The shadows found at one point, light by light: light [j]'s is in
+   [col.(3j) .. col.(3j + 2)] when [stamp.(j) = gen] (POV-Ray keeps the
+   same per intersection, so that the layers of a texture and the
+   textures of a texture map trace each shadow ray once) *)
+type shadows = { mutable gen : int; mutable stamp : int array; mutable col : float array }
+
+let shadows () = { gen = 1; stamp = [||]; col = [||] }
+let forget c = c.gen <- c.gen + 1
+
 (* POV-Ray's iridescence of channel [c] (0 red, 1 green, 2 blue): a thin
    film of the finish's thickness (varied by camlray's noise with
    [irid_turb]) seen at the cosines [cl] to the light and of the ray [d]
@@ -25,7 +34,7 @@ let irid_k (s : Scene.t) (f : Finish.t) (p : Vec3.m) cl (d : Vec3.m) (n : Vec3.m
    point lights). Scalars throughout: nothing is allocated unless the
    shadow ray crosses something transparent. *)
 let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
-    (light : Light.t) (lp : Vec3.m) sampled (out : Color.acc) =
+    (light : Light.t) (lp : Vec3.m) sampled (cache : shadows) j (out : Color.acc) =
   let alpha = k.alpha in
   let w = Shadow.walk () in
   let l = Shadow.toward w in
@@ -44,8 +53,21 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
-    if not light.shadowless then if sampled then Shadow.point s w light p else Shadow.light s w light p;
     let sh = Shadow.passed w in
+    (* [j] < 0: an area light's sample, never kept *)
+    if not light.shadowless then
+      if sampled then Shadow.point s w light p
+      else if j >= 0 && cache.stamp.(j) = cache.gen then
+        Color.acc_set sh cache.col.(3 * j) cache.col.((3 * j) + 1) cache.col.((3 * j) + 2)
+      else begin
+        Shadow.light s w light p;
+        if j >= 0 then begin
+          cache.stamp.(j) <- cache.gen;
+          cache.col.(3 * j) <- sh.ar;
+          cache.col.((3 * j) + 1) <- sh.ag;
+          cache.col.((3 * j) + 2) <- sh.ab
+        end
+      end;
     let lr = if light.shadowless then lr else lr *. sh.ar
     and lg = if light.shadowless then lg else lg *. sh.ag
     and lb = if light.shadowless then lb else lb *. sh.ab in
@@ -108,6 +130,8 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
       end
   end
 
+let no_cache = shadows ()
+
 (* Per domain: what an area light that shades per sample
    (area_illumination) needs for each: the scene, the light, the shaded
    point's finish, pigment, numbers, point, normal and ray, a sample's
@@ -138,14 +162,19 @@ let illum_sample (il : illum) i j (o : Color.acc) =
   Light.position_into light a il.ip (Light.offset a.n1 i) (Light.offset a.n2 j) il.ipos;
   Color.acc_set o 0. 0. 0.;
   match il.iscene with
-  | Some s -> one_light s il.ifinish il.ipc il.ik il.ip il.inn il.id light il.ipos true o
+  | Some s -> one_light s il.ifinish il.ipc il.ik il.ip il.inn il.id light il.ipos true no_cache (-1) o
   | None -> ()
 
 (* [one_light]'s position when the light is where it stands (unread) *)
 let own_position = Vec3.m ()
 
-let lights (s : Scene.t) (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d (out : Color.acc) =
-  for j = 0 to Array.length s.lights - 1 do
+let lights (s : Scene.t) cache (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d (out : Color.acc) =
+  let nl = Array.length s.lights in
+  if Array.length cache.stamp < nl then begin
+    cache.stamp <- Array.make nl 0;
+    cache.col <- Array.make (3 * nl) 0.
+  end;
+  for j = 0 to nl - 1 do
     let light = Array.unsafe_get s.lights j in
     match light.area with
     | Some a when a.area_illumination ->
@@ -165,5 +194,5 @@ let lights (s : Scene.t) (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d (
         out.ar <- out.ar +. c.ar;
         out.ag <- out.ag +. c.ag;
         out.ab <- out.ab +. c.ab
-    | _ -> one_light s f pc k p n d light own_position false out
+    | _ -> one_light s f pc k p n d light own_position false cache j out
   done

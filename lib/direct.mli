@@ -11,9 +11,22 @@ type opacity = { mutable alpha : float }
     (the factor of its diffuse light), stored flat so that passing it
     boxes nothing. *)
 
+type shadows
+(** The shadows found at one point, light by light, so that the layers of
+    a texture and the textures of a texture map trace each shadow ray
+    once (as POV-Ray does). *)
+
+val shadows : unit -> shadows
+(** An empty store. *)
+
+val forget : shadows -> unit
+(** Empty it: the next point shaded is another. *)
+
 val lights :
-  Scene.t -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
-(** [lights s f pc a p n d out]: the diffuse light and highlights of every
-    light of [s] at point [p] of normal [n] (facing the ray [d]), for the
-    finish [f] and pigment [pc], added into [out]. Allocates nothing
+  Scene.t -> shadows -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
+(** [lights s c f pc a p n d out]: the diffuse light and highlights of
+    every light of [s] at point [p] of normal [n] (facing the ray [d]),
+    for the finish [f] and pigment [pc], added into [out]; the shadows
+    kept in [c] are used (they must be [p]'s: {!forget} them when the
+    point changes), those not kept are traced and kept. Allocates nothing
     unless a shadow ray crosses something transparent. *)

@@ -50,13 +50,14 @@ type frame = {
   fade : Color.acc;  (** the fade of the medium the ray came through *)
   uv : Vec3.m;  (** the hit's <u, v, 0>, when [has_uv] (the object's texture is uv-mapped) *)
   mutable has_uv : bool;
+  sh : Direct.shadows;  (** the shadows found at [p] *)
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
-    uv = Vec3.m (); has_uv = false }
+    uv = Vec3.m (); has_uv = false; sh = Direct.shadows () }
 
 let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
@@ -65,6 +66,7 @@ let enter () =
   Color.acc_set f.c 0. 0. 0.;
   Color.acc_set f.tr 1. 1. 1.;
   f.top_set <- false;
+  Direct.forget f.sh;
   f
 
 let leave () = Scratch.pop (Scratch.get frames_key)
@@ -331,7 +333,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           (* this layer's own colour: lights, then ambient and emission *)
           let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
-          Direct.lights s f pc fr.a p n d dl;
+          Direct.lights s fr.sh f pc fr.a p n d dl;
           let amb = s.settings.ambient_light in
           let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))

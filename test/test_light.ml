@@ -47,6 +47,38 @@ let scene () =
   (* the light centre is head-on: diffuse 1; shadow average 0.75 *)
   Scn.gray "3x1 area light, an end blocked" 0.75 c
 
+(* The shadows found at a point are kept until forgotten: the layers of
+   a texture trace each shadow ray once. Told a lit point is the
+   shadowed one's, the store answers with the kept shadow. *)
+let kept_shadows () =
+  let s =
+    Scn.compile
+      "light_source { <0,10,0>, rgb 1 }\n\
+       sphere { <0,5,0>, 1 pigment { rgb 1 } }\n\
+       plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }"
+  in
+  let pc = Pigment.out () in
+  pc.r <- 1.;
+  pc.g <- 1.;
+  pc.b <- 1.;
+  let k = { Direct.alpha = 1. } and n = Vec3.m () and d = Vec3.m () in
+  Vec3.set n 0. 1. 0.;
+  Vec3.set d 0. (-1.) 0.;
+  let f = Finish.default and cache = Direct.shadows () in
+  let at x =
+    let p = Vec3.m () and out = Color.acc 0. in
+    Vec3.set p x 0. 0.;
+    Direct.lights s cache { f with diffuse = 1. } pc k p n d out;
+    out.ar
+  in
+  check "under the sphere" 0. (at 0.);
+  check "lit, but the kept shadow is the first point's" 0. (at 8.);
+  Direct.forget cache;
+  let lit = at 8. in
+  if lit < 0.1 then Alcotest.failf "forgotten, the lit point is lit: %g" lit;
+  (* straight under the light, and the kept shadow lets all through *)
+  check "kept again: under the sphere, lit" 1. (at 0.)
+
 let tests =
   ( "light",
     [
@@ -54,4 +86,5 @@ let tests =
       Alcotest.test_case "adaptive" `Quick adaptive;
       Alcotest.test_case "sample positions" `Quick positions;
       Alcotest.test_case "area light in a scene" `Quick scene;
+      Alcotest.test_case "shadows kept per point" `Quick kept_shadows;
     ] )
