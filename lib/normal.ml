@@ -82,11 +82,42 @@ let quilted_m nm c0 c1 (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
   else Vec3.normalize_m out
 
+(* POV-Ray's ripples and waves normals: in pattern space (warped), the
+   unit normal plus amount / (number of sources) times, for each source
+   c, the unit vector from c times the wave at the distance d from it,
+   sin (2 pi (d frequency + phase)). waves takes the cosine: camlray's
+   waves pattern is the quarter-wave shift of ripples (POV-Ray's gives
+   each source a frequency of its own, from its noise). *)
+let waves_m w nm ripples (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
+  let t = nm.pattern in
+  Pattern.warped_m t q w.pw;
+  let p = w.pw.p in
+  let sources = Pattern.sources in
+  let k = nm.amount /. float_of_int (Array.length sources) in
+  let two_pi = 2. *. Float.pi in
+  Vec3.set out n.mx n.my n.mz;
+  Transform.normal_inverse_m nm.xform out;
+  Vec3.normalize_m out;
+  for i = 0 to Array.length sources - 1 do
+    let (c : Vec3.t) = Array.unsafe_get sources i in
+    let vx = p.mx -. c.x and vy = p.my -. c.y and vz = p.mz -. c.z in
+    let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+    let d = if d = 0. then 1. else d in
+    let a = two_pi *. ((d *. t.frequency) +. t.phase) in
+    let s = k *. (if ripples then Float.sin a else Float.cos a) /. d in
+    Vec3.set out (out.mx +. (s *. vx)) (out.my +. (s *. vy)) (out.mz +. (s *. vz))
+  done;
+  Transform.normal_m nm.xform out;
+  if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
+  else Vec3.normalize_m out
+
 let leaf_m w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let q = w.q in
   Transform.inv_point_m nm.xform point q;
   match nm.pattern.kind with
   | Pattern.Quilted { c0; c1 } -> quilted_m nm c0 c1 q n out
+  | (Pattern.Ripples | Pattern.Waves) as kind when Float.Array.length nm.slope = 0 ->
+      waves_m w nm (kind = Pattern.Ripples) q n out
   | _ ->
   (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order; delta the
      normal's accuracy *)

@@ -663,7 +663,7 @@ let apply_warp (wp : warp) (p : Vec3.m) (d : Vec3.m) =
       end
       else Vec3.set p ox oy oz
 
-let eval_m t (q : Vec3.m) (w : work) =
+let warped_m t (q : Vec3.m) (w : work) =
   Vec3.set w.p q.mx q.my q.mz;
   for i = Array.length t.warps - 1 downto 0 do
     let wp = Array.unsafe_get t.warps i in
@@ -674,7 +674,10 @@ let eval_m t (q : Vec3.m) (w : work) =
     apply_warp wp w.p w.d;
     if not id then Transform.inv_point_m wp.back w.p w.p
   done;
-  (match t.turbulence with None -> () | Some tb -> add_turbulence tb w.p w.d);
+  match t.turbulence with None -> () | Some tb -> add_turbulence tb w.p w.d
+
+let eval_m t (q : Vec3.m) (w : work) =
+  warped_m t q w;
   (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
      (on top of the warp): read by [raw_m] from [w.r.v] *)
   (match (t.kind, t.turbulence) with

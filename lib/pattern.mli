@@ -239,6 +239,15 @@ val uv_point : unit -> Vec3.m
 (** The point [<u, v, 0>] last set by {!set_uv} on this domain (the
     domain's own vector: read it, never write it). *)
 
+val sources : Vec3.t array
+(** The wave sources of ripples and waves (camlray's own fixed points,
+    not POV-Ray's). *)
+
+val warped_m : t -> Vec3.m -> work -> unit
+(** [warped_m t q w]: the point [q] of pattern space with the pattern's
+    warps and turbulence applied, into [w.p] (what {!eval_m} evaluates
+    the raw pattern at). *)
+
 val eval_m : t -> Vec3.m -> work -> unit
 (** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]
     (the same arithmetic), allocating nothing. *)

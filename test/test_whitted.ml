@@ -241,6 +241,47 @@ let normal_slope () =
   gray "before the jump" 0.20097 (at 0.985);
   gray "after the jump" 0.17383 (at 1.005)
 
+(* POV-Ray's ripples and waves normals (normal.cpp): in pattern space,
+   the unit normal plus amount / 10 times, over the ten sources c, the
+   unit vector from c times sin (2 pi (d frequency + phase)) at the
+   distance d (waves: the cosine), normalised back in world space *)
+let ripples_normal () =
+  let at text (px, py, pz) =
+    let nm = Option.get (Scn.compile ("camera { normal { " ^ text ^ " } }")).camera.normal in
+    let p = Vec3.m () and n = Vec3.m () and out = Vec3.m () in
+    Vec3.set p px py pz;
+    Vec3.set n 0. 1. 0.;
+    Normal.perturb_m nm p n out;
+    (out.mx, out.my, out.mz)
+  in
+  let expect ?(scale = 1.) ?(freq = 1.) ?(phase = 0.) wave amount (px, py, pz) =
+    (* pattern space: the point divided by the scale; the normal too, made unit *)
+    let qx = px /. scale and qy = py /. scale and qz = pz /. scale in
+    let x = ref 0. and y = ref 1. and z = ref 0. in
+    Array.iter
+      (fun (c : Vec3.t) ->
+        let vx = qx -. c.x and vy = qy -. c.y and vz = qz -. c.z in
+        let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+        let k = amount /. 10. *. wave (2. *. Float.pi *. ((d *. freq) +. phase)) /. d in
+        x := !x +. (k *. vx);
+        y := !y +. (k *. vy);
+        z := !z +. (k *. vz))
+      Pattern.sources;
+    (* back to world space: a normal scales by 1 / scale, uniformly here *)
+    let l = Float.sqrt ((!x *. !x) +. (!y *. !y) +. (!z *. !z)) in
+    (!x /. l, !y /. l, !z /. l)
+  in
+  let check msg (ex, ey, ez) (x, y, z) = Scn.check_floats ~eps:1e-12 msg [ ex; ey; ez ] [ x; y; z ] in
+  Alcotest.(check int) "ten sources" 10 (Array.length Pattern.sources);
+  List.iter
+    (fun p ->
+      check "ripples 0.6" (expect Float.sin 0.6 p) (at "ripples 0.6" p);
+      check "waves 0.8" (expect Float.cos 0.8 p) (at "waves 0.8" p);
+      check "ripples, scale 0.3" (expect ~scale:0.3 Float.sin 0.5 p) (at "ripples 0.5 scale 0.3" p);
+      check "ripples, frequency 2 phase 0.3" (expect ~freq:2. ~phase:0.3 Float.sin 1. p)
+        (at "ripples 1 frequency 2 phase 0.3" p))
+    [ (0.3, 0., 0.7); (-2.1, 0.5, 1.3); (5., 0., -4.) ]
+
 (* normal_map, average and block lists of normals, as povray 3.7 shades
    them (probes: a plane lit by a parallel light towards [light], one
    sample at (x, 0.25), +FN16 File_Gamma=1.0): the entries' unit normals
@@ -789,6 +830,7 @@ let tests =
       Alcotest.test_case "focal blur" `Quick focal_blur;
       Alcotest.test_case "#default texture" `Quick default_texture;
       Alcotest.test_case "normal slope as POV-Ray" `Quick normal_slope;
+      Alcotest.test_case "ripples and waves normals: POV-Ray's formula" `Quick ripples_normal;
       Alcotest.test_case "normal_map and average as POV-Ray" `Quick normal_maps;
       Alcotest.test_case "average of textures as POV-Ray" `Quick average_textures;
       Alcotest.test_case "trace levels" `Quick levels;
