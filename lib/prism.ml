@@ -9,6 +9,10 @@ type t = {
   box : Float.Array.t;
       (** per segment, the box of its curve in the plane, a little larger:
           x low, x high, z low, z high *)
+  side : Float.Array.t;
+      (** per segment, the x and z ranges (as in [box]) of its side
+          between the heights: [box] itself for a linear sweep, [box]
+          scaled by the heights for a conic one *)
   n : int;
   h1 : float;
   h2 : float;
@@ -134,6 +138,19 @@ let make spline sweep h1 h2 ?(open_ = false) points =
             zh := Float.max !zh d)
           segs;
         let conic = sweep = Conic_sweep in
+        let side =
+          if not conic then box
+          else
+            Float.Array.init (Float.Array.length box) (fun k ->
+                (* the ends of a range scaled by heights h1 to h2, a little
+                   wider still: a conic hit's point is found through a
+                   division (see [hit_s]) *)
+                let l = g box (k land lnot 1) and h = g box (k lor 1) in
+                let a = Float.min (Float.min (l *. h1) (l *. h2)) (Float.min (h *. h1) (h *. h2))
+                and b = Float.max (Float.max (l *. h1) (l *. h2)) (Float.max (h *. h1) (h *. h2)) in
+                let pad = 1e-6 *. (1. +. Float.abs a +. Float.abs b) in
+                if k land 1 = 0 then a -. pad else b +. pad)
+        in
         let lo, hi =
           if conic then
             let ends l h k1 k2 = (Float.min (Float.min (l *. k1) (l *. k2)) (Float.min (h *. k1) (h *. k2)),
@@ -142,7 +159,7 @@ let make spline sweep h1 h2 ?(open_ = false) points =
             (Vec3.make x0 h1 z0, Vec3.make x1 h2 z1)
           else (Vec3.make !xl h1 !zl, Vec3.make !xh h2 !zh)
         in
-        Ok { seg; box; n = List.length segs; h1; h2; conic; open_; lo; hi }
+        Ok { seg; box; side; n = List.length segs; h1; h2; conic; open_; lo; hi }
 
 (* {2 Roots in [0, 1]} *)
 
@@ -184,7 +201,24 @@ let roots w c3 c2 c1 c0 lo hi =
 let[@inline] misses t i kx kz k0 =
   let b = t.box and o = 4 * i in
   let x1 = kx *. g b o and x2 = kx *. g b (o + 1) and z1 = kz *. g b (o + 2) and z2 = kz *. g b (o + 3) in
-  Float.min x1 x2 +. Float.min z1 z2 +. k0 > 0. || Float.max x1 x2 +. Float.max z1 z2 +. k0 < 0.
+  (* comparisons, not [Float.min]: that one calls C (for the sign of a
+     zero, which cannot change the sums' signs here) *)
+  let xl = if x1 < x2 then x1 else x2 and xh = if x1 < x2 then x2 else x1 in
+  let zl = if z1 < z2 then z1 else z2 and zh = if z1 < z2 then z2 else z1 in
+  xl +. zl +. k0 > 0. || xh +. zh +. k0 < 0.
+
+(* Whether the ray's stretch from t0 to t1, seen from above, stays clear
+   of segment [i]'s side box (x and z): with [misses], which tests the
+   line, a segment against a box (the box's axes and the line's normal
+   are the axes that can part them). A stretch end that is nan (an
+   infinite t along a zero component) compares false and rejects
+   nothing the other end does not. *)
+let[@inline] stretch_misses t i (r : Ray.scratch) t0 t1 =
+  let b = t.side and o = 4 * i in
+  let xa = r.ox +. (t0 *. r.dx) and xb = r.ox +. (t1 *. r.dx) in
+  let za = r.oz +. (t0 *. r.dz) and zb = r.oz +. (t1 *. r.dz) in
+  (if xa < xb then xb < g b o || xa > g b (o + 1) else xa < g b o || xb > g b (o + 1))
+  || if za < zb then zb < g b (o + 2) || za > g b (o + 3) else za < g b (o + 2) || zb > g b (o + 3)
 
 (* Whether a ray that is not level misses, within (tmin, tmax), the
    solid between heights [ylo] and [yhi] and squared distances [near2]
@@ -257,49 +291,60 @@ let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
       end
     done
   end;
-  (* the sides *)
+  (* the sides: a hit's height is within [h1, h2], so its t within
+     [ty0, ty1], found with heights a little wider than the rounding of
+     the hit's height *)
   let w = Scratch.get work_key in
   let d2 = (r.dx *. r.dx) +. (r.dz *. r.dz) in
+  let e = 1e-9 *. (1. +. Float.abs t.h1 +. Float.abs t.h2 +. Float.abs r.oy) in
+  let ya = (t.h1 -. e -. r.oy) /. r.dy and yb = (t.h2 +. e -. r.oy) /. r.dy in
+  let level_in = r.oy >= t.h1 -. e && r.oy <= t.h2 +. e in
+  let ty0 = if r.dy = 0. then (if level_in then neg_infinity else infinity) else if ya < yb then ya else yb in
+  let ty1 = if r.dy = 0. then (if level_in then infinity else neg_infinity) else if ya < yb then yb else ya in
   for i = 0 to t.n - 1 do
-    let o = 8 * i in
-    let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
-    and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
-    if not t.conic then begin
-      if d2 > 0. && not (misses t i r.dz (-.r.dx) ((r.oz *. r.dx) -. (r.ox *. r.dz))) then begin
-        (* (P(s) - o) x d = 0 in the plane *)
+    (* the stretch of the ray where a hit is kept: h.t falls as hits are *)
+    let t0 = if tmin > ty0 then tmin else ty0 and t1 = if h.t < ty1 then h.t else ty1 in
+    if t0 <= t1 && not (stretch_misses t i r t0 t1) then begin
+      let o = 8 * i in
+      let ax = g t.seg o and az = g t.seg (o + 1) and bx = g t.seg (o + 2) and bz = g t.seg (o + 3)
+      and cx = g t.seg (o + 4) and cz = g t.seg (o + 5) and dx = g t.seg (o + 6) and dz = g t.seg (o + 7) in
+      if not t.conic then begin
+        if d2 > 0. && not (misses t i r.dz (-.r.dx) ((r.oz *. r.dx) -. (r.ox *. r.dz))) then begin
+          (* (P(s) - o) x d = 0 in the plane *)
+          let k =
+            roots w ((ax *. r.dz) -. (az *. r.dx)) ((bx *. r.dz) -. (bz *. r.dx)) ((cx *. r.dz) -. (cz *. r.dx))
+              (((dx -. r.ox) *. r.dz) -. ((dz -. r.oz) *. r.dx)) 0. (1. +. 1e-12)
+          in
+          for j = 0 to k - 1 do
+            let s = Float.Array.unsafe_get w.found j in
+            let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
+            let tt = (((px -. r.ox) *. r.dx) +. ((pz -. r.oz) *. r.dz)) /. d2 in
+            let y = r.oy +. (tt *. r.dy) in
+            if y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
+          done
+        end
+      end
+      else begin
+        (* the point y (Px, 1, Pz) on the ray: (oz dx - ox dz) + Px (oy dz - oz dy) - Pz (oy dx - ox dy) = 0 *)
+        let a = (r.oy *. r.dz) -. (r.oz *. r.dy) and b = (r.oy *. r.dx) -. (r.ox *. r.dy) in
+        let k0 = (r.oz *. r.dx) -. (r.ox *. r.dz) in
+        if not (misses t i a (-.b) k0) then begin
         let k =
-          roots w ((ax *. r.dz) -. (az *. r.dx)) ((bx *. r.dz) -. (bz *. r.dx)) ((cx *. r.dz) -. (cz *. r.dx))
-            (((dx -. r.ox) *. r.dz) -. ((dz -. r.oz) *. r.dx)) 0. (1. +. 1e-12)
+          roots w ((ax *. a) -. (az *. b)) ((bx *. a) -. (bz *. b)) ((cx *. a) -. (cz *. b))
+            ((dx *. a) -. (dz *. b) +. k0) 0. (1. +. 1e-12)
         in
         for j = 0 to k - 1 do
           let s = Float.Array.unsafe_get w.found j in
           let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
-          let tt = (((px -. r.ox) *. r.dx) +. ((pz -. r.oz) *. r.dz)) /. d2 in
+          let den_x = r.dx -. (r.dy *. px) and den_z = r.dz -. (r.dy *. pz) in
+          let tt =
+            if Float.abs den_x >= Float.abs den_z then ((r.oy *. px) -. r.ox) /. den_x
+            else ((r.oy *. pz) -. r.oz) /. den_z
+          in
           let y = r.oy +. (tt *. r.dy) in
-          if y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
+          if Float.is_finite tt && y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
         done
-      end
-    end
-    else begin
-      (* the point y (Px, 1, Pz) on the ray: (oz dx - ox dz) + Px (oy dz - oz dy) - Pz (oy dx - ox dy) = 0 *)
-      let a = (r.oy *. r.dz) -. (r.oz *. r.dy) and b = (r.oy *. r.dx) -. (r.ox *. r.dy) in
-      let k0 = (r.oz *. r.dx) -. (r.ox *. r.dz) in
-      if not (misses t i a (-.b) k0) then begin
-      let k =
-        roots w ((ax *. a) -. (az *. b)) ((bx *. a) -. (bz *. b)) ((cx *. a) -. (cz *. b))
-          ((dx *. a) -. (dz *. b) +. k0) 0. (1. +. 1e-12)
-      in
-      for j = 0 to k - 1 do
-        let s = Float.Array.unsafe_get w.found j in
-        let px = (((ax *. s) +. bx) *. s +. cx) *. s +. dx and pz = (((az *. s) +. bz) *. s +. cz) *. s +. dz in
-        let den_x = r.dx -. (r.dy *. px) and den_z = r.dz -. (r.dy *. pz) in
-        let tt =
-          if Float.abs den_x >= Float.abs den_z then ((r.oy *. px) -. r.ox) /. den_x
-          else ((r.oy *. pz) -. r.oz) /. den_z
-        in
-        let y = r.oy +. (tt *. r.dy) in
-        if Float.is_finite tt && y >= t.h1 && y <= t.h2 && Hit.keep h tmin tt (float (i + 2)) s then found := true
-      done
+        end
       end
     end
   done;

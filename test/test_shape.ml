@@ -294,6 +294,36 @@ let prism_prop =
         || QCheck.Test.fail_reportf "at %s (id %g) normal %s" (Vec3.to_string pt) h.id (Vec3.to_string n)
       end)
 
+(* A prism skips the segments its query's range keeps the ray away
+   from: each crossing (the first few along a ray) is found again, the
+   same, by a query whose range only just holds it *)
+let prism_window_prop =
+  QCheck.Test.make ~name:"prism: a crossing is found again in a range that only just holds it" ~count:2000
+    QCheck.(make ~print:(fun ((k, c), (r : Ray.t)) -> Printf.sprintf "kind %d conic %b ray %s -> %s" k c
+                            (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+              Gen.(pair (pair (int_bound 2) bool)
+                     (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.)
+                        (map3 Vec3.make (fr (-1.) 1.) (fr 0.4 1.1) (fr (-1.) 1.)))))
+    (fun ((k, conic), r) ->
+      let spline, pts =
+        match k with
+        | 0 -> (Prism.Linear, arrow)
+        | 1 -> (Prism.Quadratic, Array.append arrow [| (0.2, 0.2) |])
+        | _ -> (Prism.Cubic, Array.concat [ [| (-0.2, -1.0) |]; arrow; [| (0.2, 0.2) |] ])
+      in
+      let s = Shape.Prism (prism_of spline (if conic then Prism.Conic_sweep else Prism.Linear_sweep) pts) in
+      let rec walk tmin n =
+        let h = Hit.create infinity in
+        n = 0 || (not (Shape.hit s r tmin h))
+        || begin
+          let w = Hit.create (h.t *. (1. +. 1e-9)) in
+          (Shape.hit s r (h.t *. (1. -. 1e-9)) w && w.t = h.t && w.id = h.id
+          || QCheck.Test.fail_reportf "crossing %.17g (id %g), in its range %.17g (id %g)" h.t h.id w.t w.id)
+          && walk h.t (n - 1)
+        end
+      in
+      walk 1e-9 4)
+
 (* Lathes: a straight profile at radius 1 is an open cylinder; a closed
    profile's normals leave the solid *)
 let lathe_units =
@@ -869,4 +899,4 @@ let sor_units =
 
 let tests =
   ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ julia_units @ superellipsoid_units @ iso_units
-    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: lathe_prop :: superellipsoid_prop :: props))
+    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: prism_window_prop :: lathe_prop :: superellipsoid_prop :: props))
