@@ -231,3 +231,108 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
   end
 
 let first_root sc eqn degree lo = first_root_in sc eqn degree lo infinity
+
+(* {2 A cubic's roots in one pass}
+
+   What [first_root_in] called again past each root finds, without
+   finding the critical points again per root: those of a cubic in
+   closed form, of a quadratic as [first_root_in] finds them (so a
+   quadratic's and a line's roots are its, to the bit). *)
+
+(* [reach]'s powers as [below] makes them *)
+let p1 = 1. /. reach
+let p2 = p1 /. reach
+let p3 = p2 /. reach
+
+let[@inline] cubic c3 c2 c1 c0 t = (((((c3 *. t) +. c2) *. t) +. c1) *. t) +. c0
+
+(* [root_between] for a cubic (a dropped leading term is 0.: the same
+   values) *)
+let[@inline] cubic_between c3 c2 c1 c0 lo hi fl =
+  let lo = ref lo and hi = ref hi and fl = ref fl in
+  let t = ref (0.5 *. (!lo +. !hi)) and n = ref 0 in
+  while !n < 100 && !hi -. !lo > 1e-14 *. (1. +. Float.abs !t) do
+    incr n;
+    let f = cubic c3 c2 c1 c0 !t in
+    if f = 0. then (lo := !t; hi := !t)
+    else begin
+      if (f < 0.) = (!fl < 0.) then (lo := !t; fl := f) else hi := !t;
+      let df = ((((3. *. c3) *. !t) +. (2. *. c2)) *. !t) +. c1 in
+      let tn = if df <> 0. then !t -. (f /. df) else nan in
+      t := if tn > !lo && tn < !hi then tn else 0.5 *. (!lo +. !hi)
+    end
+  done;
+  !t
+
+(* the larger, keeping nan (as [Float.max], which calls C for the sign
+   of a zero: none here, the values are magnitudes) *)
+let[@inline] mag_max (a : float) (b : float) = if a > b || a <> a then a else b
+
+let[@inline] cubic_roots_in (found : Float.Array.t) c3 c2 c1 c0 lo hi =
+  (* leading terms dropped as [first_root_in] drops them *)
+  let a0 = Float.abs c0 and a1 = Float.abs c1 and a2 = Float.abs c2 in
+  let n3 = not (Float.abs c3 <= 1e-16 *. ((a2 *. p1) +. (a1 *. p2) +. (a0 *. p3))) in
+  let n2 = n3 || not (a2 <= 1e-16 *. ((a1 *. p1) +. (a0 *. p2))) in
+  let n1 = n2 || not (a1 <= 1e-16 *. (a0 *. p1)) in
+  if not n1 then 0
+  else begin
+    let c3 = if n3 then c3 else 0. and c2 = if n2 then c2 else 0. in
+    (* Cauchy's bound, as there *)
+    let lead = if n3 then c3 else if n2 then c2 else c1 in
+    let b = mag_max 0. (Float.abs (c0 /. lead)) in
+    let b = if n2 then mag_max b (Float.abs (c1 /. lead)) else b in
+    let b = if n3 then mag_max b (Float.abs (c2 /. lead)) else b in
+    let cap = 1. +. b in
+    let cap = if reach < cap then reach else cap in
+    let top = if cap < hi || cap <> cap then cap else hi in
+    let from = lo -. 1e-12 in
+    let start = if -.top > from then -.top else from in
+    if not (start < top) then 0
+    else if not n2 then begin
+      (* a line: its root, strictly inside, as there *)
+      let t = -.c0 /. c1 in
+      if t > start && t < top && t >= lo then (Float.Array.unsafe_set found 0 t; 1) else 0
+    end
+    else begin
+      (* the critical points: a quadratic's as there, a cubic's where
+         its derivative qa s^2 + qb s + c1 is zero, without
+         cancellation (none: nan) *)
+      let qa = 3. *. c3 and qb = 2. *. c2 in
+      let disc = (qb *. qb) -. (4. *. qa *. c1) in
+      let q = -0.5 *. (if qb < 0. then qb -. Float.sqrt disc else qb +. Float.sqrt disc) in
+      let ra = if not n3 then -.c1 /. qb else if disc < 0. then nan else if q = 0. then 0. else q /. qa in
+      let rb = if not n3 then ra else if disc < 0. then nan else if q = 0. then 0. else c1 /. q in
+      (* those inside (start, top), in order: [nc] of them, [s0] then
+         [s1] *)
+      let u = if rb < ra then rb else ra and v = if rb < ra then ra else rb in
+      let in0 = u > start && u < top and in1 = v > start && v < top && v > u in
+      let nc = (if in0 then 1 else 0) + if in1 then 1 else 0 in
+      let s0 = if in0 then u else v and s1 = v in
+      (* the pieces between [start], the critical points and [top]: a
+         root where the ends differ in sign (or at a critical point);
+         one within 1e-12 past the last is that one, and one below [lo]
+         is passed over *)
+      let count = ref 0 and from = ref from in
+      let prev = ref start and fp = ref (cubic c3 c2 c1 c0 start) in
+      for i = 0 to nc do
+        let c = if i = nc then top else if i = 0 then s0 else s1 in
+        let fc = cubic c3 c2 c1 c0 c in
+        let r =
+          if fc = 0. && i < nc then c
+          else if !fp <> 0. && (!fp < 0.) <> (fc < 0.) then cubic_between c3 c2 c1 c0 !prev c !fp
+          else nan
+        in
+        if r >= !from then begin
+          if r >= lo then begin
+            Float.Array.unsafe_set found !count r;
+            incr count
+          end;
+          let past = r +. (1e-12 *. (1. +. Float.abs r)) and on = !from +. 1e-12 in
+          from := if past > on then past else on
+        end;
+        prev := c;
+        fp := fc
+      done;
+      !count
+    end
+  end

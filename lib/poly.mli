@@ -39,3 +39,13 @@ val first_root_in : scratch -> Float.Array.t -> int -> float -> float -> bool
 
 val root : scratch -> float
 (** The root {!first_root} found. *)
+
+val cubic_roots_in : Float.Array.t -> float -> float -> float -> float -> float -> float -> int
+(** [cubic_roots_in found c3 c2 c1 c0 lo hi]: the roots of [c3 t^3 + c2
+    t^2 + c1 t + c0] in [[lo, hi)], in increasing order, into [found]
+    (room for 3); their number. The roots {!first_root_in} finds from
+    [lo - 1e-12], called again past each root (1e-12 relative past it),
+    found in one pass: leading terms dropped as there, and a quadratic's
+    or a line's roots the same to the bit; a cubic's critical points
+    come from the quadratic formula, not from a search, so its roots
+    may differ from those in the last bits. *)

@@ -163,11 +163,11 @@ let make spline sweep h1 h2 ?(open_ = false) points =
 
 (* {2 Roots in [0, 1]} *)
 
-type work = { eqn : Float.Array.t; sc : Poly.scratch; found : Float.Array.t; uv : Float.Array.t }
+type work = { found : Float.Array.t; uv : Float.Array.t }
 
 let work_key =
   Scratch.key (fun () ->
-      { eqn = Float.Array.make 4 0.; sc = Poly.scratch 3; found = Float.Array.make 3 0.; uv = Float.Array.make 2 0. })
+      { found = Float.Array.make 3 0.; uv = Float.Array.make 2 0. })
 
 (* the roots of a polynomial of degree [deg] (coefficients in [e],
    constant first) in [lo, hi), in order, into [found]; their number *)
@@ -184,14 +184,9 @@ let all_roots sc e deg (found : Float.Array.t) lo hi =
   done;
   !n
 
-(* the roots of c3 s^3 + c2 s^2 + c1 s + c0 in [lo, hi) into [w.found] *)
-let roots w c3 c2 c1 c0 lo hi =
-  let e = w.eqn in
-  Float.Array.unsafe_set e 0 c0;
-  Float.Array.unsafe_set e 1 c1;
-  Float.Array.unsafe_set e 2 c2;
-  Float.Array.unsafe_set e 3 c3;
-  all_roots w.sc e 3 w.found lo hi
+(* the roots of c3 s^3 + c2 s^2 + c1 s + c0 in [lo, hi) into [w.found],
+   as [all_roots] finds them *)
+let[@inline] roots w c3 c2 c1 c0 lo hi = Poly.cubic_roots_in w.found c3 c2 c1 c0 lo hi
 
 (* Whether the line kx x + kz z + k0 = 0 of the plane misses segment
    [i]'s box: the function has one strict sign over the box, so over the

@@ -437,6 +437,44 @@ let roots_prop =
       else if Float.abs (got -. want) <= 1e-8 *. (1. +. Float.abs want) then true
       else QCheck.Test.fail_reportf "got %.17g, want %.17g" got want)
 
+(* Poly.cubic_roots_in, which prisms use, against the general search it
+   stands for (Prism.all_roots, over Poly.first_root_in): the same roots
+   in [0, 1); to the bit for a quadratic or a line, also one under a
+   leading term both drop (1e-25 of the next); a leading term of 1e-17
+   (rounding left over) makes a cubic, whose critical points differ *)
+let cubic_roots_prop =
+  QCheck.Test.make ~name:"Poly.cubic_roots_in: the roots Prism.all_roots finds" ~count:3000
+    QCheck.(make ~print:(fun (rs, (k, (tiny, wide))) ->
+                Printf.sprintf "roots [%s] scale %g leading %g wide %b"
+                  (String.concat "; " (List.map string_of_float rs)) k tiny wide)
+              Gen.(pair (list_size (int_range 1 3) (fr (-0.5) 1.5))
+                     (pair (fr (-3.) 3.) (pair (oneof_list [ 0.; 1e-25; 1e-17 ]) bool))))
+    (fun (rs, (k, (tiny, wide))) ->
+      QCheck.assume (Float.abs k > 0.01);
+      (* roots off the ends by more than the searches' steps, and apart
+         (roots close together are known only roughly: the polynomial is
+         flat there) *)
+      let sorted = List.sort compare rs and hi = if wide then 1. +. 1e-12 else 1. in
+      let rec spaced = function a :: (b :: _ as r) -> b -. a > 1e-3 && spaced r | _ -> true in
+      QCheck.assume (spaced sorted && List.for_all (fun r -> Float.abs r > 1e-9 && Float.abs (r -. hi) > 1e-9) rs);
+      let c = List.fold_left (fun c r ->
+        let n = Array.length c in
+        Array.init (n + 1) (fun m -> (if m > 0 then c.(m - 1) else 0.) -. (if m < n then r *. c.(m) else 0.)))
+        [| k |] rs in
+      let coef m = if m < Array.length c then c.(m) else if m = 3 then tiny *. k else 0. in
+      let degree = List.length rs in
+      let want = Float.Array.make 3 0. and got = Float.Array.make 3 0. in
+      let nw = Prism.all_roots (Poly.scratch 3) (Float.Array.init 4 coef) 3 want 0. hi in
+      let ng = Poly.cubic_roots_in got (coef 3) (coef 2) (coef 1) (coef 0) 0. hi in
+      let same i =
+        let a = Float.Array.get want i and b = Float.Array.get got i in
+        if degree < 3 && tiny < 1e-20 then a = b else Float.abs (a -. b) <= 1e-10 *. (1. +. Float.abs a)
+      in
+      (nw = ng && List.for_all same (List.init nw Fun.id))
+      || QCheck.Test.fail_reportf "all_roots: %s; cubic_roots_in: %s"
+           (String.concat " " (List.init nw (fun i -> Printf.sprintf "%.17g" (Float.Array.get want i))))
+           (String.concat " " (List.init ng (fun i -> Printf.sprintf "%.17g" (Float.Array.get got i)))))
+
 let folded =
   Alcotest.test_case "a sphere under a similarity is stored moved" `Quick (fun () ->
       let xf = Transform.then_ (Transform.then_ (Transform.scale (v 2. 2. 2.)) (Transform.rotate (v 10. 20. 30.)))
@@ -899,4 +937,4 @@ let sor_units =
 
 let tests =
   ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ julia_units @ superellipsoid_units @ iso_units
-    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: prism_prop :: prism_window_prop :: lathe_prop :: superellipsoid_prop :: props))
+    @ List.map QCheck_alcotest.to_alcotest (roots_prop :: cubic_roots_prop :: prism_prop :: prism_window_prop :: lathe_prop :: superellipsoid_prop :: props))
