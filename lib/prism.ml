@@ -9,6 +9,7 @@ type t = {
   box : Float.Array.t;
       (** per segment, the box of its curve in the plane, a little larger:
           x low, x high, z low, z high *)
+  whole : Float.Array.t;  (** the box of all the segments' boxes, as one of [box] *)
   side : Float.Array.t;
       (** per segment, the x and z ranges (as in [box]) of its side
           between the heights: [box] itself for a linear sweep, [box]
@@ -137,6 +138,12 @@ let make spline sweep h1 h2 ?(open_ = false) points =
             zl := Float.min !zl c;
             zh := Float.max !zh d)
           segs;
+        let whole = Float.Array.init 4 (fun k ->
+          let pick a b = if k land 1 = 0 then Float.min a b else Float.max a b in
+          let v = ref (g box k) in
+          for i = 1 to List.length segs - 1 do v := pick !v (g box ((4 * i) + k)) done;
+          !v)
+        in
         let conic = sweep = Conic_sweep in
         let side =
           if not conic then box
@@ -159,7 +166,7 @@ let make spline sweep h1 h2 ?(open_ = false) points =
             (Vec3.make x0 h1 z0, Vec3.make x1 h2 z1)
           else (Vec3.make !xl h1 !zl, Vec3.make !xh h2 !zh)
         in
-        Ok { seg; box; side; n = List.length segs; h1; h2; conic; open_; lo; hi }
+        Ok { seg; box; whole; side; n = List.length segs; h1; h2; conic; open_; lo; hi }
 
 (* {2 Roots in [0, 1]} *)
 
@@ -259,8 +266,13 @@ let in_curve_w t (w : work) =
   !count land 1 = 1
 
 (* the point (u, v) handed over through the domain's work record: as
-   arguments, the floats of a call that is not inlined are boxed *)
+   arguments, the floats of a call that is not inlined are boxed. A point
+   above, below or right of every segment's box is in none (the test
+   [in_curve_w] makes of each). *)
 let[@inline] in_curve t u v =
+  let a = t.whole in
+  not (v < g a 2 || v > g a 3 || g a 1 <= u)
+  &&
   let w = Scratch.get work_key in
   Float.Array.unsafe_set w.uv 0 u;
   Float.Array.unsafe_set w.uv 1 v;
