@@ -332,44 +332,86 @@ let uv_key = Scratch.key (fun () -> Vec3.m ())
 let set_uv u v = Vec3.set (Scratch.get uv_key) u v 0.
 let uv_point () = Scratch.get uv_key
 
-(* mandel: z <- z^e + c from z = c = x + iy (julia: c fixed), until |z|^2 > 4 or the
-   iterations run out; exponents 2, 3 and 4 written out, others summed
-   by the binomial expansion (signed coefficients, as POV-Ray sums them) *)
-let fractal_into f ~cx ~cy x y (w : work) =
-  let a = ref x and b = ref y in
-  let a2 = ref (x *. x) and b2 = ref (y *. y) in
-  let m2 = ref (!a2 +. !b2) in
-  let n = ref 0 and escaped = ref false in
-  let e = f.exponent in
-  while (not !escaped) && !n < f.iterations do
+(* POV-Ray's signed binomial coefficients for exponents above 4: row e
+   holds C(e, k) for k = 0 .. e, negated where i^k is (k = 2, 3 mod 4);
+   e up to 33 *)
+let binomials =
+  Array.init 34 (fun e ->
+      let row = Array.make (e + 1) 1. in
+      for k = 1 to e do
+        row.(k) <- row.(k - 1) *. float_of_int (e - k + 1) /. float_of_int k
+      done;
+      Array.mapi (fun k c -> if k land 2 <> 0 then -.c else c) row)
+
+(* x^k by the C library's pow, as POV-Ray takes it (products round
+   differently); pow gives exactly 1 and x for k = 0 and 1 (x not a
+   signalling NaN, which no arithmetic makes), so it is not called for
+   them *)
+let[@inline] pow_int x k = if k >= 2 then Float.pow x (float_of_int k) else if k = 1 then x else 1.
+
+(* mandel and julia above exponent 4: z <- z^e + c summed by the
+   binomial expansion (in POV-Ray's order), as in [fractal_into]; a
+   function of its own, so that the pow calls do not make the other
+   exponents' loop keep its values on the stack *)
+let[@inline never] power_into f ~mandel ~cr ~ci (w : work) =
+  let x = w.p.mx and y = w.p.my in
+  let cx = if mandel then x else cr and cy = if mandel then y else ci in
+  let e = f.exponent and it = f.iterations in
+  let coef = binomials.(e) in
+  let a = ref x and b = ref y and m2 = ref ((x *. x) +. (y *. y)) in
+  let n = ref 0 and escaped = ref (-1) in
+  while !n < it do
     let a0 = !a and b0 = !b in
-    (match e with
-    | 2 ->
+    let re = ref (pow_int a0 e) and im = ref 0. in
+    for k = 1 to e do
+      let term = Array.unsafe_get coef k *. pow_int a0 (e - k) *. pow_int b0 k in
+      if k land 1 = 0 then re := !re +. term else im := !im +. term
+    done;
+    a := !re +. cx;
+    b := !im +. cy;
+    let d2 = (!a *. !a) +. (!b *. !b) in
+    if d2 < !m2 then m2 := d2;
+    if d2 > 4. then (escaped := !n; n := it) else incr n
+  done;
+  if !escaped >= 0 then w.r.v <- exterior_shade f !escaped !a !b else w.r.v <- interior_shade f !a !b !m2
+
+(* mandel and julia: z <- z^e + c from z = x + iy of the point (c = z
+   for mandel, cr + i ci for julia), until |z|^2 > 4 or the iterations
+   run out; exponents 2, 3 and 4 written out as POV-Ray does, others by
+   [power_into]. [escaped]: the iteration z escaped at, or -1. Not
+   inlined into [raw_m], where the loop's values were kept on the stack. *)
+let[@inline never] fractal_into f ~mandel ~cr ~ci (w : work) =
+  if f.exponent < 2 || f.exponent > 4 then power_into f ~mandel ~cr ~ci w
+  else begin
+    let x = w.p.mx and y = w.p.my in
+    let cx = if mandel then x else cr and cy = if mandel then y else ci in
+    let e = f.exponent and it = f.iterations in
+    let a = ref x and b = ref y in
+    let a2 = ref (x *. x) and b2 = ref (y *. y) in
+    let m2 = ref (!a2 +. !b2) in
+    let n = ref 0 and escaped = ref (-1) in
+    while !n < it do
+      let a0 = !a and b0 = !b in
+      if e = 2 then begin
         b := (2. *. a0 *. b0) +. cy;
         a := !a2 -. !b2 +. cx
-    | 3 ->
+      end
+      else if e = 3 then begin
         b := (3. *. !a2 *. b0) -. (!b2 *. b0) +. cy;
         a := (!a2 *. a0) -. (3. *. a0 *. !b2) +. cx
-    | 4 ->
+      end
+      else begin
         b := (4. *. ((!a2 *. a0 *. b0) -. (a0 *. !b2 *. b0))) +. cy;
         a := (!a2 *. !a2) -. (6. *. !a2 *. !b2) +. (!b2 *. !b2) +. cx
-    | _ ->
-        let re = ref (Float.pow a0 (float_of_int e)) and im = ref 0. and c = ref 1. in
-        for k = 1 to e do
-          c := !c *. float_of_int (e - k + 1) /. float_of_int k;
-          let s = if k land 2 <> 0 then -. !c else !c in
-          let term = s *. Float.pow a0 (float_of_int (e - k)) *. Float.pow b0 (float_of_int k) in
-          if k land 1 = 0 then re := !re +. term else im := !im +. term
-        done;
-        a := !re +. cx;
-        b := !im +. cy);
-    a2 := !a *. !a;
-    b2 := !b *. !b;
-    let d2 = !a2 +. !b2 in
-    if d2 < !m2 then m2 := d2;
-    if d2 > 4. then escaped := true else incr n
-  done;
-  if !escaped then w.r.v <- exterior_shade f !n !a !b else w.r.v <- interior_shade f !a !b !m2
+      end;
+      a2 := !a *. !a;
+      b2 := !b *. !b;
+      let d2 = !a2 +. !b2 in
+      if d2 < !m2 then m2 := d2;
+      if d2 > 4. then (escaped := !n; n := it) else incr n
+    done;
+    if !escaped >= 0 then w.r.v <- exterior_shade f !escaped !a !b else w.r.v <- interior_shade f !a !b !m2
+  end
 
 (* magnet 1 and 2 (POV-Ray's, measured through pigment functions): the
    orbit is done when z is within 0.01 of the fixed point 1 or farther
@@ -479,8 +521,8 @@ let raw_m kind (w : work) =
   | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
-  | Mandel f -> fractal_into f ~cx:x ~cy:y x y w
-  | Julia { cr; ci; fractal } -> fractal_into fractal ~cx:cr ~cy:ci x y w
+  | Mandel f -> fractal_into f ~mandel:true ~cr:0. ~ci:0. w
+  | Julia { cr; ci; fractal } -> fractal_into fractal ~mandel:false ~cr ~ci w
   | Magnet { formula; julia; cr; ci; fractal } -> magnet_into fractal formula ~julia ~cr ~ci x y w
   | Slope { dir; lo; hi; wdir; alt; alo; ahi; walt } ->
       (* POV-Ray's (measured): the normal's angle to the direction, 0.5 +

@@ -418,6 +418,74 @@ let julia () =
       ("julia <0.2, 0.5>, 20 interior 6, 0.3 exterior 6, 0.2", [ 0.065386; 0.474810; 0.445753; 0.557297; 0.057603; 0.109655 ]);
     ]
 
+(* mandel and julia against the plain iteration, POV-Ray's as written
+   (pow for every power of the general exponent, 0 and 1 too): the same
+   value to the last bit. The shading read here (iterations / max, a^2
+   or b^2 when escaped; |z|, a^2 or b^2 inside; scaled into [0, 1)) is
+   the value itself, frequency 1 leaving it as it is. *)
+let fractal_reference ~mandel ~cr ~ci (f : Pattern.fractal) x y =
+  let cx = if mandel then x else cr and cy = if mandel then y else ci in
+  let e = f.exponent in
+  let rec binomial k = if k = 0 then 1 else binomial (k - 1) * (e - k + 1) / k in
+  let signed k = float_of_int (if k land 2 <> 0 then -binomial k else binomial k) in
+  let pw x k = Float.pow x (float_of_int k) in
+  let a = ref x and b = ref y and m2 = ref ((x *. x) +. (y *. y)) in
+  let escaped = ref None and n = ref 0 in
+  while !escaped = None && !n < f.iterations do
+    let a0 = !a and b0 = !b in
+    let a2 = a0 *. a0 and b2 = b0 *. b0 in
+    (match e with
+    | 2 -> b := (2. *. a0 *. b0) +. cy; a := a2 -. b2 +. cx
+    | 3 -> b := (3. *. a2 *. b0) -. (b2 *. b0) +. cy; a := (a2 *. a0) -. (3. *. a0 *. b2) +. cx
+    | 4 ->
+        b := (4. *. ((a2 *. a0 *. b0) -. (a0 *. b2 *. b0))) +. cy;
+        a := (a2 *. a2) -. (6. *. a2 *. b2) +. (b2 *. b2) +. cx
+    | _ ->
+        let re = ref (pw a0 e) and im = ref 0. in
+        for k = 1 to e / 2 do re := !re +. (signed (2 * k) *. pw a0 (e - (2 * k)) *. pw b0 (2 * k)) done;
+        for k = 0 to (e - 1) / 2 do im := !im +. (signed ((2 * k) + 1) *. pw a0 (e - (2 * k) - 1) *. pw b0 ((2 * k) + 1)) done;
+        a := !re +. cx;
+        b := !im +. cy);
+    let d2 = (!a *. !a) +. (!b *. !b) in
+    if d2 < !m2 then m2 := d2;
+    if d2 > 4. then escaped := Some !n else incr n
+  done;
+  match (!escaped, f.exterior, f.interior) with
+  | Some n, 1, _ -> float_of_int n /. float_of_int f.iterations
+  | Some _, 4, _ -> !a *. !a *. f.efactor
+  | Some _, _, _ -> !b *. !b *. f.efactor
+  | None, _, 1 -> Float.sqrt !m2 *. f.ifactor
+  | None, _, 4 -> !a *. !a *. f.ifactor
+  | None, _, _ -> !b *. !b *. f.ifactor
+
+let fractal_props =
+  let open QCheck in
+  let gen =
+    Gen.(
+      let coord = float_range (-2.) 2. in
+      tup4 (tup3 bool (float_range (-1.) 1.) (float_range (-1.) 1.))
+        (tup4 (oneof_list [ 2; 3; 4; 5; 6; 7; 9; 16; 33 ]) (int_range 1 60) (oneof_list [ 1; 4; 5 ])
+           (oneof_list [ 1; 4; 5 ]))
+        coord coord)
+  in
+  let print ((mandel, cr, ci), (e, n, t, u), x, y) =
+    Printf.sprintf "%s exponent %d, %d iterations, interior %d, exterior %d at (%h, %h)"
+      (if mandel then "mandel" else Printf.sprintf "julia <%h, %h>" cr ci) e n t u x y
+  in
+  [
+    Test.make ~name:"mandel and julia = the plain iteration, to the bit" ~count:20000 (make ~print gen)
+      (fun ((mandel, cr, ci), (exponent, iterations, interior, exterior), x, y) ->
+        (* inside, |z| <= 2 and a^2, b^2 <= 4; escaped, |z| < 3^33 + 3:
+           scaled below 1 *)
+        let ifactor = if interior = 1 then 0.25 else 0.2 and efactor = if exterior = 1 then 1. else 1e-40 in
+        let f = { (Pattern.mandel iterations) with exponent; interior; ifactor; exterior; efactor } in
+        let kind = if mandel then Pattern.Mandel f else Pattern.Julia { cr; ci; fractal = f } in
+        let got = Pattern.value (Pattern.make kind) (Vec3.make x y 0.) in
+        let want = fractal_reference ~mandel ~cr ~ci f x y in
+        Int64.equal (Int64.bits_of_float got) (Int64.bits_of_float want)
+        || Test.fail_reportf "pattern %h, plain iteration %h" got want);
+  ]
+
 (* magnet 1 and 2, mandel and julia: the values POV-Ray prints through
    pigment functions; nothing allocated *)
 let magnet () =
@@ -710,4 +778,5 @@ let tests =
       Alcotest.test_case "cells = POV-Ray" `Quick cells;
       Alcotest.test_case "function pattern errors" `Quick function_errors;
       Alcotest.test_case "density_file: POV-Ray's values, errors" `Quick density_file;
-    ] )
+    ]
+    @ List.map QCheck_alcotest.to_alcotest fractal_props )
