@@ -415,14 +415,19 @@ let[@inline never] fractal_into f ~mandel ~cr ~ci (w : work) =
 
 (* magnet 1 and 2 (POV-Ray's, measured through pigment functions): the
    orbit is done when z is within 0.01 of the fixed point 1 or farther
-   than 100 from 0; shaded as
-   mandel's, the least |z|^2 over the iterates (not the start) *)
-let magnet_into f formula ~julia ~cr ~ci x y (w : work) =
+   than 100 from 0; shaded as mandel's, the least |z|^2 over the
+   iterates (not the start). [escaped] as in [fractal_into]. *)
+let[@inline never] magnet_into f formula ~julia ~cr ~ci (w : work) =
+  let x = w.p.mx and y = w.p.my in
   let zr = ref (if julia then x else 0.) and zi = ref (if julia then y else 0.) in
   let cr = if julia then cr else x and ci = if julia then ci else y in
+  (* formula 2's constants: the real parts of c - 1 and c - 2, and (c -
+     1)(c - 2) *)
+  let c1r = cr -. 1. and c2r = cr -. 2. in
+  let kr = (c1r *. c2r) -. (ci *. ci) and ki = (c1r *. ci) +. (ci *. c2r) in
   let m2 = ref (if julia then (x *. x) +. (y *. y) else infinity) in
-  let n = ref 0 and escaped = ref false in
-  while (not !escaped) && !n < f.iterations do
+  let n = ref 0 and escaped = ref (-1) and it = f.iterations in
+  while !n < it do
     let a = !zr and b = !zi in
     (* numerator p and denominator q, complex (in local refs: a tuple of
        floats would be allocated) *)
@@ -437,8 +442,6 @@ let magnet_into f formula ~julia ~cr ~ci x y (w : work) =
       (* z^3 + 3 (c - 1) z + (c - 1)(c - 2) over 3 z^2 + 3 (c - 2) z + (c - 1)(c - 2) + 1 *)
       let a2 = (a *. a) -. (b *. b) and b2 = 2. *. a *. b in
       let a3 = (a2 *. a) -. (b2 *. b) and b3 = (a2 *. b) +. (b2 *. a) in
-      let c1r = cr -. 1. and c2r = cr -. 2. in
-      let kr = (c1r *. c2r) -. (ci *. ci) and ki = (c1r *. ci) +. (ci *. c2r) in
       pr := a3 +. (3. *. ((c1r *. a) -. (ci *. b))) +. kr;
       pi := b3 +. (3. *. ((c1r *. b) +. (ci *. a))) +. ki;
       qr := (3. *. a2) +. (3. *. ((c2r *. a) -. (ci *. b))) +. kr +. 1.;
@@ -452,9 +455,9 @@ let magnet_into f formula ~julia ~cr ~ci x y (w : work) =
     let z2 = (!zr *. !zr) +. (!zi *. !zi) in
     if z2 < !m2 then m2 := z2;
     let dr = !zr -. 1. in
-    if z2 > 1e4 || (dr *. dr) +. (!zi *. !zi) < 1e-4 then escaped := true else incr n
+    if z2 > 1e4 || (dr *. dr) +. (!zi *. !zi) < 1e-4 then (escaped := !n; n := it) else incr n
   done;
-  if !escaped then w.r.v <- exterior_shade f !n !zr !zi else w.r.v <- interior_shade f !zr !zi !m2
+  if !escaped >= 0 then w.r.v <- exterior_shade f !escaped !zr !zi else w.r.v <- interior_shade f !zr !zi !m2
 
 (* The raw pattern at [w.p] into [w.r.v]: each case stores its value
    itself (a value joined from the cases would be boxed). *)
@@ -523,7 +526,7 @@ let raw_m kind (w : work) =
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
   | Mandel f -> fractal_into f ~mandel:true ~cr:0. ~ci:0. w
   | Julia { cr; ci; fractal } -> fractal_into fractal ~mandel:false ~cr ~ci w
-  | Magnet { formula; julia; cr; ci; fractal } -> magnet_into fractal formula ~julia ~cr ~ci x y w
+  | Magnet { formula; julia; cr; ci; fractal } -> magnet_into fractal formula ~julia ~cr ~ci w
   | Slope { dir; lo; hi; wdir; alt; alo; ahi; walt } ->
       (* POV-Ray's (measured): the normal's angle to the direction, 0.5 +
          asin(n . d) / pi, and the altitude p . a, each taken from [lo,
