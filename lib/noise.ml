@@ -78,6 +78,13 @@ let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x
 let off1 = Vec3.make 31.416 17.21 (-9.73)
 let off2 = Vec3.make (-23.1) 41.7 13.3
 
+(* three decorrelated signed noises: the displacement of one octave of
+   [turbulence_m] (inlined where it is used: a call would box its floats) *)
+let[@inline] dnoise3 x y z (out : Vec3.m) =
+  Vec3.set out (snoise3 x y z)
+    (snoise3 (x +. off1.x) (y +. off1.y) (z +. off1.z))
+    (snoise3 (x +. off2.x) (y +. off2.y) (z +. off2.z))
+
 let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
   let ax = ref 0. and ay = ref 0. and az = ref 0. and amp = ref 1. and freq = ref 1. in
   for _ = 1 to Int.max 1 octaves do

@@ -16,6 +16,11 @@ val snoise3 : float -> float -> float -> float
 val noise3 : float -> float -> float -> float
 (** Scalar noise in [[0, 1]], 0.5 at lattice points. *)
 
+val dnoise3 : float -> float -> float -> Vec3.m -> unit
+(** [dnoise3 x y z out]: camlray's vector noise (POV-Ray's [DNoise], with
+    camlray's own noise): three decorrelated signed noises at the point,
+    each about [[-1, 1]], into [out]; one octave of {!turbulence_m}. *)
+
 val turbulence_m : octaves:int -> omega:float -> lambda:float -> Vec3.m -> Vec3.m -> unit
 (** [turbulence_m ~octaves ~omega ~lambda p out]: [sum_{i < octaves}
     omega^i dnoise(lambda^i p)] into [out], where [dnoise] is three

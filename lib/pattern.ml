@@ -209,6 +209,11 @@ let clamp01 x = Float.min 1. (Float.max 0. x)
    coordinate [k] of the point for cell (cx, cy, cz), as floats. *)
 let[@inline] feature_h cx cy cz k = 0.5 +. (0.5 *. Noise.snoise3 (cx +. 0.31 +. k) (cy +. 0.47) (cz +. 0.73 -. k))
 
+(* the whole point, for the facets normal (inlined: a call would box the
+   floats) *)
+let[@inline] feature_point cx cy cz (out : Vec3.m) =
+  Vec3.set out (cx +. feature_h cx cy cz 0.) (cy +. feature_h cx cy cz 17.3) (cz +. feature_h cx cy cz 41.9)
+
 (* crackle: by default the distance to the second nearest feature point
    minus the nearest (POV-Ray's form <-1, 1, 0>); else form . (F1, F2,
    F3) + offset with distances in the metric's norm, or with [solid] the

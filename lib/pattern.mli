@@ -53,6 +53,12 @@ type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
 val crackle_default : crackle
 (** form <-1, 1, 0>, metric 2, offset 0, not solid. *)
 
+val feature_point : float -> float -> float -> Vec3.m -> unit
+(** [feature_point cx cy cz out]: crackle's feature point of the unit
+    cube whose lowest corner is [(cx, cy, cz)] (whole numbers), into
+    [out]: one point per cube, inside it (camlray's own, placed by its
+    noise; POV-Ray's points differ). *)
+
 type kind =
   | Checker
   | Hexagon
