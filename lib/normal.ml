@@ -7,7 +7,13 @@ type t = {
   map : map;
 }
 
-and map = Leaf | Blend of (float * t) array | Average of (float * t) array | Cells of t array | Image of Bump_map.t
+and map =
+  | Leaf
+  | Blend of (float * t) array
+  | Average of (float * t) array
+  | Cells of t array
+  | Image of Bump_map.t
+  | Facets of Facets.t
 
 let slope_height m v =
   let n = Float.Array.length m / 3 in
@@ -206,6 +212,11 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
       | Image b ->
           into_space nm point n l;
           Bump_map.tilt b nm.amount l.lq l.ln out
+      | Facets f ->
+          (* POV-Ray's facets: the point warped, the amount unused *)
+          into_space nm point n l;
+          Pattern.warped_m nm.pattern l.lq w.pw;
+          Facets.tilt_m f w.pw.p l.ln out
       | Leaf -> ());
       Transform.normal_m nm.xform out;
       if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz

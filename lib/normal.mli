@@ -33,6 +33,10 @@ and map =
       (** [bump_map]: the normal tilted by the image's height differences
           ({!Bump_map.tilt}, [amount] its bump size); the pattern is
           unused *)
+  | Facets of Facets.t
+      (** [facets]: the normal snapped or tilted by POV-Ray's facets
+          formula ({!Facets.tilt_m}); of the pattern only the warps and
+          turbulence are used (on the point), and the amount is not *)
 
 val default_accuracy : float
 (** POV-Ray's 0.02. *)

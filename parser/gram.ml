@@ -93,3 +93,7 @@ let average_texture l (layer : Texture.layer) =
       if total = 0. then Diag.error l "the weights of an average's texture_map must not sum to 0";
       { layer with tmap = Some { m with entries = Array.map (fun (w, t) -> (w /. total, t)) m.entries } }
   | None -> layer
+
+(* facets in a pigment or a texture: POV-Ray's error (it has no value) *)
+let facets_elsewhere l =
+  Diag.error (loc l) "facets can only be used in a normal (it tilts normals and has no value as a pigment pattern)"

@@ -51,3 +51,7 @@ val mapping : [> `Orient of Camlray.Vec3.t | `Dist_exp of float ] list -> Camlra
 val average_texture : Loc.t -> Camlray.Texture.layer -> Camlray.Texture.layer
 (** [texture { average texture_map { ... } }] checked (a map, weights not
     summing to 0) and its weights divided by their sum. *)
+
+val facets_elsewhere : Lexing.position * Lexing.position -> 'a
+(** [facets] written in a pigment or a texture: a located error (POV-Ray
+    refuses it too: it is a normal-only pattern). *)

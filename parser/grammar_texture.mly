@@ -21,6 +21,7 @@
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE NORMAL_MAP
+%token FACETS COORDS SIZE
 %token JULIA MAGNET
 %token MEDIA ABSORPTION SCATTERING ECCENTRICITY EXTINCTION DENSITY METHOD INTERVALS SAMPLES
 %token CONFIDENCE VARIANCE RATIO AA_THRESHOLD AA_LEVEL MEDIA_INTERACTION MEDIA_ATTENUATION DENSITY_MAP
@@ -106,6 +107,7 @@
   | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
+  | FACETS { facets_elsewhere $loc }
   (* material_map { png FILE [once] [map_type 0] TEXTURE... } *)
   | MATERIAL_MAP LBRACE ioption(PNG) f = string_arg os = list(material_map_item) ts = list(block_texture) RBRACE
     ms = list(tmap_mod)
@@ -188,6 +190,7 @@
       { let p = Texdesc.(pigment (apply ms (of_pigment (Pigment.solid (Value.to_color (loc $loc(c)) c))))) in
         fun _ -> p }
   | k = pattern_kind ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (of_pattern k))) in fun _ -> p }
+  | FACETS { facets_elsewhere $loc }
   (* the weighted mean of its pigment_map's entries (weights 1 when left out) *)
   | AVERAGE ms = list(pigment_mod) { let p = Texdesc.(pigment (apply ms (average ()))) in fun _ -> p }
   | k = block_kind cs = block_cells ms = list(pigment_mod)
@@ -439,8 +442,8 @@
   | BRICK_SIZE e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with size = v } | k -> k) }
   | METRIC e = param { let x = fl $loc(e) e in
-      if not (x > 0.) then Diag.error (loc $loc(e)) "crackle's metric must be positive, found %g" x;
-      Texdesc.kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with metric = x } | k -> k) }
+      if not (x > 0.) then Diag.error (loc $loc(e)) "a metric must be positive, found %g" x;
+      Texdesc.metric x }
   | FORM e = param { let v = v3 $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Crackle c -> Pattern.Crackle { c with form = v } | k -> k) }
   | OFFSET e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
@@ -517,6 +520,13 @@
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
   | ms = list(normal_mod) { fun base -> moved ms base }
+  (* facets [coords C] [size S] [metric M]: POV-Ray's normal of its own;
+     an amount is read and unused, as POV-Ray does *)
+  | FACETS ioption(bump_size) ms = list(normal_mod)
+      { let p = Texdesc.apply ms (Texdesc.facets ()) in
+        if p.Texdesc.nmap <> None then Diag.error (loc $loc) "facets takes no normal_map: it is a normal of its own";
+        let n = Some (Texdesc.normal p) in
+        fun _ -> n }
   (* bump_map { png FILE [bump_size F] [interpolate N] [use_index|use_color] [map_type 0] [once] } *)
   | BUMP_MAP LBRACE ioption(PNG) f = string_arg items = list(bump_item) RBRACE ms = list(normal_mod)
       { let index = List.fold_left (fun a i -> match i with `Index b -> Some b | _ -> a) None items in
@@ -568,6 +578,8 @@ bump_size: COMMA? a = param { a }
   | m = pattern_mod { m }
   | SLOPE_MAP LBRACE es = list(slope_entry) RBRACE { Texdesc.slope_map (loc $loc) es }
   | ACCURACY e = param { Texdesc.accuracy (loc $loc(e)) (fl $loc(e) e) }
+  | COORDS e = param { let x = fl $loc(e) e in Texdesc.facets_mod (loc $loc) "coords" (fun f -> { f with Facets.coords = x }) }
+  | SIZE e = param { let x = fl $loc(e) e in Texdesc.facets_mod (loc $loc) "size" (fun f -> { f with Facets.size = x }) }
   (* the bump amount, written as a modifier *)
   | BUMP_SIZE e = param { let a = fl $loc(e) e in fun (p : Texdesc.pat) -> { p with amount = a } }
   | NORMAL_MAP LBRACE es = list(normal_map_entry) RBRACE { Texdesc.normal_map (loc $loc) es }

@@ -13,6 +13,7 @@ type pat = {
   nmap : (float * Normal.t) array option;  (** normals: [normal_map] *)
   ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
   bump : Bump_map.t option;
+  facets : Facets.t option;  (** normals: [facets] *)
 }
 
 type modifier = pat -> pat
@@ -20,7 +21,7 @@ type modifier = pat -> pat
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
     amount = 0.5; average = false; slope = Float.Array.create 0;
-    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None }
+    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None; facets = None }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -32,6 +33,15 @@ let of_pigment (p : Pigment.t) =
 
 let of_pattern k = { empty with pattern = Some (Pattern.make k) }
 let average () = { empty with average = true }
+
+(* the pattern carries the warps and turbulence written; its kind is
+   unused *)
+let facets () = { empty with pattern = Some (Pattern.make Pattern.Bozo); facets = Some Facets.default }
+
+let facets_mod loc word f p =
+  match p.facets with
+  | Some x -> { p with facets = Some (f x) }
+  | None -> Diag.error loc "%s can only be used with facets" word
 let apply ms p = List.fold_left (fun p m -> m p) p ms
 
 let transform t p =
@@ -63,6 +73,11 @@ let turbulence v =
 
 let map es p = { p with entries = Some (Array.of_list es) }
 let kind_mod f = pattern_mod (fun pt -> { pt with kind = f pt.kind })
+
+let metric x p =
+  match p.facets with
+  | Some f -> { p with facets = Some { f with metric = x } }
+  | None -> kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with metric = x } | k -> k) p
 
 (* density_file df3 "file": found beside the scene or on the include
    path, as POV-Ray looks for it *)
@@ -104,7 +119,12 @@ let normal p =
   let leaf pattern amount =
     { Normal.pattern; amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy; map = Normal.Leaf }
   in
-  match p.pattern with
+  match (p.pattern, p.facets) with
+  | _, Some f ->
+      let pattern = Option.value p.pattern ~default:(Pattern.make Pattern.Bozo) in
+      { (leaf pattern p.amount) with map = Normal.Facets f }
+  | pattern, None ->
+  match pattern with
   | None when p.bump <> None ->
       { (leaf (Pattern.make Pattern.Bozo) p.amount) with map = Normal.Image (Option.get p.bump) }
   | None when p.average ->
@@ -136,6 +156,7 @@ let of_normal (n : Normal.t) =
   | Normal.Blend es -> { p with pattern = Some n.pattern; nmap = Some es }
   | Normal.Cells cs -> { p with pattern = Some n.pattern; ncells = Array.to_list cs }
   | Normal.Image b -> { p with bump = Some b }
+  | Normal.Facets f -> { p with pattern = Some n.pattern; facets = Some f }
 
 let normal_map loc es p =
   if es = [] then Diag.error loc "a normal_map needs at least one entry";

@@ -18,6 +18,9 @@ type pat = {
   nmap : (float * Normal.t) array option;  (** normals: [normal_map] (an average's weights) *)
   ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
   bump : Bump_map.t option;  (** normals: a [bump_map]'s image *)
+  facets : Facets.t option;
+      (** normals: [facets] (then [pattern] only carries the warps and
+          turbulence) *)
 }
 
 type modifier = pat -> pat
@@ -25,6 +28,14 @@ type modifier = pat -> pat
 val of_pigment : Pigment.t -> pat
 val of_pattern : Pattern.kind -> pat
 val average : unit -> pat
+
+val facets : unit -> pat
+(** [normal { facets }]: POV-Ray's defaults (size 0.1, coords 0, metric 2)
+    until changed. *)
+
+val facets_mod : Loc.t -> string -> (Facets.t -> Facets.t) -> modifier
+(** [facets_mod loc word f]: [coords] or [size] (named [word]), which
+    only facets takes (a located error elsewhere). *)
 val apply : modifier list -> pat -> pat
 
 val pigment : pat -> Pigment.t
@@ -50,6 +61,9 @@ val pattern_mod : (Pattern.t -> Pattern.t) -> modifier
 val turbulence : Vec3.t -> modifier
 val map : (float * Pigment.t) list -> modifier
 val kind_mod : (Pattern.kind -> Pattern.kind) -> modifier
+
+val metric : float -> modifier
+(** [metric M]: facets' metric, or crackle's (other patterns ignore it). *)
 
 val density_file : Loc.t -> string -> Pattern.kind
 (** [density_file df3 "file"]: the file read (located errors when it is

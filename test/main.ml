@@ -42,6 +42,7 @@ let () =
       Test_pattern.tests;
       Test_uv.tests;
       Test_bump_map.tests;
+      Test_facets.tests;
       Test_aa.tests;
       Test_gamma.tests;
       Test_compare.tests;
