@@ -515,7 +515,7 @@ let source st =
   Buffer.contents b
 
 (* POV-Ray's internal functions camlray has (functions.inc's f_sphere,
-   f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph; f_noise3d
+   f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph, f_helix1; f_noise3d
    and f_ridged_mf with camlray's noise), by the values POV-Ray's own
    give (checked at 30 random points to 1e-12): the parameters after x, y,
    z, and the code from slot [b] *)
@@ -562,6 +562,43 @@ let internal_fn n : (int * Fn.code) option =
       Some (0, fun s b ->
         let x = g s b 0 and z = g s b 2 in
         set s (b + 3) (Float.atan2 (Float.sqrt ((x *. x) +. (z *. z))) (g s b 1)))
+  | 25 ->
+      (* f_helix1: number of helices, period, minor radius, major radius,
+         shape, cross section (1 circle, 0 square, else the exponent 2/c
+         of a superellipse: 2 a diamond), its rotation in degrees.
+         Around y, the angle (from +x towards +z, times the number, plus
+         y times period times number, taken into [0, 2 pi)) less pi,
+         divided by shape and by period times number, is the section's
+         second coordinate; the distance from the major radius its
+         first; the value is the section's norm, at most the distance
+         from the axis plus the major radius, less the minor radius *)
+      Some (7, fun s b ->
+        let x = g s b 0 and y = g s b 1 and z = g s b 2 in
+        let n = g s b 3 and period = g s b 4 and minor = g s b 5 and major = g s b 6
+        and shape = g s b 7 and cross = g s b 8 and turn = g s b 9 in
+        let r = Float.sqrt ((x *. x) +. (z *. z)) in
+        (* POV-Ray's nudge on the axis (atan2 (0, 0) is 0 anyway) *)
+        let x = if x = 0. && z = 0. then 0.000001 else x in
+        let two_pi = 2. *. Float.pi in
+        let th = Float.rem ((Float.atan2 z x *. n) +. (y *. period *. n)) two_pi in
+        let th = if th < 0. then th +. two_pi else th in
+        let v = (th -. Float.pi) /. shape /. (period *. n) in
+        let u = r -. major in
+        let d =
+          if cross = 1. then Float.sqrt ((u *. u) +. (v *. v))
+          else begin
+            (* turned (no tuple: its floats would be boxed) *)
+            let c = if turn = 0. then 1. else Float.cos (turn *. (Float.pi /. 180.))
+            and sn = if turn = 0. then 0. else Float.sin (turn *. (Float.pi /. 180.)) in
+            let u = if turn = 0. then u else (u *. c) -. (v *. sn)
+            and v = if turn = 0. then v else (u *. sn) +. (v *. c) in
+            if cross <> 0. then
+              let e = 2. /. cross in
+              Float.pow (Float.pow (Float.abs u) e +. Float.pow (Float.abs v) e) (cross *. 0.5)
+            else Float.max (Float.abs u) (Float.abs v)
+          end
+        in
+        set s (b + 10) (Float.min (major +. r) d -. minor))
   | 76 ->
       (* f_noise3d: camlray's own noise, in [0, 1] like POV-Ray's (whose
          noise camlray does not rebuild: the values differ) *)
