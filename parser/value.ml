@@ -133,7 +133,7 @@ let vec3_value (v : Vec3.t) = Vector [| v.x; v.y; v.z |]
 let functions =
   [ "sin"; "cos"; "tan"; "asin"; "acos"; "atan"; "atan2"; "sqrt"; "pow"; "exp"; "log"; "ln";
     "abs"; "min"; "max"; "mod"; "int"; "floor"; "ceil"; "div"; "radians"; "degrees"; "select";
-    "vlength"; "vnormalize"; "vcross"; "vdot"; "vrotate"; "vaxis_rotate"; "concat"; "str"; "chr";
+    "vlength"; "vnormalize"; "vcross"; "vdot"; "vrotate"; "vaxis_rotate"; "vturbulence"; "concat"; "str"; "chr";
     "asc"; "strlen"; "substr"; "strupr"; "strlwr"; "val"; "strcmp"; "sinh"; "cosh"; "tanh";
     "asinh"; "acosh"; "atanh"; "sqr"; "bitwise_and"; "bitwise_or"; "bitwise_xor"; "vstr"; "seed"; "rand" ]
 
@@ -243,6 +243,18 @@ let call loc name args =
   | "vrotate" -> arity 2; vec3_value (Transform.vector (Transform.rotate (v 1)) (v 0))
   | "vaxis_rotate" ->
       arity 3; vec3_value (Transform.vector (Transform.axis_rotate (v 1) (f 2)) (v 0))
+  | "vturbulence" ->
+      (* vturbulence(lambda, omega, octaves, V): POV-Ray's DTurbulence,
+         sum over i < octaves of omega^i dnoise(lambda^i V), the octaves
+         truncated and kept within 1 .. 10 as POV-Ray does; camlray's
+         noise, not POV-Ray's *)
+      arity 4;
+      let octaves = Float.trunc (f 2) in
+      let octaves = if octaves < 1. then 1 else if octaves > 10. then 10 else int_of_float octaves in
+      let p = Vec3.m () and out = Vec3.m () in
+      Vec3.load p (v 3);
+      Noise.turbulence_m ~octaves ~omega:(f 1) ~lambda:(f 0) p out;
+      vec3_value (Vec3.of_m out)
   | "concat" -> String (String.concat "" (List.map (to_string_value loc) args))
   | "str" -> arity 3; String (format_float (small 1) (small 2) (f 0))
   | "vstr" ->

@@ -37,7 +37,8 @@ val dot_member : Loc.t -> t -> string -> t
 val call : Loc.t -> string -> t list -> t
 (** Built-in functions: [sin cos tan asin acos atan atan2 sqrt pow exp log
     (base 10) ln abs min max mod int floor ceil div radians degrees select
-    vlength vnormalize vcross vdot vrotate vaxis_rotate vturbulence?]...
+    vlength vnormalize vcross vdot vrotate vaxis_rotate vturbulence]
+    (vturbulence with camlray's noise)...
     Unknown names raise an error naming the function. *)
 
 val functions : string list
