@@ -14,6 +14,7 @@ and map =
   | Cells of t array
   | Image of Bump_map.t
   | Facets of Facets.t
+  | Uv of { entry : t; turns : bool }
 
 let slope_height m v =
   let n = Float.Array.length m / 3 in
@@ -43,7 +44,24 @@ let default_accuracy = 0.02
 let make kind amount =
   { pattern = Pattern.make kind; amount; xform = Transform.identity; slope = Float.Array.create 0;
     accuracy = default_accuracy; map = Leaf }
-let transform t nm = { nm with xform = Transform.then_ nm.xform t }
+(* a uv-mapped normal written as such ignores the transformations after
+   it; one made by a uv-mapped texture keeps them as its frame *)
+let transform t nm =
+  match nm.map with Uv { turns = false; _ } -> nm | _ -> { nm with xform = Transform.then_ nm.xform t }
+
+let uv ~turns nm =
+  match nm.map with
+  | Uv u -> { nm with map = Uv { u with turns = u.turns || turns } }
+  | _ ->
+      { pattern = Pattern.make Pattern.Bozo; amount = 0.; xform = Transform.identity; slope = Float.Array.create 0;
+        accuracy = default_accuracy; map = Uv { entry = nm; turns } }
+
+let rec uses_uv nm =
+  match nm.map with
+  | Uv _ -> true
+  | Leaf | Image _ | Facets _ -> false
+  | Blend es | Average es -> Array.exists (fun (_, e) -> uses_uv e) es
+  | Cells cs -> Array.exists uses_uv cs
 
 (* Bump strength per unit of amount and of pattern-space slope, calibrated
    on POV-Ray renders of smooth exact patterns (leopard). *)
@@ -217,6 +235,13 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
           into_space nm point n l;
           Pattern.warped_m nm.pattern l.lq w.pw;
           Facets.tilt_m f w.pw.p l.ln out
+      | Uv { entry; _ } ->
+          (* POV-Ray's uv_mapping (measured): the entry's pattern taken at
+             the surface's <u, v, 0>, the normal as it is in this space
+             (world space, or the frame of the transformations written
+             after a uv-mapped texture) *)
+          into_space nm point n l;
+          perturb_d w entry (Pattern.uv_point ()) l.ln out (d + 1)
       | Leaf -> ());
       Transform.normal_m nm.xform out;
       if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz

@@ -37,6 +37,11 @@ and map =
       (** [facets]: the normal snapped or tilted by POV-Ray's facets
           formula ({!Facets.tilt_m}); of the pattern only the warps and
           turbulence are used (on the point), and the amount is not *)
+  | Uv of { entry : t; turns : bool }
+      (** POV-Ray's [uv_mapping] (see {!uv}): [entry] perturbs the normal
+          at the surface's [<u, v, 0>] ({!Pattern.uv_point}); the
+          pattern, amount and slope of this normal are unused, its
+          transform is the frame the normal is perturbed in *)
 
 val default_accuracy : float
 (** POV-Ray's 0.02. *)
@@ -44,7 +49,24 @@ val default_accuracy : float
 val make : Pattern.kind -> float -> t
 val transform : Transform.t -> t -> t
 (** Applied after the normal's transform (a map's entries, relative to
-    it, follow). *)
+    it, follow). A [Uv] normal that does not [turns] is left as it is. *)
+
+val uv : turns:bool -> t -> t
+(** POV-Ray 3.7's [uv_mapping] of a normal (measured on probes): the
+    normal's pattern (through its own transform) is taken at the
+    surface's [<u, v, 0>] instead of the point, and its slope tilts the
+    surface's world normal as if uv space were world space (no tangent
+    frame: a pattern's slope along u tilts the normal along world x).
+    The transformations written after it: none apply when [turns] is
+    false ([normal { uv_mapping ... }], an object's [uv_mapping]); with
+    [turns] ([texture { uv_mapping ... }]) they turn the normal as a
+    pattern's transform does (into their space, perturbed, back) but do
+    not move the point. A normal already uv-mapped is kept (turning if
+    either does). *)
+
+val uses_uv : t -> bool
+(** Some part of the normal is uv-mapped: the shader must set the
+    surface's uv before perturbing with it. *)
 
 val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
 (** [perturb_m nm point n out]: the perturbed unit normal at a world

@@ -68,10 +68,12 @@ let blocks_light (t : t) =
   List.exists (fun l -> match l.tmap with None -> Pigment.opaque l.pigment | Some _ -> false) t
 
 (* POV-Ray: transformations written after a uv-mapped texture (the
-   object's) leave it as it is (measured) *)
+   object's) do not move its patterns (measured): a uv pattern's
+   transform stays, its uv-mapped pigments ignore them, and its
+   uv-mapped normals take them as the frame they tilt the normal in
+   (see {!Normal.uv}) *)
 let rec transform_layer tr l =
-  if match l.tmap with Some m -> m.uv | None -> false then l
-  else {
+  {
     l with
     pigment = Pigment.transform tr l.pigment;
     normal = Option.map (Normal.transform tr) l.normal;
@@ -80,7 +82,7 @@ let rec transform_layer tr l =
         (fun m ->
           {
             m with
-            xform = Transform.then_ m.xform tr;
+            xform = (if m.uv then m.xform else Transform.then_ m.xform tr);
             entries = Array.map (fun (v, t) -> (v, transform tr t)) m.entries;
           })
         l.tmap;
@@ -88,19 +90,21 @@ let rec transform_layer tr l =
 
 and transform tr t = List.map (transform_layer tr) t
 
-let rec uv_layer l =
+let rec uv_layer ~turns l =
   {
     l with
     pigment = Pigment.uv l.pigment;
-    tmap = Option.map (fun m -> { m with uv = true; entries = Array.map (fun (v, t) -> (v, uv t)) m.entries }) l.tmap;
+    normal = Option.map (Normal.uv ~turns) l.normal;
+    tmap =
+      Option.map (fun m -> { m with uv = true; entries = Array.map (fun (v, t) -> (v, uv ~turns t)) m.entries }) l.tmap;
   }
 
-and uv t = List.map uv_layer t
+and uv ~turns t = List.map (uv_layer ~turns) t
 
 let rec uses_uv t =
   List.exists
     (fun l ->
       match l.tmap with
       | Some m -> m.uv || Array.exists (fun (_, t) -> uses_uv t) m.entries
-      | None -> Pigment.uses_uv l.pigment)
+      | None -> Pigment.uses_uv l.pigment || match l.normal with Some n -> Normal.uses_uv n | None -> false)
     t

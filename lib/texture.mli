@@ -63,11 +63,12 @@ val weight : tmap -> pick -> int -> float
     [j]th texture to shade and its weight (an average's entries, else the
     pick's). *)
 
-val uv : t -> t
-(** POV-Ray's [texture { uv_mapping ... }]: every pigment and texture
-    pattern of the texture taken at the surface's [<u, v, 0>]; the
-    transformations written after it leave it unchanged. (A uv-mapped
-    normal is not supported: the caller refuses one.) *)
+val uv : turns:bool -> t -> t
+(** POV-Ray's [texture { uv_mapping ... }] ([turns]) and an object's
+    [uv_mapping] (not [turns]): every pigment, normal and texture pattern
+    of the texture taken at the surface's [<u, v, 0>]; the
+    transformations written after it do not move them, but with
+    [turns] they turn its normals (see {!Normal.uv}). *)
 
 val uses_uv : t -> bool
 (** Some part of the texture is uv-mapped: the shader must set the

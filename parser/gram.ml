@@ -63,13 +63,6 @@ let slope vloc v range alt =
   in
   Pattern.Slope { dir; lo; hi; wdir; alt; alo; ahi; walt }
 
-(* texture { uv_mapping ... }: camlray maps pigments and texture patterns,
-   not normals *)
-let uv_texture l (t : Texture.t) =
-  if List.exists (fun (x : Texture.layer) -> x.normal <> None) t then
-    Diag.error l "uv_mapping of a texture with a normal is not supported by camlray (its pigment can be uv-mapped)";
-  Texture.uv t
-
 (* a mapping warp's orientation: normalised, as POV-Ray does *)
 let orientation l v =
   let d = v3 l v in

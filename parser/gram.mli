@@ -37,9 +37,6 @@ val slope :
 (** POV-Ray's [slope { <dir> [, lo, hi] [altitude <dir> [, lo, hi]] }]:
     the directions normalised, their lengths the weights. *)
 
-val uv_texture : Loc.t -> Camlray.Texture.t -> Camlray.Texture.t
-(** [texture { uv_mapping ... }] ({!Camlray.Texture.uv}); a texture with a
-    normal is refused (located at the first location). *)
 
 val orientation : Lexing.position * Lexing.position -> Value.t -> Camlray.Vec3.t
 (** A mapping warp's orientation, normalised (an error if zero). *)

@@ -201,15 +201,19 @@ items_rev:
       { fun (o : Sdl.obj) -> { o with inner = Some (match o.inner with Some layers -> t @ layers | None -> t) } }
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) ->
-          let t = if o.flags land Sdl.uv_mapping <> 0 then uv_texture (loc $loc(t)) t else t in
+          let t = if o.flags land Sdl.uv_mapping <> 0 then Texture.uv ~turns:false t else t in
           { o with texture = Some (match o.texture with
           | Some layers -> t @ layers | None -> t) } }
   | PIGMENT LBRACE p = pigment_edit RBRACE
       { fun (o : Sdl.obj) ->
           let uv = o.flags land Sdl.uv_mapping <> 0 in
           with_texture (fun l -> { l with Texture.pigment = (let q = p l.pigment in if uv then Pigment.uv q else q) }) o }
-  (* the textures and pigments written after it are uv-mapped *)
-  | UV_MAPPING { fun (o : Sdl.obj) -> { o with flags = o.flags lor Sdl.uv_mapping } }
+  (* the textures, pigments and normals written after it are uv-mapped;
+     POV-Ray refuses it after the object's own texture *)
+  | UV_MAPPING
+      { fun (o : Sdl.obj) ->
+          if o.texture <> None then Diag.error (loc $loc) "uv_mapping must come before the object's texture, pigment, normal or finish";
+          { o with flags = o.flags lor Sdl.uv_mapping } }
   | FINISH LBRACE f = finish_edit RBRACE
       { with_texture (fun l -> { l with Texture.finish = f l.finish }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }

@@ -89,7 +89,12 @@ fog_item:
             smooth = Option.map (fun () -> loc $loc(s)) s } }
   (* turns the rays' directions as a surface normal is turned *)
   | NORMAL LBRACE n = normal_body RBRACE
-      { match n with Some n -> Sdl.Cam_normal n | None -> Sdl.Cam_transform Transform.identity }
+      { match n with
+        | Some n when Normal.uses_uv n ->
+            (* there is no surface: POV-Ray 3.7 crashes on it *)
+            Diag.error (loc $loc(n)) "a camera's normal cannot be uv-mapped (it has no surface to take u and v from)"
+        | Some n -> Sdl.Cam_normal n
+        | None -> Sdl.Cam_transform Transform.identity }
 
 %public global_item:
   | ASSUMED_GAMMA e = param { Sdl.Assumed_gamma (fl $loc(e) e) }

@@ -103,8 +103,9 @@
       { let l = List.fold_left (fun l f -> f l) (Texture.averaged [||]) ms in
         [ Gram.average_texture (loc $loc) l ] }
   (* every pattern of the texture taken at the surface's uv (transformations
-     written inside still apply, later ones do not: measured) *)
-  | UV_MAPPING t = texture_body { uv_texture (loc $loc) t }
+     written inside still apply; later ones do not move them, but turn its
+     normals: measured) *)
+  | UV_MAPPING t = texture_body { Texture.uv ~turns:true t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
   | FACETS { facets_elsewhere $loc }
@@ -153,7 +154,11 @@
   | t = transformation { Texture.transform t }
 
 %public object_mod:
-  | NORMAL LBRACE n = normal_edit RBRACE { with_texture (fun l -> { l with Texture.normal = n l.normal }) }
+  | NORMAL LBRACE n = normal_edit RBRACE
+      { fun (o : Sdl.obj) ->
+          let uv = o.flags land Sdl.uv_mapping <> 0 in
+          with_texture (fun l -> { l with Texture.normal = (let m = n l.normal in
+            if uv then Option.map (Normal.uv ~turns:false) m else m) }) o }
 
 %public item:
   | SKY_SPHERE LBRACE k = sky_body RBRACE { Sdl.Sky_sphere k }
@@ -494,7 +499,9 @@
    move the perturbation already there; a pattern or an identifier
    replaces it. [normal_body] is the one written over none. *)
 %public normal_edit:
-  | UV_MAPPING { Diag.error (loc $loc) "uv_mapping in a normal is not supported by camlray" }
+  (* the rest is the normal whose pattern is taken at the surface's uv
+     (modifiers written later do not reach it: measured) *)
+  | UV_MAPPING e = normal_edit { fun base -> Option.map (Normal.uv ~turns:false) (e base) }
   (* the weighted mean of its normal_map's entries' normals *)
   | AVERAGE ms = list(normal_mod)
       { let p = Texdesc.apply ms (Texdesc.average ()) in

@@ -14,6 +14,7 @@ type pat = {
   ncells : Normal.t list;  (** normals: block pattern normals, in written order *)
   bump : Bump_map.t option;
   facets : Facets.t option;  (** normals: [facets] *)
+  uv : Normal.t option;
 }
 
 type modifier = pat -> pat
@@ -21,7 +22,7 @@ type modifier = pat -> pat
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
     amount = 0.5; average = false; slope = Float.Array.create 0;
-    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None; facets = None }
+    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None; facets = None; uv = None }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -46,6 +47,7 @@ let apply ms p = List.fold_left (fun p m -> m p) p ms
 
 let transform t p =
   match p.pattern with
+  | _ when p.uv <> None -> { p with uv = Option.map (Normal.transform t) p.uv }
   | None when p.bump <> None -> { p with xform = Transform.then_ p.xform t }
   | None when p.average ->
       (* a normal's entries are relative to its transform: they follow it *)
@@ -115,7 +117,7 @@ let pigment p =
         in
         Pigment.Map { pattern; entries; xform = p.xform }
 
-let normal p =
+let built_normal p =
   let leaf pattern amount =
     { Normal.pattern; amount; xform = p.xform; slope = p.slope; accuracy = p.accuracy; map = Normal.Leaf }
   in
@@ -148,6 +150,8 @@ let normal p =
       | Some es when Array.length es > 0 -> { (leaf pattern p.amount) with map = Normal.Blend es }
       | _ -> leaf pattern p.amount)
 
+let normal p = match p.uv with Some n -> n | None -> built_normal p
+
 let of_normal (n : Normal.t) =
   let p = { empty with xform = n.xform; amount = n.amount; slope = n.slope; accuracy = n.accuracy } in
   match n.map with
@@ -157,6 +161,7 @@ let of_normal (n : Normal.t) =
   | Normal.Cells cs -> { p with pattern = Some n.pattern; ncells = Array.to_list cs }
   | Normal.Image b -> { p with bump = Some b }
   | Normal.Facets f -> { p with pattern = Some n.pattern; facets = Some f }
+  | Normal.Uv _ -> { p with uv = Some n }
 
 let normal_map loc es p =
   if es = [] then Diag.error loc "a normal_map needs at least one entry";

@@ -21,6 +21,10 @@ type pat = {
   facets : Facets.t option;
       (** normals: [facets] (then [pattern] only carries the warps and
           turbulence) *)
+  uv : Normal.t option;
+      (** normals: a uv-mapped normal being modified: only
+          transformations reach it ({!Normal.transform}); POV-Ray ignores
+          the other modifiers of a uv-mapped normal (measured) *)
 }
 
 type modifier = pat -> pat
