@@ -1,6 +1,7 @@
 (* uv_mapping: POV-Ray 3.7's uv coordinates per shape (known answers
-   measured by rendering uv as colour in POV-Ray), their range, and
-   uv-mapped textures through the scene language. *)
+   measured by rendering uv as colour in POV-Ray), their range,
+   uv-mapped textures through the scene language, and uv-mapped normals
+   against POV-Ray's shading. *)
 open Camlray
 open Helpers
 
@@ -103,6 +104,116 @@ let transforms () =
   let r2, _, _ = pixel (img (Printf.sprintf "sphere { 0, 1 pigment { uv_mapping UV scale 0.5 } %s }" f)) 8 6 in
   if not (close ~eps:1e-6 r2 (Float.rem (2. *. r) 1.)) then Alcotest.failf "pigment scale: %g for %g" r2 r
 
+(* uv-mapped normals against POV-Ray 3.7: 1x1 probes of a lit surface
+   hit at the origin (camera at -5z), diffuse 1, no ambient, under three
+   lights: red from -z, green from <1,0,-1>, blue from <0,1,-1> (so the
+   three channels are the perturbed normal's three components). POV-Ray's
+   values were read from +FN16 File_Gamma=1.0 renders; 16-bit, so good to
+   about 2e-5. *)
+let probe body =
+  Scn.pixel
+    ("camera { location <0,0,-5> look_at 0 }\n\
+      light_source { <0,0,-1000>, rgb <1,0,0> }\n\
+      light_source { <1000,0,-1000>, rgb <0,1,0> }\n\
+      light_source { <0,1000,-1000>, rgb <0,0,1> }\n\
+      #default { finish { ambient 0 diffuse 1 } }\n" ^ body)
+
+(* a mesh2 triangle in z = 0 whose corners' uv are given (u, v at the
+   origin: the corners' mean) *)
+let tri ?(uv = "<0.5,0.5>, <6.5,0.5>, <0.5,6.5>") rest =
+  Printf.sprintf
+    "mesh2 { vertex_vectors { 3, <-2,-2,0>, <4,-2,0>, <-2,4,0> } uv_vectors { 3, %s } face_indices { 1, <0,1,2> } %s }"
+    uv rest
+
+(* every corner at <2.5, 2.5>: the same uv wherever the ray meets it, so
+   transformations of the object cannot move it *)
+let still = "<2.5,2.5>, <2.5,2.5>, <2.5,2.5>"
+let swapped = "<0.5,0.5>, <0.5,6.5>, <6.5,0.5>"
+let uvtex n = Printf.sprintf "texture { uv_mapping pigment { rgb 1 } normal { %s } }" n
+let turned = "rotate y*30 rotate x*-20"
+
+let normals () =
+  let c = Scn.color in
+  (* no tangent frame: the pattern's slope along u tilts along world x
+     whichever way u runs on the surface; a plain gradient x 0.5 in world
+     space gives the same 0.99779 0.65850 0.70555 *)
+  let ramp = (0.99779, 0.65850, 0.70555) in
+  c "u along x" ramp (probe (tri "pigment { rgb 1 } normal { uv_mapping gradient x 0.5 }"));
+  c "u along y, slope along u" ramp (probe (tri ~uv:swapped (uvtex "gradient x 0.5")));
+  c "u along y, slope along v" (0.99779, 0.70555, 0.65850) (probe (tri ~uv:swapped (uvtex "gradient y 0.5")));
+  c "the triangle wound the other way" ramp
+    (probe
+       "mesh2 { vertex_vectors { 3, <-2,-2,0>, <-2,4,0>, <4,-2,0> } uv_vectors { 3, <0.5,0.5>, <0.5,6.5>, <6.5,0.5> } \
+        face_indices { 1, <0,1,2> } texture { uv_mapping pigment { rgb 1 } normal { gradient x 0.5 } } }");
+  c "uv stretched: the same slope" ramp (probe (tri ~uv:"<0.5,0.5>, <12.5,0.5>, <0.5,3.5>" (uvtex "gradient x 0.5")));
+  c "the normal's own scale" (0.99449, 0.63691, 0.67005) (probe (tri (uvtex "gradient <1,1,0> 0.5 scale <0.5,1,1>")));
+  (* a texture's uv_mapping: the object's transformations turn the normal
+     (its flat normal turned is 0.81379 0.22188 0.36600) *)
+  c "turned, slope along u" (0.78074, 0.15856, 0.35113) (probe (tri (uvtex "gradient x 0.5" ^ " " ^ turned)));
+  c "turned, slope along v" (0.78924, 0.20531, 0.30491) (probe (tri (uvtex "gradient y 0.5" ^ " " ^ turned)));
+  c "turned, slope along the normal: flat" (0.81379, 0.22188, 0.36600)
+    (probe (tri (uvtex "gradient z 0.5 translate 0.5*z" ^ " " ^ turned)));
+  c "turned, slope along <1,2,3>" (0.79371, 0.19759, 0.33153)
+    (probe (tri (uvtex "gradient <1,2,3> 0.5 translate 0.3" ^ " " ^ turned)));
+  (* ... but do not move the point the pattern is taken at *)
+  let wave = "gradient x 0.5 sine_wave" in
+  let base = (0.97884, 0.83685, 0.69220) and squeezed = (0.95818, 0.87990, 0.67759) in
+  c "sine wave at <2.5, 2.5>" base (probe (tri ~uv:still (uvtex wave)));
+  c "translated after the texture: unmoved" base (probe (tri ~uv:still (uvtex wave ^ " translate 0.2*x")));
+  c "scaled after the texture: turned, unmoved" squeezed
+    (probe (tri ~uv:still (uvtex wave ^ " scale <0.7,1,1>")));
+  c "a scale before the texture: nothing" base (probe (tri ~uv:still ("scale <0.7,1,1> " ^ uvtex wave)));
+  c "translated inside the texture: moved" (0.99751, 0.75508, 0.70243)
+    (probe (tri ~uv:still ("texture { uv_mapping pigment { rgb 1 } normal { " ^ wave ^ " } translate 0.2*x }")));
+  c "a uv texture_map's normals turn the same way" squeezed
+    (probe
+       (tri ~uv:still
+          ("texture { uv_mapping gradient x texture_map { [0 pigment { rgb 1 } normal { " ^ wave
+         ^ " }] [1 pigment { rgb 1 } normal { " ^ wave ^ " }] } } scale <0.7,1,1>")));
+  (* a normal's uv_mapping, or the object's: later transformations and
+     modifiers do nothing *)
+  let uvn = "pigment { rgb 1 } normal { uv_mapping " ^ wave ^ " }" in
+  c "normal { uv_mapping }, scaled after" base (probe (tri ~uv:still (uvn ^ " scale <0.7,1,1>")));
+  c "normal { uv_mapping } inside its own texture, scaled after" squeezed
+    (probe (tri ~uv:still ("texture { uv_mapping pigment { rgb 1 } normal { uv_mapping " ^ wave ^ " } } scale <0.7,1,1>")));
+  c "a declared uv normal turned, bump_size changed" base
+    (probe
+       ("#declare N = normal { uv_mapping " ^ wave ^ " }\n"
+       ^ tri ~uv:still "pigment { rgb 1 } normal { N rotate z*45 bump_size 3 }"));
+  c "the object's uv_mapping maps its normal" base
+    (probe (tri ~uv:still ("uv_mapping pigment { rgb 1 } normal { " ^ wave ^ " } scale <0.7,1,1>")));
+  c "the object's uv_mapping, the normal translated" (0.99751, 0.75508, 0.70243)
+    (probe (tri ~uv:still ("uv_mapping pigment { rgb 1 } normal { " ^ wave ^ " translate 0.2*x }")));
+  c "uv-mapped normal_map entries in a turned object" (0.83867, 0.27187, 0.38047)
+    (probe
+       (tri
+          ("pigment { rgb 1 } normal { gradient x phase 0.3 normal_map { \
+            [0 uv_mapping gradient y 0.5 sine_wave scale 0.4] [1 uv_mapping gradient x 0.8 sine_wave scale 0.3] } } "
+         ^ turned)));
+  (* curved surfaces; quilted (the balcony scene's table cloth) *)
+  c "sphere, uv <0.75, 0.5>" (0.99779, 0.65812, 0.70518) (probe ("sphere { 0, 1 " ^ uvtex "gradient x 0.5" ^ " }"));
+  c "sphere, scaled after" (0.99995, 0.70047, 0.70982)
+    (probe ("sphere { 0, 1 " ^ uvtex wave ^ " scale <0.7,1,1> }"));
+  c "box" (0.91302, 0.35732, 0.62571) (probe ("box { -1, 1 " ^ uvtex "gradient x 0.7 sine_wave scale 0.3" ^ " rotate <10,20,30> }"));
+  c "quilted on the triangle" (0.74417, 0.12625, 0.27492) (probe (tri (uvtex "quilted 0.6 scale 0.3" ^ " " ^ turned)));
+  c "quilted on a sphere" (0.95093, 0.45783, 0.62722)
+    (probe ("sphere { 0, 1 " ^ uvtex "quilted 0.6 scale 0.08" ^ " rotate <10,20,30> }"));
+  c "torus" (0.96869, 0.52415, 0.75560)
+    (probe ("torus { 1, 0.4 rotate x*-90 translate <1,0,0> " ^ uvtex "gradient x 0.5 sine_wave scale 0.1" ^ " rotate <10,20,30> }"))
+
+let normal_errors () =
+  Scn.check_message "camera { normal { uv_mapping bumps 0.5 } }" "a camera's normal cannot be uv-mapped";
+  Scn.check_message "sphere { 0, 1 pigment { rgb 1 } uv_mapping }" "uv_mapping must come before the object's texture";
+  Scn.check_message "#declare O = sphere { 0, 1 finish { ambient 1 } }\nobject { O uv_mapping }"
+    "uv_mapping must come before the object's texture";
+  (* a CSG without a texture of its own may still take it *)
+  ignore (Scn.compile "union { sphere { 0, 1 pigment { rgb 1 } } uv_mapping }");
+  (* the object's uv flag is set by a uv-mapped normal alone *)
+  let s = Scn.compile (tri "pigment { rgb 1 } normal { uv_mapping gradient x 0.5 }") in
+  match s.Scene.objects with
+  | [| o |] -> Alcotest.(check bool) "object needs uv" true o.Object.uv
+  | l -> Alcotest.failf "%d objects" (Array.length l)
+
 let tests =
   ( "uv",
     [
@@ -112,4 +223,6 @@ let tests =
       Alcotest.test_case "mesh" `Quick mesh;
       QCheck_alcotest.to_alcotest range;
       Alcotest.test_case "transforms and forms" `Quick transforms;
+      Alcotest.test_case "uv-mapped normals as POV-Ray" `Quick normals;
+      Alcotest.test_case "uv-mapped normals: errors, the uv flag" `Quick normal_errors;
     ] )

@@ -535,13 +535,15 @@ let allocation_textures () =
        sphere { <2.6, 1.4, 1>, 0.7 texture { average texture_map {\n\
          [1 pigment { rgbf <1, 0.5, 0.2, 0.5> } normal { leopard 0.4 scale 0.1 }] [2 pigment { rgb <0.2, 0.6, 0.3> } finish { phong 1 }] } } }\n\
        sphere { <-0.3, 0.45, -3.2>, 0.45 pigment { rgbf <0.9, 0.9, 1, 0.9> }\n\
-         interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }")
+         interior { ior 1.2 fade_distance 0.4 fade_power 2 fade_color <0.2, 0.4, 0.9> } }\n\
+       box { <-1.8, 0, -3.6>, <-1, 0.8, -2.8> texture { uv_mapping pigment { rgb 0.8 }\n\
+         normal { gradient x normal_map { [0 quilted 0.5 scale 0.1] [1 uv_mapping bumps 0.3 scale 0.1] } } } rotate y*20 }")
   in
   words_per_ray s
   in
   let plain = words "camera { location <0, 2, -6> look_at <0, 0.8, 0> }" in
   if plain > 0.1 then
-    Alcotest.failf "%.2f words per camera ray with patterns, normals, texture maps and a sky (at most 0.1)" plain;
+    Alcotest.failf "%.2f words per camera ray with patterns, normals (uv-mapped too), texture maps and a sky (at most 0.1)" plain;
   (* a camera normal turning every ray *)
   let bent = words "camera { location <0, 2, -6> look_at <0, 0.8, 0> normal { onion 0.3 scale 0.2 } }" in
   if bent > 0.1 then Alcotest.failf "%.2f words per camera ray with a camera normal (at most 0.1)" bent;
