@@ -75,6 +75,7 @@ type walk = {
   filter : Color.acc;  (** what the surface there lets through *)
   cn : Vec3.m;  (** the surface's normal there (faked caustics) *)
   pn : Vec3.m;  (** a layer's perturbed normal *)
+  uv : Vec3.m;  (** the crossing's uv, for a uv-mapped texture *)
   mutable air : Media.t list;
       (** the scene's atmospheric media when the light has
           media_attenuation on, else [[]] *)
@@ -92,7 +93,7 @@ let shadow_key =
         ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
-        filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
+        filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
         fd = Vec3.m () })
 
 (* a crossing of a fading object, kept in growing arrays *)
@@ -138,6 +139,12 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
   else begin
     let r = w.ray and q = w.cross and f = w.filter in
     Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+    (* a uv-mapped texture reads the crossing's uv (the shading this
+       shadow ray serves has read its own already) *)
+    if o.uv then begin
+      Object.uv_into o q h w.uv;
+      Pattern.set_uv w.uv.mx w.uv.my
+    end;
     filter_into o.texture q f 0;
     let c = o.interior.caustics in
     let k = if c = 0. then 1. else caustics w o q h c in
