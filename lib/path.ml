@@ -38,6 +38,7 @@ type state = {
   sum : Color.acc;  (** a pixel's samples *)
   env_wi : Vec3.m;
   q : Vec3.m;  (** a shadow ray's crossing *)
+  uv : Vec3.m;  (** a uv-mapped surface's uv (the vertex's, or a crossing's) *)
   pig : Pigment.out;  (** the pigment there *)
   env : Color.acc;  (** the environment's light along a direction *)
   prev_p : Vec3.m;  (** the previous vertex, when [prev] is [smooth_v] *)
@@ -57,7 +58,7 @@ let state_key =
   Scratch.key (fun () ->
       let v = Vec3.m and c () = Color.acc 0. in
       { o = v (); d = v (); p = v (); ng = v (); n = v (); wo = v (); thr = c (); acc = c (); dl = c ();
-        f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); pig = Pigment.out (); env = c (); prev_p = v (); prev_n = v ();
+        f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); uv = v (); pig = Pigment.out (); env = c (); prev_p = v (); prev_n = v ();
         num = { prev_pdf = 0. }; prev = camera_v; mat = Material.lobes (); bs = Bsdf.sampled ();
         ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
         sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0 })
@@ -82,6 +83,10 @@ let pass_through (o : Object.t) (h : Hit.t) =
       let st = Scratch.get state_key in
       let r = st.shadow in
       Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+      if o.uv then begin
+        Object.uv_into o st.q h st.uv;
+        Pattern.set_uv st.uv.mx st.uv.my
+      end;
       let c = st.pig in
       Pigment.into layer.pigment st.q c;
       if c.filter +. c.transmit <= 0. || o.interior.ior <> 1. then false
@@ -238,6 +243,10 @@ let li_into t sampler ~max_depth (st : state) =
       end;
       let m = st.mat in
       Pattern.set_normal ng;
+      if obj.uv then begin
+        Object.uv_into obj p h st.uv;
+        Pattern.set_uv st.uv.mx st.uv.my
+      end;
       Material.into m (if entering then obj.texture else obj.back) obj.interior p n wo ~entering;
       if not (Color.acc_is_black m.em) then begin
         let w =

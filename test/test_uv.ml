@@ -240,6 +240,38 @@ let shadows () =
        "sphere { <2,0,-2>, 0.8 texture { uv_mapping pigment { rgbt 1 } normal { gradient x 0.5 sine_wave scale 0.1 } } \
         interior { caustics 1 } }")
 
+(* mc mode reads the uv too: an emitting uv-mapped sphere seen through a
+   tiny orthographic window gives whitted's colour, and a filtering
+   uv-mapped sphere tints a shadow ray as whitted's does *)
+let mc () =
+  let both src =
+    let s = Scn.compile src in
+    (* no uv left over from an earlier render on this domain *)
+    Pattern.set_uv 0. 0.;
+    let m = Path.pixel (Path.prepare s) ~width:1 ~height:1 ~seed:1 ~spp:4 ~max_depth:4 0 0 in
+    let w = Whitted.pixel s ~width:1 ~height:1 0 0 in
+    (w, m)
+  in
+  let w, m =
+    both
+      "camera { orthographic location <0.2,0.1,-5> look_at <0.2,0.1,0> right 0.001*x up 0.001*y }\n\
+       sphere { 0, 1 pigment { uv_mapping gradient x color_map { [0 rgb <0,0,1>] [1 rgb <1,0.5,0>] } } \
+       finish { ambient 0 diffuse 0 emission 1 } }"
+  in
+  (* u there: 0.75 + atan2(0.2, ...)/(2 pi), about 0.782 *)
+  if not (w.r > 0.77 && w.r < 0.8) then Alcotest.failf "whitted u: %g" w.r;
+  Scn.color ~eps:1e-4 "mc emission as whitted" (w.r, w.g, w.b) m;
+  let w, m =
+    both
+      "camera { orthographic location <0,0,-5> look_at 0 right 0.001*x up 0.001*y }\n\
+       light_source { <1000,0,-1000>, rgb 1 }\n\
+       plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+       sphere { <2,0,-2>, 0.8 pigment { uv_mapping gradient x color_map { [0 rgbf <1,0,0,1>] [1 rgbf <0,0,1,1>] } } }"
+  in
+  (* POV-Ray: 0.05524 0 0.23201 (see [shadows]) *)
+  Scn.color ~eps:1e-4 "whitted shadow through the uv sphere" (0.05524, 0., 0.23201) w;
+  Scn.color ~eps:1e-4 "mc shadow ray as whitted's" (w.r, w.g, w.b) m
+
 let tests =
   ( "uv",
     [
@@ -252,4 +284,5 @@ let tests =
       Alcotest.test_case "uv-mapped normals as POV-Ray" `Quick normals;
       Alcotest.test_case "uv-mapped normals: errors, the uv flag" `Quick normal_errors;
       Alcotest.test_case "shadow rays through uv-mapped surfaces" `Quick shadows;
+      Alcotest.test_case "mc mode reads uv" `Quick mc;
     ] )
