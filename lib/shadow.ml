@@ -115,17 +115,22 @@ let add_fader w (o : Object.t) (h : Hit.t) =
 
 (* POV-Ray's faked caustics: per layer, more light where the ray meets the
    surface (its normal perturbed by the layer's) square on *)
+(* a loop, not List.iter: its closure over a float ref allocated both per
+   shadow ray (3 words a camera ray on caustics.pov) *)
 let caustics w (o : Object.t) q h c =
   let r = w.ray and n = w.cn and pn = w.pn in
   Object.normal_into o q h n;
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
-  let k = ref 1. in
-  List.iter
-    (fun (l : Texture.layer) ->
-      (match l.normal with Some nm -> Normal.perturb_m nm q n pn | None -> Vec3.set pn n.mx n.my n.mz);
-      let cos = Float.abs ((pn.mx *. r.dx) +. (pn.my *. r.dy) +. (pn.mz *. r.dz)) /. dl in
-      k := !k *. (1. +. Float.pow cos c))
-    o.texture;
+  let k = ref 1. and rest = ref o.texture in
+  while (match !rest with [] -> false | _ -> true) do
+    match !rest with
+    | [] -> ()
+    | (l : Texture.layer) :: tl ->
+        (match l.normal with Some nm -> Normal.perturb_m nm q n pn | None -> Vec3.set pn n.mx n.my n.mz);
+        let cos = Float.abs ((pn.mx *. r.dx) +. (pn.my *. r.dy) +. (pn.mz *. r.dz)) /. dl in
+        k := !k *. (1. +. Float.pow cos c);
+        rest := tl
+  done;
   !k
 
 let shadow_hit (o : Object.t) (h : Hit.t) =
