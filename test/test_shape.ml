@@ -267,21 +267,30 @@ let prism_units =
         bad (Prism.make Prism.Cubic Prism.Linear_sweep 0. 1. (Array.sub arrow 0 5)));
   ]
 
+(* the prisms the properties draw: spline [k] (linear, quadratic,
+   cubic) on the arrow, swept straight or to a point; and rays towards
+   points of its height range [lo, hi] *)
+let prism_case k conic =
+  let spline, pts =
+    match k with
+    | 0 -> (Prism.Linear, arrow)
+    | 1 -> (Prism.Quadratic, Array.append arrow [| (0.2, 0.2) |])
+    | _ -> (Prism.Cubic, Array.concat [ [| (-0.2, -1.0) |]; arrow; [| (0.2, 0.2) |] ])
+  in
+  prism_of spline (if conic then Prism.Conic_sweep else Prism.Linear_sweep) pts
+
+let prism_rays lo hi =
+  QCheck.(make ~print:(fun ((k, c), (r : Ray.t)) -> Printf.sprintf "kind %d conic %b ray %s -> %s" k c
+                          (Vec3.to_string r.origin) (Vec3.to_string r.dir))
+            Gen.(pair (pair (int_bound 2) bool)
+                   (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.)
+                      (map3 Vec3.make (fr (-1.) 1.) (fr lo hi) (fr (-1.) 1.)))))
+
 let prism_prop =
   QCheck.Test.make ~name:"prism: normals leave the solid, for every spline and sweep" ~count:2000
-    QCheck.(make ~print:(fun ((k, c), (r : Ray.t)) -> Printf.sprintf "kind %d conic %b ray %s -> %s" k c
-                            (Vec3.to_string r.origin) (Vec3.to_string r.dir))
-              Gen.(pair (pair (int_bound 2) bool)
-                     (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.)
-                        (map3 Vec3.make (fr (-1.) 1.) (fr 0.5 1.) (fr (-1.) 1.)))))
+    (prism_rays 0.5 1.)
     (fun ((k, conic), r) ->
-      let spline, pts =
-        match k with
-        | 0 -> (Prism.Linear, arrow)
-        | 1 -> (Prism.Quadratic, Array.append arrow [| (0.2, 0.2) |])
-        | _ -> (Prism.Cubic, Array.concat [ [| (-0.2, -1.0) |]; arrow; [| (0.2, 0.2) |] ])
-      in
-      let p = prism_of spline (if conic then Prism.Conic_sweep else Prism.Linear_sweep) pts in
+      let p = prism_case k conic in
       let s = Shape.Prism p in
       let h = Hit.create infinity in
       if not (Shape.hit s r 1e-9 h) then true
@@ -299,19 +308,9 @@ let prism_prop =
    same, by a query whose range only just holds it *)
 let prism_window_prop =
   QCheck.Test.make ~name:"prism: a crossing is found again in a range that only just holds it" ~count:2000
-    QCheck.(make ~print:(fun ((k, c), (r : Ray.t)) -> Printf.sprintf "kind %d conic %b ray %s -> %s" k c
-                            (Vec3.to_string r.origin) (Vec3.to_string r.dir))
-              Gen.(pair (pair (int_bound 2) bool)
-                     (map2 (fun o t -> Ray.make o (Vec3.sub t o)) (gvec 5.)
-                        (map3 Vec3.make (fr (-1.) 1.) (fr 0.4 1.1) (fr (-1.) 1.)))))
+    (prism_rays 0.4 1.1)
     (fun ((k, conic), r) ->
-      let spline, pts =
-        match k with
-        | 0 -> (Prism.Linear, arrow)
-        | 1 -> (Prism.Quadratic, Array.append arrow [| (0.2, 0.2) |])
-        | _ -> (Prism.Cubic, Array.concat [ [| (-0.2, -1.0) |]; arrow; [| (0.2, 0.2) |] ])
-      in
-      let s = Shape.Prism (prism_of spline (if conic then Prism.Conic_sweep else Prism.Linear_sweep) pts) in
+      let s = Shape.Prism (prism_case k conic) in
       let rec walk tmin n =
         let h = Hit.create infinity in
         n = 0 || (not (Shape.hit s r tmin h))
