@@ -26,6 +26,23 @@ let direct_key = Scratch.key (fun () -> Color.acc 0.)
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
 
+(* [d] mirrored about [n] into [rd], mended as POV-Ray mends it where a
+   perturbed [n] sends it below the surface (whose normal [n0] faces the
+   ray): about [n0] instead when [n] itself faces away from the eye,
+   else mirrored back above the surface about [n0] *)
+let mirror (d : Vec3.m) (n : Vec3.m) (n0 : Vec3.m) (rd : Vec3.m) =
+  let m = -2. *. dot d n in
+  Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
+  let below = dot rd n0 in
+  if below < 0. then
+    if dot rd n < 0. then begin
+      let m = -2. *. dot d n0 in
+      Vec3.set rd (d.mx +. (m *. n0.mx)) (d.my +. (m *. n0.my)) (d.mz +. (m *. n0.mz))
+    end
+    else
+      let m = -2. *. below in
+      Vec3.set rd (rd.mx +. (m *. n0.mx)) (rd.my +. (m *. n0.my)) (rd.mz +. (m *. n0.mz))
+
 (* What shading one hit keeps, one frame per nesting level, per domain,
    reused from ray to ray ([trace_camera_ray] starts every camera ray at depth
    0): the running sums; the hit point, the normal facing the ray, the
@@ -251,14 +268,16 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
       let rd = fr.rd in
       if k < 0. then begin
         (* total internal reflection: not filtered by the surface colour *)
-        let m = 2. *. cos_i in
-        Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
+        mirror d n n0 rd;
         fr.k.child <- weight;
         trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
         Color.acc_set out (c.ar +. (fade.ar *. rc.ar)) (c.ag +. (fade.ag *. rc.ag)) (c.ab +. (fade.ab *. rc.ab))
       end
       else begin
-        let m = (eta *. cos_i) -. Float.sqrt k in
+        (* a top normal tilted away from the eye bends the ray about
+           its opposite, as in POV-Ray *)
+        let side = if cos_i < 0. then -1. else 1. in
+        let m = side *. ((eta *. cos_i *. side) -. Float.sqrt k) in
         Vec3.set rd ((eta *. d.mx) +. (m *. n.mx)) ((eta *. d.my) +. (m *. n.my)) ((eta *. d.mz) +. (m *. n.mz));
         fr.k.child <- w;
         trace_ray s Ray.epsilon infinity fr.p rd (level + 1) fr.k (Interior.beyond inner media) rc;
@@ -305,15 +324,11 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
             match layer.normal with
             | None -> n0
             | Some nm ->
-                (* a normal tilted away from the eye is mirrored back *)
+                (* kept as it is where it tilts away from the eye, as in
+                   POV-Ray: the lights in front of the surface then miss
+                   it, and [mirror] mends the rays it reflects *)
                 let pn = fr.pn in
                 Normal.perturb_m nm p n0 pn;
-                let md = dot pn d in
-                if md > 0. then begin
-                  let k = -2. *. md in
-                  Vec3.set pn (pn.mx +. (k *. d.mx)) (pn.my +. (k *. d.my)) (pn.mz +. (k *. d.mz));
-                  Vec3.normalize_m pn
-                end;
                 pn
           in
           if not fr.top_set then begin
@@ -382,9 +397,8 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
     let kr = kr *. Finish.tint m mk pc.r and kg = kg *. Finish.tint m mk pc.g and kb = kb *. Finish.tint m mk pc.b in
     if kr = 0. && kg = 0. && kb = 0. then Color.acc_set out 0. 0. 0.
     else begin
-      let m = 2. *. cos_i in
       let rd = fr.rd and rc = fr.rc in
-      Vec3.set rd (d.mx +. (m *. n.mx)) (d.my +. (m *. n.my)) (d.mz +. (m *. n.mz));
+      mirror d n fr.n0 rd;
       fr.k.child <- fr.k.refl *. w;
       (* no_reflection objects are left out from here on *)
       trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
