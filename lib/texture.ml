@@ -3,12 +3,13 @@ type layer = {
   normal : Normal.t option;
   finish : Finish.t;
   tmap : tmap option;
+  uv_texture : bool;
 }
 
 and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool; average : bool }
 and t = layer list
 
-let layer pigment finish = { pigment; normal = None; finish; tmap = None }
+let layer pigment finish = { pigment; normal = None; finish; tmap = None; uv_texture = false }
 let plain pigment finish = [ layer pigment finish ]
 let default = plain Pigment.black Finish.default
 
@@ -100,6 +101,16 @@ let rec uv_layer ~turns l =
   }
 
 and uv ~turns t = List.map (uv_layer ~turns) t
+
+(* a texture-level uv_mapping is, to POV-Ray, a pattern of its own *)
+let uv_texture t = List.map (fun l -> { l with uv_texture = true }) (uv ~turns:true t)
+let patterned_texture t = List.exists (fun l -> l.tmap <> None || l.uv_texture) t
+
+let layering ~above ~below =
+  if below = [] then None
+  else if patterned_texture below then Some "cannot layer over a patterned texture"
+  else if patterned_texture above then Some "cannot layer a patterned texture over another"
+  else None
 
 let rec uses_uv t =
   List.exists

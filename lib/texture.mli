@@ -10,6 +10,9 @@ type layer = {
   normal : Normal.t option;
   finish : Finish.t;
   tmap : tmap option;  (** [Some]: a patterned layer; the other fields are unused *)
+  uv_texture : bool;
+      (** made by [texture { uv_mapping ... }], which POV-Ray counts a
+          patterned texture (see {!layering}) *)
 }
 
 and tmap = {
@@ -69,6 +72,17 @@ val uv : turns:bool -> t -> t
     of the texture taken at the surface's [<u, v, 0>]; the
     transformations written after it do not move them, but with
     [turns] they turn its normals (see {!Normal.uv}). *)
+
+val uv_texture : t -> t
+(** [texture { uv_mapping T }]: {!uv} with [turns], marked as patterned
+    for {!layering}. *)
+
+val layering : above:t -> below:t -> string option
+(** POV-Ray's refusal to layer textures where either side is patterned
+    (a texture_map, a block pattern, material_map, average, or a
+    texture-level uv_mapping): [Some message] ("cannot layer over a
+    patterned texture" is checked first, as POV-Ray does), [None] when
+    [above] may go on top of [below] (always, when [below] is empty). *)
 
 val uses_uv : t -> bool
 (** Some part of the texture is uv-mapped: the shader must set the

@@ -20,6 +20,12 @@ let nonzero_scale l (v : Vec3.t) =
 let area_field f (o : Sdl.obj) = match o.shape with
   | Sdl.Light ({ area = Some a; _ } as l) -> { o with shape = Sdl.Light { l with area = Some (f a) } }
   | _ -> o
+(* [above] on top of [below], where POV-Ray allows it *)
+let layered loc ~above ~below =
+  match Texture.layering ~above ~below with
+  | Some m -> Diag.error loc "%s" m
+  | None -> above @ below
+
 let top_layer f (t : Texture.t) = match t with top :: rest -> f top :: rest | [] -> []
 let old_entry l1 v1 l2 v2 (c1, c2) = [ (fl l1 v1, c1); (fl l2 v2, c2) ]
 let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =

@@ -15,6 +15,10 @@ val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlr
 (** POV-Ray replaces zero scale components by 1, with a warning. *)
 val area_field : (Camlray.Light.area -> Camlray.Light.area) -> Sdl.obj -> Sdl.obj
 (** Change the area-light settings of a light (no effect before [area_light]). *)
+val layered : Loc.t -> above:Camlray.Texture.t -> below:Camlray.Texture.t -> Camlray.Texture.t
+(** [above] layered on top of [below]; a located error where POV-Ray
+    refuses it (see {!Camlray.Texture.layering}). *)
+
 val top_layer : (Camlray.Texture.layer -> Camlray.Texture.layer) -> Camlray.Texture.t -> Camlray.Texture.t
 (** Change the top layer of a texture. *)
 val old_entry :

@@ -198,12 +198,13 @@ items_rev:
 %public object_mod:
   | t = transformation { Sdl.transform_obj t }
   | INTERIOR_TEXTURE LBRACE t = texture_body RBRACE
-      { fun (o : Sdl.obj) -> { o with inner = Some (match o.inner with Some layers -> t @ layers | None -> t) } }
+      { fun (o : Sdl.obj) -> { o with inner = Some (match o.inner with
+          | Some layers -> Gram.layered (loc $loc) ~above:t ~below:layers | None -> t) } }
   | TEXTURE LBRACE t = texture_body RBRACE
       { fun (o : Sdl.obj) ->
           let t = if o.flags land Sdl.uv_mapping <> 0 then Texture.uv ~turns:false t else t in
           { o with texture = Some (match o.texture with
-          | Some layers -> t @ layers | None -> t) } }
+          | Some layers -> Gram.layered (loc $loc) ~above:t ~below:layers | None -> t) } }
   | PIGMENT LBRACE p = pigment_edit RBRACE
       { fun (o : Sdl.obj) ->
           let uv = o.flags land Sdl.uv_mapping <> 0 in

@@ -105,7 +105,7 @@
   (* every pattern of the texture taken at the surface's uv (transformations
      written inside still apply; later ones do not move them, but turn its
      normals: measured) *)
-  | UV_MAPPING t = texture_body { Texture.uv ~turns:true t }
+  | UV_MAPPING t = texture_body { Texture.uv_texture t }
   | k = pattern_kind ms = list(tmap_mod)
       { [ List.fold_left (fun l f -> f l) (Texture.patterned (Pattern.make k) [||]) ms ] }
   | FACETS { facets_elsewhere $loc }
@@ -349,7 +349,8 @@
   | MATERIAL LBRACE m = material_body RBRACE
       { fun (o : Sdl.obj) ->
           let o = match fst m with
-            | Some t -> { o with texture = Some (match o.texture with Some l -> t @ l | None -> t) }
+            | Some t -> { o with texture = Some (match o.texture with
+                | Some l -> Gram.layered (loc $loc) ~above:t ~below:l | None -> t) }
             | None -> o in
           match snd m with Some i -> { o with interior = Some i } | None -> o }
 
@@ -361,7 +362,7 @@
 
 %public material_item:
   | TEXTURE LBRACE t = texture_body RBRACE
-      { fun (tex, i) -> (Some (match tex with Some l -> t @ l | None -> t), i) }
+      { fun (tex, i) -> (Some (match tex with Some l -> Gram.layered (loc $loc) ~above:t ~below:l | None -> t), i) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (tex, _) -> (tex, Some i) }
   | t = transformation { fun (tex, i) -> (Option.map (Texture.transform t) tex, i) }
 

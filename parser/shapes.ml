@@ -12,7 +12,7 @@ let shared : (Color.rgbft * Finish.t, Texture.t) Hashtbl.t = Hashtbl.create 16
 
 let share_texture (t : Texture.t) =
   match t with
-  | [ { pigment = Pigment.Solid c; normal = None; tmap = None; finish } ] -> (
+  | [ { pigment = Pigment.Solid c; normal = None; tmap = None; finish; uv_texture = false } ] -> (
       let k = (c, finish) in
       match Hashtbl.find_opt shared k with
       | Some t' -> t'

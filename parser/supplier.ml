@@ -794,8 +794,12 @@ and rhs t =
   let rec layers d =
     match d with
     | Decl.Texture below when t.pending = [] && (peek_past_ends t ~from:start).raw = Tok Parser.TEXTURE -> (
+        let at = (peek_past_ends t ~from:start).loc in
         match parse t Parser.Incremental.declare_rhs with
-        | Decl.Texture above -> layers (Decl.Texture (above @ below))
+        | Decl.Texture above -> (
+            match Camlray.Texture.layering ~above ~below with
+            | Some m -> fail t at "%s" m
+            | None -> layers (Decl.Texture (above @ below)))
         | other -> other)
     | _ -> d
   in

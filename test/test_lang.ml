@@ -227,6 +227,49 @@ let reflection_without_comma () =
   Alcotest.check pair "rgb, no comma" (0.2, 0.5) (refl "rgb 0.2 rgb 0.5");
   Alcotest.check pair "minus is arithmetic" (0.5, 0.5) (refl "0.7 -0.2")
 
+(* Layered textures where POV-Ray 3.7 allows them (a plain texture over
+   plain ones, also under an object's uv_mapping, and a texture-level
+   uv_mapping of a layered texture), and its two refusals (checked in
+   POV-Ray 3.7.0: "Cannot layer over a patterned texture", "Cannot layer
+   a patterned texture over another"), located at the texture on top *)
+let layering () =
+  let layers text =
+    match Parse.string text with
+    | Ok { Sdl.items = [ Sdl.Object o ]; _ } -> (
+        match o.texture with Some l -> List.length l | None -> 0)
+    | Ok _ -> Alcotest.fail "unexpected scene"
+    | Error d -> Alcotest.fail (Diag.to_string d)
+  in
+  let refused text =
+    match Parse.string text with
+    | Error d -> d
+    | Ok _ -> Alcotest.failf "accepted: %s" text
+  in
+  let plain = "texture { pigment { rgbt <1, 0, 0, 0.5> } }" in
+  let checker = "texture { checker texture { pigment { rgb 1 } } texture { pigment { rgb 0 } } }" in
+  let uv = "texture { uv_mapping pigment { checker rgb 0 rgb 1 } }" in
+  Alcotest.(check int) "plain over plain" 2 (layers ("sphere { 0, 1 " ^ plain ^ " " ^ plain ^ " }"));
+  Alcotest.(check int) "object uv_mapping" 2 (layers ("sphere { 0, 1 uv_mapping " ^ plain ^ " " ^ plain ^ " }"));
+  Alcotest.(check int) "uv_mapping of a layered texture" 2
+    (layers ("#declare T = " ^ plain ^ " " ^ plain ^ "\nsphere { 0, 1 texture { uv_mapping T } }"));
+  Alcotest.(check int) "uv-mapped pigment in a plain texture" 2
+    (layers ("sphere { 0, 1 texture { pigment { uv_mapping checker rgb 0 rgb 1 } } " ^ plain ^ " }"));
+  let over = "cannot layer over a patterned texture" and under = "cannot layer a patterned texture over another" in
+  (* the message, and the line of the texture on top *)
+  let check what msg line text =
+    let d = refused text in
+    Alcotest.(check string) (what ^ ": message") msg d.msg;
+    Alcotest.(check int) (what ^ ": line") line d.loc.start.pos_lnum
+  in
+  check "over a checker texture" over 2 ("sphere { 0, 1 " ^ checker ^ "\n" ^ plain ^ " }");
+  check "uv_mapping on top" under 2 ("sphere { 0, 1 " ^ plain ^ "\n" ^ uv ^ " }");
+  check "over uv_mapping" over 2 ("sphere { 0, 1 " ^ uv ^ "\n" ^ plain ^ " }");
+  check "both patterned" over 2 ("sphere { 0, 1 " ^ checker ^ "\n" ^ uv ^ " }");
+  check "in a material" under 2 ("sphere { 0, 1 material { " ^ plain ^ "\n" ^ uv ^ " } }");
+  check "interior_texture" under 2
+    ("sphere { 0, 1 " ^ plain ^ " interior_texture { pigment { rgb 0 } }\ninterior_texture { " ^ String.sub checker 10 (String.length checker - 10) ^ " }");
+  check "#declare" over 2 ("#declare T = " ^ checker ^ "\n" ^ plain ^ "\nsphere { 0, 1 texture { T } }")
+
 (* mesh2 items: vectors of three are read straight from the block's
    store, every other form through its value; both give the same mesh *)
 let mesh2_items () =
@@ -259,6 +302,7 @@ let tests =
       Alcotest.test_case "unsupported keyword named" `Quick
         (expect_error "rainbow { distance 3 }\n" "rainbow is not supported by camlray");
       Alcotest.test_case "mesh2 items of every form" `Quick mesh2_items;
+      Alcotest.test_case "layered textures: allowed and refused as POV-Ray" `Quick layering;
       Alcotest.test_case "a face index that is not an integer" `Quick
         (expect_error "mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <0,1,0> }\nface_indices { 1, <0, 1, 2.5> } }\n"
            "<string>:2:19: error: face index 2.5 is not an integer");
