@@ -112,7 +112,56 @@ let[@inline] total (m : Material.lobes) =
   done;
   !s
 
-let eval_into (m : Material.lobes) n wo wi (out : Color.acc) =
+(* Shading normals ([m.bumped]: the texture has a [normal]). The lobes
+   are those of a surface facing [m.ns] ({!Material.face}d), set on a
+   surface whose normal is [n]; a direction they send to the wrong side
+   of the surface (below it when reflected, above it when refracted) is
+   mirrored about the surface's plane back to the right side. Nothing
+   leaks through the surface, nothing is lost: with fc the lobes' f
+   times the cosine about [ns], and M the mirror about the plane, the
+   material's f cos about [n] at wi above the surface is
+   fc (wi) + fc (M wi), and the density of wi is p (wi) + p (M wi) (both
+   mirror images lead there). Over the hemisphere above [n] that is
+   what the lobes give over the whole sphere: a white Lambertian surface
+   reflects all the light it receives, however tilted [ns] is, and each
+   sample of it weighs exactly its albedo. The sides (entering, above or
+   below) are the surface's, [n]'s. Without [bumped], the code is what
+   it was before shading normals. *)
+
+(* [w] mirrored about the plane through the origin normal to [n], into
+   [out] *)
+let[@inline] mirror_into (out : Vec3.m) (w : Vec3.m) (n : Vec3.m) =
+  let k = -2. *. dot w n in
+  Vec3.set out (w.mx +. (k *. n.mx)) (w.my +. (k *. n.my)) (w.mz +. (k *. n.mz))
+
+(* [w] mirrored to [n]'s side of the plane ([up]) or to the other side,
+   where it is not already there *)
+let[@inline] fold (w : Vec3.m) (n : Vec3.m) up =
+  let c = dot w n in
+  if (up && c < 0.) || ((not up) && c > 0.) then mirror_into w w n
+
+(* The lobes' fc (wi) + fc (mw), per channel, into [out] *)
+let fc_into (m : Material.lobes) ns wo wi mw (out : Color.acc) =
+  let r = ref 0. and g = ref 0. and b = ref 0. in
+  for i = 0 to m.count - 1 do
+    let k = (lobe_k m i ns wo wi *. dot ns wi) +. (lobe_k m i ns wo mw *. dot ns mw) in
+    r := !r +. (k *. fget m.c (3 * i));
+    g := !g +. (k *. fget m.c ((3 * i) + 1));
+    b := !b +. (k *. fget m.c ((3 * i) + 2))
+  done;
+  Color.acc_set out !r !g !b
+
+let eval_bumped (m : Material.lobes) n wo wi (out : Color.acc) =
+  let ci = dot n wi in
+  if ci <= 0. then Color.acc_set out 0. 0. 0.
+  else begin
+    mirror_into m.mw wi n;
+    fc_into m m.ns wo wi m.mw out;
+    let k = 1. /. ci in
+    Color.acc_set out (k *. out.ar) (k *. out.ag) (k *. out.ab)
+  end
+
+let eval_plain (m : Material.lobes) n wo wi (out : Color.acc) =
   let r = ref 0. and g = ref 0. and b = ref 0. in
   for i = 0 to m.count - 1 do
     let k = lobe_k m i n wo wi in
@@ -130,6 +179,9 @@ let eval_into (m : Material.lobes) n wo wi (out : Color.acc) =
   done;
   Color.acc_set out !r !g !b
 
+let eval_into (m : Material.lobes) n wo wi out =
+  if m.bumped then eval_bumped m n wo wi out else eval_plain m n wo wi out
+
 let[@inline] pdf_total (m : Material.lobes) w n wo wi =
   if w <= 0. then 0.
   else begin
@@ -140,7 +192,15 @@ let[@inline] pdf_total (m : Material.lobes) w n wo wi =
     !acc
   end
 
-let[@inline] pdf_m m n wo wi = pdf_total m (total m) n wo wi
+let[@inline] pdf_bumped (m : Material.lobes) tot n wo wi =
+  if dot n wi <= 0. then 0.
+  else begin
+    mirror_into m.mw wi n;
+    pdf_total m tot m.ns wo wi +. pdf_total m tot m.ns wo m.mw
+  end
+
+let[@inline] pdf_m (m : Material.lobes) n wo wi =
+  if m.bumped then pdf_bumped m (total m) n wo wi else pdf_total m (total m) n wo wi
 
 let has_smooth_m (m : Material.lobes) =
   let r = ref false in
@@ -190,8 +250,9 @@ let[@inline] delta_into (out : sampled) k (a : Float.Array.t) i =
   out.p.pdf <- 0.;
   out.delta <- true
 
-(* [sample] into [out]; false where it gives [None] *)
-let[@inline] sample_into (m : Material.lobes) (n : Vec3.m) (wo : Vec3.m) u v w (out : sampled) =
+(* [sample] into [out], false where it gives [None]: without a shading
+   normal *)
+let[@inline] sample_plain (m : Material.lobes) (n : Vec3.m) (wo : Vec3.m) u v w (out : sampled) =
   let tot = total m in
   tot > 0.
   &&
@@ -240,31 +301,124 @@ let[@inline] sample_into (m : Material.lobes) (n : Vec3.m) (wo : Vec3.m) u v w (
     true
   end
 
+(* the mixture of non-delta lobes at the direction already in [out.wi],
+   with a shading normal *)
+let smooth_bumped (m : Material.lobes) tot n wo (out : sampled) =
+  let wi = out.wi in
+  dot n wi > 0.
+  &&
+  let mw = m.mw and ns = m.ns in
+  mirror_into mw wi n;
+  let pd = pdf_total m tot ns wo wi +. pdf_total m tot ns wo mw in
+  pd > 0.
+  && begin
+       let f = out.weight in
+       fc_into m ns wo wi mw f;
+       let k = 1. /. pd in
+       Color.acc_set f (k *. f.ar) (k *. f.ag) (k *. f.ab);
+       out.p.pdf <- pd;
+       out.delta <- false;
+       true
+     end
+
+(* [sample_plain]'s directions about the shading normal, folded back to
+   the side of the surface they belong on *)
+let[@inline] sample_bumped (m : Material.lobes) (n : Vec3.m) (wo : Vec3.m) u v w (out : sampled) =
+  let tot = total m in
+  tot > 0.
+  &&
+  let i = pick m tot u in
+  let p = fget m.w i /. tot in
+  let kind = Array.unsafe_get m.kind i and e = fget m.e i in
+  let wi = out.wi and ns = m.ns in
+  if kind = Material.k_lambert then begin
+    around_into wi ns.mx ns.my ns.mz (Float.sqrt (1. -. v)) (2. *. Float.pi *. w);
+    fold wi n true;
+    smooth_bumped m tot n wo out
+  end
+  else if kind = Material.k_phong then begin
+    let c = Float.pow v (1. /. (e +. 1.)) in
+    reflect_into wi wo ns.mx ns.my ns.mz;
+    around_into wi wi.mx wi.my wi.mz c (2. *. Float.pi *. w);
+    fold wi n true;
+    smooth_bumped m tot n wo out
+  end
+  else if kind = Material.k_blinn || kind = Material.k_glossy then begin
+    let c = Float.pow v (1. /. (e +. 1.)) in
+    around_into wi ns.mx ns.my ns.mz c (2. *. Float.pi *. w);
+    (* a half vector facing away from wo is not counted by the density:
+       dropped (it would reflect wo below the surface without bumps) *)
+    dot wo wi > 0.
+    && begin
+         reflect_into wi wo wi.mx wi.my wi.mz;
+         fold wi n true;
+         smooth_bumped m tot n wo out
+       end
+  end
+  else if kind = Material.k_mirror then begin
+    reflect_into wi wo ns.mx ns.my ns.mz;
+    fold wi n true;
+    delta_into out (1. /. p) m.c i;
+    true
+  end
+  else begin
+    (* glass *)
+    let ci = dot wo ns in
+    let fr = fresnel e ci in
+    if v < fr then begin
+      reflect_into wi wo ns.mx ns.my ns.mz;
+      fold wi n true;
+      delta_into out (1. /. p) m.c2 i
+    end
+    else begin
+      if e = 1. then Vec3.set wi (-.wo.mx) (-.wo.my) (-.wo.mz)
+      else begin
+        let s2 = e *. e *. (1. -. (ci *. ci)) in
+        let ct = Float.sqrt (fmax 0. (1. -. s2)) in
+        let k = (e *. ci) -. ct in
+        Vec3.set wi ((-.e *. wo.mx) +. (k *. ns.mx)) ((-.e *. wo.my) +. (k *. ns.my)) ((-.e *. wo.mz) +. (k *. ns.mz));
+        Vec3.normalize_m wi
+      end;
+      fold wi n false;
+      delta_into out (1. /. p) m.c i
+    end;
+    true
+  end
+
+(* [sample] into [out]; false where it gives [None] *)
+let[@inline] sample_into (m : Material.lobes) n wo u v w out =
+  if m.bumped then sample_bumped m n wo u v w out else sample_plain m n wo u v w out
+
 (* The vector forms, on a material as a value: the same code, through
    the in-place one *)
 
-let with_vectors (m : Material.t) (n : Vec3.t) (wo : Vec3.t) (wi : Vec3.t) f =
+let with_vectors ?ns (m : Material.t) (n : Vec3.t) (wo : Vec3.t) (wi : Vec3.t) f =
   let l = Material.lobes () and nm = Vec3.m () and om = Vec3.m () and im = Vec3.m () in
   Material.load l m;
+  Option.iter
+    (fun ns ->
+      Vec3.load l.ns ns;
+      l.bumped <- true)
+    ns;
   Vec3.load nm n;
   Vec3.load om wo;
   Vec3.load im wi;
   f l nm om im
 
-let eval m ~n ~wo ~wi =
-  with_vectors m n wo wi (fun l n wo wi ->
+let eval ?ns m ~n ~wo ~wi =
+  with_vectors ?ns m n wo wi (fun l n wo wi ->
       let out = Color.acc 0. in
       eval_into l n wo wi out;
       Color.of_acc out)
 
-let pdf m ~n ~wo ~wi = with_vectors m n wo wi pdf_m
+let pdf ?ns m ~n ~wo ~wi = with_vectors ?ns m n wo wi pdf_m
 
 let has_smooth (m : Material.t) = Array.exists (fun l -> not (Material.is_delta l)) m.lobes
 
 type sample = { wi : Vec3.t; weight : Color.t; pdf : float; delta : bool }
 
-let sample (m : Material.t) ~n ~wo u v w =
-  with_vectors m n wo Vec3.zero (fun l n wo _ ->
+let sample ?ns (m : Material.t) ~n ~wo u v w =
+  with_vectors ?ns m n wo Vec3.zero (fun l n wo _ ->
       let out = sampled () in
       if sample_into l n wo u v w out then
         Some { wi = Vec3.of_m out.wi; weight = Color.of_acc out.weight; pdf = out.p.pdf; delta = out.delta }

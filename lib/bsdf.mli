@@ -1,8 +1,19 @@
 (** Scattering by a {!Material.t}: evaluation, sampling and densities of
-    its lobes. Conventions: [n] is the unit shading normal on the side of
-    [wo]; [wo] points away from the surface towards the viewer; [wi] points
-    away from the surface towards where light comes from. Densities are
-    per unit solid angle. *)
+    its lobes. Conventions: [n] is the surface's unit normal on the side
+    of [wo]; [wo] points away from the surface towards the viewer; [wi]
+    points away from the surface towards where light comes from. Densities
+    are per unit solid angle.
+
+    Shading normals: given one ([?ns], or [bumped] lobes), the lobes are
+    evaluated and sampled about it, while [n] decides the sides. A
+    direction the lobes send to the wrong side of the surface (reflected
+    below it, refracted above it) is mirrored about the surface's plane
+    to the right side, and f and the density count both mirror images:
+    nothing leaks through the surface, and f cos integrates over the
+    hemisphere above [n] to what the lobes give over the whole sphere (a
+    white Lambertian surface stays white, each of its samples weighing
+    its albedo). [ns] should be a unit vector facing [n]'s side and [wo]
+    ({!Material.face}). *)
 
 val basis : Vec3.t -> Vec3.t * Vec3.t
 (** Two unit tangents completing [n] to an orthonormal basis. *)
@@ -10,11 +21,13 @@ val basis : Vec3.t -> Vec3.t * Vec3.t
 val cosine_hemisphere : Vec3.t -> float -> float -> Vec3.t
 (** [cosine_hemisphere n u1 u2]: a direction with density cos / pi about [n]. *)
 
-val eval : Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> Color.t
-(** Sum of the non-delta lobes' f (without the cosine). *)
+val eval : ?ns:Vec3.t -> Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> Color.t
+(** Sum of the non-delta lobes' f (without the cosine, which is taken
+    about [n]; with [ns], 0 below the surface). *)
 
-val pdf : Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> float
-(** Density with which {!sample} picks [wi] through a non-delta lobe. *)
+val pdf : ?ns:Vec3.t -> Material.t -> n:Vec3.t -> wo:Vec3.t -> wi:Vec3.t -> float
+(** Density with which {!sample} picks [wi] through a non-delta lobe
+    (with [ns], 0 below the surface). *)
 
 val has_smooth : Material.t -> bool
 (** Some lobe is not a delta (light sampling can help). *)
@@ -26,7 +39,7 @@ type sample = {
   delta : bool;
 }
 
-val sample : Material.t -> n:Vec3.t -> wo:Vec3.t -> float -> float -> float -> sample option
+val sample : ?ns:Vec3.t -> Material.t -> n:Vec3.t -> wo:Vec3.t -> float -> float -> float -> sample option
 (** [sample m ~n ~wo u v w]: choose a lobe with [u] (in proportion to
     {!Material.weight}), a direction with [v], [w]. Non-delta lobes are
     combined (the weight is the sum of their f over the mixture density),
@@ -43,7 +56,8 @@ val fresnel : float -> float -> float
     The same functions on a {!Material.lobes} with vectors in
     {!Vec3.m} and results written into the caller's records: what the
     path tracer calls at every vertex, allocating nothing. The forms above
-    go through these. *)
+    go through these. The lobes' shading normal is [m.ns] when
+    [m.bumped]. *)
 
 val eval_into : Material.lobes -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
 (** [eval_into m n wo wi out]: {!eval}. *)

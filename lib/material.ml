@@ -63,12 +63,16 @@ type lobes = {
   e : Float.Array.t;  (** exponent, or glass's eta *)
   em : Color.acc;  (** emission *)
   pig : Pigment.out;  (** the pigment at the point *)
+  mutable bumped : bool;  (** the lobes are seen about [ns], not the surface's normal *)
+  ns : Vec3.m;  (** the shading normal, when [bumped] *)
+  mw : Vec3.m;  (** {!Bsdf}'s: a direction mirrored about the surface *)
 }
 
 let lobes () =
   { count = 0; kind = Array.make max_lobes 0; w = Float.Array.make max_lobes 0.;
     c = Float.Array.make (3 * max_lobes) 0.; c2 = Float.Array.make (3 * max_lobes) 0.;
-    e = Float.Array.make max_lobes 0.; em = Color.acc 0.; pig = Pigment.out () }
+    e = Float.Array.make max_lobes 0.; em = Color.acc 0.; pig = Pigment.out (); bumped = false;
+    ns = Vec3.m (); mw = Vec3.m () }
 
 let fset = Float.Array.unsafe_set
 let fget = Float.Array.unsafe_get
@@ -101,6 +105,7 @@ let load_lobe m (l : lobe) =
 
 let load m (t : t) =
   m.count <- 0;
+  m.bumped <- false;
   Array.iter (load_lobe m) t.lobes;
   Color.acc_set m.em t.emission.r t.emission.g t.emission.b
 
@@ -127,78 +132,119 @@ let rec resolve (tex : Texture.t) (p : Vec3.m) =
       resolve (if pk.n = 2 && pk.w.k1 > pk.w.k0 then pk.t1 else pk.t0) p
   | _ -> tex
 
-(* The material at [p] into [m], as [of_texture] makes it (the same
-   arithmetic); inlined into its two callers, so that [cos_o] is not
-   boxed *)
-let[@inline] fill m (tex : Texture.t) (inter : Interior.t) (p : Vec3.m) cos_o entering =
+(* The material of a layer at [p] into [m], as [of_texture] makes it
+   (the same arithmetic); inlined where it is called, so that [cos_o]
+   is not boxed *)
+let[@inline] fill m (layer : Texture.layer) (inter : Interior.t) (p : Vec3.m) cos_o entering =
   m.count <- 0;
-  match resolve tex p with
-  | [] -> Color.acc_set m.em 0. 0. 0.
-  | (layer : Texture.layer) :: _ ->
-      let f = layer.finish in
-      let pig = m.pig in
-      Pigment.into layer.pigment p pig;
-      let tr = clamp01 (pig.filter +. pig.transmit) in
-      let alpha = 1. -. tr in
-      let refracts = tr > 0. && inter.ior <> 1. in
-      Color.acc_set m.em (alpha *. (pig.r *. f.emission.r)) (alpha *. (pig.g *. f.emission.g))
-        (alpha *. (pig.b *. f.emission.b));
-      (* the opaque part *)
-      let d = alpha *. f.diffuse in
-      let lr = d *. pig.r and lg = d *. pig.g and lb = d *. pig.b in
-      push m k_lambert lr lg lb 0. 0. 0. 0.;
-      (* a matte surface (most hits) has no other lobe of positive weight *)
-      if tr > 0. || not (plain_diffuse f) then begin
-        let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
-        (* [reflectivity], tinted for metals ([tint 1.]), scaled by alpha
-           where the glass part's Fresnel replaces it *)
-        let r = f.reflection in
-        let t = if r.fresnel then Finish.fresnel inter.ior cos_o else Float.pow (fmax 0. (1. -. cos_o)) r.falloff in
-        let kx = r.rmin.r +. (t *. (r.rmax.r +. (-1. *. r.rmin.r)))
-        and ky = r.rmin.g +. (t *. (r.rmax.g +. (-1. *. r.rmin.g)))
-        and kz = r.rmin.b +. (t *. (r.rmax.b +. (-1. *. r.rmin.b))) in
-        let mk = if metal then Finish.metallic_k 1. cos_o else 0. in
-        let kx = if metal then kx *. (1. +. (mk *. (pig.r -. 1.))) else kx
-        and ky = if metal then ky *. (1. +. (mk *. (pig.g -. 1.))) else ky
-        and kz = if metal then kz *. (1. +. (mk *. (pig.b -. 1.))) else kz in
-        let kx = if refracts then alpha *. kx else kx
-        and ky = if refracts then alpha *. ky else ky
-        and kz = if refracts then alpha *. kz else kz in
-        (* [tint f.metallic cos_o pig] for the highlights *)
-        let plainh = f.metallic = 0. in
-        let hk = if plainh then 0. else Finish.metallic_k f.metallic cos_o in
-        let hr = if plainh then 1. else 1. +. (hk *. (pig.r -. 1.))
-        and hg = if plainh then 1. else 1. +. (hk *. (pig.g -. 1.))
-        and hb = if plainh then 1. else 1. +. (hk *. (pig.b -. 1.)) in
-        if metal && f.specular > 0. && not (kx = 0. && ky = 0. && kz = 0.) then
-          (* a rough metal: the highlight is the blurred reflection *)
-          push m k_glossy kx ky kz 0. 0. 0. (1. /. f.roughness)
-        else begin
-          push m k_mirror kx ky kz 0. 0. 0. 0.;
-          let s = f.specular and e = 1. /. f.roughness in
-          let br = s *. hr and bg = s *. hg and bb = s *. hb in
-          push m k_blinn br bg bb 0. 0. 0. e
-        end;
-        let ph = f.phong and e = f.phong_size in
-        let pr = ph *. hr and pg = ph *. hg and pb = ph *. hb in
-        push m k_phong pr pg pb 0. 0. 0. e;
-        (* the transparent part *)
-        if tr > 0. then begin
-          let tr_r = (pig.filter *. pig.r) +. pig.transmit
-          and tr_g = (pig.filter *. pig.g) +. pig.transmit
-          and tr_b = (pig.filter *. pig.b) +. pig.transmit in
-          let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
-          push m k_glass tr_r tr_g tr_b tr tr tr eta
-        end
-      end
+  let f = layer.finish in
+  let pig = m.pig in
+  Pigment.into layer.pigment p pig;
+  let tr = clamp01 (pig.filter +. pig.transmit) in
+  let alpha = 1. -. tr in
+  let refracts = tr > 0. && inter.ior <> 1. in
+  Color.acc_set m.em (alpha *. (pig.r *. f.emission.r)) (alpha *. (pig.g *. f.emission.g))
+    (alpha *. (pig.b *. f.emission.b));
+  (* the opaque part *)
+  let d = alpha *. f.diffuse in
+  let lr = d *. pig.r and lg = d *. pig.g and lb = d *. pig.b in
+  push m k_lambert lr lg lb 0. 0. 0. 0.;
+  (* a matte surface (most hits) has no other lobe of positive weight *)
+  if tr > 0. || not (plain_diffuse f) then begin
+    let metal = f.metallic > 0. || f.reflection.rmetallic > 0. in
+    (* [reflectivity], tinted for metals ([tint 1.]), scaled by alpha
+       where the glass part's Fresnel replaces it *)
+    let r = f.reflection in
+    let t = if r.fresnel then Finish.fresnel inter.ior cos_o else Float.pow (fmax 0. (1. -. cos_o)) r.falloff in
+    let kx = r.rmin.r +. (t *. (r.rmax.r +. (-1. *. r.rmin.r)))
+    and ky = r.rmin.g +. (t *. (r.rmax.g +. (-1. *. r.rmin.g)))
+    and kz = r.rmin.b +. (t *. (r.rmax.b +. (-1. *. r.rmin.b))) in
+    let mk = if metal then Finish.metallic_k 1. cos_o else 0. in
+    let kx = if metal then kx *. (1. +. (mk *. (pig.r -. 1.))) else kx
+    and ky = if metal then ky *. (1. +. (mk *. (pig.g -. 1.))) else ky
+    and kz = if metal then kz *. (1. +. (mk *. (pig.b -. 1.))) else kz in
+    let kx = if refracts then alpha *. kx else kx
+    and ky = if refracts then alpha *. ky else ky
+    and kz = if refracts then alpha *. kz else kz in
+    (* [tint f.metallic cos_o pig] for the highlights *)
+    let plainh = f.metallic = 0. in
+    let hk = if plainh then 0. else Finish.metallic_k f.metallic cos_o in
+    let hr = if plainh then 1. else 1. +. (hk *. (pig.r -. 1.))
+    and hg = if plainh then 1. else 1. +. (hk *. (pig.g -. 1.))
+    and hb = if plainh then 1. else 1. +. (hk *. (pig.b -. 1.)) in
+    if metal && f.specular > 0. && not (kx = 0. && ky = 0. && kz = 0.) then
+      (* a rough metal: the highlight is the blurred reflection *)
+      push m k_glossy kx ky kz 0. 0. 0. (1. /. f.roughness)
+    else begin
+      push m k_mirror kx ky kz 0. 0. 0. 0.;
+      let s = f.specular and e = 1. /. f.roughness in
+      let br = s *. hr and bg = s *. hg and bb = s *. hb in
+      push m k_blinn br bg bb 0. 0. 0. e
+    end;
+    let ph = f.phong and e = f.phong_size in
+    let pr = ph *. hr and pg = ph *. hg and pb = ph *. hb in
+    push m k_phong pr pg pb 0. 0. 0. e;
+    (* the transparent part *)
+    if tr > 0. then begin
+      let tr_r = (pig.filter *. pig.r) +. pig.transmit
+      and tr_g = (pig.filter *. pig.g) +. pig.transmit
+      and tr_b = (pig.filter *. pig.b) +. pig.transmit in
+      let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
+      push m k_glass tr_r tr_g tr_b tr tr tr eta
+    end
+  end
 
+(* The least cosine a shading normal keeps with the surface's normal and
+   with the viewer *)
+let face_min = 0.01
+
+(* The shading normal [ns] turned toward the half vector h of [n] and
+   [wo] (h.n = h.wo = |n + wo| / 2, at least 0.707), just far enough
+   along the chord that its cosines with both are at least [face_min]:
+   unchanged where they already are. *)
+let face (ns : Vec3.m) (n : Vec3.m) (wo : Vec3.m) =
+  let a = Vec3.dot_m ns n and b = Vec3.dot_m ns wo in
+  if a < face_min || b < face_min then begin
+    let hx = n.mx +. wo.mx and hy = n.my +. wo.my and hz = n.mz +. wo.mz in
+    let l = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+    let c = 0.5 *. l in
+    let ta = if a < face_min then (face_min -. a) /. (c -. a) else 0.
+    and tb = if b < face_min then (face_min -. b) /. (c -. b) else 0. in
+    let t = fmin 1. (fmax ta tb) in
+    let s = 1. -. t and k = t /. l in
+    Vec3.set ns ((s *. ns.mx) +. (k *. hx)) ((s *. ns.my) +. (k *. hy)) ((s *. ns.mz) +. (k *. hz));
+    Vec3.normalize_m ns
+  end
+
+(* The shading normal is the normal of the layer the lobes come from:
+   POV-Ray lights each layer of a layered texture with that layer's own
+   normal, and the lobes here are the top layer's (of the texture_map
+   entry [resolve] picks), so its pigment, finish and normal stay
+   together. *)
 let into m tex inter (p : Vec3.m) (n : Vec3.m) (wo : Vec3.m) ~entering =
-  fill m tex inter p ((n.mx *. wo.mx) +. (n.my *. wo.my) +. (n.mz *. wo.mz)) entering
+  match resolve tex p with
+  | [] ->
+      m.count <- 0;
+      m.bumped <- false;
+      Color.acc_set m.em 0. 0. 0.
+  | (layer : Texture.layer) :: _ -> (
+      match layer.normal with
+      | None ->
+          m.bumped <- false;
+          fill m layer inter p ((n.mx *. wo.mx) +. (n.my *. wo.my) +. (n.mz *. wo.mz)) entering
+      | Some nm ->
+          let ns = m.ns in
+          Normal.perturb_m nm p n ns;
+          face ns n wo;
+          m.bumped <- true;
+          fill m layer inter p ((ns.mx *. wo.mx) +. (ns.my *. wo.my) +. (ns.mz *. wo.mz)) entering)
 
 let of_lobes m = { lobes = Array.init m.count (lobe m); emission = Color.of_acc m.em }
 
 let of_texture (tex : Texture.t) (inter : Interior.t) (p : Vec3.t) ~cos_o ~entering =
   let m = lobes () and pm = Vec3.m () in
   Vec3.load pm p;
-  fill m tex inter pm cos_o entering;
+  (match resolve tex pm with
+  | [] -> Color.acc_set m.em 0. 0. 0.
+  | layer :: _ -> fill m layer inter pm cos_o entering);
   of_lobes m

@@ -64,6 +64,11 @@ type lobes = {
   e : Float.Array.t;  (** the exponent, or Glass's [eta] *)
   em : Color.acc;  (** the emission *)
   pig : Pigment.out;  (** the pigment at the point, as [into] read it *)
+  mutable bumped : bool;
+      (** the layer has a [normal]: the lobes are seen about the shading
+          normal [ns] instead of the surface's (see {!Bsdf}) *)
+  ns : Vec3.m;  (** the unit shading normal, when [bumped] *)
+  mw : Vec3.m;  (** scratch for {!Bsdf}: a direction mirrored about the surface *)
 }
 
 val lobes : unit -> lobes
@@ -71,9 +76,27 @@ val lobes : unit -> lobes
 
 val into : lobes -> Texture.t -> Interior.t -> Vec3.m -> Vec3.m -> Vec3.m -> entering:bool -> unit
 (** [into m tex inter p n wo ~entering]: {!of_texture} at [p] with [cos_o]
-    the dot product of [n] and [wo], written into [m] (the same values). *)
+    the dot product of [n] and [wo], written into [m] (the same values);
+    [n] is the surface's unit normal on the side of [wo]. Where the layer
+    the lobes come from (the top one, of the texture_map entry picked)
+    has a [normal], [m.ns] is [n] perturbed by it ({!Normal.perturb_m})
+    and then {!face}d, [cos_o] is taken with it and [m.bumped] is set;
+    else [m.bumped] is [false] and [m.ns] is not touched. Patterns read
+    the uv and surface normal set before ({!Pattern.set_uv},
+    {!Pattern.set_normal}). *)
+
+val face_min : float
+(** 0.01: the least cosine {!face} leaves. *)
+
+val face : Vec3.m -> Vec3.m -> Vec3.m -> unit
+(** [face ns n wo]: the unit shading normal [ns] made to face both the
+    viewer and the side of the surface it is on, in place: [n] is the
+    surface's unit normal and [wo] the unit direction to the viewer, with
+    [n.wo >= 0]. Afterwards [ns] is a unit vector with [ns.n >= face_min]
+    and [ns.wo >= face_min]: unchanged where it already was, else moved
+    toward the half vector of [n] and [wo] just far enough. *)
 
 val load : lobes -> t -> unit
-(** A material's lobes, in order, into [m]. *)
+(** A material's lobes, in order, into [m] (not bumped). *)
 
 val of_lobes : lobes -> t

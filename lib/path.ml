@@ -247,6 +247,8 @@ let li_into t sampler ~max_depth (st : state) =
         Object.uv_into obj p h st.uv;
         Pattern.set_uv st.uv.mx st.uv.my
       end;
+      (* a texture's normal makes [m]'s shading normal: the lobes are
+         seen about it here and in [direct], [n] deciding the sides *)
       Material.into m (if entering then obj.texture else obj.back) obj.interior p n wo ~entering;
       if not (Color.acc_is_black m.em) then begin
         let w =

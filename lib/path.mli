@@ -1,6 +1,7 @@
 (** Monte Carlo path tracing on the same scenes: an unbiased estimator of
     the radiance reaching the camera. POV-Ray textures become physical
-    materials ({!Material}); light sources and emissive spheres are sampled
+    materials ({!Material}), their [normal]s shading normals ({!Bsdf});
+    light sources and emissive spheres are sampled
     directly ({!Emitter}) and, for emitters that paths can also hit
     (emissive objects, the background), light sampling and BSDF sampling
     are combined by multiple importance sampling with the power heuristic.
