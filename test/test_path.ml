@@ -31,6 +31,18 @@ let all_within what img expected tol =
         [ r; g; b ])
     ()
 
+(* root mean square difference of two images' channels *)
+let rmse a b =
+  let n = float (Image.width a * Image.height a * 3) in
+  let s =
+    fold a
+      (fun acc x y (r, g, bl) ->
+        let r', g', b' = Helpers.pixel b x y in
+        acc +. ((r -. r') ** 2.) +. ((g -. g') ** 2.) +. ((bl -. b') ** 2.))
+      0.
+  in
+  Float.sqrt (s /. n)
+
 let header = "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n"
 
 (* Camera outside a unit sphere that fills the middle of the image. *)
@@ -80,6 +92,106 @@ let enclosure a le expected tol () =
   in
   let img = render ~w:8 ~h:8 ~spp:64 ~depth:256 text in
   Alcotest.(check (float tol)) "radiance" expected (mean img)
+
+(* Texture normals in mc mode: a strong [normal] tilts the shading
+   normal far from the surface's, and directions sent below the surface
+   are mirrored back up, so a white surface still reflects all it
+   receives. A convex sphere of albedo 0.5 under a sky of radiance 1
+   reflects once: 0.5 wherever it is. With BSDF sampling alone every
+   sample weighs exactly the albedo, so every pixel inside the disc is
+   0.5 (a sample dropped or lost below the surface would darken it). *)
+let bumpy_finish a = Printf.sprintf "diffuse %g } normal { bumps 3 scale 0.05" a
+
+let bumpy_furnace () =
+  let inside img f =
+    for y = 4 to 7 do
+      for x = 4 to 7 do
+        let r, g, b = Helpers.pixel img x y in
+        f x y r;
+        f x y g;
+        f x y b
+      done
+    done
+  in
+  let img = render ~nee:false ~w:12 ~h:12 ~spp:16 ~depth:16 (furnace (bumpy_finish 0.5)) in
+  inside img (fun x y v ->
+      if Float.abs (v -. 0.5) > 1e-9 then Alcotest.failf "BSDF sampling: pixel (%d,%d) is %.12g, expected 0.5" x y v);
+  (* albedo 1: the sky, everywhere *)
+  all_within "albedo 1, bumps" (render ~nee:false ~w:12 ~h:12 ~spp:16 ~depth:16 (furnace (bumpy_finish 1.))) 1. 1e-9;
+  (* light and BSDF sampling combined (the sky sampled about the
+     surface's normal, the material about the shading one): the same
+     mean, with noise (4 standard deviations) *)
+  let img = render ~w:12 ~h:12 ~spp:256 ~depth:16 (furnace (bumpy_finish 0.5)) in
+  let s = ref 0. in
+  inside img (fun _ _ v -> s := !s +. v);
+  Alcotest.(check (float 0.01)) "NEE + MIS: mean inside the disc" 0.5 (!s /. 48.)
+
+(* The enclosure of albedo 0.5 emitting 0.5 (L = 1) with a bumpy inside:
+   every bounce keeps half, at any depth *)
+let bumpy_enclosure () =
+  let text =
+    header
+    ^ "camera { location <0,0,0> look_at z }
+       sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 diffuse 0.5 emission 0.5 }
+      \  normal { bumps 3 scale 0.05 } }
+"
+  in
+  let img = render ~w:8 ~h:8 ~spp:64 ~depth:256 text in
+  Alcotest.(check (float 0.02)) "radiance" 1. (mean img)
+
+(* The pixel integral of a whitted render: [k] x [k] samples per pixel,
+   box-filtered *)
+let whitted_boxed ~w ~h ~k text =
+  let big = Helpers.render_whitted ~width:(k * w) ~height:(k * h) text in
+  let out = Image.create w h in
+  let n = float (k * k) in
+  for y = 0 to h - 1 do
+    for x = 0 to w - 1 do
+      let r = ref 0. and g = ref 0. and b = ref 0. in
+      for j = 0 to k - 1 do
+        for i = 0 to k - 1 do
+          let r', g', b' = Helpers.pixel big ((k * x) + i) ((k * y) + j) in
+          r := !r +. (r' /. n);
+          g := !g +. (g' /. n);
+          b := !b +. (b' /. n)
+        done
+      done;
+      Image.set out x y !r !g !b
+    done
+  done;
+  out
+
+(* PSNR of linear images, peak 1 *)
+let psnr a b =
+  let e = rmse a b in
+  20. *. Float.log10 (1. /. e)
+
+(* A bumpy diffuse plane seen from above under one point light, black
+   sky, ambient 0: light reaches each point once, a c (ns . l) in both
+   modes (the lights are high, so no shading normal here turns from
+   the light or the eye, where the modes' rules differ). mc must match
+   whitted's picture of the bumps, not the smooth plane's. *)
+let bumpy_plane normal =
+  header
+  ^ "camera { location <0, 3, -1> look_at 0 angle 40 }
+     light_source { <2, 5, -2> color rgb <1, 0.9, 0.8> }
+     light_source { <-3, 4, 1> color rgb 0.4 }
+     plane { y, 0 pigment { rgb <0.9, 0.7, 0.5> } finish { ambient 0 diffuse 0.8 } " ^ normal ^ " }
+"
+
+let bumps_vs_whitted () =
+  let w = 32 and h = 24 in
+  let text = bumpy_plane "normal { bumps 0.6 scale 0.4 }" in
+  let mc = render ~w ~h ~spp:64 ~depth:4 text and wh = whitted_boxed ~w ~h ~k:8 text in
+  let smooth = render ~w ~h ~spp:64 ~depth:4 (bumpy_plane "") in
+  let m1 = mean mc and m2 = mean wh and m0 = mean smooth in
+  let p = psnr mc wh and p0 = psnr smooth wh in
+  if Sys.getenv_opt "MC_VERBOSE" <> None then
+    Printf.printf "means: mc %g whitted %g smooth %g; PSNR mc %g smooth %g\n" m1 m2 m0 p p0;
+  if Float.abs (m1 -. m2) > 0.01 *. m2 then Alcotest.failf "image means: mc %g, whitted %g" m1 m2;
+  if p < 40. then Alcotest.failf "mc against whitted: PSNR %.1f dB (at least 40)" p;
+  (* the smooth plane is far from both *)
+  if p0 > 30. then Alcotest.failf "smooth plane against bumpy whitted: PSNR %.1f dB (at most 30)" p0
 
 (* One point light, one diffuse sphere, ambient 0, black background: one
    bounce only, so both modes compute a c cos(theta) exactly; a spotlight
@@ -144,17 +256,6 @@ let nee_vs_bsdf () =
   let b = render ~nee:false ~seed:2 ~w:16 ~h:16 ~spp:1024 ~depth:8 small_emitter in
   let ma = mean a and mb = mean b in
   if Float.abs (ma -. mb) > 0.02 *. ma then Alcotest.failf "NEE+MIS %g vs BSDF only %g" ma mb
-
-let rmse a b =
-  let n = float (Image.width a * Image.height a * 3) in
-  let s =
-    fold a
-      (fun acc x y (r, g, bl) ->
-        let r', g', b' = Helpers.pixel b x y in
-        acc +. ((r -. r') ** 2.) +. ((g -. g') ** 2.) +. ((bl -. b') ** 2.))
-      0.
-  in
-  Float.sqrt (s /. n)
 
 (* Only bounded estimators here (diffuse surfaces, a sky and a sphere
    light), so that the sample RMSE is a stable measure; spp values that are
@@ -407,7 +508,26 @@ let allocation () =
   in
   let img, words = words_per_sample s in
   Alcotest.(check bool) "lit by the sky" true (mean img > 0.05);
-  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with patterns and a sky (at most 0.1)" words
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with patterns and a sky (at most 0.1)" words;
+  (* texture normals: shading normals on matte, phong, metal and glass
+     surfaces, a normal_map and a uv-mapped normal *)
+  let s =
+    Helpers.compile_string
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       light_source { <-4, 6, -5>, rgb 1 }\n\
+       background { rgb <0.4, 0.5, 0.7> }\n\
+       plane { y, 0 pigment { rgb 0.8 } normal { bumps 0.8 scale 0.2 } }\n\
+       sphere { <-1, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } normal { ripples 1 scale 0.3 } finish { phong 0.5 } }\n\
+       sphere { <1.2, 0.8, 0.5>, 0.8 pigment { rgb 0.9 } normal { dents 2 scale 0.2 }\n\
+      \  finish { reflection 0.6 metallic specular 0.5 } }\n\
+       sphere { <0, 0.5, -1.5>, 0.5 pigment { rgbf <1, 1, 1, 0.9> } normal { bumps 0.5 scale 0.1 } interior { ior 1.5 } }\n\
+       sphere { <2, 0.5, -1>, 0.5 pigment { rgb 0.7 }\n\
+      \  normal { gradient x normal_map { [0 bumps 0.5 scale 0.1] [1 wrinkles 1 scale 0.2] } } }\n\
+       sphere { <-2, 0.5, -1>, 0.5 uv_mapping pigment { rgb 0.7 } normal { quilted 1 scale 0.1 } }"
+  in
+  let img, words = words_per_sample s in
+  Alcotest.(check bool) "lit, with normals" true (mean img > 0.05);
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with texture normals (at most 0.1)" words
 
 let tests =
   ( "path",
@@ -418,6 +538,9 @@ let tests =
       Alcotest.test_case "enclosure a=0.5 Le=0.5 -> 1" `Quick (enclosure 0.5 0.5 1. 0.02);
       Alcotest.test_case "enclosure a=0.9 Le=0.5 -> 5" `Quick (enclosure 0.9 0.5 5. 0.15);
       Alcotest.test_case "one light, one diffuse sphere: mc = whitted" `Quick vs_whitted;
+      Alcotest.test_case "bumpy furnace: a normal loses no light (0.5 -> 0.5, 1 -> 1)" `Quick bumpy_furnace;
+      Alcotest.test_case "bumpy enclosure a=0.5 Le=0.5 -> 1" `Quick bumpy_enclosure;
+      Alcotest.test_case "bumpy plane, point lights: mc = whitted, not the smooth plane" `Quick bumps_vs_whitted;
       Alcotest.test_case "NEE+MIS and BSDF-only sampling agree" `Quick nee_vs_bsdf;
       Alcotest.test_case "RMSE falls as spp^-1/2" `Quick convergence;
       Alcotest.test_case "1 and 2 domains: identical images" `Quick domains;
@@ -426,5 +549,5 @@ let tests =
     Alcotest.test_case "area light from a scene: far field = point light" `Quick area_light_from_scene;
     Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
-      Alcotest.test_case "a sample allocates nothing (point and area lights)" `Quick allocation;
+      Alcotest.test_case "a sample allocates nothing (point and area lights, normals)" `Quick allocation;
     ] )
