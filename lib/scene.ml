@@ -26,6 +26,7 @@ type t = {
   background : Color.t;
   sky : Sky.t;
   fog : Fog.t list;
+  rainbows : Rainbow.t list;
   atmosphere : Interior.t list;
   settings : settings;
   accel : accel;
@@ -140,9 +141,9 @@ let accelerate ?par objects =
 
 let atmosphere = function [] -> [] | media -> [ { Interior.default with hollow = true; media } ]
 
-let make ?(sky = Sky.none) ?(fog = []) ?(media = []) ~objects ~lights ~camera ~background ~settings () =
+let make ?(sky = Sky.none) ?(fog = []) ?(rainbows = []) ?(media = []) ~objects ~lights ~camera ~background ~settings () =
   let accel = accelerate objects in
-  { objects; lights; camera; background; sky; fog; atmosphere = atmosphere media; settings; accel; all = accel;
+  { objects; lights; camera; background; sky; fog; rainbows; atmosphere = atmosphere media; settings; accel; all = accel;
     views = { image = None; reflected = None } }
 
 let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }

@@ -23,6 +23,7 @@ type t = {
   background : Color.t;
   sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
   fog : Fog.t list;  (** in source order; whitted mode draws them *)
+  rainbows : Rainbow.t list;  (** in source order; whitted mode draws them *)
   atmosphere : Interior.t list;
       (** scene-level (atmospheric) media: [[]], or one hollow interior
           holding them in source order (see {!atmosphere}); whitted mode
@@ -62,7 +63,7 @@ val atmosphere : Media.t list -> Interior.t list
 (** The [atmosphere] field for scene-level media. *)
 
 val make :
-  ?sky:Sky.t -> ?fog:Fog.t list -> ?media:Media.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
+  ?sky:Sky.t -> ?fog:Fog.t list -> ?rainbows:Rainbow.t list -> ?media:Media.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
   background:Color.t -> settings:settings -> unit -> t
 (** A scene with its acceleration structure built. *)
 

@@ -144,6 +144,14 @@ let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec
     Volume.apply s o d t media out
   end
 
+(* POV-Ray lays its rainbows over what a ray in the open brings back
+   from [dist] units away, before the atmosphere and the fog *)
+let rainbowed (s : Scene.t) (d : Vec3.m) dist out =
+  let u = Scratch.get sky_key in
+  Vec3.set u d.mx d.my d.mz;
+  Vec3.normalize_m u;
+  Rainbow.apply s.rainbows u dist out
+
 (* Scene-level (atmospheric) media: seen by a ray in the open (as fog),
    after the media of the hollow solids it is inside, as a second layer
    (POV-Ray 3.7 does so, measured: the atmosphere's emission inside a
@@ -155,8 +163,11 @@ let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec
 let[@inline never] aired_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
   let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
   let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
-  Volume.apply s o d t media out;
-  if in_open media then Volume.apply s o d t s.atmosphere out
+  if media <> [] then Volume.apply s o d t media out;
+  if in_open media then begin
+    if s.rainbows <> [] then rainbowed s d (Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))) out;
+    if s.atmosphere <> [] then Volume.apply s o d t s.atmosphere out
+  end
 
 let[@inline never] aired_sky (s : Scene.t) (o : Vec3.m) (d : Vec3.m) media out =
   if in_open media then begin
@@ -199,6 +210,7 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
         Vec3.normalize_m u;
         Sky.eval_into s.sky ~background:s.background u out
       end;
+      if s.rainbows <> [] && in_open media then rainbowed s d Fog.missed out;
       if s.atmosphere <> [] then aired_sky s o d media out;
       fogged_sky s o d media out
     end
@@ -220,7 +232,7 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
       | _ -> Color.acc_set fade 1. 1. 1.);
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
-      if s.atmosphere <> [] then aired_hit s o d p media out
+      if s.atmosphere <> [] || s.rainbows <> [] then aired_hit s o d p media out
       else if has_media media then mediated_hit s o d p media out;
       fogged_hit s o d p media out;
       leave ()

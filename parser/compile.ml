@@ -483,6 +483,7 @@ and scene_ (s : Sdl.scene) =
     let background = ref Color.black in
     let sky = ref Sky.none and fog = ref [] and media = ref [] in
     media_spots := [];
+    let rainbows = ref [] in
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
@@ -492,6 +493,7 @@ and scene_ (s : Sdl.scene) =
             objects := top ctx o !objects
         | Sdl.Sky_sphere k -> sky := k
         | Sdl.Fog f -> fog := f :: !fog
+        | Sdl.Rainbow r -> rainbows := r :: !rainbows
         | Sdl.Media m -> media := m :: !media
         | Sdl.Camera (l, c) -> cams := (l, c) :: !cams
         | Sdl.Background c -> background := c.c
@@ -537,6 +539,7 @@ and scene_ (s : Sdl.scene) =
         background = !background;
         sky = !sky;
         fog = List.rev !fog;
+        rainbows = List.rev !rainbows;
         atmosphere = Scene.atmosphere (List.rev !media);
         settings = { !settings with encoding; legacy_alpha = not v37 };
       }

@@ -96,3 +96,42 @@ let average_texture l (layer : Texture.layer) =
 (* facets in a pigment or a texture: POV-Ray's error (it has no value) *)
 let facets_elsewhere l =
   Diag.error (loc l) "facets can only be used in a normal (it tilts normals and has no value as a pigment pattern)"
+
+(* POV-Ray 3.7's rainbow defaults: distance 1e7 (its largest distance),
+   no jitter, angle and width 0 (nothing drawn until given), direction 0
+   (an error: POV-Ray's), up y; arc_angle and falloff_angle checked and
+   kept as POV-Ray keeps them (see Rainbow.make) *)
+let rainbow loc items =
+  let angle = ref 0. and width = ref 0. and distance = ref 1e7 and jitter = ref 0. in
+  let dir = ref (loc, Vec3.zero) and up = ref (loc, Vec3.unit_y) in
+  let arc = ref None and falloff = ref None and map = ref None in
+  let degrees what (l, a) =
+    if a < 0. || a > 360. then Diag.error l "a rainbow's %s must be from 0 to 360 degrees, found %g" what a;
+    a *. Float.pi /. 360.
+  in
+  List.iter
+    (function
+      | `Angle a -> angle := a
+      | `Width w -> width := w
+      | `Distance d -> distance := d
+      | `Jitter j -> jitter := j
+      | `Direction d -> dir := d
+      | `Up u -> up := u
+      | `Arc a -> arc := Some (degrees "arc_angle" a)
+      | `Falloff f -> falloff := Some (degrees "falloff_angle" f)
+      | `Map m -> map := Some m)
+    items;
+  let arc = Option.value !arc ~default:180. in
+  let falloff = Option.value !falloff ~default:arc in
+  if arc < falloff then Diag.error loc "a rainbow's arc_angle is smaller than its falloff_angle";
+  let (dl, d), (ul, u) = (!dir, !up) in
+  if Vec3.length d < 1e-10 then Diag.error dl "a rainbow's direction must not be zero";
+  if Vec3.length u < 1e-10 then Diag.error ul "a rainbow's up vector must not be zero";
+  if Float.abs (1. -. Float.abs (Vec3.dot (Vec3.normalize u) (Vec3.normalize d))) < 1e-10 then
+    Diag.error ul "a rainbow's up vector and direction must not be parallel";
+  let pigment =
+    match !map with
+    | Some m -> Pigment.Map { pattern = Pattern.make (Pattern.Gradient Vec3.unit_x); entries = m; xform = Transform.identity }
+    | None -> Diag.error loc "a rainbow needs a colour_map"
+  in
+  Rainbow.make ~angle:!angle ~width:!width ~distance:!distance ~jitter:!jitter ~direction:d ~up:u ~arc ~falloff pigment

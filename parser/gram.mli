@@ -56,3 +56,19 @@ val average_texture : Loc.t -> Camlray.Texture.layer -> Camlray.Texture.layer
 val facets_elsewhere : Lexing.position * Lexing.position -> 'a
 (** [facets] written in a pigment or a texture: a located error (POV-Ray
     refuses it too: it is a normal-only pattern). *)
+
+val rainbow :
+  Loc.t ->
+  [ `Angle of float
+  | `Width of float
+  | `Distance of float
+  | `Jitter of float
+  | `Direction of Loc.t * Camlray.Vec3.t
+  | `Up of Loc.t * Camlray.Vec3.t
+  | `Arc of Loc.t * float
+  | `Falloff of Loc.t * float
+  | `Map of (float * Camlray.Pigment.t) array ]
+  list ->
+  Camlray.Rainbow.t
+(** A [rainbow { }] from its items in order, POV-Ray's checks as located
+    errors. *)

@@ -5,6 +5,7 @@
 %token APERTURE FOCAL_POINT BLUR_SAMPLES MESH_CAMERA
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT IRID_WAVELENGTH
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
+%token RAINBOW WIDTH ARC_ANGLE FALLOFF_ANGLE
 
 %start <Sdl.item list> scene
 
@@ -22,6 +23,22 @@
   | MEDIA LBRACE m = media_body RBRACE { Sdl.Media m }
   | FOG LBRACE fs = list(fog_item) RBRACE
       { Sdl.Fog (Fogdesc.fog (loc $loc) (List.fold_left (fun d f -> f d) Fogdesc.empty fs)) }
+
+  | RAINBOW LBRACE rs = list(rainbow_item) RBRACE
+      { Sdl.Rainbow (Gram.rainbow (loc $loc) rs) }
+
+(* POV-Ray's rainbow: angle and width in degrees, the colour map read
+   across the band *)
+rainbow_item:
+  | ANGLE e = param { `Angle (fl $loc(e) e) }
+  | WIDTH e = param { `Width (fl $loc(e) e) }
+  | DISTANCE e = param { `Distance (fl $loc(e) e) }
+  | JITTER e = param { `Jitter (fl $loc(e) e) }
+  | DIRECTION e = param { `Direction (loc $loc(e), v3 $loc(e) e) }
+  | UP e = param { `Up (loc $loc(e), v3 $loc(e) e) }
+  | ARC_ANGLE e = param { `Arc (loc $loc(e), fl $loc(e) e) }
+  | FALLOFF_ANGLE e = param { `Falloff (loc $loc(e), fl $loc(e) e) }
+  | COLOR_MAP LBRACE m = color_map_body RBRACE { `Map m }
 
 fog_item:
   | v = param { Fogdesc.value (loc $loc(v)) v }

@@ -36,6 +36,7 @@ let scene_keywords =
     ("adc_bailout", ADC_BAILOUT); ("ambient_light", AMBIENT_LIGHT);
     ("irid_wavelength", IRID_WAVELENGTH); ("fog", FOG); ("fog_type", FOG_TYPE);
     ("fog_offset", FOG_OFFSET); ("fog_alt", FOG_ALT); ("turb_depth", TURB_DEPTH); ("distance", DISTANCE);
+    ("rainbow", RAINBOW); ("width", WIDTH); ("arc_angle", ARC_ANGLE); ("falloff_angle", FALLOFF_ANGLE);
   ]
 
 (* grammar_objects.mly *)

@@ -302,6 +302,7 @@ let item = function
   | Sdl.Background c -> Printf.sprintf "background { %s }" (rgbft c)
   | Sdl.Global_settings (_, gs) -> "global_settings { " ^ String.concat " " (List.map global gs) ^ " }"
   | Sdl.Sky_sphere _ -> invalid_arg "Printer: sky_sphere is not printed"
+  | Sdl.Rainbow _ -> invalid_arg "Printer: rainbow is not printed"
   | Sdl.Media m -> media m
   | Sdl.Fog f ->
       let kind =

@@ -175,6 +175,7 @@ type item =
   | Global_settings of Loc.t * global list
   | Sky_sphere of Sky.t
   | Fog of Fog.t
+  | Rainbow of Rainbow.t
   | Media of Media.t  (** scene-level (atmospheric) media *)
 
 type scene = { items : item list; version : float option; file : string }

@@ -85,4 +85,58 @@ let parsed =
            | None -> Alcotest.fail "turbulence")
       | l -> Alcotest.failf "%d fogs" (List.length l))
 
-let tests = ("fog", units @ [ parsed ])
+(* POV-Ray's rainbow against its formula: a ray at [a] degrees from the
+   direction reads the map at (a - angle + width / 2) / width, blended in by
+   k = exp (-t / distance) (at least the colour's transmit); outside the
+   band, or beyond half the arc angle from up, the light is unchanged;
+   between the falloff angle and the arc angle it fades smoothly *)
+let rainbow =
+  Alcotest.test_case "rainbow: map index, distance blend, transmit floor, arc and falloff" `Quick (fun () ->
+      let map c = [| (0., Pigment.solid c); (1., Pigment.solid c) |] in
+      let bow ?(arc = 180.) ?(falloff = 180.) ?(distance = 10.) c =
+        Rainbow.make ~angle:30. ~width:10. ~distance ~jitter:0. ~direction:(v 0. 0. 1.) ~up:(v 0. 1. 0.) ~arc ~falloff
+          (Pigment.Map { pattern = Pattern.make (Pattern.Gradient (v 1. 0. 0.)); entries = map c; xform = Transform.identity })
+      in
+      (* a unit direction [deg] degrees from +z, turned [around] degrees from up about it *)
+      let ray deg around =
+        let r = deg *. Float.pi /. 180. and a = around *. Float.pi /. 180. in
+        let m = Vec3.m () in
+        Vec3.set m (Float.sin r *. Float.sin a) (Float.sin r *. Float.cos a) (Float.cos r);
+        m
+      in
+      let through bows d t (r, g, b) =
+        let c = Color.acc 0. in
+        Color.acc_set c r g b;
+        Rainbow.apply bows d t c;
+        (c.ar, c.ag, c.ab)
+      in
+      let red = Color.rgbft 1. 0. 0. 0. 0. in
+      let t = 10. *. Float.log 2. in
+      close "on the band, half blended" (0.5 *. 0.2 +. 0.5, 0.5 *. 0.4, 0.5 *. 0.6)
+        (through [ bow red ] (ray 30. 0.) t (0.2, 0.4, 0.6));
+      close "before the band" (0.2, 0.4, 0.6) (through [ bow red ] (ray 24. 0.) t (0.2, 0.4, 0.6));
+      close "past the band" (0.2, 0.4, 0.6) (through [ bow red ] (ray 35.5 0.) t (0.2, 0.4, 0.6));
+      close "the sky: all rainbow" (1., 0., 0.) (through [ bow red ] (ray 33. 0.) Fog.missed (0.2, 0.4, 0.6));
+      (* transmit 0.7 floors k: 0.7 of the light, 0.3 of the colour *)
+      let veil = Color.rgbft 1. 0. 0. 0. 0.7 in
+      close "transmit floor" (0.7 *. 0.2 +. 0.3, 0.7 *. 0.4, 0.7 *. 0.6)
+        (through [ bow veil ] (ray 30. 0.) Fog.missed (0.2, 0.4, 0.6));
+      (* filter 1: what passes is tinted by (1 - f) + f c, f = filter (1 - k) *)
+      let glass = Color.rgbft 1. 0.5 0. 1. 0. in
+      let k = 0.5 in
+      let f = 1. *. (1. -. k) in
+      close "filter tints" (k *. 0.2 *. ((1. -. f) +. f) +. 0.5, k *. 0.4 *. ((1. -. f) +. (f *. 0.5)) +. 0.25, k *. 0.6 *. (1. -. f))
+        (through [ bow glass ] (ray 30. 0.) t (0.2, 0.4, 0.6));
+      (* arc_angle 120, falloff_angle 60 (halves 60 and 30 degrees, in radians) *)
+      let half x = x *. Float.pi /. 360. in
+      let cut = bow ~arc:(half 120.) ~falloff:(half 60.) red in
+      close "inside the falloff angle" (1., 0., 0.) (through [ cut ] (ray 30. 20.) Fog.missed (0.2, 0.4, 0.6));
+      close "beyond the arc" (0.2, 0.4, 0.6) (through [ cut ] (ray 30. 70.) Fog.missed (0.2, 0.4, 0.6));
+      (* half way through the falloff: fade 0.5 *)
+      close "half faded" (0.5 *. 0.2 +. 0.5, 0.5 *. 0.4, 0.5 *. 0.6)
+        (through [ cut ] (ray 30. 45.) Fog.missed (0.2, 0.4, 0.6));
+      (* two bows at one ray: their results averaged *)
+      let blue = Color.rgbft 0. 0. 1. 0. 0. in
+      close "two bows averaged" (0.5, 0., 0.5) (through [ bow red; bow blue ] (ray 30. 0.) Fog.missed (0.2, 0.4, 0.6)))
+
+let tests = ("fog", units @ [ parsed; rainbow ])

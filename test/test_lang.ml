@@ -300,7 +300,7 @@ let tests =
            "#declare Swirl = pigment { tiling 1 color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
            "Swirl uses tiling");
       Alcotest.test_case "unsupported keyword named" `Quick
-        (expect_error "rainbow { distance 3 }\n" "rainbow is not supported by camlray");
+        (expect_error "ovus { 1, 0.5 }\n" "ovus is not supported by camlray");
       Alcotest.test_case "mesh2 items of every form" `Quick mesh2_items;
       Alcotest.test_case "layered textures: allowed and refused as POV-Ray" `Quick layering;
       Alcotest.test_case "a face index that is not an integer" `Quick
