@@ -1,9 +1,17 @@
-type t = { w : int; h : int; once : bool; interpolate : int; by_index : bool; heights : Float.Array.t }
+type t = {
+  w : int;
+  h : int;
+  once : bool;
+  interpolate : int;
+  by_index : bool;
+  map_type : int;
+  heights : Float.Array.t;
+}
 
-let make ~w ~h ~once ~interpolate ~by_index heights =
+let make ?(map_type = 0) ~w ~h ~once ~interpolate ~by_index heights =
   if w <= 0 || h <= 0 || Float.Array.length heights <> w * h then invalid_arg "Bump_map.make: size";
   if interpolate <> 0 && interpolate <> 2 && interpolate <> 4 then invalid_arg "Bump_map.make: interpolate";
-  { w; h; once; interpolate; by_index; heights }
+  { w; h; once; interpolate; by_index; map_type; heights }
 
 let grey r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
 
@@ -70,19 +78,103 @@ let[@inline] index_lost b x y =
 let[@inline] wrap1 fn c = if c < 0. then c +. fn else if c >= fn then c -. fn else c
 
 let eps = 1e-10
+let two_pi = 2. *. Float.pi
+
+(* The angle about y from +x towards +z, in [0, 2 pi), of a point at
+   distance [len] > 0 from the y axis (POV-Ray's acos form: x along +x
+   alone is 0, along -x pi) *)
+let[@inline] around x z len =
+  if z = 0. then if x > 0. then 0. else Float.pi
+  else
+    let a = Float.acos (x /. len) in
+    if z < 0. then two_pi -. a else a
+
+(* Where each map type puts a point on the image, before the common
+   part of [locate]: u (columns) and v (rows from the bottom) into [c],
+   in pixels, or false where POV-Ray finds no image (3.7,
+   imageutil.cpp's planar, spherical, cylindrical and torus mappings,
+   the planar one with image patterns' default gradient <1, -1, 0>: u
+   from x, v from y). *)
+let uv ~w ~h ~once ~map_type (q : Vec3.m) (c : Vec3.m) =
+  let x = q.mx and y = q.my and z = q.mz in
+  let fw = float_of_int w and fh = float_of_int h in
+  match map_type with
+  | 1 ->
+      (* the unit sphere: the longitude, the latitude from the south pole *)
+      let len = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      len > 0.
+      &&
+      let x = x /. len and y = y /. len and z = z /. len in
+      (* (a point rounded just past a pole: asin is given 1) *)
+      let phi = 0.5 +. (Float.asin (Float.min 1. (Float.max (-1.) y)) /. Float.pi) in
+      let l = Float.sqrt ((x *. x) +. (z *. z)) in
+      let theta = if l = 0. then 0. else around x z l /. two_pi in
+      Vec3.set c (theta *. fw) (phi *. fh) 0.;
+      true
+  | 2 ->
+      (* the cylinder about y: the longitude, the height y from 0 to 1 *)
+      (not (once && (y < 0. || y > 1.)))
+      &&
+      let len = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+      len > 0.
+      &&
+      let x = x /. len and z = z /. len in
+      let l = Float.sqrt ((x *. x) +. (z *. z)) in
+      l > 0.
+      &&
+      (Vec3.set c (around x z l /. two_pi *. fw) (Float.rem (y *. fh) fh) 0.;
+       true)
+  | 5 ->
+      (* the torus of major radius 1 about y: the angle about y, the angle
+         about the tube from its inside, turning through -y *)
+      let len = Float.sqrt ((x *. x) +. (z *. z)) in
+      len > 0.
+      &&
+      let theta = around x z len in
+      let r = len -. 1. in
+      let tube = Float.sqrt ((r *. r) +. (y *. y)) in
+      tube > 0.
+      &&
+      let phi = Float.acos (Float.min 1. (Float.max (-1.) (-.r /. tube))) in
+      let phi = if y > 0. then two_pi -. phi else phi in
+      Vec3.set c (theta /. two_pi *. fw) (phi /. two_pi *. fh) 0.;
+      true
+  | _ ->
+      (* planar, as POV-Ray maps every other number *)
+      (not (once && (x < 0. || x > 1. || y < 0. || y > 1.)))
+      &&
+      (Vec3.set c (Float.rem (x *. fw) fw) (Float.rem (y *. fh) fh) 0.;
+       true)
+
+(* the image coordinates of a point, per domain *)
+let coords_key = Scratch.key Vec3.m
+
+(* POV-Ray's map_pos (3.7.0, imageutil.cpp): the pixel coordinates of
+   the point (pattern space) into [c] (c.mx the column, c.my the row
+   from the top, in [0, w) and [0, h)), or false off the image: a tiny
+   offset added, once-only images refused past their edges, whole
+   images taken off, rows counted from the top. A point whose
+   coordinates are not finite is off the image. *)
+let locate ~w ~h ~once ~map_type (q : Vec3.m) (c : Vec3.m) =
+  uv ~w ~h ~once ~map_type q c
+  &&
+  let fw = float_of_int w and fh = float_of_int h in
+  let xc = c.mx +. eps and yc = c.my +. eps in
+  let xx = xc /. fw and yy = yc /. fh in
+  xc -. xc = 0. && yc -. yc = 0.
+  && (not (once && (xx > 1. || yy > 1. || xx < 0. || yy < 0.)))
+  &&
+  let xc = xc -. (float_of_int (int_of_float xx) *. fw) and yc = yc -. (float_of_int (int_of_float yy) *. fh) in
+  (* image rows run down *)
+  Vec3.set c (wrap1 fw xc) (wrap1 fh (fh -. yc)) 0.;
+  true
 
 let tilt b amount (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
-  let x = q.mx and y = q.my in
-  let fw = float_of_int b.w and fh = float_of_int b.h in
-  let xc = Float.rem (x *. fw) fw +. eps and yc = Float.rem (y *. fh) fh +. eps in
-  let xx = xc /. fw and yy = yc /. fh in
-  if (b.once && (x < 0. || x > 1. || y < 0. || y > 1.)) || (b.once && (xx > 1. || yy > 1. || xx < 0. || yy < 0.))
-  then Vec3.set out n.mx n.my n.mz
+  let c = Scratch.get coords_key in
+  if not (locate ~w:b.w ~h:b.h ~once:b.once ~map_type:b.map_type q c) then Vec3.set out n.mx n.my n.mz
   else begin
-    let xc = xc -. (float_of_int (int_of_float xx) *. fw) and yc = yc -. (float_of_int (int_of_float yy) *. fh) in
-    (* image rows run down *)
-    let yc = fh -. yc in
-    let xc = wrap1 fw xc and yc = wrap1 fh yc in
+    let fw = float_of_int b.w and fh = float_of_int b.h in
+    let xc = c.mx and yc = c.my in
     let h1 = sample b xc yc and lost1 = index_lost b xc yc in
     let xc2 = wrap1 fw (xc -. 1.) and yc = wrap1 fh (yc +. 1.) in
     let h2 = sample b xc2 yc and lost2 = index_lost b xc2 yc in
@@ -116,13 +208,13 @@ let tilt b amount (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
       ((xpz *. bx) +. (yz *. bym) +. -.(zz *. bz))
   end
 
-let pixel ~w ~h ~once x y =
-  let fw = float_of_int w and fh = float_of_int h in
-  let xc = Float.rem (x *. fw) fw +. eps and yc = Float.rem (y *. fh) fh +. eps in
-  let xx = xc /. fw and yy = yc /. fh in
-  if (once && (x < 0. || x > 1. || y < 0. || y > 1.)) || (once && (xx > 1. || yy > 1. || xx < 0. || yy < 0.)) then -1
-  else begin
-    let xc = xc -. (float_of_int (int_of_float xx) *. fw) and yc = yc -. (float_of_int (int_of_float yy) *. fh) in
-    let yc = wrap1 fh (fh -. yc) and xc = wrap1 fw xc in
-    (cell once h yc * w) + cell once w xc
-  end
+let pixel ~w ~h ~once q =
+  let c = Scratch.get coords_key in
+  if not (locate ~w ~h ~once ~map_type:0 q c) then -1 else (cell once h c.my * w) + cell once w c.mx
+
+let[@inline] value b q =
+  let c = Scratch.get coords_key in
+  if not (locate ~w:b.w ~h:b.h ~once:b.once ~map_type:b.map_type q c) then 0.
+  else
+    let v = sample b c.mx c.my in
+    if v < 0. then 0. else if v > 1. then 1. else v

@@ -1,7 +1,14 @@
-(** POV-Ray's [bump_map] (a normal read from an image), planar mapping
-    ([map_type 0]): the image covers the unit square of the xy plane,
-    repeated unless [once]. At a point, POV-Ray's rule (3.7,
-    image.cpp's bump_map): heights [h1] at the point's pixel, [h2] one
+(** Images read as a number a pixel, through POV-Ray's image mappings:
+    the heights of a [bump_map], the values of an [image_pattern], the
+    pixels a [material_map] picks textures by. The mapping is POV-Ray's
+    map_pos (3.7.0, imageutil.cpp): planar ([map_type 0], and every
+    number but 1, 2 and 5: the image covers the unit square of the xy
+    plane), spherical (1), cylindrical (2) or torus (5) (see {!make}),
+    repeated unless [once]; no interpolation, bilinear or normalised
+    distance.
+
+    A bump map's normal is POV-Ray's rule (3.7, image.cpp's bump_map):
+    heights [h1] at the point's pixel, [h2] one
     pixel left and one row down the image, [h3] one pixel right of that
     (rows and columns wrapping); the triangle (0, a h1, 0), (-1, a h2,
     1), (1, a h3, 1) ([a] the bump size) gives a normal [b], which is
@@ -10,16 +17,23 @@
 
 type t
 
-val make : w:int -> h:int -> once:bool -> interpolate:int -> by_index:bool -> Float.Array.t -> t
+val make : ?map_type:int -> w:int -> h:int -> once:bool -> interpolate:int -> by_index:bool -> Float.Array.t -> t
 (** [make ~w ~h ~once ~interpolate ~by_index heights]: [heights] row by
-    row, row 0 at the top of the image ([w * h] of them): the grey of
-    each pixel's colour (POV-Ray's weights); [interpolate]: 0 none, 2
+    row, row 0 at the top of the image ([w * h] of them): for a bump
+    map the grey of each pixel's colour (POV-Ray's weights);
+    [interpolate]: 0 none, 2
     bilinear, 4 normalised distance (POV-Ray's numbers); [by_index]:
     [use_index] was asked of this image without a palette, where POV-Ray
     interpolating reads an index 0 wherever its corner weights sum to
     less than 1 (no relief where all three samples do; modelled on
     POV-Ray's arithmetic, it brings such a render from 39.7 to 46.8 dB
     of POV-Ray's: some samples still round the other way).
+    [map_type] (default 0): 1 wraps the image round the unit sphere
+    (columns the longitude from +x towards +z, rows the latitude, the
+    top row at +y), 2 round the cylinder about y (the longitude; rows
+    the height y, the image from 0 to 1), 5 round a torus of major
+    radius 1 about y (the longitude; rows the angle about the tube),
+    any other number is planar, as in POV-Ray.
     Raises [Invalid_argument] on a size mismatch or another
     interpolation. *)
 
@@ -32,8 +46,16 @@ val tilt : t -> float -> Vec3.m -> Vec3.m -> Vec3.m -> unit
     itself where the image is not ([once], off the square). Allocates
     nothing. *)
 
-val pixel : w:int -> h:int -> once:bool -> float -> float -> int
-(** [pixel ~w ~h ~once x y]: the pixel (row by row from the top, [row *
+val pixel : w:int -> h:int -> once:bool -> Vec3.m -> int
+(** [pixel ~w ~h ~once q]: the pixel (row by row from the top, [row *
     w + column]) of a [w] x [h] image that POV-Ray's planar mapping
-    ([map_type 0], no interpolation) reads at [(x, y)], or -1 off the
-    image ([once]). *)
+    ([map_type 0], no interpolation) reads at [q]'s x and y, or -1 off
+    the image ([once]). Allocates nothing. *)
+
+val value : t -> Vec3.m -> float
+(** [value b q]: the image's number at [q] (pattern space): the pixel's,
+    or its neighbours' interpolated, kept within [[0, 1]]; 0 off the
+    image ([once], or a point the mapping has no place for: the centre
+    of the sphere, the axis of the cylinder or the torus, the torus's
+    core circle), as POV-Ray's image_pattern. Inlined where it is
+    called: it allocates nothing. *)

@@ -61,6 +61,7 @@ type kind =
   | Material of { w : int; h : int; once : bool; numbers : Bytes.t; count : int }
   | Function of fn
   | Density_file of density
+  | Image of Bump_map.t
 
 and density = { nx : int; ny : int; nz : int; voxels : Float.Array.t; interpolate : int }
 
@@ -138,9 +139,10 @@ type t = {
   warps : warp array;
 }
 
-(* quilted alone starts at frequency 0, its value left unwrapped *)
+(* quilted and image_pattern start at frequency 0 (POV-Ray's parser
+   sets it), their values left unwrapped *)
 let make kind =
-  let frequency = match kind with Quilted _ -> 0. | _ -> 1. in
+  let frequency = match kind with Quilted _ | Image _ -> 0. | _ -> 1. in
   { kind; turbulence = None; frequency; phase = 0.; wave = None; warps = [||] }
 
 let mandel iterations = { iterations; exponent = 2; exterior = 1; efactor = 1.; interior = 0; ifactor = 1. }
@@ -546,9 +548,10 @@ let raw_m kind (w : work) =
       let a = if walt = 0. then 0. else (((x *. alt.x) +. (y *. alt.y) +. (z *. alt.z)) -. alo) /. (ahi -. alo) in
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
   | Density_file d -> w.r.v <- density3 d x y z
+  | Image b -> w.r.v <- Bump_map.value b w.p
   | Object o -> w.r.v <- (if o.test w.p then 1. else 0.)
   | Material { w = iw; h = ih; once; numbers; count } ->
-      let k = Bump_map.pixel ~w:iw ~h:ih ~once x y in
+      let k = Bump_map.pixel ~w:iw ~h:ih ~once w.p in
       let n = if k < 0 then 0 else Char.code (Bytes.unsafe_get numbers k) in
       let n = if n > count then n mod count else n in
       w.r.v <- float_of_int (if n >= count then count - 1 else n)

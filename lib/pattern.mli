@@ -121,6 +121,11 @@ type kind =
   | Density_file of density
       (** [density_file df3 "file" [interpolate 0|1]]: the voxels of the
           unit cube [[0, 1)^3], 0 outside *)
+  | Image of Bump_map.t
+      (** POV-Ray's [image_pattern]: the image's number under the point
+          ({!Bump_map.value}: a pixel's grey, or its transparency, read
+          when the scene is compiled; 0 off the image); frequency 0 by
+          default, as in POV-Ray *)
 
 and density = { nx : int; ny : int; nz : int; voxels : Float.Array.t; interpolate : int }
 (** A df3 file's voxels, x fastest, each in [[0, 1]]; interpolation 0
@@ -198,7 +203,8 @@ val quilt_cubic : float -> float -> float -> float
     its cell's centre (a cubic Bezier with inner controls [c0], [c1]). *)
 
 val make : kind -> t
-(** No turbulence, frequency 1 (quilted: 0), phase 0, default wave. *)
+(** No turbulence, frequency 1 (quilted and image: 0), phase 0, default
+    wave. *)
 
 val mandel : int -> fractal
 (** [mandel n]: [n] iterations, exponent 2, POV-Ray's default exterior
