@@ -273,6 +273,32 @@ let read_indices path =
       | exception (Sys_error m | Invalid_argument m) -> failwith m
       | exception Images.Wrong_file_type -> failwith "unreadable PNG"
 
+(* A palette's alphas come from its tRNS chunk (entries past its end are
+   opaque), camlimages keeping only one transparent index; an alpha
+   channel from camlimages' RGBA image (grey and alpha too) *)
+let read_alpha path =
+  let s = read_file path in
+  if not (String.starts_with ~prefix:Png_codec.signature s) then None
+  else
+    let ct = naming path (fun () -> Png_codec.check s) in
+    match ct with
+    | 3 -> (
+        let trns = naming path (fun () -> Option.value ~default:"" (Png_codec.chunk s "tRNS")) in
+        let n = String.length trns in
+        match read_indices path with
+        | Some (_, _, idx) -> Some (Bytes.map (fun c -> if Char.code c < n then trns.[Char.code c] else '\255') idx)
+        | None -> naming path (fun () -> failwith "unreadable palette"))
+    | 4 | 6 -> (
+        naming path @@ fun () ->
+        match Png.load path [] with
+        | Rgba32 b ->
+            let src = Rgba32.dump b in
+            Some (Bytes.init (b.width * b.height) (fun i -> Bytes.get src ((4 * i) + 3)))
+        | _ -> failwith "no alpha channel read"
+        | exception (Sys_error m | Invalid_argument m) -> failwith m
+        | exception Images.Wrong_file_type -> failwith "unreadable PNG")
+    | _ -> None
+
 (* A PNM file (P2, P3 text; P5, P6 binary): its size, samples per pixel
    (1 grey, 3 colour), maxval and its samples in order, read on demand *)
 let pnm s ~max_pixels =

@@ -98,6 +98,13 @@ val read_indices : string -> (int * int * Bytes.t) option
     from the top; [None] for any other image. Raises [Failure] as
     {!read}. *)
 
+val read_alpha : string -> Bytes.t option
+(** The alpha of each pixel (one byte a pixel, row by row from the top)
+    of a PNG with an alpha channel (grey or colour) or a palette (from
+    its tRNS chunk, 255 for indices past it or without one); [None] for
+    other PNGs (a tRNS colour key is not read) and PPMs. The pixels are
+    those {!read} gives. Raises [Failure] as {!read}. *)
+
 val read : string -> rgb8
 (** Read a PNG (any colour type camlimages reads; alpha dropped) or a PPM
     (P6 or P3, maxval up to 65535, scaled to 8 bits), told apart by their

@@ -204,6 +204,8 @@ let chunks s =
   in
   chunks 8 []
 
+let chunk s typ = List.assoc_opt typ (chunks s)
+
 let text s =
   List.filter_map
     (fun (typ, data) ->

@@ -42,6 +42,10 @@ val text : string -> (string * string) list
     [Failure] if it is not a well-formed PNG (signature, chunk lengths,
     CRCs, an IEND). *)
 
+val chunk : string -> string -> string option
+(** [chunk s typ]: the data of the PNG [s]'s first chunk of type [typ]
+    (before IEND), if any. Raises [Failure] as {!text}. *)
+
 val check : string -> int
 (** Checks everything libpng could fail on while decoding the pixels
     (camlimages' reader crashes then): chunk structure and CRCs, IHDR,
