@@ -10,7 +10,7 @@
 %token COLOR_MAP PIGMENT_MAP CHECKER HEXAGON BRICK BRICK_SIZE MORTAR GRADIENT RADIAL ONION PLANAR SPHERICAL BOXED CYLINDRICAL PIGMENT_PATTERN SLOPE_MAP
 %token TOROIDAL ORIENTATION DIST_EXP MAJOR_RADIUS
 %token WARP REPEAT BLACK_HOLE OFFSET FLIP QUICK_COLOR BUMP_SIZE TILES TILE2 SLOPE ALTITUDE METRIC FORM SOLID
-%token CELLS BUMP_MAP USE_INDEX USE_COLOR MATERIAL_MAP
+%token CELLS BUMP_MAP USE_INDEX USE_COLOR MATERIAL_MAP USE_ALPHA IMAGE_PATTERN
 %token DENSITY_FILE DF3 BOZO SPOTTED GRANITE MARBLE WOOD AGATE AGATE_TURB LEOPARD RIPPLES WAVES WRINKLES BUMPS DENTS
 %token TURBULENCE OCTAVES OMEGA LAMBDA FREQUENCY PHASE
 %token RAMP_WAVE TRIANGLE_WAVE SINE_WAVE SCALLOP_WAVE CUBIC_WAVE POLY_WAVE
@@ -202,15 +202,9 @@
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
   | OBJECT LBRACE k = pattern_object cs = block_cells RBRACE ms = list(pigment_mod)
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
-  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg g = ioption(preceded(GAMMA, param)) ims = list(image_item) RBRACE
+  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg file_gamma = ioption(file_gamma) ims = list(image_item) RBRACE
     ms = list(pigment_mod)
-      { let file_gamma =
-          Option.map (fun g ->
-              let x = fl $loc(g) g in
-              if not (x > 0.) then Diag.error (loc $loc(g)) "an image file's gamma must be positive, found %g" x;
-              x) g
-        in
-        let p = Texdesc.image_map (loc $loc(f)) ?file_gamma ~gamma_decode:(Defaults.version () >= 3.7) f ims in
+      { let p = Texdesc.image_map (loc $loc(f)) ?file_gamma ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         let p = Texdesc.(pigment (apply ms (of_pigment p))) in
         fun _ -> p }
   | ms = list(pigment_mod) { fun base -> Texdesc.(pigment (apply ms (of_pigment base))) }
@@ -239,6 +233,13 @@
       { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
   | k = RGB e = unary ms = list(channel)
       { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.rgb_kind (loc $loc) k e) ms }
+
+(* [gamma G] after an image file's name: the file's values are c^G *)
+%public file_gamma:
+  | GAMMA g = param
+      { let x = fl $loc(g) g in
+        if not (x > 0.) then Diag.error (loc $loc(g)) "an image file's gamma must be positive, found %g" x;
+        x }
 
 %public image_item:
   | ONCE { fun (i : Pigment.image) -> { i with once = true } }
@@ -281,6 +282,14 @@
   | CELLS { Pattern.Cells }
   | BOZO { Pattern.Bozo }
   | DENSITY_FILE DF3 f = string_arg { Texdesc.density_file (loc $loc(f)) f }
+  (* image_pattern { [png] FILE [gamma G] [once] [map_type N] [interpolate N]
+     [use_color|use_index|use_alpha] } *)
+  | IMAGE_PATTERN LBRACE ioption(PNG) f = string_arg g = ioption(file_gamma) items = list(image_pattern_item) RBRACE
+      { let alpha = List.fold_left (fun a i -> match i with `Alpha b -> b | _ -> a) false items in
+        let interpolate = List.fold_left (fun a i -> match i with `Interpolate n -> n | _ -> a) 0 items in
+        let map_type = List.fold_left (fun a i -> match i with `Map_type n -> n | _ -> a) 0 items in
+        let once = List.mem `Once items in
+        Texdesc.image_pattern (loc $loc(f)) ?file_gamma:g ~alpha ~interpolate ~once ~map_type f }
   | SPOTTED { Pattern.Spotted }
   | BUMPS { Pattern.Bumps }
   | DENTS { Pattern.Dents }
@@ -562,6 +571,26 @@ material_map_item:
       { if Value.to_int (loc $loc(e)) e <> 0 then
           Diag.error (loc $loc(e)) "interpolate in a material_map is not supported by camlray";
         `Map_type }
+
+(* POV-Ray 3.7 reads the colours' grey with use_index as with use_color
+   (measured on a palette PNG: the same values), the later keyword
+   winning *)
+image_pattern_item:
+  | ONCE { `Once }
+  | MAP_TYPE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if not (List.mem n [ 0; 1; 2; 5 ]) then
+          Diag.warning (loc $loc)
+            (Printf.sprintf "an image_pattern's map_type %d is drawn planar, as POV-Ray 3.7 draws every map_type but 1 (spherical), 2 (cylindrical) and 5 (torus)" n);
+        `Map_type n }
+  | INTERPOLATE e = param
+      { let n = Value.to_int (loc $loc(e)) e in
+        if n <> 0 && n <> 2 && n <> 4 then
+          Diag.error (loc $loc(e)) "an image_pattern's interpolate %d is not supported by camlray: 0 (none), 2 (bilinear) and 4 (normalized distance) are" n;
+        `Interpolate n }
+  | USE_COLOR { `Alpha false }
+  | USE_INDEX { `Alpha false }
+  | USE_ALPHA { `Alpha true }
 
 bump_item:
   | BUMP_SIZE e = param { `Size (fl $loc(e) e) }

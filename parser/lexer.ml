@@ -89,7 +89,7 @@ let texture_keywords =
     ("offset", OFFSET); ("flip", FLIP); ("quick_color", QUICK_COLOR); ("julia", JULIA); ("bump_size", BUMP_SIZE); ("tiles", TILES); ("tile2", TILE2); ("slope", SLOPE); ("altitude", ALTITUDE); ("metric", METRIC); ("form", FORM); ("solid", SOLID); ("magnet", MAGNET); ("quick_colour", QUICK_COLOR); ("cylindrical", CYLINDRICAL);
     ("toroidal", TOROIDAL); ("orientation", ORIENTATION); ("dist_exp", DIST_EXP); ("major_radius", MAJOR_RADIUS);
     ("bozo", BOZO); ("density_file", DENSITY_FILE); ("df3", DF3); ("spotted", SPOTTED); ("granite", GRANITE); ("marble", MARBLE);
-    ("wood", WOOD); ("agate", AGATE); ("agate_turb", AGATE_TURB); ("leopard", LEOPARD); ("cells", CELLS); ("bump_map", BUMP_MAP); ("material_map", MATERIAL_MAP); ("use_index", USE_INDEX); ("use_color", USE_COLOR); ("use_colour", USE_COLOR);
+    ("wood", WOOD); ("agate", AGATE); ("agate_turb", AGATE_TURB); ("leopard", LEOPARD); ("cells", CELLS); ("bump_map", BUMP_MAP); ("material_map", MATERIAL_MAP); ("use_index", USE_INDEX); ("use_color", USE_COLOR); ("use_colour", USE_COLOR); ("use_alpha", USE_ALPHA); ("image_pattern", IMAGE_PATTERN);
     ("ripples", RIPPLES); ("waves", WAVES); ("wrinkles", WRINKLES); ("bumps", BUMPS);
     ("dents", DENTS); ("turbulence", TURBULENCE); ("octaves", OCTAVES); ("omega", OMEGA);
     ("lambda", LAMBDA); ("frequency", FREQUENCY); ("phase", PHASE); ("ramp_wave", RAMP_WAVE);

@@ -79,6 +79,22 @@ val image_map :
     map: values c^[file_gamma] when the scene gives the file's gamma,
     else decoded from sRGB when [gamma_decode]. Errors are located. *)
 
+val image_pattern :
+  Loc.t ->
+  ?file_gamma:float ->
+  alpha:bool ->
+  interpolate:int ->
+  once:bool ->
+  map_type:int ->
+  string ->
+  Pattern.kind
+(** [image_pattern { png FILE [gamma G] ... }]: the pattern of the
+    image's greys, or with [alpha] ([use_alpha]) its transparency (1 -
+    alpha; the red channel of an image without alpha), each pixel's
+    values taken as they are in the file (POV-Ray does not gamma-correct
+    image patterns), or as c^G with the file's gamma. Errors are
+    located. *)
+
 val material_map : Loc.t -> string -> once:bool -> count:int -> Pattern.kind
 (** [texture { material_map { png FILE [once] TEXTURE... } }]: the
     pattern choosing one of [count] textures by the image's palette index
