@@ -104,12 +104,12 @@ and uv ~turns t = List.map (uv_layer ~turns) t
 
 (* a texture-level uv_mapping is, to POV-Ray, a pattern of its own *)
 let uv_texture t = List.map (fun l -> { l with uv_texture = true }) (uv ~turns:true t)
-let patterned_texture t = List.exists (fun l -> l.tmap <> None || l.uv_texture) t
+let is_patterned t = List.exists (fun l -> l.tmap <> None || l.uv_texture) t
 
 let layering ~above ~below =
   if below = [] then None
-  else if patterned_texture below then Some "cannot layer over a patterned texture"
-  else if patterned_texture above then Some "cannot layer a patterned texture over another"
+  else if is_patterned below then Some "cannot layer over a patterned texture"
+  else if is_patterned above then Some "cannot layer a patterned texture over another"
   else None
 
 let rec uses_uv t =

@@ -77,6 +77,11 @@ val uv_texture : t -> t
 (** [texture { uv_mapping T }]: {!uv} with [turns], marked as patterned
     for {!layering}. *)
 
+val is_patterned : t -> bool
+(** Some layer is patterned (see {!layering}): POV-Ray lets nothing be
+    layered over it, a pigment, normal or finish written after it
+    included. *)
+
 val layering : above:t -> below:t -> string option
 (** POV-Ray's refusal to layer textures where either side is patterned
     (a texture_map, a block pattern, material_map, average, or a

@@ -4,8 +4,11 @@ open Camlray
 let loc (s, e) = Loc.make s e
 let v3 l v = Value.to_vec3 (loc l) v
 let fl l v = Value.to_float (loc l) v
-let with_texture f (o : Sdl.obj) =
+(* a pigment, normal or finish written on an object changes its texture's
+   top layer; POV-Ray refuses one after a patterned texture *)
+let with_texture l f (o : Sdl.obj) =
   let layers = match o.texture with Some t -> t | None -> [ Defaults.texture () ] in
+  if Texture.is_patterned layers then Diag.error (loc l) "cannot layer over a patterned texture";
   match layers with
   | top :: rest -> { o with texture = Some (f top :: rest) }
   | [] -> o

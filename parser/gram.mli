@@ -4,7 +4,7 @@ val loc : Lexing.position * Lexing.position -> Loc.t
 val v3 : Lexing.position * Lexing.position -> Value.t -> Camlray.Vec3.t
 val fl : Lexing.position * Lexing.position -> Value.t -> float
 
-val with_texture : (Camlray.Texture.layer -> Camlray.Texture.layer) -> Sdl.obj -> Sdl.obj
+val with_texture : Lexing.position * Lexing.position -> (Camlray.Texture.layer -> Camlray.Texture.layer) -> Sdl.obj -> Sdl.obj
 (** Change the top texture layer of an object (starting from the
     [#default] texture when it has none). *)
 

@@ -208,7 +208,7 @@ items_rev:
   | PIGMENT LBRACE p = pigment_edit RBRACE
       { fun (o : Sdl.obj) ->
           let uv = o.flags land Sdl.uv_mapping <> 0 in
-          with_texture (fun l -> { l with Texture.pigment = (let q = p l.pigment in if uv then Pigment.uv q else q) }) o }
+          with_texture $loc (fun l -> { l with Texture.pigment = (let q = p l.pigment in if uv then Pigment.uv q else q) }) o }
   (* the textures, pigments and normals written after it are uv-mapped;
      POV-Ray refuses it after the object's own texture *)
   | UV_MAPPING
@@ -216,7 +216,7 @@ items_rev:
           if o.texture <> None then Diag.error (loc $loc) "uv_mapping must come before the object's texture, pigment, normal or finish";
           { o with flags = o.flags lor Sdl.uv_mapping } }
   | FINISH LBRACE f = finish_edit RBRACE
-      { with_texture (fun l -> { l with Texture.finish = f l.finish }) }
+      { with_texture $loc (fun l -> { l with Texture.finish = f l.finish }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }
   | NO_SHADOW { fun (o : Sdl.obj) -> { o with no_shadow = true } }
   | k = object_flag %prec below_shift { fun (o : Sdl.obj) -> { o with flags = o.flags lor k } }

@@ -157,7 +157,7 @@
   | NORMAL LBRACE n = normal_edit RBRACE
       { fun (o : Sdl.obj) ->
           let uv = o.flags land Sdl.uv_mapping <> 0 in
-          with_texture (fun l -> { l with Texture.normal = (let m = n l.normal in
+          with_texture $loc (fun l -> { l with Texture.normal = (let m = n l.normal in
             if uv then Option.map (Normal.uv ~turns:false) m else m) }) o }
 
 %public item:

@@ -268,7 +268,13 @@ let layering () =
   check "in a material" under 2 ("sphere { 0, 1 material { " ^ plain ^ "\n" ^ uv ^ " } }");
   check "interior_texture" under 2
     ("sphere { 0, 1 " ^ plain ^ " interior_texture { pigment { rgb 0 } }\ninterior_texture { " ^ String.sub checker 10 (String.length checker - 10) ^ " }");
-  check "#declare" over 2 ("#declare T = " ^ checker ^ "\n" ^ plain ^ "\nsphere { 0, 1 texture { T } }")
+  check "#declare" over 2 ("#declare T = " ^ checker ^ "\n" ^ plain ^ "\nsphere { 0, 1 texture { T } }");
+  (* a pigment, finish or normal written on the object changes the top
+     layer: refused over a patterned texture too *)
+  check "finish after a checker texture" over 2 ("sphere { 0, 1 " ^ checker ^ "\nfinish { phong 1 } }");
+  check "pigment after a checker texture" over 2 ("sphere { 0, 1 " ^ checker ^ "\npigment { rgb 1 } }");
+  check "normal after uv_mapping" over 2 ("sphere { 0, 1 " ^ uv ^ "\nnormal { bumps 1 } }");
+  Alcotest.(check int) "finish after a plain texture" 1 (layers ("sphere { 0, 1 " ^ plain ^ " finish { phong 1 } }"))
 
 (* mesh2 items: vectors of three are read straight from the block's
    store, every other form through its value; both give the same mesh *)
