@@ -655,9 +655,11 @@ let object_pattern () =
   (* textures and normals as the two cells *)
   let s =
     Scn.compile
-      "sphere { 0, 1 texture { object { sphere { x, 0.5 } texture { pigment { rgb 1 } } texture { pigment { rgb 0.5 } } } }\n\
-       normal { object { sphere { x, 0.5 } normal { bumps 0.5 } normal { dents 0.3 } } } }"
+      "sphere { 0, 1 texture { object { sphere { x, 0.5 } texture { pigment { rgb 1 } } texture { pigment { rgb 0.5 } } } } }"
   in
+  (* (a normal written after a patterned texture is refused, as POV-Ray
+     refuses it: the normal pattern goes on an object of its own) *)
+  ignore (Scn.compile "sphere { 0, 1 normal { object { sphere { x, 0.5 } normal { bumps 0.5 } normal { dents 0.3 } } } }");
   (match s.objects.(0).texture with
   | { tmap = Some m; _ } :: _ ->
       Alcotest.(check int) "two textures" 2 (Array.length m.entries);
