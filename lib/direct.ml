@@ -168,14 +168,15 @@ let illum_sample (il : illum) i j (o : Color.acc) =
 (* [one_light]'s position when the light is where it stands (unread) *)
 let own_position = Vec3.m ()
 
-let lights (s : Scene.t) cache (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d (out : Color.acc) =
-  let nl = Array.length s.lights in
+let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d
+    (out : Color.acc) =
+  let nl = Array.length ls in
   if Array.length cache.stamp < nl then begin
     cache.stamp <- Array.make nl 0;
     cache.col <- Array.make (3 * nl) 0.
   end;
   for j = 0 to nl - 1 do
-    let light = Array.unsafe_get s.lights j in
+    let light = Array.unsafe_get ls j in
     match light.area with
     | Some a when a.area_illumination ->
         (* every sample shades as a point light; averaged like shadows *)

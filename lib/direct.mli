@@ -23,10 +23,12 @@ val forget : shadows -> unit
 (** Empty it: the next point shaded is another. *)
 
 val lights :
-  Scene.t -> shadows -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m -> Color.acc -> unit
-(** [lights s c f pc a p n d out]: the diffuse light and highlights of
-    every light of [s] at point [p] of normal [n] (facing the ray [d]),
+  Scene.t -> shadows -> Light.t array -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m ->
+  Color.acc -> unit
+(** [lights s c ls f pc a p n d out]: the diffuse light and highlights of
+    every light of [ls] (the set of the surface shaded, one of
+    [s.light_sets]: a light_group's lights light only its objects) at point [p] of normal [n] (facing the ray [d]),
     for the finish [f] and pigment [pc], added into [out]; the shadows
-    kept in [c] are used (they must be [p]'s: {!forget} them when the
+    kept in [c] are used (they must be [p]'s, for the same [ls]: {!forget} them when the
     point changes), those not kept are traced and kept. Allocates nothing
     unless a shadow ray crosses something transparent. *)

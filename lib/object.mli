@@ -26,6 +26,10 @@ type t = private {
   index : index option;  (** a BVH over the children of a large union *)
   inv : Float.Array.t;  (** leaves: the inverse of [xform], 3x4 row-major, translation last *)
   uv : bool;  (** leaves: the texture is uv-mapped somewhere (the shader sets the hit's uv) *)
+  lights : int;
+      (** leaves: the lights that light the surface, an index into
+          the scene's [light_sets]: 0 for the scene's global lights, another
+          for the objects of a [light_group] *)
 }
 
 and geom =
@@ -42,8 +46,8 @@ and index = {
 
 val make :
   ?xform:Transform.t -> ?texture:Texture.t -> ?back:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
-  ?inverted:bool -> ?clip:t array -> Shape.t -> t
-(** A leaf. A sphere under a similarity (rotations, uniform scales,
+  ?inverted:bool -> ?clip:t array -> ?lights:int -> Shape.t -> t
+(** A leaf ([lights]: its light set, 0 by default). A sphere under a similarity (rotations, uniform scales,
     translations) is stored moved, with the identity transform. *)
 
 val union : ?clip:t array -> t array -> t

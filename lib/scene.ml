@@ -22,6 +22,7 @@ type accel = {
 type t = {
   objects : Object.t array;
   lights : Light.t array;
+  light_sets : Light.t array array;
   camera : Camera.t;
   background : Color.t;
   sky : Sky.t;
@@ -141,9 +142,9 @@ let accelerate ?par objects =
 
 let atmosphere = function [] -> [] | media -> [ { Interior.default with hollow = true; media } ]
 
-let make ?(sky = Sky.none) ?(fog = []) ?(rainbows = []) ?(media = []) ~objects ~lights ~camera ~background ~settings () =
+let make ?(sky = Sky.none) ?(fog = []) ?(rainbows = []) ?(media = []) ?(groups = [||]) ~objects ~lights ~camera ~background ~settings () =
   let accel = accelerate objects in
-  { objects; lights; camera; background; sky; fog; rainbows; atmosphere = atmosphere media; settings; accel; all = accel;
+  { objects; lights; light_sets = Array.append [| lights |] groups; camera; background; sky; fog; rainbows; atmosphere = atmosphere media; settings; accel; all = accel;
     views = { image = None; reflected = None } }
 
 let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }
@@ -428,3 +429,12 @@ let containing s (p : Vec3.t) =
 let block _ _ = false
 let always _ = true
 let occluded s r tmin tmax = not (occluders s r tmin tmax always block)
+
+(* each light once, the global ones first: a light shared by two sets is
+   one light *)
+let all_lights s =
+  let acc = ref [] in
+  Array.iter
+    (Array.iter (fun l -> if not (List.exists (fun l' -> l' == l) !acc) then acc := l :: !acc))
+    s.light_sets;
+  Array.of_list (List.rev !acc)

@@ -18,7 +18,12 @@ type accel
 
 type t = {
   objects : Object.t array;
-  lights : Light.t array;
+  lights : Light.t array;  (** the global lights: those outside any [light_group] *)
+  light_sets : Light.t array array;
+      (** the lights of each surface, by its {!Object.t.lights}: [lights]
+          first (physically the same array), then one set per light group
+          placed (its own lights, after the global ones with
+          [global_lights on]) *)
   camera : Camera.t;
   background : Color.t;
   sky : Sky.t;  (** sky_sphere; {!Sky.none} when absent *)
@@ -63,9 +68,14 @@ val atmosphere : Media.t list -> Interior.t list
 (** The [atmosphere] field for scene-level media. *)
 
 val make :
-  ?sky:Sky.t -> ?fog:Fog.t list -> ?rainbows:Rainbow.t list -> ?media:Media.t list -> objects:Object.t array -> lights:Light.t array -> camera:Camera.t ->
+  ?sky:Sky.t -> ?fog:Fog.t list -> ?rainbows:Rainbow.t list -> ?media:Media.t list -> ?groups:Light.t array array -> objects:Object.t array ->
+  lights:Light.t array -> camera:Camera.t ->
   background:Color.t -> settings:settings -> unit -> t
-(** A scene with its acceleration structure built. *)
+(** A scene with its acceleration structure built; [groups]: the light
+    sets after the global one (by default none). *)
+
+val all_lights : t -> Light.t array
+(** Every light of every set, each once, the global ones first. *)
 
 val bvh_nodes : t -> int
 (** Number of BVH nodes over the finite objects (for reports). *)

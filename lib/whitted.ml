@@ -68,13 +68,14 @@ type frame = {
   uv : Vec3.m;  (** the hit's <u, v, 0>, when [has_uv] (the object's texture is uv-mapped) *)
   mutable has_uv : bool;
   sh : Direct.shadows;  (** the shadows found at [p] *)
+  mutable lights : Light.t array;  (** the lights of the surface at [p] (its light set) *)
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
-    uv = Vec3.m (); has_uv = false; sh = Direct.shadows () }
+    uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||] }
 
 let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
@@ -247,6 +248,8 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   Pattern.set_normal n0;
   let entering = dot n0 d < 0. in
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
+  (* a light_group's surfaces see only their own set of lights *)
+  fr.lights <- Array.unsafe_get s.light_sets obj.lights;
   let inner = obj.interior in
   let eta = Interior.relative_ior inner media in
   fr.k.eta <- eta;
@@ -360,7 +363,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           (* this layer's own colour: lights, then ambient and emission *)
           let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
-          Direct.lights s fr.sh f pc fr.a p n d dl;
+          Direct.lights s fr.sh fr.lights f pc fr.a p n d dl;
           let amb = s.settings.ambient_light in
           let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))

@@ -22,7 +22,7 @@ let rec nodes acc (o : Sdl.obj) =
   else
     let acc = acc + 1 in
     match o.shape with
-    | Sdl.Csg (_, cs) -> List.fold_left nodes acc cs
+    | Sdl.Csg (_, cs) | Light_group (_, cs) -> List.fold_left nodes acc cs
     | Inverse c -> nodes acc c
     | Clipped (c, cs) | Bounded (c, cs) -> List.fold_left nodes (nodes acc c) cs
     | Light { looks_like = Some c; _ } -> nodes acc c

@@ -345,7 +345,7 @@ let shape (o : Sdl.obj) =
       match Prism.make p.spline p.sweep p.height1 p.height2 ~open_:p.no_caps p.points with
       | Ok pr -> Shape.Prism pr
       | Error e -> Diag.error o.loc "prism: %s" e)
-  | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ -> assert false
+  | Sdl.Csg _ | Sdl.Inverse _ | Sdl.Clipped _ | Sdl.Bounded _ | Sdl.Light _ | Sdl.Light_group _ -> assert false
 
 (* What a CSG node hands down to its children: its world transform, the
    texture and interior for children without one, no_shadow. *)
@@ -356,8 +356,38 @@ type ctx = {
   inter : Interior.t option;
   no_shadow : bool;
   flags : int;  (** Sdl.no_image, no_reflection, double_illuminate, from the parents *)
-  lights : Light.t list ref;
+  lights : Light.t list ref;  (** where the global lights go *)
+  lset : int;  (** the leaves' light set: 0, or a light group's (see [group_sets]) *)
+  global : bool option;  (** in a light group: the outermost group's [global_lights] *)
+  glights : Light.t list option;  (** in a light group: the lights its objects see *)
 }
+
+let top_ctx lights =
+  { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights;
+    lset = 0; global = None; glights = None }
+
+(* The light sets of the light groups placed so far, last first: whether
+   the global lights join, the group's own lights. Set [k] (1-based, in
+   placing order) is the [Object.lights] of the group's surfaces. *)
+let group_sets : (bool * Light.t list) list ref = ref []
+
+(* Entering a light group (POV-Ray 3.7, measured): its surfaces are lit by
+   the group's own light sources (its direct children), not by those of
+   a group around it, unless it has none (then they keep the outer
+   group's); the outermost group's global_lights decides for all the
+   groups inside it. Shadows are not grouped: every object casts them.
+   [ctx] is the group's own (its transform applied); the group's lights
+   are compiled, the other children returned with their context. *)
+let group_ctx (ctx : ctx) compile_light global children =
+  let own = ref [] in
+  let looks = List.filter_map (fun (c : Sdl.obj) ->
+      match c.shape with Sdl.Light _ -> compile_light { ctx with lights = own } c | _ -> None) children in
+  let rest = List.filter (fun (c : Sdl.obj) -> match c.shape with Sdl.Light _ -> false | _ -> true) children in
+  let mine = match (List.rev !own, ctx.glights) with [], Some outer -> outer | l, _ -> l in
+  let global = match ctx.global with Some g -> g | None -> global in
+  group_sets := (global, mine) :: !group_sets;
+  let ctx' = { ctx with lset = List.length !group_sets; global = Some global; glights = Some mine } in
+  (looks, rest, ctx')
 
 (* POV-Ray's double_illuminate, carried by the finishes of a texture *)
 let rec illuminate_both (t : Texture.t) =
@@ -412,6 +442,10 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
              else
                Object.intersection
                  (Array.mapi (fun i c -> if i = 0 then c else Object.invert c) cs)))
+  | Sdl.Light_group (global, l) ->
+      let looks, rest, ctx'' = group_ctx ctx' obj global l in
+      let others = List.filter_map (obj ctx'') rest in
+      Some (Object.union (Array.of_list (looks @ others)))
   | Sdl.Inverse inner -> Option.map Object.invert (obj ctx' inner)
   | Sdl.Clipped (inner, clips) ->
       let clips = children clips in
@@ -449,26 +483,37 @@ and leaf ctx o tex inter =
   let interior = Option.value ~default:Interior.default inter in
   let back = Option.map (fun t -> let t = Shapes.share_texture t in
                                   if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both t else t) ctx.inner in
-  Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow (shape o)
+  Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset (shape o)
 
 (* An object compiled on its own while the scene is still being read
    (POV-Ray's trace(), inside(), min_extent() and max_extent() ask
    declared objects): its lights are dropped. *)
 let standalone (o : Sdl.obj) =
-  let ctx = { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights = ref [] } in
+  let ctx = top_ctx (ref []) in
+  let sets = !group_sets in
+  Fun.protect ~finally:(fun () -> group_sets := sets) @@ fun () ->
   Fun.protect ~finally:(fun () -> Phys.reset built; Phys.reset parts) (fun () -> obj ctx o)
 
 (* Top-level unions (not clipped, not inverted) are flattened into the
    scene's BVH: same surfaces, same textures. *)
 let rec top ctx (o : Sdl.obj) acc =
+  let inside () =
+    let o' = Sdl.transform_obj ctx.xf o in
+    let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
+    let inter = interior_of ctx o' in
+    let inner = match o'.inner with Some _ -> o'.inner | None -> ctx.inner in
+    { ctx with xf = o'.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags }
+  in
   match o.shape with
   | Sdl.Csg (Sdl.Union, l) ->
-      let o' = Sdl.transform_obj ctx.xf o in
-      let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
-      let inter = interior_of ctx o' in
-      let inner = match o'.inner with Some _ -> o'.inner | None -> ctx.inner in
-      let ctx' = { ctx with xf = o'.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags } in
+      let ctx' = inside () in
       List.fold_left (fun acc c -> top ctx' c acc) acc l
+  | Sdl.Light_group (global, l) ->
+      (* flattened like a union: its objects carry their light set *)
+      let ctx' = inside () in
+      let looks, rest, ctx'' = group_ctx ctx' obj global l in
+      let acc = List.fold_left (fun acc x -> (x, ctx'.flags) :: acc) acc looks in
+      List.fold_left (fun acc c -> top ctx'' c acc) acc rest
   | _ -> ( match obj ctx o with Some x -> (x, ctx.flags lor o.flags) :: acc | None -> acc)
 
 let rec scene ?par:p (s : Sdl.scene) =
@@ -484,13 +529,13 @@ and scene_ (s : Sdl.scene) =
     let sky = ref Sky.none and fog = ref [] and media = ref [] in
     media_spots := [];
     let rainbows = ref [] in
+    group_sets := [];
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter
       (function
         | Sdl.Object o ->
-            let ctx = { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights } in
-            objects := top ctx o !objects
+            objects := top (top_ctx lights) o !objects
         | Sdl.Sky_sphere k -> sky := k
         | Sdl.Fog f -> fog := f :: !fog
         | Sdl.Rainbow r -> rainbows := r :: !rainbows
@@ -528,13 +573,18 @@ and scene_ (s : Sdl.scene) =
     let objects = Array.map fst flagged in
     let accel = Scene.accelerate ?par:!par objects in
     let hidden = Array.map (fun (_, f) -> f land (Sdl.no_image lor Sdl.no_reflection)) flagged in
+    let lights = Array.of_list (List.rev !lights) in
     let s =
       {
         Scene.objects;
         accel;
         all = accel;
         views = { image = None; reflected = None };
-        lights = Array.of_list (List.rev !lights);
+        lights;
+        light_sets =
+          Array.append [| lights |]
+            (Array.of_list
+               (List.rev_map (fun (g, own) -> Array.of_list ((if g then Array.to_list lights else []) @ own)) !group_sets));
         camera;
         background = !background;
         sky = !sky;

@@ -13,6 +13,7 @@
 %token LATHE SUPERELLIPSOID POLYGON HEIGHT_FIELD WATER_LEVEL SMOOTH
 %token <string> IMAGE_KIND
 
+%token LIGHT_GROUP GLOBAL_LIGHTS
 %token ISOSURFACE CONTAINED_BY ACCURACY MAX_GRADIENT EVALUATE MAX_TRACE ALL_INTERSECTIONS
 
 %%
@@ -105,6 +106,10 @@
   | INTERSECTION LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Intersection cs }
   | DIFFERENCE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Difference cs }
   | MERGE LBRACE cs = csg_body RBRACE { Shapes.csg (loc $loc) Sdl.Merge cs }
+  (* POV-Ray reads the objects (light sources among them) first, then
+     only transformations and global_lights *)
+  | LIGHT_GROUP LBRACE cs = list(object_) ms = list(light_group_mod) RBRACE
+      { Shapes.light_group (loc $loc) cs ms }
   | OBJECT LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | OBJECT LBRACE o = object_ ms = list(object_mod) RBRACE { List.fold_left (fun o f -> f o) o ms }
@@ -154,6 +159,11 @@ csg_body: items = list(csg_item) { items }
 csg_item:
   | o = object_ { `Child o }
   | m = object_mod { `Mod m }
+
+light_group_mod:
+  | t = transformation { `Xf t }
+  | GLOBAL_LIGHTS { `Global true }
+  | GLOBAL_LIGHTS b = param { `Global (Value.to_bool (loc $loc(b)) b) }
 
 mesh_triangle:
   | TRIANGLE LBRACE a = param COMMA? b = param COMMA? c = param uv = ioption(triangle_uv)

@@ -63,7 +63,7 @@ let object_keywords =
     ("bmp", IMAGE_KIND "bmp"); ("exr", IMAGE_KIND "exr"); ("hdr", IMAGE_KIND "hdr"); ("pot", IMAGE_KIND "pot");
     ("isosurface", ISOSURFACE); ("contained_by", CONTAINED_BY);
     ("accuracy", ACCURACY); ("max_gradient", MAX_GRADIENT); ("evaluate", EVALUATE); ("max_trace", MAX_TRACE);
-    ("all_intersections", ALL_INTERSECTIONS);
+    ("all_intersections", ALL_INTERSECTIONS); ("light_group", LIGHT_GROUP); ("global_lights", GLOBAL_LIGHTS);
   ]
 
 (* grammar_texture.mly *)

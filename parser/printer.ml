@@ -240,6 +240,12 @@ let rec parts (o : Sdl.obj) =
         | Sdl.Merge -> "merge"
       in
       (kw ^ " { " ^ String.concat " " (List.map obj children), mods)
+  | Sdl.Light_group (global, children) ->
+      (* a light_group takes no modifiers but transformations: the
+         object { } around it takes them all *)
+      ( Printf.sprintf "object { light_group { %s%s }" (String.concat " " (List.map obj children))
+          (if global then " global_lights on" else ""),
+        mods )
   | Sdl.Inverse inner ->
       (* modifiers after 'inverse' apply to the wrapper *)
       let head, inner_mods = parts inner in

@@ -34,6 +34,7 @@ type shape =
   | Bounded of obj * obj list
       (** [bounded_by]: the object and its bounding objects (the same way) *)
   | Light of light
+  | Light_group of bool * obj list
 
 and csg = Union | Intersection | Difference | Merge
 

@@ -39,6 +39,9 @@ type shape =
   | Bounded of obj * obj list
       (** [bounded_by]: the object and its bounding objects (the same way) *)
   | Light of light
+  | Light_group of bool * obj list
+      (** POV-Ray's [light_group]: [global_lights], the children in source
+          order (its light sources among them) *)
 
 and csg = Union | Intersection | Difference | Merge
 

@@ -773,6 +773,11 @@ let csg l op items =
   let mods = List.filter_map (function `Mod m -> Some m | `Child _ -> None) items in
   obj l (Sdl.Csg (op, children)) mods
 
+let light_group l children mods =
+  let global = List.fold_left (fun g m -> match m with `Global b -> b | `Xf _ -> g) false mods in
+  let xfs = List.filter_map (function `Xf t -> Some (Sdl.transform_obj t) | `Global _ -> None) mods in
+  obj l (Sdl.Light_group (global, children)) xfs
+
 let default_texture (o : Sdl.obj) =
   match (o.texture, o.shape) with
   | None, Sdl.Light _ | Some _, _ -> o

@@ -179,3 +179,8 @@ val bicubic_patch : Loc.t -> u_steps:int -> v_steps:int -> Camlray.Vec3.t array 
 val sor : Loc.t -> Loc.t * int -> (Loc.t * Value.t) list -> open_:bool -> Sdl.shape
 (** POV-Ray's [sor { n, <r, y> ... [open] }]: the count checked, the
     points 2-vectors with rising heights. *)
+
+val light_group :
+  Loc.t -> Sdl.obj list -> [ `Xf of Camlray.Transform.t | `Global of bool ] list -> Sdl.obj
+(** [light_group { children mods }]: the transformations in order, the
+    last [global_lights] (off unless given). *)

@@ -68,7 +68,7 @@ let kept_shadows () =
   let at x =
     let p = Vec3.m () and out = Color.acc 0. in
     Vec3.set p x 0. 0.;
-    Direct.lights s cache { f with diffuse = 1. } pc k p n d out;
+    Direct.lights s cache s.lights { f with diffuse = 1. } pc k p n d out;
     out.ar
   in
   check "under the sphere" 0. (at 0.);
