@@ -40,7 +40,7 @@ let of_scene (s : Scene.t) =
       (Array.map
          (fun (l : Light.t) ->
            match l.area with Some area -> Area { light = l; area } | None -> Delta l)
-         s.lights)
+         (Scene.all_lights s))
   in
   let objs =
     Array.to_list s.objects

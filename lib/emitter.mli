@@ -24,7 +24,8 @@ type t =
           inside). *)
 
 val of_scene : Scene.t -> t array
-(** Every light source, and every emissive object whose shape can be
+(** Every light source (those of light groups too: {!Path} lights a
+    surface only by its light set), and every emissive object whose shape can be
     sampled (spheres under similarity transforms). Emissive objects of
     other shapes are still found by the paths (BSDF sampling only). *)
 

@@ -52,6 +52,7 @@ type state = {
   fd : Object.found;
   shadow : Ray.scratch;
   sampler : Sampler.t;
+  mutable set : Light.t array;  (** the lights of the vertex's surface (its light set) *)
 }
 
 let state_key =
@@ -61,7 +62,7 @@ let state_key =
         f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); uv = v (); pig = Pigment.out (); env = c (); prev_p = v (); prev_n = v ();
         num = { prev_pdf = 0. }; prev = camera_v; mat = Material.lobes (); bs = Bsdf.sampled ();
         ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
-        sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0 })
+        sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0; set = [||] })
 
 let dot = Vec3.dot_m
 
@@ -120,8 +121,18 @@ let env_into (s : Scene.t) st (d : Vec3.m) =
     Color.acc_set c b.r b.g b.b)
   else Sky.eval_into s.sky ~background:s.background d c
 
-(* Next-event estimation at the vertex: every emitter, plus the
-   environment, into [st.dl]. *)
+let rec mem (l : Light.t) (a : Light.t array) i = i < Array.length a && (Array.unsafe_get a i == l || mem l a (i + 1))
+
+(* whether the emitter lights the vertex: a light_group's lights light
+   only its surfaces, which see the global lights only with global_lights
+   on; an emissive object is not a light source and lights every surface,
+   as the paths that hit it do *)
+let lights_vertex (s : Scene.t) (st : state) = function
+  | Emitter.Delta l | Emitter.Area { light = l; _ } -> Array.length s.light_sets = 1 || mem l st.set 0
+  | Emitter.Sphere _ -> true
+
+(* Next-event estimation at the vertex: every emitter that lights it, plus
+   the environment, into [st.dl]. *)
 let direct t (st : state) sampler base =
   let s = t.scene in
   let dl = st.dl and m = st.mat and n = st.n and wo = st.wo and f = st.f in
@@ -130,7 +141,8 @@ let direct t (st : state) sampler base =
     let e = Array.unsafe_get t.emitters i in
     let ls = st.ls in
     if
-      Emitter.sample_into e st.p
+      lights_vertex s st e
+      && Emitter.sample_into e st.p
         (Sampler.get sampler (base + d_light + (2 * i)))
         (Sampler.get sampler (base + d_light + (2 * i) + 1))
         ls
@@ -225,6 +237,7 @@ let li_into t sampler ~max_depth (st : state) =
     end
     else begin
       let obj = fd.leaf and th = h.t in
+      st.set <- Array.unsafe_get s.light_sets obj.lights;
       let p = st.p and ng = st.ng and n = st.n and wo = st.wo in
       Vec3.set p (o.mx +. (th *. d.mx)) (o.my +. (th *. d.my)) (o.mz +. (th *. d.mz));
       Scene.hit_normal_into s fd h p ng;
