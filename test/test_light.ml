@@ -79,6 +79,36 @@ let kept_shadows () =
   (* straight under the light, and the kept shadow lets all through *)
   check "kept again: under the sphere, lit" 1. (at 0.)
 
+(* light_group as compiled: the group's lights leave the global list and
+   make a set of their own, which the group's surfaces name; with
+   global_lights on the set starts with the global lights; every
+   placement of a declared group is a set of its own (its lights moved
+   with it) *)
+let groups () =
+  let s =
+    Scn.compile
+      "light_source { <0,10,0>, rgb 1 }\n\
+       #declare G = light_group { light_source { <0,0,-3>, rgb <1,0,0> } sphere { 0, 1 } }\n\
+       object { G translate -2*x }\n\
+       object { G translate 2*x }\n\
+       light_group { light_source { <0,5,0>, rgb <0,1,0> } box { -1, 1 } global_lights on translate 5*y }\n\
+       sphere { 0, 1 }"
+  in
+  let n = Alcotest.(check int) in
+  n "one global light" 1 (Array.length s.lights);
+  n "the global set and three groups" 4 (Array.length s.light_sets);
+  Alcotest.(check bool) "set 0 is the global lights" true (s.light_sets.(0) == s.lights);
+  n "a group without global_lights: its own light" 1 (Array.length s.light_sets.(1));
+  n "with global_lights on: the global light, then its own" 2 (Array.length s.light_sets.(3));
+  Alcotest.(check bool) "global first" true (s.light_sets.(3).(0) == s.lights.(0));
+  let pos k = (s.light_sets.(k).(0)).Light.position in
+  Scn.close "the first placement's light moved with it" (-2.) (pos 1).x;
+  Scn.close "the second's" 2. (pos 2).x;
+  Scn.close "a transformed group's light" 10. (s.light_sets.(3).(1)).Light.position.y;
+  let sets = Array.map (fun (o : Object.t) -> o.lights) s.objects in
+  Alcotest.(check (list int)) "each surface names its set" [ 1; 2; 3; 0 ] (Array.to_list sets);
+  n "every light once" 4 (Array.length (Scene.all_lights s))
+
 let tests =
   ( "light",
     [
@@ -87,4 +117,5 @@ let tests =
       Alcotest.test_case "sample positions" `Quick positions;
       Alcotest.test_case "area light in a scene" `Quick scene;
       Alcotest.test_case "shadows kept per point" `Quick kept_shadows;
+      Alcotest.test_case "light_group sets" `Quick groups;
     ] )
