@@ -351,7 +351,7 @@ let check path include_dirs allow_read limits frame_number clock =
         1
     | Ok (scene, _) ->
         Printf.printf "%s: ok (%d objects, %d lights)\n" path (Array.length scene.objects)
-          (Array.length scene.lights);
+          (Array.length (Scene.all_lights scene));
         0
   with Fail msg ->
     prerr_endline ("camlray: " ^ msg);
