@@ -266,4 +266,34 @@ let pov_examples_fold =
         Alcotest.(check bool) "some scenes" true (List.length files > 300)
       end)
 
-let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: optional_commas_blob_moves :: pov_examples_fold :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
+(* light_group: bare global_lights is on; the transformations move the
+   whole group; the printed scene reads back to itself (a light_group
+   printed inside object { }, which takes its other modifiers) *)
+let light_groups =
+  Alcotest.test_case "light_group: global_lights, transformations, printed back" `Quick (fun () ->
+      let read text =
+        match Parse.string text with
+        | Ok s -> Printer.scene s
+        | Error d -> Alcotest.failf "%s" (Diag.to_string d)
+      in
+      let g = "light_source { <0,5,0>, rgb 1 } sphere { 0, 1 pigment { rgb 1 } }" in
+      Alcotest.(check string) "bare global_lights is on"
+        (read ("light_group { " ^ g ^ " global_lights on }"))
+        (read ("light_group { " ^ g ^ " global_lights }"));
+      Alcotest.(check string) "the last global_lights counts"
+        (read ("light_group { " ^ g ^ " }"))
+        (read ("light_group { " ^ g ^ " global_lights on global_lights off }"));
+      if read ("light_group { " ^ g ^ " }") = read ("light_group { " ^ g ^ " global_lights on }") then
+        Alcotest.fail "global_lights on is not printed";
+      Alcotest.(check string) "transformations in order"
+        (read ("light_group { " ^ g ^ " matrix <2,0,0, 0,2,0, 0,0,2, 1,0,0> }"))
+        (read ("light_group { " ^ g ^ " scale 2 translate x }"));
+      let text =
+        "#declare G = light_group { " ^ g ^ " light_group { light_source { x, rgb <1,0,0> } box { -1, 1 } } global_lights }\n\
+         object { G pigment { rgb 0.5 } translate y no_shadow }\n\
+         difference { light_group { " ^ g ^ " } sphere { y, 1 } }"
+      in
+      let once = read text in
+      Alcotest.(check string) "printed, read back" once (read once))
+
+let tests = ("parse", fold_cases :: replay_limit :: mesh2_items_once :: optional_commas_blob_moves :: light_groups :: pov_examples_fold :: List.map QCheck_alcotest.to_alcotest (prop :: fold_props))
