@@ -28,6 +28,12 @@ val inside : t -> float -> float -> float -> bool
 val gradient_into : t -> float -> float -> float -> Vec3.m -> unit
 (** The gradient at a point (not normalised; zero at singular points). *)
 
+val along : t -> float -> float -> float -> float -> float -> float -> Float.Array.t
+(** [along s qx qy qz nx ny nz]: the polynomial along the line [q + t n],
+    its coefficients ascending in t (degree {!order}), as {!hit_s} makes
+    them (from the point of the ray's line nearest the origin, and its
+    unit direction). For tests; allocates. *)
+
 val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
 (** The nearest crossing in [(tmin, h.t)] past [h.floor] (and POV-Ray's
     depth tolerance: 1e-4 along the unit direction from the origin),
