@@ -31,8 +31,11 @@ val first_root : scratch -> Float.Array.t -> int -> float -> bool
     leaves such terms, with spurious roots far out). Roots are bracketed between the roots of the
     polynomial's derivatives, found the same way, and polished by Newton
     steps kept in their bracket, so no closed formula's cancellation
-    enters. Double roots are found where the polynomial reaches zero in
-    floating point. Allocates nothing. *)
+    enters. Double
+    roots are found where the polynomial reaches zero in floating point.
+    For degrees 2 to 4 a polynomial that keeps one sign by far more than
+    rounding (the ray misses the surface by some way) is ruled out first,
+    more cheaply, with the same answer. Allocates nothing. *)
 
 val first_root_in : scratch -> Float.Array.t -> int -> float -> float -> bool
 (** {!first_root} of the roots below a bound too: in [(lo, hi)]. *)

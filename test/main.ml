@@ -22,6 +22,7 @@ let () =
       Test_fn.tests;
       Test_shape.tests;
       Test_algebraic.tests;
+      Test_poly.tests;
       Test_bvh.tests;
       Test_object.tests;
       Test_geom_render.tests;
