@@ -111,15 +111,27 @@ let first_quartic_root a b c d e lo hi =
 (* Polynomials of any degree, by their derivatives: the roots of the
    (k+1)-th derivative cut the line into pieces where the k-th is
    monotone, so each piece holds at most one of its roots, bracketed by a
-   change of sign. Level k's coefficients (ascending) are at k * w. *)
-type scratch = { d : Float.Array.t; r : Float.Array.t; nr : int array; w : int; root : Float.Array.t }
+   change of sign. Level k's coefficients (ascending) are at k * w in
+   [d]. Each level's roots are made in increasing order when the level
+   below asks for its next piece's end (see [next_root]), so that no
+   critical point past the first root is looked for. *)
+type scratch = {
+  d : Float.Array.t;
+  w : int;
+  at : Float.Array.t;  (* per level: the start of its current piece *)
+  value_at : Float.Array.t;  (* the level's value there *)
+  out : Float.Array.t;  (* the level's last root made *)
+  over : int array;  (* 1 once the level has made its last root *)
+  top : Float.Array.t;  (* at 0: the end of the search *)
+}
 
 let scratch max_degree =
   let w = max_degree + 1 in
-  { d = Float.Array.make (w * w) 0.; r = Float.Array.make (w * w) 0.; nr = Array.make w 0; w;
-    root = Float.Array.make 1 0. }
+  let a () = Float.Array.make w 0. in
+  { d = Float.Array.make (w * w) 0.; w; at = a (); value_at = a (); out = a (); over = Array.make w 0;
+    top = Float.Array.make 1 0. }
 
-let root sc = Float.Array.unsafe_get sc.root 0
+let root sc = Float.Array.unsafe_get sc.out 0
 
 let[@inline] horner d base deg t =
   let acc = ref (Float.Array.unsafe_get d (base + deg)) in
@@ -168,6 +180,39 @@ let below (eqn : Float.Array.t) m =
     s := !s +. (Float.abs (g eqn i) *. !p)
   done;
   !s
+
+(* The next root of level [lv] (of [n]) into [sc.out], if one is left:
+   the pieces run from the start of the search through the next roots of
+   level [lv + 1] to its end; a root is a piece's end where the level is
+   zero (but the search's end) or is found inside a piece whose ends'
+   values differ in sign. *)
+let rec next_root sc lv n =
+  if Array.unsafe_get sc.over lv <> 0 then false
+  else if lv = n - 1 then begin
+    Array.unsafe_set sc.over lv 1;
+    true
+  end
+  else begin
+    let d = sc.d and w = sc.w and deg = n - lv in
+    let found = ref false in
+    while (not !found) && Array.unsafe_get sc.over lv = 0 do
+      let inner = next_root sc (lv + 1) n in
+      let c = if inner then g sc.out (lv + 1) else g sc.top 0 in
+      let fc = horner d (lv * w) deg c and fp = g sc.value_at lv in
+      if fc = 0. && inner then begin
+        Float.Array.unsafe_set sc.out lv c;
+        found := true
+      end
+      else if fp <> 0. && (fp < 0.) <> (fc < 0.) then begin
+        Float.Array.unsafe_set sc.out lv (root_between sc lv deg (g sc.at lv) c fp);
+        found := true
+      end;
+      Float.Array.unsafe_set sc.at lv c;
+      Float.Array.unsafe_set sc.value_at lv fc;
+      if not inner then Array.unsafe_set sc.over lv 1
+    done;
+    !found
+  end
 
 (* {2 Ruling a root out}
 
@@ -341,7 +386,7 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
            (g eqn 2) (g eqn 1) (g eqn 0) lo hi
     then false
     else begin
-      let d = sc.d and w = sc.w and r = sc.r in
+      let d = sc.d and w = sc.w in
       for m = 0 to n do
         Float.Array.unsafe_set d m (g eqn m)
       done;
@@ -350,39 +395,18 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
           Float.Array.unsafe_set d ((k * w) + m) (float (m + 1) *. g d (((k - 1) * w) + m + 1))
         done
       done;
-      (* level n-1 is linear *)
+      (* level n-1 is linear: its root, if inside, is made now *)
       let base = (n - 1) * w in
       let t = -.g d base /. g d (base + 1) in
-      sc.nr.(n - 1) <- 0;
-      if t > lo && t < hi then (Float.Array.unsafe_set r base t; sc.nr.(n - 1) <- 1);
-      let k = ref (n - 2) in
-      while !k >= 0 do
-        let lv = !k and deg = n - !k in
-        let crit = (lv + 1) * w and ncrit = sc.nr.(lv + 1) in
-        let count = ref 0 and prev = ref lo in
-        let fp = ref (horner d (lv * w) deg lo) in
-        let i = ref 0 in
-        (* at level 0 only the first root is wanted *)
-        while !i <= ncrit && not (lv = 0 && !count > 0) do
-          let c = if !i < ncrit then g r (crit + !i) else hi in
-          let fc = horner d (lv * w) deg c in
-          if fc = 0. && !i < ncrit then begin
-            Float.Array.unsafe_set r ((lv * w) + !count) c;
-            incr count
-          end
-          else if !fp <> 0. && (!fp < 0.) <> (fc < 0.) then begin
-            Float.Array.unsafe_set r ((lv * w) + !count) (root_between sc lv deg !prev c !fp);
-            incr count
-          end;
-          prev := c;
-          fp := fc;
-          incr i
-        done;
-        sc.nr.(lv) <- !count;
-        decr k
+      Float.Array.unsafe_set sc.out (n - 1) t;
+      Array.unsafe_set sc.over (n - 1) (if t > lo && t < hi then 0 else 1);
+      for lv = 0 to n - 2 do
+        Float.Array.unsafe_set sc.at lv lo;
+        Float.Array.unsafe_set sc.value_at lv (horner d (lv * w) (n - lv) lo);
+        Array.unsafe_set sc.over lv 0
       done;
-      Float.Array.unsafe_set sc.root 0 (g r 0);
-      sc.nr.(0) > 0
+      Float.Array.unsafe_set sc.top 0 hi;
+      next_root sc 0 n
     end
   end
 

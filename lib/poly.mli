@@ -29,9 +29,9 @@ val first_root : scratch -> Float.Array.t -> int -> float -> bool
     looked for; a leading term that stays below the rounding of the others
     up to there is dropped (a direction component zero but for rounding
     leaves such terms, with spurious roots far out). Roots are bracketed between the roots of the
-    polynomial's derivatives, found the same way, and polished by Newton
-    steps kept in their bracket, so no closed formula's cancellation
-    enters. Double
+    polynomial's derivatives, found the same way (each only when the
+    search reaches its bracket), and polished by Newton steps kept in
+    their bracket, so no closed formula's cancellation enters. Double
     roots are found where the polynomial reaches zero in floating point.
     For degrees 2 to 4 a polynomial that keeps one sign by far more than
     rounding (the ray misses the surface by some way) is ruled out first,
