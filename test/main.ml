@@ -41,6 +41,7 @@ let () =
       Test_path.tests;
       Test_whitted.tests;
       Test_light.tests;
+      Test_lit.tests;
       Test_pattern.tests;
       Test_uv.tests;
       Test_bump_map.tests;

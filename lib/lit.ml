@@ -1,0 +1,159 @@
+(* Where a ray crosses the light of spotlights (see lit.mli). *)
+
+let max_distance = 1e7
+
+type span = { mutable lo : float; mutable hi : float }
+
+let span () = { lo = 0.; hi = 0. }
+
+(* The cone's inside, ahead of the apex, is convex: a ray meets it in one
+   stretch at most. Along the ray, with [v] the origin seen from the apex,
+   [a] the unit axis and [c] the cosine of the half-angle, the double cone
+   is [f t = (k2 + t k1)^2 - c^2 |v + t d|^2 >= 0] (a quadratic) and the
+   nappe ahead is [g t = k2 + t k1 >= 0] (a half-line): the stretch is
+   where both hold. *)
+let cone (l : Light.t) (r : Ray.scratch) out =
+  match l.kind with
+  | Light.Spot { point_at; falloff; _ } when falloff < 90. ->
+      let p = l.position in
+      let ax = point_at.x -. p.x and ay = point_at.y -. p.y and az = point_at.z -. p.z in
+      let al = Float.sqrt ((ax *. ax) +. (ay *. ay) +. (az *. az)) in
+      let ax = ax /. al and ay = ay /. al and az = az /. al in
+      let c = Float.cos (falloff *. Float.pi /. 180.) in
+      let c2 = c *. c in
+      let vx = r.ox -. p.x and vy = r.oy -. p.y and vz = r.oz -. p.z in
+      let k1 = (r.dx *. ax) +. (r.dy *. ay) +. (r.dz *. az)
+      and k2 = (vx *. ax) +. (vy *. ay) +. (vz *. az)
+      and k3 = (vx *. r.dx) +. (vy *. r.dy) +. (vz *. r.dz)
+      and k4 = (vx *. vx) +. (vy *. vy) +. (vz *. vz) in
+      let qa = (k1 *. k1) -. c2 and qb = (k1 *. k2) -. (c2 *. k3) and qc = (k2 *. k2) -. (c2 *. k4) in
+      (* the half-line ahead of the apex *)
+      let glo = if k1 > 0. then -.k2 /. k1 else if k1 < 0. || k2 >= 0. then neg_infinity else infinity
+      and ghi = if k1 < 0. then -.k2 /. k1 else if k1 > 0. || k2 >= 0. then infinity else neg_infinity in
+      let disc = (qb *. qb) -. (qa *. qc) in
+      (* the part of the double cone that can be ahead: [flo, fhi] *)
+      let flo, fhi =
+        if Float.abs qa < 1e-12 then
+          (* the ray parallel to a side of the cone: [f] is linear *)
+          if qb > 0. then (-.qc /. (2. *. qb), infinity)
+          else if qb < 0. then (neg_infinity, -.qc /. (2. *. qb))
+          else if qc >= 0. then (neg_infinity, infinity)
+          else (infinity, neg_infinity)
+        else if disc <= 0. then
+          (* no crossing: the line is all outside (qa < 0) or all inside
+             the double cone (qa > 0, through its apex) *)
+          if qa > 0. then (neg_infinity, infinity) else (infinity, neg_infinity)
+        else
+          let s = Float.sqrt disc in
+          let u = (-.qb -. s) /. qa and w = (-.qb +. s) /. qa in
+          let t1 = Float.min u w and t2 = Float.max u w in
+          (* less steep than the cone: inside between the crossings;
+             steeper: in one nappe before [t1], in the other after [t2],
+             the one ahead where the ray goes along the axis *)
+          if qa < 0. then (t1, t2) else if k1 > 0. then (t2, infinity) else (neg_infinity, t1)
+      in
+      let lo = Float.max flo glo and hi = Float.min fhi ghi in
+      if lo < hi then begin
+        out.lo <- lo;
+        out.hi <- Float.min hi max_distance;
+        true
+      end
+      else false
+  | _ -> false
+
+(* stretches as (lo, hi, lit) triples; per light the ends of its lit part,
+   sorted apart as POV-Ray sorts them *)
+type t = {
+  mutable n : int;
+  mutable b : Float.Array.t;
+  mutable s0 : Float.Array.t;
+  mutable s1 : Float.Array.t;
+  mutable on0 : Float.Array.t;  (** by light: its lit part (empty: not lit) *)
+  mutable on1 : Float.Array.t;
+  sp : span;
+}
+
+let make () =
+  let a () = Float.Array.make 1 0. in
+  { n = 0; b = Float.Array.make 3 0.; s0 = a (); s1 = a (); on0 = a (); on1 = a (); sp = span () }
+
+let lights t i x = x >= Float.Array.get t.on0 i && x <= Float.Array.get t.on1 i
+let count t = t.n
+let lo t i = Float.Array.get t.b (3 * i)
+let hi t i = Float.Array.get t.b ((3 * i) + 1)
+let is_lit t i = Float.Array.get t.b ((3 * i) + 2) > 0.
+
+let push t lo hi lit =
+  let k = 3 * t.n in
+  Float.Array.set t.b k lo;
+  Float.Array.set t.b (k + 1) hi;
+  Float.Array.set t.b (k + 2) (if lit then 1. else 0.);
+  t.n <- t.n + 1
+
+(* insertion sort of the first [n] (a handful of lights) *)
+let sort a n =
+  for i = 1 to n - 1 do
+    let x = Float.Array.get a i in
+    let j = ref (i - 1) in
+    while !j >= 0 && Float.Array.get a !j > x do
+      Float.Array.set a (!j + 1) (Float.Array.get a !j);
+      decr j
+    done;
+    Float.Array.set a (!j + 1) x
+  done
+
+let cut t (lights : Light.t array) (r : Ray.scratch) len =
+  let nl = Array.length lights in
+  if Float.Array.length t.b < 3 * ((2 * nl) + 1) then begin
+    t.s0 <- Float.Array.make nl 0.;
+    t.s1 <- Float.Array.make nl 0.;
+    t.on0 <- Float.Array.make nl 0.;
+    t.on1 <- Float.Array.make nl 0.;
+    t.b <- Float.Array.make (3 * ((2 * nl) + 1)) 0.
+  end;
+  (* each light's lit part *)
+  let m = ref 0 in
+  for i = 0 to nl - 1 do
+    let l = lights.(i) in
+    Float.Array.set t.on0 i infinity;
+    Float.Array.set t.on1 i neg_infinity;
+    if l.media_interaction then begin
+      match l.kind with
+      | Light.Spot _ ->
+          if cone l r t.sp && t.sp.lo < len && t.sp.hi > 0.001 then begin
+            Float.Array.set t.on0 i (Float.max t.sp.lo 0.);
+            Float.Array.set t.on1 i (Float.min t.sp.hi len)
+          end
+      | Light.Point | Light.Parallel _ ->
+          Float.Array.set t.on0 i 0.;
+          Float.Array.set t.on1 i len
+    end;
+    if Float.Array.get t.on0 i <= Float.Array.get t.on1 i then begin
+      Float.Array.set t.s0 !m (Float.Array.get t.on0 i);
+      Float.Array.set t.s1 !m (Float.Array.get t.on1 i);
+      incr m
+    end
+  done;
+  t.n <- 0;
+  let m = !m in
+  if m = 0 then push t 0. len false
+  else begin
+    (* POV-Ray sorts the starts and the ends each on its own: the merged
+       stretches are the union of the lit parts all the same *)
+    sort t.s0 m;
+    sort t.s1 m;
+    let s0 = Float.Array.get t.s0 0 in
+    if s0 > 0. then push t 0. s0 false;
+    push t s0 (Float.Array.get t.s1 0) true;
+    for i = 1 to m - 1 do
+      let a = Float.Array.get t.s0 i and b = Float.Array.get t.s1 i in
+      let last = hi t (t.n - 1) in
+      if a > last then begin
+        push t last a false;
+        push t a b true
+      end
+      else if b > last then Float.Array.set t.b ((3 * (t.n - 1)) + 1) b
+    done;
+    let last = hi t (t.n - 1) in
+    if last < len then push t last len false
+  end
