@@ -83,7 +83,7 @@ let lo t i = Float.Array.get t.b (3 * i)
 let hi t i = Float.Array.get t.b ((3 * i) + 1)
 let is_lit t i = Float.Array.get t.b ((3 * i) + 2) > 0.
 
-let push t lo hi lit =
+let[@inline] push t lo hi lit =
   let k = 3 * t.n in
   Float.Array.set t.b k lo;
   Float.Array.set t.b (k + 1) hi;
@@ -121,8 +121,10 @@ let cut t (lights : Light.t array) (r : Ray.scratch) len =
       match l.kind with
       | Light.Spot _ ->
           if cone l r t.sp && t.sp.lo < len && t.sp.hi > 0.001 then begin
-            Float.Array.set t.on0 i (Float.max t.sp.lo 0.);
-            Float.Array.set t.on1 i (Float.min t.sp.hi len)
+            (* plain comparisons: no float boxed *)
+            Float.Array.set t.on0 i (if t.sp.lo > 0. then t.sp.lo else 0.);
+            Float.Array.set t.on1 i t.sp.hi;
+            if t.sp.hi > len then Float.Array.set t.on1 i len
           end
       | Light.Point | Light.Parallel _ ->
           Float.Array.set t.on0 i 0.;
