@@ -1,9 +1,13 @@
 (* Media along a ray in whitted mode (see volume.mli). A sample at a
-   point holds nine numbers: extinction, emitted plus scattered light, and
-   scattered light alone (which decides method 3's subdivisions). *)
+   point holds six numbers: extinction, and emitted plus scattered
+   light. *)
 
-let slot = 9
+let slot = 6
 let max_depth = 12
+
+(* where along the ray the sample being read is (an all-float record:
+   the float is not boxed) *)
+type at = { mutable x : float }
 
 type st = {
   buf : Float.Array.t;  (** samples: 0 and 1 a stretch's ends, 2 + k a middle at depth k *)
@@ -15,13 +19,19 @@ type st = {
   lit : Color.acc;  (** the light scattered at a sample *)
   sum : Color.acc;  (** a stretch's mean of the second triple *)
   sumx : Color.acc;  (** its mean extinction *)
+  od : Color.acc;  (** the optical depth of the ray so far *)
+  got : Color.acc;  (** the light gathered so far *)
+  lit_spans : Lit.t;  (** the ray's lit and unlit stretches *)
+  mutable lit_now : bool;  (** the interval sampled is lit *)
+  at : at;
 }
 
 let key =
   Scratch.key (fun () ->
       { buf = Float.Array.make (slot * (max_depth + 3)) 0.; r = Ray.scratch (); p = Vec3.m ();
         pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0.; lit = Color.acc 0.;
-        sum = Color.acc 0.; sumx = Color.acc 0. })
+        sum = Color.acc 0.; sumx = Color.acc 0.; od = Color.acc 0.; got = Color.acc 0.;
+        lit_spans = Lit.make (); lit_now = false; at = { x = 0. } })
 
 (* the light of every media-interacting light reaching [p], each weighted
    by the phase of [sc] toward the eye, into [st.lit] *)
@@ -32,7 +42,8 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
   let l = Shadow.toward w in
   for i = 0 to Array.length s.lights - 1 do
     let light = s.lights.(i) in
-    if light.media_interaction then begin
+    (* POV-Ray reads a light only inside its lit part of the ray *)
+    if Lit.lights st.lit_spans i st.at.x then begin
       Light.direction_into light p l;
       let att = Light.attenuation_m light p in
       if att > 0. then begin
@@ -58,6 +69,7 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
 (* the sample at [x] along the ray into slot [k] *)
 let sample s st (inside : Interior.t list) x k =
   let r = st.r and p = st.p in
+  st.at.x <- x;
   Vec3.set p (r.ox +. (x *. r.dx)) (r.oy +. (x *. r.dy)) (r.oz +. (x *. r.dz));
   let b = st.buf and o = k * slot in
   for j = 0 to slot - 1 do
@@ -81,94 +93,187 @@ let sample s st (inside : Interior.t list) x k =
           match m.scattering with
           | None -> ()
           | Some sc ->
-              in_scatter s st sc p;
+              if st.lit_now then in_scatter s st sc p else Color.acc_set st.lit 0. 0. 0.;
               let lr = dr *. sc.color.r *. st.lit.ar
               and lg = dg *. sc.color.g *. st.lit.ag
               and lb = db *. sc.color.b *. st.lit.ab in
-              add 3 lr; add 4 lg; add 5 lb; add 6 lr; add 7 lg; add 8 lb)
+              add 3 lr; add 4 lg; add 5 lb)
         i.media)
     inside
 
+(* POV-Ray's test for splitting a stretch: the colours of two samples
+   (emitted plus scattered light, over the whole interval: [thr] comes
+   divided by the interval's length) differ by more than [thr], summed
+   over the channels *)
 let differ st ka kb thr =
-  let b = st.buf in
-  let d j = Float.abs (Float.Array.get b ((ka * slot) + j) -. Float.Array.get b ((kb * slot) + j)) in
-  d 6 > thr || d 7 > thr || d 8 > thr
+  let b = st.buf and oa = ka * slot and ob = kb * slot in
+  Float.abs (Float.Array.get b (oa + 3) -. Float.Array.get b (ob + 3))
+  +. Float.abs (Float.Array.get b (oa + 4) -. Float.Array.get b (ob + 4))
+  +. Float.abs (Float.Array.get b (oa + 5) -. Float.Array.get b (ob + 5))
+  > thr
 
-(* a stretch [a, b] whose ends are in slots [ka], [kb], its middle read
-   into slot 2 + depth, split while its scattered light differs by more
-   than [thr] ([level] splits left): [w] times its mean added to [sum]
-   and [sumx] *)
+(* the samples in slots [ka], [kb], [kc] weighing [wa], [wb], [wc] added
+   to [sumx] and [sum] *)
+let[@inline] mix bf oa ob oc wa wb wc j =
+  (wa *. Float.Array.get bf (oa + j)) +. (wb *. Float.Array.get bf (ob + j)) +. (wc *. Float.Array.get bf (oc + j))
+
+let add3 st ka kb kc wa wb wc =
+  let bf = st.buf and oa = ka * slot and ob = kb * slot and oc = kc * slot in
+  let sx = st.sumx and sm = st.sum in
+  Color.acc_set sx
+    (sx.ar +. mix bf oa ob oc wa wb wc 0)
+    (sx.ag +. mix bf oa ob oc wa wb wc 1)
+    (sx.ab +. mix bf oa ob oc wa wb wc 2);
+  Color.acc_set sm
+    (sm.ar +. mix bf oa ob oc wa wb wc 3)
+    (sm.ag +. mix bf oa ob oc wa wb wc 4)
+    (sm.ab +. mix bf oa ob oc wa wb wc 5)
+
+(* a stretch [a, b] weighing [w], whose ends are in slots [ka], [kb], its
+   middle read into slot 2 + depth; with [level] splits left, each half
+   whose ends differ (see [differ]) is split again, as POV-Ray 3.7 does
+   (images identical to its own on spotlight beams): a whole stretch
+   counts its ends and middle alike, a half left whole counts its outer
+   end twice as much as the middle (the middle's other share goes with
+   the other half) *)
 let rec stretch s st inside a b ka kb depth level thr w =
   let km = 2 + depth in
   sample s st inside (0.5 *. (a +. b)) km;
-  if level > 0 && depth < max_depth && (differ st ka km thr || differ st km kb thr) then begin
-    let m = 0.5 *. (a +. b) in
-    stretch s st inside a m ka km (depth + 1) (level - 1) thr (0.5 *. w);
-    stretch s st inside m b km kb (depth + 1) (level - 1) thr (0.5 *. w)
-  end
+  if level <= 0 || depth >= max_depth then add3 st ka km kb (w /. 3.) (w /. 3.) (w /. 3.)
   else begin
-    let bf = st.buf and k = w /. 3. in
-    let g kk j = Float.Array.get bf ((kk * slot) + j) in
-    let m j = k *. (g ka j +. g km j +. g kb j) in
-    Color.acc_set st.sumx (st.sumx.ar +. m 0) (st.sumx.ag +. m 1) (st.sumx.ab +. m 2);
-    Color.acc_set st.sum (st.sum.ar +. m 3) (st.sum.ag +. m 4) (st.sum.ab +. m 5)
+    let m = 0.5 *. (a +. b) in
+    if differ st ka km thr then stretch s st inside a m ka km (depth + 1) (level - 1) thr (0.5 *. w)
+    else add3 st ka km kb (w /. 3.) (w /. 6.) 0.;
+    if differ st km kb thr then stretch s st inside m b km kb (depth + 1) (level - 1) thr (0.5 *. w)
+    else add3 st ka km kb 0. (w /. 6.) (w /. 3.)
   end
 
 let rec first_medium = function
   | [] -> None
   | (i : Interior.t) :: r -> ( match i.media with m :: _ -> Some m | [] -> first_medium r)
 
+(* POV-Ray samples with the settings of the medium with the most
+   intervals (the first of them) *)
+let rec most_intervals (best : Media.t) = function
+  | [] -> best
+  | (i : Interior.t) :: r -> most_intervals (pick best i.media) r
+
+and pick best = function
+  | [] -> best
+  | (m : Media.t) :: ms -> pick (if m.intervals > best.intervals then m else best) ms
+
+(* a stretch's light, dimmed by the depth before it *)
+let gather st =
+  let x = st.sumx and c = st.sum and od = st.od and g = st.got in
+  Color.acc_set g
+    (g.ar +. (c.ar *. Float.exp (-.od.ar)))
+    (g.ag +. (c.ag *. Float.exp (-.od.ag)))
+    (g.ab +. (c.ab *. Float.exp (-.od.ab)));
+  Color.acc_set od (od.ar +. x.ar) (od.ag +. x.ag) (od.ab +. x.ab)
+
+(* one of POV-Ray's sampling intervals, [a, b] along the ray, sampled by
+   [m0]'s method into [st.od] and [st.got] *)
+let interval s st inside (m0 : Media.t) a b =
+  let ds = b -. a in
+  if m0.meth = 2 then begin
+    (* [samples] midpoints, each dimmed by its own extinction over its
+       distance into the interval, the interval by the depth before it
+       (POV-Ray 3.7's rule: exact for constant media) *)
+    let n = max 1 m0.samples in
+    let k = 1. /. float_of_int n in
+    Color.acc_set st.sumx 0. 0. 0.;
+    Color.acc_set st.sum 0. 0. 0.;
+    for i = 0 to n - 1 do
+      let d0 = ds *. (float_of_int i +. 0.5) *. k in
+      sample s st inside (a +. d0) 0;
+      let b = st.buf and kd = k *. ds and sx = st.sumx and sm = st.sum in
+      Color.acc_set sx
+        (sx.ar +. (kd *. Float.Array.get b 0))
+        (sx.ag +. (kd *. Float.Array.get b 1))
+        (sx.ab +. (kd *. Float.Array.get b 2));
+      Color.acc_set sm
+        (sm.ar +. (kd *. Float.Array.get b 3 *. Float.exp (-.(Float.Array.get b 0 *. d0))))
+        (sm.ag +. (kd *. Float.Array.get b 4 *. Float.exp (-.(Float.Array.get b 1 *. d0))))
+        (sm.ab +. (kd *. Float.Array.get b 5 *. Float.exp (-.(Float.Array.get b 2 *. d0))))
+    done;
+    gather st
+  end
+  else begin
+    let n = Media.pieces m0 in
+    let w = ds /. float_of_int n in
+    let step = ds /. float_of_int (n + 1) in
+    sample s st inside a 0;
+    for i = 0 to n - 1 do
+      let x = a +. (step *. float_of_int i) in
+      (* ends alternate between slots 0 and 1 *)
+      let ka = i land 1 and kb = 1 - (i land 1) in
+      sample s st inside (x +. step) kb;
+      Color.acc_set st.sumx 0. 0. 0.;
+      Color.acc_set st.sum 0. 0. 0.;
+      (* POV-Ray's aa_level counts the stretch itself *)
+      stretch s st inside x (x +. step) ka kb 0 (m0.aa_level - 1) (m0.aa_threshold /. ds) w;
+      gather st
+    done
+  end
+
+let weight lt (m0 : Media.t) i = if Lit.is_lit lt i then m0.ratio else 1. -. m0.ratio
+
+(* POV-Ray's sampling intervals: at least [intervals] of them, at least one
+   per lit or unlit stretch, shared among the stretches by [ratio] (the lit
+   ones take [ratio] of them) when there are several; a single stretch is
+   cut into [intervals] even parts, or left whole when it is unlit and the
+   medium constant *)
+let intervals s st inside (m0 : Media.t) =
+  let lt = st.lit_spans in
+  let nlit = Lit.count lt in
+  let total = max m0.intervals nlit in
+  if nlit = 1 then begin
+    let a = Lit.lo lt 0 and b = Lit.hi lt 0 in
+    st.lit_now <- Lit.is_lit lt 0;
+    if (not (Lit.is_lit lt 0)) && Media.constant m0 then interval s st inside m0 a b
+    else
+      let d = (b -. a) /. float_of_int total in
+      for j = 0 to total - 1 do
+        interval s st inside m0 (a +. (d *. float_of_int j)) (a +. (d *. float_of_int (j + 1)))
+      done
+  end
+  else begin
+    let sum = ref 0. in
+    for i = 0 to nlit - 1 do
+      sum := !sum +. weight lt m0 i
+    done;
+    let remaining = ref total in
+    for i = 0 to nlit - 1 do
+      let n = int_of_float (weight lt m0 i /. !sum *. float_of_int total) + 1 in
+      let n = min n (!remaining - nlit + i + 1) in
+      let a = Lit.lo lt i in
+      let d = (Lit.hi lt i -. a) /. float_of_int n in
+      st.lit_now <- Lit.is_lit lt i;
+      for j = 0 to n - 1 do
+        interval s st inside m0 (a +. (d *. float_of_int j)) (a +. (d *. float_of_int (j + 1)))
+      done;
+      remaining := !remaining - n
+    done
+  end
+
 let apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
   match first_medium inside with
   | None -> ()
   | Some m0 when Float.is_finite t ->
+      let m0 = most_intervals m0 inside in
       let st = Scratch.get key in
       let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
       let r = st.r in
       r.ox <- o.mx; r.oy <- o.my; r.oz <- o.mz;
       r.dx <- d.mx /. dl; r.dy <- d.my /. dl; r.dz <- d.mz /. dl;
       let len = t *. dl in
-      let n = Media.pieces m0 in
-      let w = len /. float_of_int n in
-      (* optical depth so far, light gathered *)
-      let odr = ref 0. and odg = ref 0. and odb = ref 0. in
-      let gr = ref 0. and gg = ref 0. and gb = ref 0. in
-      let gather mid =
-        (* a stretch's light, dimmed by the depth before it ([mid]: half
-           of its own too, method 2) *)
-        let x = st.sumx and c = st.sum in
-        let h = if mid then 0.5 else 0. in
-        gr := !gr +. (c.ar *. Float.exp (-. (!odr +. (h *. x.ar))));
-        gg := !gg +. (c.ag *. Float.exp (-. (!odg +. (h *. x.ag))));
-        gb := !gb +. (c.ab *. Float.exp (-. (!odb +. (h *. x.ab))));
-        odr := !odr +. x.ar;
-        odg := !odg +. x.ag;
-        odb := !odb +. x.ab
-      in
-      if m0.meth = 2 then
-        for i = 0 to n - 1 do
-          sample s st inside (len *. (float_of_int i +. 0.5) /. float_of_int n) 0;
-          let g j = w *. Float.Array.get st.buf j in
-          Color.acc_set st.sumx (g 0) (g 1) (g 2);
-          Color.acc_set st.sum (g 3) (g 4) (g 5);
-          gather true
-        done
-      else begin
-        let step = len /. float_of_int (n + 1) in
-        sample s st inside 0. 0;
-        for i = 0 to n - 1 do
-          let a = step *. float_of_int i in
-          (* ends alternate between slots 0 and 1 *)
-          let ka = i land 1 and kb = 1 - (i land 1) in
-          sample s st inside (a +. step) kb;
-          Color.acc_set st.sumx 0. 0. 0.;
-          Color.acc_set st.sum 0. 0. 0.;
-          stretch s st inside a (a +. step) ka kb 0 m0.aa_level m0.aa_threshold w;
-          gather false
-        done
-      end;
+      Lit.cut st.lit_spans s.lights r len;
+      Color.acc_set st.od 0. 0. 0.;
+      Color.acc_set st.got 0. 0. 0.;
+      intervals s st inside m0;
+      let od = st.od and g = st.got in
       Color.acc_set out
-        ((out.ar *. Float.exp (-. !odr)) +. !gr)
-        ((out.ag *. Float.exp (-. !odg)) +. !gg)
-        ((out.ab *. Float.exp (-. !odb)) +. !gb)
+        ((out.ar *. Float.exp (-.od.ar)) +. g.ar)
+        ((out.ag *. Float.exp (-.od.ag)) +. g.ag)
+        ((out.ab *. Float.exp (-.od.ab)) +. g.ab)
   | Some _ -> ()

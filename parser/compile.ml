@@ -251,11 +251,6 @@ let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16
 (* how BVHs are built in parallel while a scene compiles (see [scene]) *)
 let par : (int -> (int -> unit) -> unit) option ref = ref None
 
-(* spotlights that scatter in media, where they stand: POV-Ray samples the
-   stretch of a ray inside a spotlight's cone as an interval of its own
-   (its shafts of light), which camlray does not *)
-let media_spots : Loc.t list ref = ref []
-
 let rec mesh (o : Sdl.obj) (m : Sdl.mesh) =
   match Phys.find_opt built m with
   | Some s -> s
@@ -421,7 +416,6 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
   | Sdl.Light l ->
-      (match l.kind with Light.Spot _ when l.media_interaction -> media_spots := o.loc :: !media_spots | _ -> ());
       ctx.lights := light o l :: !(ctx.lights);
       (* looks_like: an ordinary object placed at the light, casting no
          shadow (so that it does not block its own light) *)
@@ -527,7 +521,6 @@ and scene_ (s : Sdl.scene) =
     let objects = ref [] and lights = ref [] and cams = ref [] in
     let background = ref Color.black in
     let sky = ref Sky.none and fog = ref [] and media = ref [] in
-    media_spots := [];
     let rainbows = ref [] in
     group_sets := [];
     let settings = ref Scene.default_settings in
@@ -554,12 +547,6 @@ and scene_ (s : Sdl.scene) =
                 | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;
-    (match (!media, List.rev !media_spots) with
-    | _ :: _, l :: _ ->
-        Diag.error l
-          "a spotlight in atmospheric media is not supported by camlray (POV-Ray samples the stretch of a ray \
-           through its cone on its own); give it media_interaction off"
-    | _ -> ());
     let v37 = match s.version with Some v -> v >= 3.7 | None -> false in
     let encoding =
       match (v37, !gamma) with
