@@ -78,9 +78,12 @@ let add_extinction m p pig (dens : Color.acc) (out : Color.acc) =
    standing for 1/pieces of the interval (measured on its pictures) *)
 let pieces m = if m.meth = 2 then m.samples * m.intervals else max 2 ((m.samples / 2) + 1)
 
-type depth_scratch = { q : Vec3.m; pig : Pigment.out; dens : Color.acc; ext : Color.acc }
+(* [od]: the optical depth summed along a stretch (kept here: refs
+   captured by a closure would box every float added) *)
+type depth_scratch = { q : Vec3.m; pig : Pigment.out; dens : Color.acc; ext : Color.acc; od : Color.acc }
 
-let depth_key = Scratch.key (fun () -> { q = Vec3.m (); pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0. })
+let depth_key =
+  Scratch.key (fun () -> { q = Vec3.m (); pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0.; od = Color.acc 0. })
 
 let rec add_all ms p pig dens out =
   match ms with
@@ -97,38 +100,37 @@ let ext_at ms (r : Ray.scratch) x st =
   Color.acc_set st.ext 0. 0. 0.;
   add_all ms st.q st.pig st.dens st.ext
 
+(* [k] times the extinction at [x] along [r], added to [st.od] *)
+let[@inline] add_depth ms r st k x =
+  ext_at ms r x st;
+  let od = st.od and e = st.ext in
+  Color.acc_set od (od.ar +. (k *. e.ar)) (od.ag +. (k *. e.ag)) (od.ab +. (k *. e.ab))
+
 let transmittance_into ms (r : Ray.scratch) lo hi (out : Color.acc) =
   match ms with
   | [] -> ()
   | m0 :: _ ->
       let st = Scratch.get depth_key in
       let len = hi -. lo in
-      let odr = ref 0. and odg = ref 0. and odb = ref 0. in
+      let od = st.od in
       if all_constant ms then begin
         ext_at ms r lo st;
-        odr := st.ext.ar *. len;
-        odg := st.ext.ag *. len;
-        odb := st.ext.ab *. len
+        Color.acc_set od (st.ext.ar *. len) (st.ext.ag *. len) (st.ext.ab *. len)
       end
       else begin
+        Color.acc_set od 0. 0. 0.;
         let n = pieces m0 in
-        let add k x =
-          ext_at ms r x st;
-          odr := !odr +. (k *. st.ext.ar);
-          odg := !odg +. (k *. st.ext.ag);
-          odb := !odb +. (k *. st.ext.ab)
-        in
         if m0.meth = 2 then
           for i = 0 to n - 1 do
-            add (len /. float_of_int n) (lo +. (len *. (float_of_int i +. 0.5) /. float_of_int n))
+            add_depth ms r st (len /. float_of_int n) (lo +. (len *. (float_of_int i +. 0.5) /. float_of_int n))
           done
         else
           let step = len /. float_of_int (n + 1) and k = len /. float_of_int n /. 3. in
           for i = 0 to n - 1 do
             let a = lo +. (step *. float_of_int i) in
-            add k a;
-            add k (a +. (0.5 *. step));
-            add k (a +. step)
+            add_depth ms r st k a;
+            add_depth ms r st k (a +. (0.5 *. step));
+            add_depth ms r st k (a +. step)
           done
       end;
-      Color.acc_set out (out.ar *. Float.exp (-. !odr)) (out.ag *. Float.exp (-. !odg)) (out.ab *. Float.exp (-. !odb))
+      Color.acc_set out (out.ar *. Float.exp (-.od.ar)) (out.ag *. Float.exp (-.od.ag)) (out.ab *. Float.exp (-.od.ab))
