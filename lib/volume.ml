@@ -47,14 +47,12 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
       Light.direction_into light p l;
       let att = Light.attenuation_m light p in
       if att > 0. then begin
-        let sr, sg, sb =
-          if light.shadowless then (1., 1., 1.)
-          else begin
-            Shadow.light s w light p;
-            let a = Shadow.passed w in
-            (a.ar, a.ag, a.ab)
-          end
-        in
+        (* no tuple: the channels stay unboxed *)
+        if not light.shadowless then Shadow.light s w light p;
+        let a = Shadow.passed w in
+        let sr = if light.shadowless then 1. else a.ar
+        and sg = if light.shadowless then 1. else a.ag
+        and sb = if light.shadowless then 1. else a.ab in
         (* the light travels along -l, the eye is back along the ray *)
         let c = (l.lx *. r.dx) +. (l.ly *. r.dy) +. (l.lz *. r.dz) in
         let k = att *. Media.phase sc c in
@@ -66,6 +64,52 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
     end
   done
 
+(* [v] added to the sample buffer's [i]th float *)
+let[@inline] bump b i v = Float.Array.set b i (Float.Array.get b i +. v)
+
+(* medium [m]'s share of the sample at [p] (the ray's point), added to the
+   buffer's slot at [o] *)
+let medium s st (m : Media.t) p o =
+  let b = st.buf in
+  Color.acc_set st.ext 0. 0. 0.;
+  Media.add_extinction m p st.pig st.dens st.ext;
+  (* [add_extinction] left the density in [dens]; no tuple: the channels
+     stay unboxed *)
+  let c = Media.constant m in
+  let dr = if c then 1. else st.dens.ar and dg = if c then 1. else st.dens.ag and db = if c then 1. else st.dens.ab in
+  bump b o st.ext.ar;
+  bump b (o + 1) st.ext.ag;
+  bump b (o + 2) st.ext.ab;
+  bump b (o + 3) (dr *. m.emission.r);
+  bump b (o + 4) (dg *. m.emission.g);
+  bump b (o + 5) (db *. m.emission.b);
+  match m.scattering with
+  | None -> ()
+  | Some sc ->
+      if st.lit_now then in_scatter s st sc p else Color.acc_set st.lit 0. 0. 0.;
+      let lr = dr *. sc.color.r *. st.lit.ar
+      and lg = dg *. sc.color.g *. st.lit.ag
+      and lb = db *. sc.color.b *. st.lit.ab in
+      bump b (o + 3) lr;
+      bump b (o + 4) lg;
+      bump b (o + 5) lb
+
+(* every medium of the interiors, in order (loops, not closures: a
+   sample is taken thousands of times a ray) *)
+let rec media_of s st (ms : Media.t list) p o =
+  match ms with
+  | [] -> ()
+  | m :: rest ->
+      medium s st m p o;
+      media_of s st rest p o
+
+let rec interiors s st (inside : Interior.t list) p o =
+  match inside with
+  | [] -> ()
+  | i :: rest ->
+      media_of s st i.media p o;
+      interiors s st rest p o
+
 (* the sample at [x] along the ray into slot [k] *)
 let sample s st (inside : Interior.t list) x k =
   let r = st.r and p = st.p in
@@ -75,31 +119,7 @@ let sample s st (inside : Interior.t list) x k =
   for j = 0 to slot - 1 do
     Float.Array.set b (o + j) 0.
   done;
-  List.iter
-    (fun (i : Interior.t) ->
-      List.iter
-        (fun (m : Media.t) ->
-          Color.acc_set st.ext 0. 0. 0.;
-          Media.add_extinction m p st.pig st.dens st.ext;
-          (* [add_extinction] left the density in [dens] *)
-          let dr, dg, db = if Media.constant m then (1., 1., 1.) else (st.dens.ar, st.dens.ag, st.dens.ab) in
-          let add j v = Float.Array.set b (o + j) (Float.Array.get b (o + j) +. v) in
-          add 0 st.ext.ar;
-          add 1 st.ext.ag;
-          add 2 st.ext.ab;
-          add 3 (dr *. m.emission.r);
-          add 4 (dg *. m.emission.g);
-          add 5 (db *. m.emission.b);
-          match m.scattering with
-          | None -> ()
-          | Some sc ->
-              if st.lit_now then in_scatter s st sc p else Color.acc_set st.lit 0. 0. 0.;
-              let lr = dr *. sc.color.r *. st.lit.ar
-              and lg = dg *. sc.color.g *. st.lit.ag
-              and lb = db *. sc.color.b *. st.lit.ab in
-              add 3 lr; add 4 lg; add 5 lb)
-        i.media)
-    inside
+  interiors s st inside p o
 
 (* POV-Ray's test for splitting a stretch: the colours of two samples
    (emitted plus scattered light, over the whole interval: [thr] comes
