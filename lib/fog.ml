@@ -52,17 +52,19 @@ let[@inline] transmittance f (o : Vec3.m) (d : Vec3.m) width =
       Float.exp (-.w *. density /. f.distance)
 
 (* per domain: the ray's unit direction, and the fogs' running product
-   of attenuations and sum of colours (r, g, b each) *)
+   of attenuations and sum of colours (r, g, b each), then the width of
+   fog crossed (kept there, not passed: a float argument is boxed) *)
 type work = { u : Vec3.m; sums : Float.Array.t }
 
-let work_key = Scratch.key (fun () -> { u = Vec3.m (); sums = Float.Array.make 6 0. })
+let work_key = Scratch.key (fun () -> { u = Vec3.m (); sums = Float.Array.make 7 0. })
 
-let rec through fogs (o : Vec3.m) (w : work) width =
+let rec through fogs (o : Vec3.m) (w : work) =
   match fogs with
   | [] -> ()
   | f :: rest ->
       if Float.abs f.distance > 1e-10 then begin
         let fc = f.color and s = w.sums in
+        let width = Float.Array.get s 6 in
         let a = Float.max fc.transmit (transmittance f o w.u width) in
         let flt = fc.filter in
         for i = 0 to 2 do
@@ -71,7 +73,7 @@ let rec through fogs (o : Vec3.m) (w : work) width =
           Float.Array.set s (i + 3) (Float.Array.get s (i + 3) +. ((1. -. a) *. c))
         done
       end;
-      through rest o w width
+      through rest o w
 
 let apply fogs (o : Vec3.m) (d : Vec3.m) t (c : Color.acc) =
   let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
@@ -80,17 +82,19 @@ let apply fogs (o : Vec3.m) (d : Vec3.m) t (c : Color.acc) =
   let s = w.sums in
   Float.Array.fill s 0 3 1.;
   Float.Array.fill s 3 3 0.;
-  through fogs o w (if t = infinity then missed else t *. dl);
+  Float.Array.set s 6 (if t = infinity then missed else t *. dl);
+  through fogs o w;
   Color.acc_set c
     (Float.Array.get s 3 +. (Float.Array.get s 0 *. c.ar))
     (Float.Array.get s 4 +. (Float.Array.get s 1 *. c.ag))
     (Float.Array.get s 5 +. (Float.Array.get s 2 *. c.ab))
 
-let dim fogs (o : Vec3.m) (d : Vec3.m) width (c : Color.acc) =
+let[@inline] dim fogs (o : Vec3.m) (d : Vec3.m) width (c : Color.acc) =
   let w = Scratch.get work_key in
   Vec3.set w.u d.mx d.my d.mz;
   let s = w.sums in
   Float.Array.fill s 0 3 1.;
   Float.Array.fill s 3 3 0.;
-  through fogs o w width;
+  Float.Array.set s 6 width;
+  through fogs o w;
   Color.acc_set c (Float.Array.get s 0 *. c.ar) (Float.Array.get s 1 *. c.ag) (Float.Array.get s 2 *. c.ab)

@@ -106,12 +106,17 @@ let[@inline] add_depth ms r st k x =
   let od = st.od and e = st.ext in
   Color.acc_set od (od.ar +. (k *. e.ar)) (od.ag +. (k *. e.ag)) (od.ab +. (k *. e.ab))
 
-let transmittance_into ms (r : Ray.scratch) lo hi (out : Color.acc) =
+type span = { mutable lo : float; mutable hi : float }
+
+let span () = { lo = 0.; hi = 0. }
+
+let transmittance_into ms (r : Ray.scratch) (sp : span) (out : Color.acc) =
   match ms with
   | [] -> ()
   | m0 :: _ ->
       let st = Scratch.get depth_key in
-      let len = hi -. lo in
+      let lo = sp.lo in
+      let len = sp.hi -. lo in
       let od = st.od in
       if all_constant ms then begin
         ext_at ms r lo st;

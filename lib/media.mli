@@ -58,7 +58,13 @@ val add_extinction : t -> Vec3.m -> Pigment.out -> Color.acc -> Color.acc -> uni
     (absorption + extinction x scattering, times density) added into
     [out]; [pig], [dens]: scratch. *)
 
-val transmittance_into : t list -> Ray.scratch -> float -> float -> Color.acc -> unit
-(** [transmittance_into ms r lo hi out]: [out] times what crosses the
-    media [ms] from [lo] to [hi] along [r] (unit direction): exact for
-    constant media, sampled as {!pieces} says otherwise. *)
+type span = { mutable lo : float; mutable hi : float }
+(** A stretch of a ray, [lo] to [hi] along it (all floats: they are
+    stored unboxed, so passing one allocates nothing) *)
+
+val span : unit -> span
+
+val transmittance_into : t list -> Ray.scratch -> span -> Color.acc -> unit
+(** [transmittance_into ms r sp out]: [out] times what crosses the
+    media [ms] from [sp.lo] to [sp.hi] along [r] (unit direction): exact
+    for constant media, sampled as {!pieces} says otherwise. *)

@@ -16,14 +16,17 @@ and map =
   | Facets of Facets.t
   | Uv of { entry : t; turns : bool }
 
-let slope_height m v =
+(* the pattern value of a slope map's [i]th entry *)
+let[@inline] entry_value m i = Float.Array.unsafe_get m (3 * i)
+
+(* inlined: its float argument and result stay unboxed *)
+let[@inline] slope_height m v =
   let n = Float.Array.length m / 3 in
-  let value i = Float.Array.unsafe_get m (3 * i) in
-  if v <= value 0 then Float.Array.unsafe_get m 1
-  else if v >= value (n - 1) then Float.Array.unsafe_get m ((3 * (n - 1)) + 1)
+  if v <= entry_value m 0 then Float.Array.unsafe_get m 1
+  else if v >= entry_value m (n - 1) then Float.Array.unsafe_get m ((3 * (n - 1)) + 1)
   else begin
     let i = ref 1 in
-    while v > value !i do incr i done;
+    while v > entry_value m !i do incr i done;
     let a = 3 * (!i - 1) and b = 3 * !i in
     let v0 = Float.Array.unsafe_get m a and h0 = Float.Array.unsafe_get m (a + 1)
     and s0 = Float.Array.unsafe_get m (a + 2) in

@@ -92,20 +92,25 @@ let read_df3 path =
 (* POV-Ray's density_file: the unit cube [0, 1)^3, 0 outside; the voxel
    at floor(p * n), or trilinear between it and the next one up (which
    wraps to the first at the far faces) *)
+let[@inline] voxel d i j k = Float.Array.unsafe_get d.voxels ((((k * d.ny) + j) * d.nx) + i)
+
 let density3 d x y z =
   if not (x >= 0. && x < 1. && y >= 0. && y < 1. && z >= 0. && z < 1.) then 0.
   else
-    let v i j k = Float.Array.unsafe_get d.voxels ((((k * d.ny) + j) * d.nx) + i) in
     let fx = x *. float_of_int d.nx and fy = y *. float_of_int d.ny and fz = z *. float_of_int d.nz in
     let i1 = Int.min (d.nx - 1) (int_of_float fx) and j1 = Int.min (d.ny - 1) (int_of_float fy)
     and k1 = Int.min (d.nz - 1) (int_of_float fz) in
-    if d.interpolate = 0 then v i1 j1 k1
+    if d.interpolate = 0 then voxel d i1 j1 k1
     else
       let i2 = (i1 + 1) mod d.nx and j2 = (j1 + 1) mod d.ny and k2 = (k1 + 1) mod d.nz in
       let tx = fx -. Float.of_int i1 and ty = fy -. Float.of_int j1 and tz = fz -. Float.of_int k1 in
       let sx = 1. -. tx and sy = 1. -. ty and sz = 1. -. tz in
-      (((((v i1 j1 k1 *. sx) +. (v i2 j1 k1 *. tx)) *. sy) +. (((v i1 j2 k1 *. sx) +. (v i2 j2 k1 *. tx)) *. ty)) *. sz)
-      +. (((((v i1 j1 k2 *. sx) +. (v i2 j1 k2 *. tx)) *. sy) +. (((v i1 j2 k2 *. sx) +. (v i2 j2 k2 *. tx)) *. ty)) *. tz)
+      (((((voxel d i1 j1 k1 *. sx) +. (voxel d i2 j1 k1 *. tx)) *. sy)
+        +. (((voxel d i1 j2 k1 *. sx) +. (voxel d i2 j2 k1 *. tx)) *. ty))
+       *. sz)
+      +. (((((voxel d i1 j1 k2 *. sx) +. (voxel d i2 j1 k2 *. tx)) *. sy)
+           +. (((voxel d i1 j2 k2 *. sx) +. (voxel d i2 j2 k2 *. tx)) *. ty))
+          *. tz)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
 

@@ -101,25 +101,25 @@ let pixel (im : image) i j =
   let i = ((i mod im.w) + im.w) mod im.w and j = ((j mod im.h) + im.h) mod im.h in
   im.px.((j * im.w) + i)
 
+(* the longitude of (x, z) from +x towards +z, in turns *)
+let[@inline] longitude x z =
+  if (x *. x) +. (z *. z) = 0. then 0.
+  else
+    let a = Float.atan2 z x in
+    (if a < 0. then a +. (2. *. Float.pi) else a) /. (2. *. Float.pi)
+
 (* the image at [p] (in its own space) into [o]; interpolated: the lerp of
-   two lerps, as [lerp] makes it, channel by channel *)
+   two lerps, as [lerp] makes it, channel by channel (no tuple or closure:
+   the floats stay unboxed) *)
 let image_into (im : image) (p : Vec3.m) (o : out) =
   let x = p.mx and y = p.my and z = p.mz in
-  (* the longitude from +x towards +z, in turns *)
-  let longitude () =
-    if (x *. x) +. (z *. z) = 0. then 0.
-    else
-      let a = Float.atan2 z x in
-      (if a < 0. then a +. (2. *. Float.pi) else a) /. (2. *. Float.pi)
-  in
-  let u, v =
-    match im.map_type with
-    | 1 ->
-        let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
-        if l = 0. then (0., 0.)
-        else (longitude (), 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi))
-    | 2 -> (longitude (), y)
-    | _ -> (x, y)
+  let mt = im.map_type in
+  (* spherical: the latitude from the distance to the centre *)
+  let l = if mt = 1 then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 1. in
+  let u = if mt = 1 then if l = 0. then 0. else longitude x z else if mt = 2 then longitude x z else x in
+  let v =
+    if mt = 1 then if l = 0. then 0. else 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi)
+    else y
   in
   if im.once && (u < 0. || u >= 1. || v < 0. || v >= 1.) then set o clear
   else

@@ -34,12 +34,13 @@ let work_key = Scratch.key (fun () -> { q = Vec3.m (); c = Pigment.out (); sum =
 
 (* a number in [-1, 1) from the direction's bits: the same for the same
    ray on every run *)
-let hash_unit (d : Vec3.m) =
-  let mix h x =
-    let b = Int64.bits_of_float x in
-    let h = (h lxor Int64.to_int b lxor Int64.to_int (Int64.shift_right_logical b 32)) * 0x9E3779B1 in
-    h lxor (h lsr 15)
-  in
+let[@inline] mix h x =
+  let b = Int64.bits_of_float x in
+  let h = (h lxor Int64.to_int b lxor Int64.to_int (Int64.shift_right_logical b 32)) * 0x9E3779B1 in
+  h lxor (h lsr 15)
+
+(* inlined: its float result stays unboxed *)
+let[@inline] hash_unit (d : Vec3.m) =
   let h = mix (mix (mix 0x2545F491 d.mx) d.my) d.mz in
   (float_of_int (h land 0xFFFFFF) /. float_of_int 0x800000) -. 1.
 
@@ -83,13 +84,16 @@ let one r (d : Vec3.m) (c : Color.acc) w =
     true
   end
 
+(* how many of [rainbows] are seen along [d], each laid into [w.sum] *)
+let rec count rainbows d c w n =
+  match rainbows with [] -> n | r :: rest -> count rest d c w (if one r d c w then n + 1 else n)
+
 let apply rainbows (d : Vec3.m) t (c : Color.acc) =
   let w = Scratch.get work_key in
   Float.Array.set w.t 0 t;
   let sum = w.sum in
   Color.acc_set sum 0. 0. 0.;
-  let rec go n = function [] -> n | r :: rest -> go (if one r d c w then n + 1 else n) rest in
-  let n = go 0 rainbows in
+  let n = count rainbows d c w 0 in
   if n > 0 then begin
     let k = 1. /. float_of_int n in
     Color.acc_set c (k *. sum.ar) (k *. sum.ag) (k *. sum.ab)

@@ -84,6 +84,7 @@ type walk = {
           media_interaction on, else [[]] *)
   fo : Vec3.m;  (** where a stretch of fog starts *)
   fd : Vec3.m;  (** the shadow ray's direction, for the fogs *)
+  sp : Media.span;  (** the stretch being dimmed *)
 }
 
 let shadow_key =
@@ -94,7 +95,7 @@ let shadow_key =
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
-        fd = Vec3.m () })
+        fd = Vec3.m (); sp = Media.span () })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -193,11 +194,13 @@ let toggle (w : walk) (i : Interior.t) =
     w.ni <- w.ni - 1
   end
 
-(* What a stretch [lo, hi] of the shadow ray takes from the light: the
+(* What a stretch [w.sp] of the shadow ray takes from the light: the
    fade and the media of the interiors it runs in, and, in the open
-   (inside hollow objects only), the fogs *)
-let stretch (w : walk) lo hi =
+   (inside hollow objects only), the fogs (the ends are read from the
+   walk: float arguments would be boxed) *)
+let stretch (w : walk) =
   let a = w.acc and r = w.ray in
+  let lo = w.sp.lo and hi = w.sp.hi in
   let inner = ref true in
   for j = 0 to w.ni - 1 do
     let i = w.inside.(j) in
@@ -211,7 +214,7 @@ let stretch (w : walk) lo hi =
     end;
     (* the interior's media dim the light (POV-Ray 3.7 does so whatever
        the light's media_attenuation) *)
-    if i.media <> [] then Media.transmittance_into i.media r lo hi a
+    if i.media <> [] then Media.transmittance_into i.media r w.sp a
   done;
   if w.fogs != [] && !inner then begin
     Vec3.set w.fo (r.ox +. (lo *. r.dx)) (r.oy +. (lo *. r.dy)) (r.oz +. (lo *. r.dz));
@@ -228,7 +231,8 @@ let stretch (w : walk) lo hi =
    a hollow CSG only over the stretches inside it (measured: a shell
    between spheres of radius 10 and 20 with absorption 0.05, lit from a
    point inside it through one side: 0.606531 = exp(-0.5)). *)
-let stretches (w : walk) dist =
+let stretches (w : walk) =
+  let dist = w.seg.len in
   let n = w.nf and ts = w.fts and ord = w.order in
   for j = 0 to n - 1 do
     let t = Float.Array.get ts j in
@@ -254,7 +258,11 @@ let stretches (w : walk) dist =
   let lo = ref 0. in
   for a = 0 to n do
     let hi = if a = n then dist else Float.Array.get ts ord.(a) in
-    if hi > !lo && not (Color.acc_is_black w.acc) then stretch w !lo hi;
+    if hi > !lo && not (Color.acc_is_black w.acc) then begin
+      w.sp.lo <- !lo;
+      w.sp.hi <- hi;
+      stretch w
+    end;
     if a < n then toggle w w.fobjs.(ord.(a)).interior;
     lo := Float.max !lo hi
   done
@@ -273,11 +281,15 @@ let shadow_into (s : Scene.t) (w : walk) =
   let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
   if not visible then Color.acc_set w.acc 0. 0. 0.
   else begin
-    if w.nf > 0 || w.fogs != [] then stretches w dist;
+    if w.nf > 0 || w.fogs != [] then stretches w;
     (* atmospheric media: over the whole shadow ray, inside solids too
        (POV-Ray 3.7 does so, measured: a clear solid box on the way
        dims the light as much as a hollow one) *)
-    if w.air <> [] then Media.transmittance_into w.air w.ray 0. dist w.acc
+    if w.air <> [] then begin
+      w.sp.lo <- 0.;
+      w.sp.hi <- dist;
+      Media.transmittance_into w.air w.ray w.sp w.acc
+    end
   end
 
 (* Sample (i, j) of the area light in [w]: the shadow colour from its

@@ -44,41 +44,64 @@ let value s x y z = g (g (Float.abs x) (Float.abs y) s.ex) (Float.abs z) s.ez -.
 (* POV-Ray's inside: below its EPSILON (1e-10) *)
 let inside s x y z = value s x y z < 1e-10
 
-let dists_key = Scratch.key (fun () -> Float.Array.make 11 0.)
+(* Per domain, one float array (floats passed to functions that are not
+   inlined, or returned by them, would be boxed): the ray's stretch cut at
+   the nine planes (11 slots), then the slots below. *)
+let s_lo = 11 (* the ray's stretch in the box *)
+let s_hi = 12
+let s_ray = 13 (* px py pz dx dy dz: the ray, its direction unit *)
+let s_t0 = 19 (* a bracket: t0 v0 t1 v1 *)
+let s_result = 23
+
+let work_key = Scratch.key (fun () -> Float.Array.make 24 0.)
 
 let planes = [| (1., 1., 0.); (1., -1., 0.); (1., 0., 1.); (1., 0., -1.); (0., 1., 1.); (0., 1., -1.); (1., 0., 0.);
                 (0., 1., 0.); (0., 0., 1.) |]
 
-(* the stretch of the ray in the box [min_value, max_value]^3 *)
-let box_stretch px py pz dx dy dz =
-  let lo = ref neg_infinity and hi = ref infinity and ok = ref true in
-  let slab p d =
-    if Float.abs d > epsilon then begin
-      let a = (min_value -. p) /. d and b = (max_value -. p) /. d in
-      lo := Float.max !lo (Float.min a b);
-      hi := Float.min !hi (Float.max a b)
-    end
-    else if p < min_value || p > max_value then ok := false
-  in
-  slab px dx;
-  slab py dy;
-  slab pz dz;
-  if !ok && !lo <= !hi && !hi >= epsilon then Some (!lo, !hi) else None
+let[@inline] get w i = Float.Array.unsafe_get w i
+let[@inline] set w i v = Float.Array.unsafe_set w i v
 
-(* secant and bisection steps between samples of opposite signs: the
-   distance of the point found *)
-let solve_hit1 s px py pz dx dy dz t0 v0 t1 v1 =
-  let t0 = ref t0 and v0 = ref v0 and t1 = ref t1 and v1 = ref v1 and result = ref nan and i = ref 0 in
-  let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
+(* the superellipsoid's value at [t] along the ray in [w] *)
+let[@inline] at s w t =
+  value s (get w s_ray +. (t *. get w (s_ray + 3))) (get w (s_ray + 1) +. (t *. get w (s_ray + 4)))
+    (get w (s_ray + 2) +. (t *. get w (s_ray + 5)))
+
+(* one axis of the box: the ray's stretch in [w] narrowed to its slab;
+   false when the ray runs beside it *)
+let[@inline] slab w p d =
+  if Float.abs d > epsilon then begin
+    let a = (min_value -. p) /. d and b = (max_value -. p) /. d in
+    set w s_lo (Float.max (get w s_lo) (Float.min a b));
+    set w s_hi (Float.min (get w s_hi) (Float.max a b));
+    true
+  end
+  else not (p < min_value || p > max_value)
+
+(* the stretch of the ray in the box [min_value, max_value]^3, into the
+   [s_lo] and [s_hi] slots of [w]; false when there is none *)
+let box_stretch w =
+  set w s_lo neg_infinity;
+  set w s_hi infinity;
+  let px = get w s_ray and py = get w (s_ray + 1) and pz = get w (s_ray + 2) in
+  let ok = slab w px (get w (s_ray + 3)) in
+  let ok = slab w py (get w (s_ray + 4)) && ok in
+  let ok = slab w pz (get w (s_ray + 5)) && ok in
+  ok && get w s_lo <= get w s_hi && get w s_hi >= epsilon
+
+(* secant and bisection steps between samples of opposite signs (the
+   bracket in [w]): the distance of the point found, into [s_result] *)
+let solve_hit1 s w =
+  let t0 = ref (get w s_t0) and v0 = ref (get w (s_t0 + 1)) and t1 = ref (get w (s_t0 + 2))
+  and v1 = ref (get w (s_t0 + 3)) and result = ref nan and i = ref 0 in
   while Float.is_nan !result && !i < max_iterations do
     if Float.abs !v0 < zero_tolerance then result := !t0
     else if Float.abs !v1 < zero_tolerance then result := !t1
     else begin
       let x = Float.abs !v0 /. Float.abs (!v1 -. !v0) in
       let t2 = !t0 +. (x *. (!t1 -. !t0)) in
-      let v2 = at t2 in
+      let v2 = at s w t2 in
       let t3 = !t0 +. (0.5 *. (!t1 -. !t0)) in
-      let v3 = at t3 in
+      let v3 = at s w t3 in
       if v2 *. v3 < 0. then begin
         t0 := t2; v0 := v2; t1 := t3; v1 := v3
       end
@@ -90,19 +113,25 @@ let solve_hit1 s px py pz dx dy dz t0 v0 t1 v1 =
     end;
     incr i
   done;
-  if Float.is_nan !result then if Float.abs !v0 < Float.abs !v1 then !t0 else !t1 else !result
+  set w s_result (if Float.is_nan !result then if Float.abs !v0 < Float.abs !v1 then !t0 else !t1 else !result)
 
-(* no sign change between two samples: Newton's method from the first,
-   as POV-Ray tries it; the distance found, or nan *)
-let check_hit2 s px py pz dx dy dz t0 v0 t1 =
-  let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
-  let dt0 = ref t0 and dt1 = ref (t0 +. (0.0001 *. (t1 -. t0))) and v0 = ref v0 in
+(* no sign change between two samples (t0 v0 t1 of the bracket in [w]):
+   Newton's method from the first, as POV-Ray tries it; the distance
+   found, or nan, into [s_result] *)
+let check_hit2 s w =
+  let t0 = get w s_t0 and t1 = get w (s_t0 + 2) in
+  let dt0 = ref t0 and dt1 = ref (t0 +. (0.0001 *. (t1 -. t0))) and v0 = ref (get w (s_t0 + 1)) in
   let maxdelta = t1 -. t0 in
   let result = ref nan and go = ref true and i = ref 0 in
   while !go && !dt0 < t1 && !i < max_iterations do
-    let v1 = at !dt1 in
+    let v1 = at s w !dt1 in
     if !v0 *. v1 < 0. then begin
-      result := solve_hit1 s px py pz dx dy dz !dt0 !v0 !dt1 v1;
+      set w s_t0 !dt0;
+      set w (s_t0 + 1) !v0;
+      set w (s_t0 + 2) !dt1;
+      set w (s_t0 + 3) v1;
+      solve_hit1 s w;
+      result := get w s_result;
       go := false
     end
     else if Float.abs v1 < zero_tolerance then begin
@@ -121,76 +150,89 @@ let check_hit2 s px py pz dx dy dz t0 v0 t1 =
     end;
     incr i
   done;
-  !result
+  set w s_result !result
+
+(* [t] (in units of the unit direction) recorded in [h] when it is
+   nearer and beyond [tmin] *)
+let[@inline] accept (h : Hit.t) tmin len t =
+  (* distances in units of the ray's own direction *)
+  let t' = t /. len in
+  if t' > tmin && t' < h.t && t' *. len > depth_tolerance then begin
+    h.t <- t';
+    h.id <- 0.;
+    true
+  end
+  else false
 
 let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   let tmin = if h.floor > tmin then h.floor else tmin in
   let len = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let dx = r.dx /. len and dy = r.dy /. len and dz = r.dz /. len in
   let px = r.ox and py = r.oy and pz = r.oz in
-  match box_stretch px py pz dx dy dz with
-  | None -> false
-  | Some (t1, t2) ->
-      let t1 = Float.max t1 depth_tolerance in
-      (* the stretch cut at the nine planes, a little widened as POV-Ray
-         does; sorted in place in a per-domain array *)
-      let widen = epsilon *. (t2 -. t1) in
-      let dists = Scratch.get dists_key in
-      Float.Array.set dists 0 t1;
-      Float.Array.set dists 1 t2;
-      let n = ref 2 in
-      for k = 0 to Array.length planes - 1 do
-        let a, b, c = Array.unsafe_get planes k in
-        let d = (dx *. a) +. (dy *. b) +. (dz *. c) in
-        if Float.abs d >= epsilon then begin
-          let t = -.((px *. a) +. (py *. b) +. (pz *. c)) /. d in
-          if t >= t1 -. widen && t <= t2 +. widen then begin
-            Float.Array.set dists !n t;
-            incr n
-          end
+  let w = Scratch.get work_key in
+  set w s_ray px;
+  set w (s_ray + 1) py;
+  set w (s_ray + 2) pz;
+  set w (s_ray + 3) dx;
+  set w (s_ray + 4) dy;
+  set w (s_ray + 5) dz;
+  if not (box_stretch w) then false
+  else begin
+    let t1 = Float.max (get w s_lo) depth_tolerance and t2 = get w s_hi in
+    (* the stretch cut at the nine planes, a little widened as POV-Ray
+       does; sorted in place *)
+    let widen = epsilon *. (t2 -. t1) in
+    set w 0 t1;
+    set w 1 t2;
+    let n = ref 2 in
+    for k = 0 to Array.length planes - 1 do
+      let a, b, c = Array.unsafe_get planes k in
+      let d = (dx *. a) +. (dy *. b) +. (dz *. c) in
+      if Float.abs d >= epsilon then begin
+        let t = -.((px *. a) +. (py *. b) +. (pz *. c)) /. d in
+        if t >= t1 -. widen && t <= t2 +. widen then begin
+          set w !n t;
+          incr n
         end
+      end
+    done;
+    let n = !n in
+    for k = 1 to n - 1 do
+      let x = get w k in
+      let j = ref (k - 1) in
+      while !j >= 0 && get w !j > x do
+        set w (!j + 1) (get w !j);
+        decr j
       done;
-      let n = !n in
-      for k = 1 to n - 1 do
-        let x = Float.Array.get dists k in
-        let j = ref (k - 1) in
-        while !j >= 0 && Float.Array.get dists !j > x do
-          Float.Array.set dists (!j + 1) (Float.Array.get dists !j);
-          decr j
-        done;
-        Float.Array.set dists (!j + 1) x
-      done;
-
-      let at t = value s (px +. (t *. dx)) (py +. (t *. dy)) (pz +. (t *. dz)) in
-      let accept t =
-        (* distances in units of the ray's own direction *)
-        let t = t /. len in
-        if t > tmin && t < h.t && t *. len > depth_tolerance then begin
-          h.t <- t;
-          h.id <- 0.;
-          true
-        end
-        else false
-      in
-      let found = ref false and stop = ref false in
-      let dd i = Float.Array.get dists i in
-      let v0 = ref (at (dd 0)) in
-      if Float.abs !v0 < zero_tolerance && accept (dd 0) then found := true;
-      let i = ref 1 in
-      while (not !found) && (not !stop) && !i < n do
-        let v1 = at (dd !i) in
-        (if Float.abs v1 < zero_tolerance then (if accept (dd !i) then found := true)
-         else if !v0 *. v1 < 0. then begin
-           if accept (solve_hit1 s px py pz dx dy dz (dd (!i - 1)) !v0 (dd !i) v1) then found := true
+      set w (!j + 1) x
+    done;
+    let found = ref false and stop = ref false in
+    let v0 = ref (at s w (get w 0)) in
+    if Float.abs !v0 < zero_tolerance && accept h tmin len (get w 0) then found := true;
+    let i = ref 1 in
+    while (not !found) && (not !stop) && !i < n do
+      let v1 = at s w (get w !i) in
+      (if Float.abs v1 < zero_tolerance then (if accept h tmin len (get w !i) then found := true)
+       else begin
+         set w s_t0 (get w (!i - 1));
+         set w (s_t0 + 1) !v0;
+         set w (s_t0 + 2) (get w !i);
+         set w (s_t0 + 3) v1;
+         if !v0 *. v1 < 0. then begin
+           solve_hit1 s w;
+           if accept h tmin len (get w s_result) then found := true
          end
          else begin
-           let t = check_hit2 s px py pz dx dy dz (dd (!i - 1)) !v0 (dd !i) in
-           if not (Float.is_nan t) then if accept t then found := true else stop := true
-         end);
-        v0 := v1;
-        incr i
-      done;
-      !found
+           check_hit2 s w;
+           let t = get w s_result in
+           if not (Float.is_nan t) then if accept h tmin len t then found := true else stop := true
+         end
+       end);
+      v0 := v1;
+      incr i
+    done;
+    !found
+  end
 
 let normal_into s (p : Vec3.m) (out : Vec3.m) =
   let x = p.mx and y = p.my and z = p.mz in

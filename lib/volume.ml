@@ -5,9 +5,10 @@
 let slot = 6
 let max_depth = 12
 
-(* where along the ray the sample being read is (an all-float record:
-   the float is not boxed) *)
-type at = { mutable x : float }
+(* where along the ray the sample being read is, the interval being
+   sampled and its split threshold (an all-float record: the floats are
+   not boxed; passed as arguments they would be) *)
+type at = { mutable x : float; mutable lo : float; mutable hi : float; mutable thr : float }
 
 type st = {
   buf : Float.Array.t;  (** samples: 0 and 1 a stretch's ends, 2 + k a middle at depth k *)
@@ -24,6 +25,9 @@ type st = {
   lit_spans : Lit.t;  (** the ray's lit and unlit stretches *)
   mutable lit_now : bool;  (** the interval sampled is lit *)
   at : at;
+  stack : Float.Array.t;
+      (** the stretches being split: at depth [d], floats [3d] to [3d + 2]
+          are a stretch's ends and weight *)
 }
 
 let key =
@@ -31,7 +35,8 @@ let key =
       { buf = Float.Array.make (slot * (max_depth + 3)) 0.; r = Ray.scratch (); p = Vec3.m ();
         pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0.; lit = Color.acc 0.;
         sum = Color.acc 0.; sumx = Color.acc 0.; od = Color.acc 0.; got = Color.acc 0.;
-        lit_spans = Lit.make (); lit_now = false; at = { x = 0. } })
+        lit_spans = Lit.make (); lit_now = false;
+        at = { x = 0.; lo = 0.; hi = 0.; thr = 0. }; stack = Float.Array.make (3 * (max_depth + 2)) 0. })
 
 (* the light of every media-interacting light reaching [p], each weighted
    by the phase of [sc] toward the eye, into [st.lit] *)
@@ -110,10 +115,10 @@ let rec interiors s st (inside : Interior.t list) p o =
       media_of s st i.media p o;
       interiors s st rest p o
 
-(* the sample at [x] along the ray into slot [k] *)
-let sample s st (inside : Interior.t list) x k =
+(* the sample at [st.at.x] along the ray into slot [k] *)
+let sample s st (inside : Interior.t list) k =
   let r = st.r and p = st.p in
-  st.at.x <- x;
+  let x = st.at.x in
   Vec3.set p (r.ox +. (x *. r.dx)) (r.oy +. (x *. r.dy)) (r.oz +. (x *. r.dz));
   let b = st.buf and o = k * slot in
   for j = 0 to slot - 1 do
@@ -156,21 +161,38 @@ let add3 st ka kb kc wa wb wc =
    counts its ends and middle alike, a half left whole counts its outer
    end twice as much as the middle (the middle's other share goes with
    the other half) *)
-let rec stretch s st inside a b ka kb depth level thr w =
+let[@inline] push st depth a b w =
+  let f = st.stack and o = 3 * depth in
+  Float.Array.set f o a;
+  Float.Array.set f (o + 1) b;
+  Float.Array.set f (o + 2) w
+
+(* the stretch at [depth] on [st.stack]; the threshold is [st.at.thr] *)
+let rec stretch s st inside ka kb depth level =
+  let f = st.stack and o = 3 * depth in
+  let a = Float.Array.get f o and b = Float.Array.get f (o + 1) and w = Float.Array.get f (o + 2) in
   let km = 2 + depth in
-  sample s st inside (0.5 *. (a +. b)) km;
+  st.at.x <- 0.5 *. (a +. b);
+  sample s st inside km;
   if level <= 0 || depth >= max_depth then add3 st ka km kb (w /. 3.) (w /. 3.) (w /. 3.)
   else begin
     let m = 0.5 *. (a +. b) in
-    if differ st ka km thr then stretch s st inside a m ka km (depth + 1) (level - 1) thr (0.5 *. w)
+    if differ st ka km st.at.thr then begin
+      push st (depth + 1) a m (0.5 *. w);
+      stretch s st inside ka km (depth + 1) (level - 1)
+    end
     else add3 st ka km kb (w /. 3.) (w /. 6.) 0.;
-    if differ st km kb thr then stretch s st inside m b km kb (depth + 1) (level - 1) thr (0.5 *. w)
+    if differ st km kb st.at.thr then begin
+      push st (depth + 1) m b (0.5 *. w);
+      stretch s st inside km kb (depth + 1) (level - 1)
+    end
     else add3 st ka km kb 0. (w /. 6.) (w /. 3.)
   end
 
-let rec first_medium = function
-  | [] -> None
-  | (i : Interior.t) :: r -> ( match i.media with m :: _ -> Some m | [] -> first_medium r)
+(* the media of the first interior that has any ([[]]: none has) *)
+let rec first_media = function
+  | [] -> []
+  | (i : Interior.t) :: r -> ( match i.media with [] -> first_media r | ms -> ms)
 
 (* POV-Ray samples with the settings of the medium with the most
    intervals (the first of them) *)
@@ -191,10 +213,11 @@ let gather st =
     (g.ab +. (c.ab *. Float.exp (-.od.ab)));
   Color.acc_set od (od.ar +. x.ar) (od.ag +. x.ag) (od.ab +. x.ab)
 
-(* one of POV-Ray's sampling intervals, [a, b] along the ray, sampled by
-   [m0]'s method into [st.od] and [st.got] *)
-let interval s st inside (m0 : Media.t) a b =
-  let ds = b -. a in
+(* one of POV-Ray's sampling intervals, [st.at.lo, st.at.hi] along the
+   ray, sampled by [m0]'s method into [st.od] and [st.got] *)
+let interval s st inside (m0 : Media.t) =
+  let a = st.at.lo in
+  let ds = st.at.hi -. a in
   if m0.meth = 2 then begin
     (* [samples] midpoints, each dimmed by its own extinction over its
        distance into the interval, the interval by the depth before it
@@ -205,7 +228,8 @@ let interval s st inside (m0 : Media.t) a b =
     Color.acc_set st.sum 0. 0. 0.;
     for i = 0 to n - 1 do
       let d0 = ds *. (float_of_int i +. 0.5) *. k in
-      sample s st inside (a +. d0) 0;
+      st.at.x <- a +. d0;
+      sample s st inside 0;
       let b = st.buf and kd = k *. ds and sx = st.sumx and sm = st.sum in
       Color.acc_set sx
         (sx.ar +. (kd *. Float.Array.get b 0))
@@ -222,16 +246,20 @@ let interval s st inside (m0 : Media.t) a b =
     let n = Media.pieces m0 in
     let w = ds /. float_of_int n in
     let step = ds /. float_of_int (n + 1) in
-    sample s st inside a 0;
+    st.at.x <- a;
+    sample s st inside 0;
+    st.at.thr <- m0.aa_threshold /. ds;
     for i = 0 to n - 1 do
       let x = a +. (step *. float_of_int i) in
       (* ends alternate between slots 0 and 1 *)
       let ka = i land 1 and kb = 1 - (i land 1) in
-      sample s st inside (x +. step) kb;
+      st.at.x <- x +. step;
+      sample s st inside kb;
       Color.acc_set st.sumx 0. 0. 0.;
       Color.acc_set st.sum 0. 0. 0.;
+      push st 0 x (x +. step) w;
       (* POV-Ray's aa_level counts the stretch itself *)
-      stretch s st inside x (x +. step) ka kb 0 (m0.aa_level - 1) (m0.aa_threshold /. ds) w;
+      stretch s st inside ka kb 0 (m0.aa_level - 1);
       gather st
     done
   end
@@ -250,11 +278,17 @@ let intervals s st inside (m0 : Media.t) =
   if nlit = 1 then begin
     let a = Lit.lo lt 0 and b = Lit.hi lt 0 in
     st.lit_now <- Lit.is_lit lt 0;
-    if (not (Lit.is_lit lt 0)) && Media.constant m0 then interval s st inside m0 a b
+    if (not (Lit.is_lit lt 0)) && Media.constant m0 then begin
+      st.at.lo <- a;
+      st.at.hi <- b;
+      interval s st inside m0
+    end
     else
       let d = (b -. a) /. float_of_int total in
       for j = 0 to total - 1 do
-        interval s st inside m0 (a +. (d *. float_of_int j)) (a +. (d *. float_of_int (j + 1)))
+        st.at.lo <- a +. (d *. float_of_int j);
+        st.at.hi <- a +. (d *. float_of_int (j + 1));
+        interval s st inside m0
       done
   end
   else begin
@@ -270,16 +304,18 @@ let intervals s st inside (m0 : Media.t) =
       let d = (Lit.hi lt i -. a) /. float_of_int n in
       st.lit_now <- Lit.is_lit lt i;
       for j = 0 to n - 1 do
-        interval s st inside m0 (a +. (d *. float_of_int j)) (a +. (d *. float_of_int (j + 1)))
+        st.at.lo <- a +. (d *. float_of_int j);
+        st.at.hi <- a +. (d *. float_of_int (j + 1));
+        interval s st inside m0
       done;
       remaining := !remaining - n
     done
   end
 
-let apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
-  match first_medium inside with
-  | None -> ()
-  | Some m0 when Float.is_finite t ->
+let[@inline] apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
+  match first_media inside with
+  | [] -> ()
+  | m0 :: _ when Float.is_finite t ->
       let m0 = most_intervals m0 inside in
       let st = Scratch.get key in
       let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
@@ -296,4 +332,4 @@ let apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
         ((out.ar *. Float.exp (-.od.ar)) +. g.ar)
         ((out.ag *. Float.exp (-.od.ag)) +. g.ag)
         ((out.ab *. Float.exp (-.od.ab)) +. g.ab)
-  | Some _ -> ()
+  | _ :: _ -> ()
