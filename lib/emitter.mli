@@ -72,5 +72,12 @@ val sampled : unit -> sampled
 
 val sample_into : t -> Vec3.m -> float -> float -> sampled -> bool
 (** [sample_into e p u v out]: {!sample} into [out], [false] for [None]
-    (the same values). Allocates nothing for point, spot, parallel and
-    area lights; spheres go through {!sample}. *)
+    (the same values, bit for bit). Allocates nothing. *)
+
+val emission_into : Object.t -> Vec3.m -> Pigment.out -> Color.acc -> unit
+(** [emission_into o p pig out]: {!emission} at a point held in place,
+    into [out] ([pig]: scratch), the same values; allocates nothing. *)
+
+val pdf_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> float
+(** {!pdf} of points held in place: the same value, nothing
+    allocated. *)

@@ -50,6 +50,9 @@ type state = {
   ls : Emitter.sampled;
   h : Hit.t;
   fd : Object.found;
+  eh : Hit.t;  (** what a sample of a glowing sphere meets first *)
+  efd : Object.found;
+  le : Color.acc;  (** the light it sends *)
   shadow : Ray.scratch;
   sampler : Sampler.t;
   mutable set : Light.t array;  (** the lights of the vertex's surface (its light set) *)
@@ -61,7 +64,9 @@ let state_key =
       { o = v (); d = v (); p = v (); ng = v (); n = v (); wo = v (); thr = c (); acc = c (); dl = c ();
         f = c (); tr = c (); sum = c (); env_wi = v (); q = v (); uv = v (); pig = Pigment.out (); env = c (); prev_p = v (); prev_n = v ();
         num = { prev_pdf = 0. }; prev = camera_v; mat = Material.lobes (); bs = Bsdf.sampled ();
-        ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); shadow = Ray.scratch ();
+        ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
+        eh = Hit.create 0.; efd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); le = c ();
+        shadow = Ray.scratch ();
         sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0; set = [||] })
 
 let dot = Vec3.dot_m
@@ -163,17 +168,20 @@ let direct t (st : state) sampler base =
                 (dl.ar +. (ci *. (f.ar *. (tr.ar *. v.ar))))
                 (dl.ag +. (ci *. (f.ag *. (tr.ag *. v.ag))))
                 (dl.ab +. (ci *. (f.ab *. (tr.ab *. v.ab))))
-          | Sphere { obj; _ } -> (
-              match Scene.intersect s (Ray.make (Vec3.of_m st.p) (Vec3.of_m ls.wi)) Ray.epsilon infinity with
-              | Some h when h.obj == obj ->
-                  let le = Emitter.emission obj h.point in
-                  let pb = Bsdf.pdf_m m n wo ls.wi in
-                  let k = ci *. power ls.n.pdf pb /. ls.n.pdf in
-                  Color.acc_set dl
-                    (dl.ar +. (k *. (f.ar *. le.r)))
-                    (dl.ag +. (k *. (f.ag *. le.g)))
-                    (dl.ab +. (k *. (f.ab *. le.b)))
-              | _ -> ())
+          | Sphere { obj; _ } ->
+              let eh = st.eh and efd = st.efd in
+              if Scene.intersect_into s st.p ls.wi Ray.epsilon infinity eh efd && efd.leaf == obj then begin
+                let p = st.p and wi = ls.wi and q = st.q and th = eh.t in
+                Vec3.set q (p.mx +. (th *. wi.mx)) (p.my +. (th *. wi.my)) (p.mz +. (th *. wi.mz));
+                let le = st.le in
+                Emitter.emission_into obj q st.pig le;
+                let pb = Bsdf.pdf_m m n wo ls.wi in
+                let k = ci *. power ls.n.pdf pb /. ls.n.pdf in
+                Color.acc_set dl
+                  (dl.ar +. (k *. (f.ar *. le.ar)))
+                  (dl.ag +. (k *. (f.ag *. le.ag)))
+                  (dl.ab +. (k *. (f.ab *. le.ab)))
+              end
       end
     end
   done;
@@ -270,7 +278,7 @@ let li_into t sampler ~max_depth (st : state) =
             | -1 -> 1.
             | i ->
                 power st.num.prev_pdf
-                  (Emitter.pdf t.emitters.(i) (Vec3.of_m st.prev_p) (Vec3.of_m p) (Vec3.of_m ng))
+                  (Emitter.pdf_m t.emitters.(i) st.prev_p p ng)
           else 1.
         in
         let em = m.em in

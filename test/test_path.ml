@@ -528,6 +528,52 @@ let allocation () =
   let img, words = words_per_sample s in
   Alcotest.(check bool) "lit, with normals" true (mean img > 0.05);
   if words > 0.1 then Alcotest.failf "%.2f minor words per sample with texture normals (at most 0.1)" words
+  ;
+  (* glowing spheres sampled as lights: from outside (the cone) and from
+     inside one (by area), patterned emission (each sample once cost 48
+     words: vectors, an option, a hit record) *)
+  let s =
+    Helpers.compile_string
+      "camera { location <0, 2, -6> look_at <0, 0.8, 0> }\n\
+       plane { y, 0 pigment { rgb 0.8 } }\n\
+       sphere { <-1.5, 2.5, 0>, 0.5 pigment { checker rgb 1, rgb 0.5 scale 0.2 } finish { emission 4 diffuse 0 } }\n\
+       sphere { 0, 1 scale 0.4 translate <1.5, 2, 0> pigment { rgb <1, 0.8, 0.6> } finish { emission 3 diffuse 0 } }\n\
+       sphere { 0, 20 hollow pigment { rgbf <1, 1, 1, 0.95> } finish { emission 0.05 diffuse 0 } }\n\
+       sphere { <0, 1, 0>, 1 pigment { rgb <0.8, 0.3, 0.2> } finish { phong 0.5 } }"
+  in
+  let img, words = words_per_sample s in
+  Alcotest.(check bool) "lit by glowing spheres" true (mean img > 0.05);
+  if words > 0.1 then Alcotest.failf "%.2f minor words per sample with glowing spheres (at most 0.1)" words
+
+(* The in-place sampling of a glowing sphere and its pdf give the value
+   forms' numbers bit for bit, from outside the sphere and inside it *)
+let sphere_emitter_in_place =
+  QCheck.Test.make ~count:2000 ~name:"glowing sphere: sample_into and pdf_m = sample and pdf, bit for bit"
+    QCheck.(
+      pair
+        (quad (float_range (-3.) 3.) (float_range (-3.) 3.) (float_range (-3.) 3.) (float_range 0.1 2.))
+        (pair (float_range 0. 1.) (float_range 0. 1.)))
+    (fun ((x, y, z, r), (u, v)) ->
+      let center = Vec3.make 0.3 (-0.2) 0.5 in
+      let obj = Object.make (Shape.sphere center r) in
+      let e = Emitter.Sphere { obj; center; radius = r } in
+      let p = Vec3.make x y z in
+      let pm = Vec3.m () in
+      Vec3.load pm p;
+      let out = Emitter.sampled () in
+      let same a b = Int64.equal (Int64.bits_of_float a) (Int64.bits_of_float b) in
+      match (Emitter.sample e p u v, Emitter.sample_into e pm u v out) with
+      | None, false -> true
+      | Some a, true ->
+          let q = Vec3.madd p a.dist a.wi in
+          let qm = Vec3.m () and nm = Vec3.m () in
+          Vec3.load qm q;
+          let nq = Vec3.normalize (Vec3.sub q center) in
+          Vec3.load nm nq;
+          same a.wi.x out.wi.mx && same a.wi.y out.wi.my && same a.wi.z out.wi.mz
+          && same a.dist out.n.dist && same a.pdf out.n.pdf
+          && same (Emitter.pdf e p q nq) (Emitter.pdf_m e pm qm nm)
+      | _ -> false)
 
 (* light_group in mc mode: next-event estimation lights a surface by its
    own light set only, as whitted mode (and POV-Ray) does. Three spheres
@@ -582,5 +628,6 @@ let tests =
     Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
     Alcotest.test_case "light_group: each surface by its light set" `Quick light_group;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
-      Alcotest.test_case "a sample allocates nothing (point and area lights, normals)" `Quick allocation;
+      Alcotest.test_case "a sample allocates nothing (point, area and sphere lights, normals)" `Quick allocation;
+      QCheck_alcotest.to_alcotest sphere_emitter_in_place;
     ] )
