@@ -199,7 +199,9 @@ let depth_tolerance = 1e-4
 
 let hit_s a (r : Ray.scratch) tmin (h : Hit.t) =
   (* the first crossing past the floor *)
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let dx = r.dx and dy = r.dy and dz = r.dz in
   let dl = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
   let nx = dx /. dl and ny = dy /. dl and nz = dz /. dl in

@@ -142,6 +142,9 @@ let[@inline] cell f x z ox oy oz dx dy dz lo hi (h : Hit.t) =
   end
 
 let hit_s f (r : Ray.scratch) tmin (h : Hit.t) =
+  (* [+. 0.] unboxes [tmin]: a branch choosing between it (boxed, an
+     argument) and an unboxed float would box the result *)
+  let tmin = tmin +. 0. in
   let sx = f.sx and sz = f.sz in
   let ox = r.ox *. sx and oy = r.oy *. 65536. and oz = r.oz *. sz in
   let dx = r.dx *. sx and dy = r.dy *. 65536. and dz = r.dz *. sz in

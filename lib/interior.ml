@@ -57,6 +57,31 @@ let entered_key =
       { inners = Array.make entered_size default; outers = Array.make entered_size [];
         lists = Array.make entered_size []; filled = 0; next = 0 })
 
+(* the same for the lists left: [media] without [inner] *)
+let left_key =
+  Scratch.key (fun () ->
+      { inners = Array.make entered_size default; outers = Array.make entered_size [];
+        lists = Array.make entered_size []; filled = 0; next = 0 })
+
+let rec without inner = function [] -> [] | i :: r -> if i == inner then without inner r else i :: without inner r
+
+let leave inner media =
+  let e = Scratch.get left_key in
+  let i = ref 0 in
+  while !i < e.filled && not (Array.unsafe_get e.inners !i == inner && Array.unsafe_get e.outers !i == media) do
+    incr i
+  done;
+  if !i < e.filled then Array.unsafe_get e.lists !i
+  else begin
+    let l = without inner media and k = e.next in
+    e.inners.(k) <- inner;
+    e.outers.(k) <- media;
+    e.lists.(k) <- l;
+    e.next <- (k + 1) mod entered_size;
+    if e.filled < entered_size then e.filled <- e.filled + 1;
+    l
+  end
+
 let enter inner media =
   let e = Scratch.get entered_key in
   let i = ref 0 in
@@ -76,4 +101,4 @@ let enter inner media =
 
 let beyond inner media =
   if not (List.memq inner media) then enter inner media
-  else match media with i :: r when i == inner -> r | m -> List.filter (fun i -> i != inner) m
+  else match media with i :: r when i == inner -> r | m -> leave inner m

@@ -183,7 +183,9 @@ let[@inline] take (h : Hit.t) len lo up s id =
   else false
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
-  let lower = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let lower = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let len = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let ux = r.dx /. len and uy = r.dy /. len and uz = r.dz /. len in
   let px = r.ox and py = r.oy and pz = r.oz in

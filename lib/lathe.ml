@@ -87,7 +87,9 @@ let[@inline] misses t i (r : Ray.scratch) tmin tmax =
   Prism.slab_misses r (g b ob) (g b (ob + 1)) (g b (ob + 2)) (g b (ob + 3)) tmin tmax
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let w = Scratch.get work_key in
   let found = ref false in
   for i = 0 to t.n - 1 do

@@ -221,11 +221,18 @@ let[@inline] feature_h cx cy cz k = 0.5 +. (0.5 *. Noise.snoise3 (cx +. 0.31 +. 
 let[@inline] feature_point cx cy cz (out : Vec3.m) =
   Vec3.set out (cx +. feature_h cx cy cz 0.) (cy +. feature_h cx cy cz 17.3) (cz +. feature_h cx cy cz 41.9)
 
+(* the value in a record of its own, flat: a float field of a record with
+   other fields is boxed, and each store would allocate *)
+type result = { mutable v : float }
+
 (* crackle: by default the distance to the second nearest feature point
    minus the nearest (POV-Ray's form <-1, 1, 0>); else form . (F1, F2,
    F3) + offset with distances in the metric's norm, or with [solid] the
-   nearest point's own value (camlray's noise at it) *)
-let crackle3 (c : crackle) x y z =
+   nearest point's own value (camlray's noise at it); into [r.v]: floats
+   passed in or returned would be boxed (a crackle normal samples it four
+   times a point) *)
+let crackle_into (c : crackle) (p : Vec3.m) (r : result) =
+  let x = p.mx and y = p.my and z = p.mz in
   let fx = int_of_float (Float.floor x) and fy = int_of_float (Float.floor y) and fz = int_of_float (Float.floor z) in
   let d1 = ref infinity and d2 = ref infinity and d3 = ref infinity in
   let n1x = ref 0. and n1y = ref 0. and n1z = ref 0. in
@@ -255,9 +262,10 @@ let crackle3 (c : crackle) x y z =
       done
     done
   done;
-  if c.solid then 0.5 +. (0.5 *. Noise.snoise3 (!n1x +. 0.13) (!n1y +. 0.57) (!n1z +. 0.91))
-  else if c == crackle_default || c = crackle_default then clamp01 (!d2 -. !d1)
-  else clamp01 ((c.form.x *. !d1) +. (c.form.y *. !d2) +. (c.form.z *. !d3) +. c.offset)
+  r.v <-
+    (if c.solid then 0.5 +. (0.5 *. Noise.snoise3 (!n1x +. 0.13) (!n1y +. 0.57) (!n1z +. 0.91))
+     else if c == crackle_default || c = crackle_default then clamp01 (!d2 -. !d1)
+     else clamp01 ((c.form.x *. !d1) +. (c.form.y *. !d2) +. (c.form.z *. !d3) +. c.offset))
 
 (* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
 let[@inline] tri v =
@@ -321,10 +329,6 @@ let[@inline] interior_shade f a b m2 =
   | 6 -> (a *. a) +. (b *. b *. i) (* sic: POV-Ray scales b^2 only *)
   | _ -> 0.
 
-type result = { mutable v : float }
-
-(* the value in a record of its own, flat: a float field of a record with
-   other fields is boxed, and each store would allocate *)
 type work = { p : Vec3.m; d : Vec3.m; r : result }
 
 let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
@@ -531,7 +535,7 @@ let raw_m kind (w : work) =
         acc := !acc +. (0.5 +. (0.5 *. wave))
       done;
       w.r.v <- !acc /. float_of_int (Array.length sources)
-  | Crackle c -> w.r.v <- crackle3 c x y z
+  | Crackle c -> crackle_into c w.p w.r
   | Wrinkles -> w.r.v <- clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal3 10 x y z))
   | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))

@@ -284,7 +284,9 @@ let[@inline] inside t x y z =
 
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let found = ref false in
   (* the caps *)
   if (not t.open_) && r.dy <> 0. then begin

@@ -165,7 +165,9 @@ let hit_cone ~(base : Vec3.t) ~(axis : Vec3.t) ~(u : Vec3.t) ~(v : Vec3.t) ~leng
 
 let hit_torus major minor (r : Ray.scratch) tmin (h : Hit.t) =
   (* the search starts past the floor: the first root after it *)
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let nx = r.dx /. dl and ny = r.dy /. dl and nz = r.dz /. dl in
   (* restart from the point of the ray nearest the centre: small, well

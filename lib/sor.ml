@@ -87,7 +87,9 @@ let[@inline] cap_hit (h : Hit.t) tmin (r : Ray.scratch) yc r2 id =
   (x *. x) +. (z *. z) <= r2 && Hit.keep h tmin tc id yc
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let w = Scratch.get work_key in
   let found = ref false in
   let q = r.oy and e = r.dy in

@@ -165,7 +165,9 @@ let[@inline] accept (h : Hit.t) tmin len t =
   else false
 
 let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let len = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let dx = r.dx /. len and dy = r.dy /. len and dz = r.dz /. len in
   let px = r.ox and py = r.oy and pz = r.oz in

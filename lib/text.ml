@@ -148,11 +148,17 @@ let in_glyph t k x y =
   && y <= g t.boxes ((4 * k) + 3)
   && glyph_winding t k x y <> 0
 
-let inside t x y z =
-  z > 0. && z < t.thickness
-  &&
-  let rec any k = k < glyph_count t && (in_glyph t k x y || any (k + 1)) in
-  any 0
+(* whether a glyph from the [k]th on holds (x, y) (a loop: a local
+   function would be a closure made at every test) *)
+let in_any_glyph t x y =
+  let k = ref 0 and found = ref false in
+  while (not !found) && !k < glyph_count t do
+    if in_glyph t !k x y then found := true;
+    incr k
+  done;
+  !found
+
+let inside t x y z = z > 0. && z < t.thickness && in_any_glyph t x y
 
 (* whether the ray misses glyph [k]'s box (x, y, and z from 0 to the
    thickness) within (tmin, tmax): written out, a tuple per slab would be
@@ -183,7 +189,9 @@ let box_missed t k (r : Ray.scratch) tmin tmax =
 
 
 let hit_s t (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
   let found = ref false in
   let rs = Scratch.get roots_key in
   let d2 = (r.dx *. r.dx) +. (r.dy *. r.dy) in

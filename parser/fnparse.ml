@@ -519,8 +519,21 @@ let source st =
    and f_ridged_mf with camlray's noise), by the values POV-Ray's own
    give (checked at 30 random points to 1e-12): the parameters after x, y,
    z, and the code from slot [b] *)
+(* the [i]th argument of a frame at [b]; the helpers below are top-level
+   and inlined, not local closures: a float a closure returns is boxed,
+   and these run at every step of an isosurface's root search *)
+let[@inline] g s b i = get s (b + i)
+
+(* f_rounded_box's per-axis distance *)
+let[@inline] box_axis v h r = Float.max (Float.abs v -. h +. r) 0.
+
+(* f_ridged_mf's ridge of the signed noise *)
+let[@inline] ridge offset x y z =
+  let n = Float.abs ((2. *. Camlray.Noise.noise3 x y z) -. 1.) in
+  let r = offset -. n in
+  r *. r
+
 let internal_fn n : (int * Fn.code) option =
-  let g s b i = get s (b + i) in
   match n with
   | 61 ->
       (* f_sphere: radius *)
@@ -538,8 +551,8 @@ let internal_fn n : (int * Fn.code) option =
          value is 1e-6 below the distance) *)
       Some (4, fun s b ->
         let r = g s b 3 in
-        let d v h = Float.max (Float.abs v -. h +. r) 0. in
-        let ax = d (g s b 0) (g s b 4) and ay = d (g s b 1) (g s b 5) and az = d (g s b 2) (g s b 6) in
+        let ax = box_axis (g s b 0) (g s b 4) r and ay = box_axis (g s b 1) (g s b 5) r
+        and az = box_axis (g s b 2) (g s b 6) r in
         set s (b + 7) (Float.sqrt ((ax *. ax) +. (ay *. ay) +. (az *. az)) -. r -. 1e-6))
   | 68 ->
       (* f_superellipsoid: east-west, north-south exponents; positive
@@ -610,17 +623,12 @@ let internal_fn n : (int * Fn.code) option =
       Some (6, fun s b ->
         let x = g s b 0 and y = g s b 1 and z = g s b 2 in
         let h = g s b 3 and lac = g s b 4 and octaves = g s b 5 and offset = g s b 6 and gain = g s b 7 in
-        let ridge x y z =
-          let n = Float.abs ((2. *. Camlray.Noise.noise3 x y z) -. 1.) in
-          let r = offset -. n in
-          r *. r
-        in
-        let signal = ref (ridge x y z) in
+        let signal = ref (ridge offset x y z) in
         let result = ref !signal and freq = ref 1. and i = ref 1 in
         while float_of_int !i < octaves do
           freq := !freq *. lac;
           let weight = Float.min 1. (Float.max 0. (!signal *. gain)) in
-          signal := weight *. ridge (x *. !freq) (y *. !freq) (z *. !freq);
+          signal := weight *. ridge offset (x *. !freq) (y *. !freq) (z *. !freq);
           result := !result +. (!signal *. Float.pow !freq (-.h));
           incr i
         done;

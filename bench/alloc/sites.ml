@@ -47,6 +47,9 @@ let () =
   if !parse then (report (); exit 0);
   let width = !w and height = !h in
   let pixel = Measured.pixel scene ~width ~height ~mc:!mc in
+  (* a first render makes the domain's scratch (each object's included):
+     the second shows what every ray allocates *)
+  ignore (Render.image_into ~domains:1 ~width ~height pixel);
   start ();
   ignore (Render.image_into ~domains:1 ~width ~height pixel);
   report ()
