@@ -178,6 +178,20 @@ let work_key =
 
 (* the roots of a polynomial of degree [deg] (coefficients in [e],
    constant first) in [lo, hi), in order, into [found]; their number *)
+(* How far a root [r] found in floating point may lie from the computed
+   polynomial's own: the rounding error of evaluating it there (Horner's,
+   2 deg eps sum |e_i| |r|^i) over its slope, at most 1e-6 (1 + |r|) (a
+   double root's slope is about 0) *)
+let uncertainty e deg r =
+  let a = ref 0. and d = ref 0. and ar = Float.abs r in
+  for i = deg downto 1 do
+    a := (!a *. ar) +. Float.abs (Float.Array.unsafe_get e i);
+    d := (!d *. r) +. (float_of_int i *. Float.Array.unsafe_get e i)
+  done;
+  let a = (!a *. ar) +. Float.abs (Float.Array.unsafe_get e 0) in
+  let bound = 1e-6 *. (1. +. ar) and err = 2. *. float_of_int deg *. epsilon_float *. a in
+  if err >= bound *. Float.abs !d then bound else err /. Float.abs !d
+
 let all_roots sc e deg (found : Float.Array.t) lo hi =
   let n = ref 0 and from = ref (lo -. 1e-12) in
   while !n < deg && Poly.first_root_in sc e deg !from hi do
@@ -186,8 +200,13 @@ let all_roots sc e deg (found : Float.Array.t) lo hi =
       Float.Array.unsafe_set found !n r;
       incr n
     end;
-    (* past it: the search from a root's own value may find it again *)
-    from := Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (!from +. 1e-12)
+    (* past it and past the sign changes rounding makes around it: the
+       search from a root's own value may find it again (roots nearer
+       than that are the same root to the arithmetic) *)
+    from :=
+      Float.max
+        (Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (r +. (4. *. uncertainty e deg r)))
+        (!from +. 1e-12)
   done;
   !n
 
