@@ -238,3 +238,8 @@ let inside m p =
              if tri m i r 0. h then incr count;
              true));
       !count land 1 = 1
+
+(* no point made when there is no inside vector (inside tests of meshes
+   in CSG and object patterns ask at every crossing) *)
+let[@inline] inside_xyz m x y z =
+  match m.inside_vector with None -> false | Some _ -> inside m (Vec3.make x y z)

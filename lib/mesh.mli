@@ -57,6 +57,10 @@ val uv_into : t -> Hit.t -> Vec3.m -> unit
 
 val inside : t -> Vec3.t -> bool
 
+val inside_xyz : t -> float -> float -> float -> bool
+(** {!inside} of a point given by its coordinates (nothing allocated
+    without an inside vector). *)
+
 val tri_hit :
   float -> float -> float -> float -> float -> float -> float -> float -> float ->
   Ray.scratch -> float -> Hit.t -> bool

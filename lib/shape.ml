@@ -372,7 +372,7 @@ let[@inline] inside_xyz s x y z =
       (rho *. rho) +. (y *. y) < minor *. minor
   | Disc { center = c; normal = n; _ } -> ((x -. c.x) *. n.x) +. ((y -. c.y) *. n.y) +. ((z -. c.z) *. n.z) < 0.
   | Triangle _ | Smooth_triangle _ | Polygon _ -> false
-  | Mesh m -> Mesh.inside m (Vec3.make x y z)
+  | Mesh m -> Mesh.inside_xyz m x y z
   | Height_field f -> Height_field.inside f x y z
   | Algebraic a -> Algebraic.inside a x y z
   | Text t -> Text.inside t x y z
