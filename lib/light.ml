@@ -2,6 +2,7 @@ type kind =
   | Point
   | Spot of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
   | Parallel of { point_at : Vec3.t }
+  | Cylinder of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
 
 type area = {
   axis1 : Vec3.t;
@@ -42,10 +43,14 @@ type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable
 let dir () = { lx = 0.; ly = 0.; lz = 1.; dist = 0. }
 
 (* The light as if it stood at (cx, cy, cz), seen from [p], in scalars
-   (inlined: nothing boxed): [direction_to]'s distance, ... *)
+   (inlined: nothing boxed): [direction_to]'s distance, ... A cylindrical
+   light's rays are parallel, as a parallel light's (POV-Ray 3.7,
+   trace.cpp: the distance is measured along the axis, to the plane
+   through the light; for a sample of an area light, along the line from
+   [point_at] to the sample) *)
 let[@inline] distance_at l cx cy cz (p : Vec3.m) =
   match l.kind with
-  | Parallel { point_at } ->
+  | Parallel { point_at } | Cylinder { point_at; _ } ->
       let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
       ((cx -. p.mx) *. Vec3.unit_k dx dy dz 0)
       +. ((cy -. p.my) *. Vec3.unit_k dx dy dz 1)
@@ -59,7 +64,7 @@ let[@inline] direction_at l cx cy cz (p : Vec3.m) o =
   let dist = distance_at l cx cy cz p in
   o.dist <- dist;
   match l.kind with
-  | Parallel { point_at } ->
+  | Parallel { point_at } | Cylinder { point_at; _ } ->
       let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
       o.lx <- Vec3.unit_k dx dy dz 0;
       o.ly <- Vec3.unit_k dx dy dz 1;
@@ -95,12 +100,44 @@ let[@inline] spot_cos c ~radius ~falloff ~tightness =
       let u = (c -. cf) /. (cr -. cf) in
       f *. u *. u *. (3. -. (2. *. u))
 
+(* POV-Ray's cylindrical light at the distance [d] from its axis
+   (lightsource.cpp, Attenuate_Light): 0 from [falloff] out, else with [x
+   = 1 - d / falloff], x^tightness, times between [radius] and [falloff]
+   the cubic step from 0 (at x = 0) to 1 (at x = 1 - radius / falloff) *)
+let[@inline] cylinder_factor ~radius ~falloff ~tightness d =
+  if not (d < falloff) then 0.
+  else
+    let x = 1. -. (d /. falloff) in
+    let f = if tightness = 0. then 1. else Float.pow x tightness in
+    if radius > 0. && d > radius then begin
+      let hi = 1. -. (radius /. falloff) in
+      if x < 0. then 0.
+      else if x >= hi then f
+      else
+        let s = x /. hi in
+        f *. ((3. -. (2. *. s)) *. s *. s)
+    end
+    else f
+
 (* The attenuation of the light as if it stood at (cx, cy, cz), at a
    point written in place, in scalars (inlined: nothing boxed) *)
 let[@inline] attenuation_at l cx cy cz (p : Vec3.m) =
   let spot =
     match l.kind with
     | Point | Parallel _ -> 1.
+    | Cylinder { point_at; radius; falloff; tightness } ->
+        (* the light's own axis, whatever the sample (as POV-Ray): the
+           distance of [p] from it, nothing behind the light's plane *)
+        let c = l.position in
+        let ax = point_at.x -. c.x and ay = point_at.y -. c.y and az = point_at.z -. c.z in
+        let ux = Vec3.unit_k ax ay az 0 and uy = Vec3.unit_k ax ay az 1 and uz = Vec3.unit_k ax ay az 2 in
+        let vx = p.mx -. c.x and vy = p.my -. c.y and vz = p.mz -. c.z in
+        let k = (vx *. ux) +. (vy *. uy) +. (vz *. uz) in
+        if k > 0. then begin
+          let qx = vx -. (k *. ux) and qy = vy -. (k *. uy) and qz = vz -. (k *. uz) in
+          cylinder_factor ~radius ~falloff ~tightness (Float.sqrt ((qx *. qx) +. (qy *. qy) +. (qz *. qz)))
+        end
+        else 0.
     | Spot { point_at; radius; falloff; tightness } ->
         let ax = point_at.x -. cx and ay = point_at.y -. cy and az = point_at.z -. cz in
         let tx = p.mx -. cx and ty = p.my -. cy and tz = p.mz -. cz in
@@ -143,8 +180,11 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
       (c.z +. ((u *. a1.z) +. (v *. a2.z)))
   end
   else begin
-    (* axes turned to be perpendicular to the direction to the point *)
-    let dx0 = p.mx -. c.x and dy0 = p.my -. c.y and dz0 = p.mz -. c.z in
+    (* axes turned to be perpendicular to the direction to the point (a
+       cylindrical light's rays: its axis) *)
+    let dx0 = match l.kind with Cylinder { point_at; _ } -> point_at.x -. c.x | _ -> p.mx -. c.x
+    and dy0 = match l.kind with Cylinder { point_at; _ } -> point_at.y -. c.y | _ -> p.my -. c.y
+    and dz0 = match l.kind with Cylinder { point_at; _ } -> point_at.z -. c.z | _ -> p.mz -. c.z in
     let dx = Vec3.unit_k dx0 dy0 dz0 0 and dy = Vec3.unit_k dx0 dy0 dz0 1 and dz = Vec3.unit_k dx0 dy0 dz0 2 in
     let hy = Float.abs dy < 0.9 in
     let hx = if hy then 0. else 1. and hyv = if hy then 1. else 0. and hz = 0. in

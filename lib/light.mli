@@ -5,6 +5,11 @@ type kind =
   | Spot of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
       (** angles in degrees (half-angles from the axis) *)
   | Parallel of { point_at : Vec3.t }
+  | Cylinder of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
+      (** POV-Ray's cylindrical light: rays parallel to [point_at -
+          position]; [radius] and [falloff] are distances from that axis
+          (POV-Ray's defaults 0.75 and 1, tightness 0); nothing is lit
+          behind the plane through the light across its axis *)
 
 type area = {
   axis1 : Vec3.t;
@@ -44,7 +49,16 @@ val area : Vec3.t -> Vec3.t -> int -> int -> area
     orient, jitter, area_illumination). *)
 
 val attenuation : t -> Vec3.t -> float
-(** Spot cone and distance fade factor for light arriving at a point. *)
+(** Spot cone, cylinder and distance fade factor for light arriving at a
+    point. *)
+
+val cylinder_factor : radius:float -> falloff:float -> tightness:float -> float -> float
+(** [cylinder_factor ~radius ~falloff ~tightness d]: POV-Ray's
+    attenuation of a cylindrical light at the distance [d] from its axis:
+    0 from [falloff] out; else, with [x = 1 - d / falloff], [x ^
+    tightness], times the smooth step [(3 - 2s) s^2], [s = x / (1 -
+    radius / falloff)], between [radius] and [falloff] (when [radius] >
+    0). *)
 
 val attenuation_m : t -> Vec3.m -> float
 (** The same at a point written in place, in scalars (inlined: nothing
@@ -56,8 +70,9 @@ val attenuation_at : t -> float -> float -> float -> Vec3.m -> float
 
 val direction_to : t -> Vec3.t -> Vec3.t * float
 (** Unit vector from the point towards the light, and the distance over
-    which shadow rays must look (for parallel lights: to the plane through
-    the light perpendicular to its direction). *)
+    which shadow rays must look (for parallel and cylindrical lights: to
+    the plane through the light perpendicular to its direction, negative
+    behind it). *)
 
 (** A direction to a light and its distance, in a reusable record. *)
 type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable dist : float }

@@ -61,6 +61,44 @@ let cone (l : Light.t) (r : Ray.scratch) out =
       else false
   | _ -> false
 
+(* POV-Ray 3.7's interval of a cylindrical light (media.cpp,
+   ComputeCylinderLightInterval), its quirks kept: where the ray's line is
+   within [falloff] of the axis, from the ray's origin when the line
+   comes out of the half-space behind the light (not from where it does),
+   none when the ray runs exactly along the axis or leaves the lit side
+   (the end it then gets lies behind the origin); with [v] the origin
+   seen from the light and [a] the unit axis, the line is inside where
+   [(1 - k1^2) t^2 + 2 (k3 - k1 k2) t + |v|^2 - k2^2 - falloff^2 < 0] *)
+let cylinder (l : Light.t) (r : Ray.scratch) out =
+  match l.kind with
+  | Light.Cylinder { point_at; falloff; _ } ->
+      let p = l.position in
+      let ax = point_at.x -. p.x and ay = point_at.y -. p.y and az = point_at.z -. p.z in
+      let ux = Vec3.unit_k ax ay az 0 and uy = Vec3.unit_k ax ay az 1 and uz = Vec3.unit_k ax ay az 2 in
+      let vx = r.ox -. p.x and vy = r.oy -. p.y and vz = r.oz -. p.z in
+      let k1 = (r.dx *. ux) +. (r.dy *. uy) +. (r.dz *. uz) and k2 = (vx *. ux) +. (vy *. uy) +. (vz *. uz) in
+      if k1 <= 0. && k2 < 0. then false
+      else
+        let a = 1. -. (k1 *. k1) in
+        if a = 0. then false
+        else
+          let k3 = (vx *. r.dx) +. (vy *. r.dy) +. (vz *. r.dz) and k4 = (vx *. vx) +. (vy *. vy) +. (vz *. vz) in
+          let b = k3 -. (k1 *. k2) and c = k4 -. (k2 *. k2) -. (falloff *. falloff) in
+          let d = (b *. b) -. (a *. c) in
+          if not (d > 1e-10) then false
+          else
+            let d = Float.sqrt d in
+            let u = (-.b +. d) /. a and w = (-.b -. d) /. a in
+            let t1 = if u <= w then u else w and t2 = if u <= w then w else u in
+            let l1 = k2 +. (t1 *. k1) and l2 = k2 +. (t2 *. k1) in
+            if l1 <= 0. && l2 <= 0. then false
+            else begin
+              out.lo <- (if l1 <= 0. then 0. else t1);
+              out.hi <- (if l1 > 0. && l2 <= 0. then (max_distance -. k2) /. k1 else t2);
+              true
+            end
+  | _ -> false
+
 (* stretches as (lo, hi, lit) triples; per light the ends of its lit part,
    sorted apart as POV-Ray sorts them *)
 type t = {
@@ -119,8 +157,9 @@ let cut t (lights : Light.t array) (r : Ray.scratch) len =
     Float.Array.set t.on1 i neg_infinity;
     if l.media_interaction then begin
       match l.kind with
-      | Light.Spot _ ->
-          if cone l r t.sp && t.sp.lo < len && t.sp.hi > 0.001 then begin
+      | Light.Spot _ | Light.Cylinder _ ->
+          let crossed = match l.kind with Light.Cylinder _ -> cylinder l r t.sp | _ -> cone l r t.sp in
+          if crossed && t.sp.lo < len && t.sp.hi > 0.001 then begin
             (* plain comparisons: no float boxed *)
             Float.Array.set t.on0 i (if t.sp.lo > 0. then t.sp.lo else 0.);
             Float.Array.set t.on1 i t.sp.hi;

@@ -25,6 +25,15 @@ val cone : Light.t -> Ray.scratch -> span -> bool
     [false] for lights other than spotlights and for a cone of 90 degrees
     or more. *)
 
+val cylinder : Light.t -> Ray.scratch -> span -> bool
+(** [cylinder l r out]: POV-Ray 3.7's stretch of the ray [r] (unit
+    direction) lit by the cylindrical light [l]: where its line runs
+    within [falloff] of the light's axis, with POV-Ray's rules at the
+    plane through the light (the stretch starts at the ray's origin when
+    the line comes from behind that plane; a ray that leaves the lit side
+    gets a stretch ending behind its origin, so nothing; a ray exactly
+    along the axis gets none); [false] for other lights. *)
+
 (** The stretches of one ray, lit and unlit, in order (per-domain
     scratch: grows with the scene's lights, never shrinks). *)
 type t
@@ -34,7 +43,8 @@ val make : unit -> t
 val cut : t -> Light.t array -> Ray.scratch -> float -> unit
 (** [cut t lights r len]: the stretches of [[0, len]] along [r] as POV-Ray
     3.7 makes them from its [media_interaction] lights: each spotlight
-    lights the part of its cone within the ray (kept when it starts
+    lights the part of its cone within the ray (a cylindrical light its
+    {!cylinder} stretch) (kept when it starts
     before [len] and ends past 0.001), any other light all of it; the lit
     parts, merged where they overlap, are the lit stretches, the gaps
     between them and the ends of the ray the unlit ones. No light: one

@@ -85,6 +85,7 @@ type walk = {
   fo : Vec3.m;  (** where a stretch of fog starts *)
   fd : Vec3.m;  (** the shadow ray's direction, for the fogs *)
   sp : Media.span;  (** the stretch being dimmed *)
+  sl : Light.dir;  (** an area light's sample's direction *)
 }
 
 let shadow_key =
@@ -95,7 +96,7 @@ let shadow_key =
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
-        fd = Vec3.m (); sp = Media.span () })
+        fd = Vec3.m (); sp = Media.span (); sl = Light.dir () })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -293,15 +294,15 @@ let shadow_into (s : Scene.t) (w : walk) =
   end
 
 (* Sample (i, j) of the area light in [w]: the shadow colour from its
-   point, seen from [w.lp] *)
+   point, seen from [w.lp] (toward the sample, or, for a cylindrical or
+   parallel light, along the line from its point_at through the sample,
+   to the plane through the sample: POV-Ray's rule) *)
 let area_sample (w : walk) i j (out : Color.acc) =
-  let light = w.alight and a = w.aarea and p = w.lp and q = w.q in
+  let light = w.alight and a = w.aarea and p = w.lp and q = w.q and l = w.sl in
   Light.position_into light a p (Light.offset a.n1 i) (Light.offset a.n2 j) q;
-  let vx = q.mx -. p.mx and vy = q.my -. p.my and vz = q.mz -. p.mz in
-  let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-  let k = 1. /. d in
-  Ray.set w.ray p (k *. vx) (k *. vy) (k *. vz);
-  w.seg.len <- d;
+  Light.direction_at light q.mx q.my q.mz p l;
+  Ray.set w.ray p l.lx l.ly l.lz;
+  w.seg.len <- l.dist;
   (match w.ascene with Some s -> shadow_into s w | None -> ());
   Color.acc_set out w.acc.ar w.acc.ag w.acc.ab
 

@@ -214,16 +214,28 @@ let camera loc items =
     normal = find (function Sdl.Cam_normal n -> Some n | _ -> None);
   }
 
+(* POV-Ray's light as compiled from its type and parallel flag: a
+   parallel point light or spotlight is a parallel light (a spotlight's
+   cone factor is 1 along its own axis: POV-Ray's parallel spotlight
+   lights everything), a cylinder stays one (its rays are parallel
+   already) *)
 let light (o : Sdl.obj) (l : Sdl.light) =
   let x = o.xform in
+  let point_at = Transform.point x l.point_at in
   let kind =
     match l.kind with
-    | Light.Point -> Light.Point
-    | Light.Spot s -> Light.Spot { s with point_at = Transform.point x s.point_at }
-    | Light.Parallel p -> Light.Parallel { point_at = Transform.point x p.point_at }
+    | Sdl.Cylinder_light { radius; falloff; tightness } -> Light.Cylinder { point_at; radius; falloff; tightness }
+    | Sdl.Spot_light _ | Sdl.Point_light when l.parallel -> Light.Parallel { point_at }
+    | Sdl.Spot_light { radius; falloff; tightness } -> Light.Spot { point_at; radius; falloff; tightness }
+    | Sdl.Point_light -> Light.Point
   in
+  let position = Transform.point x l.position in
+  (match kind with
+  | Light.Cylinder _ when Vec3.dist point_at position = 0. ->
+      Diag.warning o.loc "a cylinder light whose point_at is its location lights nothing (it has no axis)"
+  | _ -> ());
   {
-    Light.position = Transform.point x l.position;
+    Light.position;
     color = l.color;
     kind;
     fade_distance = l.fade_distance;

@@ -12,8 +12,19 @@ let with_texture l f (o : Sdl.obj) =
   match layers with
   | top :: rest -> { o with texture = Some (f top :: rest) }
   | [] -> o
-let light_kind f (o : Sdl.obj) = match o.shape with
-  | Sdl.Light l -> { o with shape = Sdl.Light { l with kind = f l.kind } } | _ -> o
+(* a light's radius, falloff, tightness or point_at: POV-Ray refuses them
+   on a point light (point_at is allowed on a parallel one) *)
+let light_param (p1, p2) what ?(parallel = false) f (o : Sdl.obj) =
+  match o.shape with
+  | Sdl.Light l ->
+      if l.kind = Sdl.Point_light && not (parallel && l.parallel) then
+        Diag.error (loc (p1, p2))
+          "%s needs a spotlight or a cylinder light%s: write spotlight or cylinder before it%s" what
+          (if parallel then " (or parallel)" else "")
+          (if l.shadowless then " (shadowless, written before, made this a point light)" else "");
+      { o with shape = Sdl.Light (f l) }
+  | _ -> o
+
 let light_field f (o : Sdl.obj) = match o.shape with
   | Sdl.Light l -> { o with shape = Sdl.Light (f l) } | _ -> o
 let nonzero_scale l (v : Vec3.t) =

@@ -8,7 +8,12 @@ val with_texture : Lexing.position * Lexing.position -> (Camlray.Texture.layer -
 (** Change the top texture layer of an object (starting from the
     [#default] texture when it has none). *)
 
-val light_kind : (Camlray.Light.kind -> Camlray.Light.kind) -> Sdl.obj -> Sdl.obj
+val light_param :
+  Lexing.position * Lexing.position -> string -> ?parallel:bool -> (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
+(** [light_param loc what f]: set a spotlight's or a cylinder's parameter
+    [what]; an error at [loc] on a point light (with [~parallel:true], a
+    parallel point light takes it too: point_at). *)
+
 val light_field : (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
 
 val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlray.Vec3.t

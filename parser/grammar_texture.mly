@@ -38,7 +38,7 @@
         List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc } ms }
   | LIGHT_SOURCE LBRACE p = param COMMA? c = color_value ms = list(light_mod) RBRACE
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
-                  kind = Light.Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
+                  kind = Sdl.Point_light; point_at = Vec3.unit_z; parallel = false; fade_distance = 0.; fade_power = 0.; shadowless = false;
                   media_interaction = true; media_attenuation = false;
                   area = None; looks_like = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
@@ -49,22 +49,33 @@
   | m = object_mod { m }
   | COLOR? c = color_value_noprefix { fun (o : Sdl.obj) -> match o.shape with
       | Sdl.Light l -> { o with shape = Sdl.Light { l with color = c } } | _ -> o }
-  | SPOTLIGHT { light_kind (function _ -> Light.Spot { point_at = Vec3.unit_z; radius = 30.;
-                                                       falloff = 45.; tightness = 0. }) }
-  | PARALLEL { light_kind (function _ -> Light.Parallel { point_at = Vec3.zero }) }
-  | POINT_AT e = param { let p = v3 $loc(e) e in light_kind (function
-      | Light.Spot s -> Light.Spot { s with point_at = p }
-      | Light.Parallel _ -> Light.Parallel { point_at = p }
-      | k -> k) }
-  | RADIUS e = param { let r = fl $loc(e) e in light_kind (function
-      | Light.Spot s -> Light.Spot { s with radius = r } | k -> k) }
-  | FALLOFF e = param { let r = fl $loc(e) e in light_kind (function
-      | Light.Spot s -> Light.Spot { s with falloff = r } | k -> k) }
-  | TIGHTNESS e = param { let r = fl $loc(e) e in light_kind (function
-      | Light.Spot s -> Light.Spot { s with tightness = r } | k -> k) }
+  (* POV-Ray's light types, switched as its parser does: each type
+     keyword sets its own radius, falloff and tightness; a cylinder is
+     parallel; shadowless makes a point light of any type (so that
+     [cylinder shadowless] is a parallel light, [shadowless cylinder] a
+     cylinder casting shadows) *)
+  | SPOTLIGHT { light_field (fun l -> { l with kind = Sdl.Spot_light { radius = 30.; falloff = 45.; tightness = 0. };
+                                               shadowless = false }) }
+  | CYLINDER { light_field (fun l -> { l with kind = Sdl.Cylinder_light { radius = 0.75; falloff = 1.; tightness = 0. };
+                                              parallel = true; shadowless = false }) }
+  | PARALLEL { light_field (fun l -> { l with parallel = true }) }
+  | SHADOWLESS { light_field (fun l -> { l with kind = Sdl.Point_light; shadowless = true }) }
+  | POINT_AT e = param { let p = v3 $loc(e) e in
+      light_param $loc "point_at" ~parallel:true (fun l -> { l with point_at = p }) }
+  | RADIUS e = param { let r = fl $loc(e) e in light_param $loc "radius" (fun l -> { l with kind = match l.kind with
+      | Sdl.Spot_light s -> Sdl.Spot_light { s with radius = r }
+      | Sdl.Cylinder_light s -> Sdl.Cylinder_light { s with radius = r }
+      | k -> k }) }
+  | FALLOFF e = param { let r = fl $loc(e) e in light_param $loc "falloff" (fun l -> { l with kind = match l.kind with
+      | Sdl.Spot_light s -> Sdl.Spot_light { s with falloff = r }
+      | Sdl.Cylinder_light s -> Sdl.Cylinder_light { s with falloff = r }
+      | k -> k }) }
+  | TIGHTNESS e = param { let r = fl $loc(e) e in light_param $loc "tightness" (fun l -> { l with kind = match l.kind with
+      | Sdl.Spot_light s -> Sdl.Spot_light { s with tightness = r }
+      | Sdl.Cylinder_light s -> Sdl.Cylinder_light { s with tightness = r }
+      | k -> k }) }
   | FADE_DISTANCE e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_distance = d }) }
   | FADE_POWER e = param { let d = fl $loc(e) e in light_field (fun l -> { l with fade_power = d }) }
-  | SHADOWLESS { light_field (fun l -> { l with shadowless = true }) }
   | MEDIA_INTERACTION %prec below_shift { light_field (fun l -> { l with media_interaction = true }) }
   | MEDIA_INTERACTION b = param
       { let on = Value.to_bool (loc $loc) b in light_field (fun l -> { l with media_interaction = on }) }

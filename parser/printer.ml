@@ -70,12 +70,24 @@ let interior (i : Interior.t) =
     (if i.caustics = 0. then "" else " caustics " ^ float (i.caustics /. 45.))
     (String.concat "" (List.map (fun m -> " " ^ media m) i.media))
 
-let light_kind = function
-  | Light.Point -> ""
-  | Light.Spot s ->
-      Printf.sprintf " spotlight point_at %s radius %s falloff %s tightness %s" (vec s.point_at)
-        (float s.radius) (float s.falloff) (float s.tightness)
-  | Light.Parallel p -> Printf.sprintf " parallel point_at %s" (vec p.point_at)
+(* The light's type words, in an order that reads back to the same
+   state: shadowless last (it makes a point light of any type), point_at
+   only where it is taken *)
+let light_kind (l : Sdl.light) =
+  let params radius falloff tightness =
+    Printf.sprintf " point_at %s radius %s falloff %s tightness %s" (vec l.point_at) (float radius)
+      (float falloff) (float tightness)
+  in
+  match l.kind with
+  | Sdl.Cylinder_light { radius; falloff; tightness } -> " cylinder" ^ params radius falloff tightness
+  | Sdl.Spot_light { radius; falloff; tightness } ->
+      " spotlight" ^ (if l.parallel then " parallel" else "") ^ params radius falloff tightness
+  | Sdl.Point_light ->
+      let at = Printf.sprintf " point_at %s" (vec l.point_at) in
+      (if l.parallel then " parallel" ^ at
+       else if l.shadowless && l.point_at <> Vec3.unit_z then " spotlight" ^ at
+       else "")
+      ^ if l.shadowless then " shadowless" else ""
 
 (* The text of an object: its head (the keyword, '{' and the shape's
    parameters) and its modifiers, without the closing '}'. *)
@@ -110,9 +122,8 @@ let rec parts (o : Sdl.obj) =
   let simple head = (head, mods) in
   match o.shape with
   | Sdl.Light l ->
-      ( Printf.sprintf "light_source { %s, %s%s fade_distance %s fade_power %s%s" (vec l.position)
-          (rgb l.color) (light_kind l.kind) (float l.fade_distance) (float l.fade_power)
-          (if l.shadowless then " shadowless" else "")
+      ( Printf.sprintf "light_source { %s, %s%s fade_distance %s fade_power %s" (vec l.position)
+          (rgb l.color) (light_kind l) (float l.fade_distance) (float l.fade_power)
           ^ (if l.media_interaction then "" else " media_interaction off")
           ^ (if l.media_attenuation then " media_attenuation on" else ""),
         if Transform.is_identity o.xform then [] else [ matrix o.xform ] )

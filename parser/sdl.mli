@@ -110,15 +110,27 @@ and mesh = {
 and light = {
   position : Vec3.t;
   color : Color.t;
-  kind : Light.kind;
+  kind : light_kind;
+  point_at : Vec3.t;  (** <0, 0, 1> unless given *)
+  parallel : bool;  (** POV-Ray's parallel flag (a cylinder sets it) *)
   fade_distance : float;
   fade_power : float;
   shadowless : bool;
+      (** POV-Ray's fill light: [shadowless] makes the light a point
+          light again (a later [spotlight] or [cylinder] casts shadows) *)
   media_interaction : bool;
   media_attenuation : bool;
   area : Light.area option;
   looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
 }
+
+(** POV-Ray's light types as a light_source reads them; the compiled
+    {!Light.kind} follows from the type and the parallel flag. *)
+and light_kind =
+  | Point_light
+  | Spot_light of { radius : float; falloff : float; tightness : float }  (** degrees *)
+  | Cylinder_light of { radius : float; falloff : float; tightness : float }
+      (** distances from the axis *)
 
 and obj = {
   loc : Loc.t;

@@ -109,6 +109,130 @@ let groups () =
   Alcotest.(check (list int)) "each surface names its set" [ 1; 2; 3; 0 ] (Array.to_list sets);
   n "every light once" 4 (Array.length (Scene.all_lights s))
 
+(* POV-Ray's cylindrical light (lightsource.cpp, Attenuate_Light), by
+   hand: with x = 1 - d/falloff, x^tightness, times between radius and
+   falloff the step (3 - 2s) s^2, s = x / (1 - radius/falloff) *)
+let cylinder_formula () =
+  let f ~r ~fo ~t d = Light.cylinder_factor ~radius:r ~falloff:fo ~tightness:t d in
+  (* the defaults: radius 0.75, falloff 1, tightness 0 *)
+  check "on the axis" 1. (f ~r:0.75 ~fo:1. ~t:0. 0.);
+  check "inside radius" 1. (f ~r:0.75 ~fo:1. ~t:0. 0.5);
+  (* d 0.9: x 0.1, s 0.1/0.25 = 0.4, (3 - 0.8) 0.16 *)
+  check "between radius and falloff" 0.352 (f ~r:0.75 ~fo:1. ~t:0. 0.9);
+  check "at falloff" 0. (f ~r:0.75 ~fo:1. ~t:0. 1.);
+  check "past falloff" 0. (f ~r:0.75 ~fo:1. ~t:0. 1.5);
+  (* radius 1 falloff 2 tightness 2, d 1.5: x 0.25, x^2 0.0625, s 0.5 -> 0.5 *)
+  check "tightness and step" 0.03125 (f ~r:1. ~fo:2. ~t:2. 1.5);
+  (* inside radius only the power: d 0.5, x 0.75 *)
+  check "tightness inside radius" 0.5625 (f ~r:1. ~fo:2. ~t:2. 0.5);
+  check "radius 0: no step" 0.75 (f ~r:0. ~fo:2. ~t:1. 0.5);
+  (* radius past falloff: never between them *)
+  check "radius beyond falloff" 0.25 (f ~r:3. ~fo:2. ~t:1. 1.5);
+  check "falloff 0 lights nothing" 0. (f ~r:0. ~fo:0. ~t:0. 0.)
+
+let cylinder_light ?(r = 0.75) ?(fo = 1.) ?(t = 0.) pos at =
+  { (Light.point pos Color.white) with kind = Light.Cylinder { point_at = at; radius = r; falloff = fo; tightness = t } }
+
+(* a light at <0,5,0> toward the origin: the distance from the y axis
+   decides, not from the light; nothing at or behind its plane; the
+   direction is the axis, the distance the one to the light's plane *)
+let cylinder_light_at () =
+  let l = cylinder_light (Vec3.make 0. 5. 0.) Vec3.zero in
+  let att x y z = Light.attenuation l (Vec3.make x y z) in
+  check "0.9 from the axis" 0.352 (att 0.9 0. 0.);
+  check "the same far below" 0.352 (att 0. (-100.) 0.9);
+  check "just in front of the plane" 0.352 (att 0.9 4.999 0.);
+  check "on the plane" 0. (att 0.9 5. 0.);
+  check "behind" 0. (att 0. 6. 0.);
+  let d, dist = Light.direction_to l (Vec3.make 3. 1. 7.) in
+  check "direction: up the axis" 1. d.y;
+  check "direction x" 0. d.x;
+  check "distance to the light's plane" 4. dist;
+  let _, dist = Light.direction_to l (Vec3.make 0. 6. 0.) in
+  check "behind: negative" (-1.) dist;
+  (* fade by the distance along the axis: 2 / (1 + (4/2)^2) *)
+  let l = { l with fade_distance = 2.; fade_power = 2. } in
+  check "fade along the axis" 0.4 (Light.attenuation l (Vec3.make 0.3 1. 0.));
+  (* a tilted axis: 0.9 across it *)
+  let l = cylinder_light Vec3.zero (Vec3.make 1. 1. 0.) in
+  let k = 0.9 /. Float.sqrt 2. in
+  check "tilted axis" 0.352 (Light.attenuation l (Vec3.make (2. +. k) (2. -. k) 0.));
+  check "no axis: nothing" 0. (Light.attenuation (cylinder_light Vec3.zero Vec3.zero) (Vec3.make 0. 0. 1.))
+
+(* the rays are parallel: a point moved along the axis keeps its light;
+   the factor is that of its distance from the axis, 0 behind the light *)
+let cylinder_parallel =
+  let open QCheck in
+  let v = Gen.(map3 Vec3.make (float_range (-5.) 5.) (float_range (-5.) 5.) (float_range (-5.) 5.)) in
+  Test.make ~name:"cylinder light: parallel rays, the factor of the distance from the axis" ~count:2000
+    (make Gen.(quad v v (pair v (float_range 0. 20.)) (triple (float_range 0. 2.) (float_range 0.1 3.) (float_range 0. 4.))))
+    (fun (pos, at, (p, s), (r, fo, t)) ->
+      assume (Vec3.dist pos at > 0.1);
+      let l = cylinder_light ~r ~fo ~t pos at in
+      let a = Vec3.normalize (Vec3.sub at pos) in
+      let v = Vec3.sub p pos in
+      let k = Vec3.dot v a in
+      let d = Vec3.length (Vec3.sub v (Vec3.scale k a)) in
+      let expected = if k > 1e-9 then Light.cylinder_factor ~radius:r ~falloff:fo ~tightness:t d else 0. in
+      let near x y = Float.abs (x -. y) <= 1e-9 in
+      (Float.abs k < 1e-6 || near (Light.attenuation l p) expected)
+      && (k < 1e-6 || near (Light.attenuation l (Vec3.add p (Vec3.scale s a))) (Light.attenuation l p)))
+
+(* light_source { cylinder } in a scene: a plane facing the light head on
+   (diffuse 1), its pixel at 0.9 from the axis: 0.352; a sphere on the
+   axis casts its shadow down the beam, not toward the light *)
+let cylinder_scene () =
+  let scene ~extra x =
+    Scn.pixel
+      (Printf.sprintf
+         "camera { orthographic location <%g, 0, -10> look_at <%g, 0, 0> right 0.01*x up 0.01*y }
+          light_source { <0, 0, -5>, rgb 1 cylinder point_at <0, 0, 0> }
+          plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+%s" x x extra)
+  in
+  Scn.gray "0.9 from the axis" 0.352 (scene ~extra:"" 0.9);
+  Scn.gray "on the axis" 1. (scene ~extra:"" 0.);
+  Scn.gray "past falloff" 0. (scene ~extra:"" 1.2);
+  (* a ball beside the axis at 0.5: its shadow falls straight down the
+     beam, at x = 0.5 (a point light at <0,0,-5> would cast it at 0.8) *)
+  let ball = "sphere { <0.5, 0, -3>, 0.1 pigment { rgb 1 } no_image }" in
+  Scn.gray "parallel shadow" 0. (scene ~extra:ball 0.5);
+  (* 0.8 from the axis: x 0.2, s 0.8, (3 - 1.6) 0.64 *)
+  Scn.gray "none where a point light's would be" 0.896 (scene ~extra:ball 0.8)
+
+(* POV-Ray's light types as its parser switches them: shadowless makes
+   a point light (keeping the parallel flag a cylinder set), a type
+   keyword casts shadows again; a parallel spotlight is a parallel light *)
+let light_types () =
+  let kind text =
+    let s = Scn.compile text in
+    let l = s.lights.(0) in
+    ( (match l.kind with
+      | Light.Point -> "point" | Light.Spot _ -> "spot" | Light.Parallel _ -> "parallel"
+      | Light.Cylinder { radius; falloff; tightness; _ } -> Printf.sprintf "cylinder %g %g %g" radius falloff tightness),
+      l.shadowless )
+  in
+  let is msg (k, sh) text = Alcotest.(check (pair string bool)) msg (k, sh) (kind text) in
+  is "cylinder: POV-Ray's defaults" ("cylinder 0.75 1 0", false) "light_source { 0, 1 cylinder }";
+  is "written values" ("cylinder 2 3 4", false)
+    "light_source { 0, 1 cylinder point_at -y radius 2 falloff 3 tightness 4 }";
+  is "cylinder shadowless: a parallel light" ("parallel", true) "light_source { 0, 1 cylinder point_at -y shadowless }";
+  is "shadowless cylinder: shadows" ("cylinder 0.75 1 0", false) "light_source { 0, 1 shadowless cylinder }";
+  is "cylinder resets a spotlight's values" ("cylinder 0.75 1 0", false)
+    "light_source { 0, 1 spotlight radius 10 falloff 20 tightness 5 cylinder }";
+  is "spotlight shadowless: a point light" ("point", true) "light_source { 0, 1 spotlight shadowless }";
+  is "shadowless spotlight: shadows" ("spot", false) "light_source { 0, 1 shadowless spotlight }";
+  is "parallel spotlight" ("parallel", false) "light_source { 0, 1 parallel spotlight point_at -y }";
+  is "spotlight parallel" ("parallel", false) "light_source { 0, 1 spotlight parallel point_at -y }";
+  is "cylinder parallel" ("cylinder 0.75 1 0", false) "light_source { 0, 1 cylinder parallel }";
+  (* point_at transformed with the light *)
+  let s = Scn.compile "light_source { 0, 1 cylinder point_at y rotate 90*z translate x }" in
+  match s.lights.(0).kind with
+  | Light.Cylinder { point_at; _ } ->
+      check "point_at turned x" 0. point_at.x;
+      check "point_at turned y" 0. point_at.y
+  | _ -> Alcotest.fail "not a cylinder"
+
 let tests =
   ( "light",
     [
@@ -118,4 +242,9 @@ let tests =
       Alcotest.test_case "area light in a scene" `Quick scene;
       Alcotest.test_case "shadows kept per point" `Quick kept_shadows;
       Alcotest.test_case "light_group sets" `Quick groups;
+      Alcotest.test_case "cylinder light: POV-Ray's formula by hand" `Quick cylinder_formula;
+      Alcotest.test_case "cylinder light: axis, plane, direction, fade" `Quick cylinder_light_at;
+      QCheck_alcotest.to_alcotest cylinder_parallel;
+      Alcotest.test_case "cylinder light in a scene: pool and parallel shadow" `Quick cylinder_scene;
+      Alcotest.test_case "light types switched as POV-Ray's parser does" `Quick light_types;
     ] )

@@ -70,12 +70,25 @@ let gen_obj =
               map (fun cs -> Sdl.Algebraic { order = 2; coef = Array.of_list cs; quadric = true })
                 (list_size (return 10) gen_float);
               map3
-                (fun p c (fd, fp, sh) ->
+                (fun p c ((fd, fp, sh), (k, at, par)) ->
+                  (* the states POV-Ray's keywords can reach: shadowless
+                     only on a point light (it makes one), a cylinder
+                     always parallel, point_at on a point light only
+                     when parallel or shadowless (left from a spotlight) *)
+                  let kind, par =
+                    match k with
+                    | 0 -> (Sdl.Point_light, par)
+                    | 1 -> (Sdl.Spot_light { radius = fd; falloff = fp; tightness = fd +. fp }, par)
+                    | _ -> (Sdl.Cylinder_light { radius = fp; falloff = fd; tightness = 2. }, true)
+                  in
+                  let sh = sh && kind = Sdl.Point_light in
+                  let at = if kind = Sdl.Point_light && not (par || sh) then Vec3.unit_z else at in
                   Sdl.Light
-                    { Sdl.position = p; color = c; kind = Light.Point; fade_distance = fd;
+                    { Sdl.position = p; color = c; kind; point_at = at; parallel = par; fade_distance = fd;
                       fade_power = fp; shadowless = sh; media_interaction = not sh;
                       media_attenuation = sh; area = None; looks_like = None })
-                gen_vec gen_col (triple gen_pos gen_pos gen_bool);
+                gen_vec gen_col
+                (pair (triple gen_pos gen_pos gen_bool) (triple (int_range 0 2) gen_vec gen_bool));
             ])
          gen_xform
          (option (list_size (int_range 1 3) gen_layer))
@@ -136,7 +149,9 @@ let fixpoint () =
      isosurface { function { sqrt(x*x + y*y + z*z) - R + 0.1*sin(4*x) } open max_gradient 2.5 threshold -0.1 translate y }\n\
      isosurface { function { abs(x) + pow(y, 2) - min(z, 0.5) * N } contained_by { sphere { <0, 0.5, 0>, 2 } } accuracy 1e-4\n\
        all_intersections pigment { rgb 1 } }\n\
-     isosurface { function (a, b, c) { a*b - c } contained_by { box { -2, <1, 2, 3> } } max_trace 3 }\n"
+     isosurface { function (a, b, c) { a*b - c } contained_by { box { -2, <1, 2, 3> } } max_trace 3 }\n\
+     light_source { <1, 2, 3>, rgb 1 cylinder point_at 0 radius 0.5 falloff 2 tightness 3 rotate 10*x translate x }\n\
+     light_source { 0, rgb 1 spotlight point_at y shadowless parallel }\n"
   in
   let text =
     if Sys.file_exists "/usr/share/povray-3.7/include/timrom.ttf" then
@@ -151,7 +166,8 @@ let fixpoint () =
   List.iter
     (fun w -> if not (Scn.contains once w) then Alcotest.failf "%S is not printed" w)
     [ "sor {"; "interior_texture {"; "isosurface {"; "height_field {"; "lathe {"; "prism {"; "blob {";
-      "superellipsoid {"; " open"; "julia_fractal {"; "cube" ];
+      "superellipsoid {"; " open"; "julia_fractal {"; "cube"; " cylinder point_at";
+      " parallel point_at <0, 1, 0> shadowless" ];
   Alcotest.(check string) "fixpoint" once (print (parse once))
 
 (* declared media and densities, used and edited, in interiors and at
