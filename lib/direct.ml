@@ -54,8 +54,10 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
     let sh = Shadow.passed w in
+    (* a shadowless light is still tested for its projected_through *)
+    let walk = match light.projected_through with Some _ -> true | None -> not light.shadowless in
     (* [j] < 0: an area light's sample, never kept *)
-    if not light.shadowless then
+    if walk then
       if sampled then Shadow.point s w light p
       else if j >= 0 && cache.stamp.(j) = cache.gen then
         Color.acc_set sh cache.col.(3 * j) cache.col.((3 * j) + 1) cache.col.((3 * j) + 2)
@@ -68,9 +70,9 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
           cache.col.((3 * j) + 2) <- sh.ab
         end
       end;
-    let lr = if light.shadowless then lr else lr *. sh.ar
-    and lg = if light.shadowless then lg else lg *. sh.ag
-    and lb = if light.shadowless then lb else lb *. sh.ab in
+    let lr = if walk then lr *. sh.ar else lr
+    and lg = if walk then lg *. sh.ag else lg
+    and lb = if walk then lb *. sh.ab else lb in
     if not (lr = 0. && lg = 0. && lb = 0.) then
       if back then begin
         let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in

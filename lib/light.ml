@@ -26,11 +26,12 @@ type t = {
   area : area option;
   media_interaction : bool;
   media_attenuation : bool;
+  projected_through : Object.t option;
 }
 
 let point position color =
   { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
-    area = None; media_interaction = true; media_attenuation = false }
+    area = None; media_interaction = true; media_attenuation = false; projected_through = None }
 
 let area axis1 axis2 n1 n2 =
   { axis1; axis2; n1 = max 1 n1; n2 = max 1 n2; adaptive = 100; circular = false;

@@ -40,6 +40,11 @@ type t = {
   area : area option;
   media_interaction : bool;  (** scattered by media (true) *)
   media_attenuation : bool;  (** dimmed by atmospheric media (false) *)
+  projected_through : Object.t option;
+      (** POV-Ray's [projected_through]: the light reaches a point only
+          when the ray from the point toward the light meets this object
+          (never drawn, casting no shadow) before the light; what lies
+          between that crossing and the light casts no shadow *)
 }
 
 val point : Vec3.t -> Color.t -> t

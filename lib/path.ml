@@ -56,6 +56,8 @@ type state = {
   shadow : Ray.scratch;
   sampler : Sampler.t;
   mutable set : Light.t array;  (** the lights of the vertex's surface (its light set) *)
+  ph : Hit.t;  (** a shadow ray's crossing of a light's projected_through object *)
+  pf : Object.found;
 }
 
 let state_key =
@@ -67,7 +69,8 @@ let state_key =
         ls = Emitter.sampled (); h = Hit.create 0.; fd = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
         eh = Hit.create 0.; efd = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); le = c ();
         shadow = Ray.scratch ();
-        sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0; set = [||] })
+        sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0; set = [||]; ph = Hit.create infinity;
+        pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)) })
 
 let dot = Vec3.dot_m
 
@@ -112,6 +115,22 @@ let transmittance (s : Scene.t) st (dir : Vec3.m) =
   Ray.set r st.p dir.mx dir.my dir.mz;
   Color.acc_set st.tr 1. 1. 1.;
   if not (Scene.occluders_s s r Ray.shadow_epsilon blocks pass_through) then Color.acc_set st.tr 0. 0. 0.
+
+(* A light's projected_through object seen from [st.p] along [dir]
+   (POV-Ray's rule, as in whitted mode): whether the shadow ray meets it
+   (past 1e-4) before the light at [dist]; if so the ray's [far] is set
+   just short of that crossing, what lies beyond casting no shadow *)
+let projected st (o : Object.t) (dir : Vec3.m) dist =
+  let r = st.shadow and h = st.ph in
+  Ray.set r st.p dir.mx dir.my dir.mz;
+  h.t <- infinity;
+  h.floor <- neg_infinity;
+  Object.hit_s o r 1e-4 h st.pf
+  && h.t < dist
+  && begin
+       r.far <- h.t -. 0.001;
+       true
+     end
 
 (* The random dimensions of one sample: 0-1 pixel, 2-3 lens, then a block
    per bounce. *)
@@ -159,11 +178,18 @@ let direct t (st : state) sampler base =
           match e with
           | Delta l | Area { light = l; _ } ->
               let tr = st.tr and v = ls.value in
-              if l.shadowless then Color.acc_set tr 1. 1. 1.
-              else begin
-                st.shadow.far <- ls.n.dist;
-                transmittance s st ls.wi
-              end;
+              (* projected_through: a condition on the light's visibility *)
+              (match l.projected_through with
+              | None ->
+                  if l.shadowless then Color.acc_set tr 1. 1. 1.
+                  else begin
+                    st.shadow.far <- ls.n.dist;
+                    transmittance s st ls.wi
+                  end
+              | Some o ->
+                  if not (projected st o ls.wi ls.n.dist) then Color.acc_set tr 0. 0. 0.
+                  else if l.shadowless then Color.acc_set tr 1. 1. 1.
+                  else transmittance s st ls.wi);
               Color.acc_set dl
                 (dl.ar +. (ci *. (f.ar *. (tr.ar *. v.ar))))
                 (dl.ag +. (ci *. (f.ag *. (tr.ag *. v.ag))))

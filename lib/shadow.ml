@@ -86,6 +86,10 @@ type walk = {
   fd : Vec3.m;  (** the shadow ray's direction, for the fogs *)
   sp : Media.span;  (** the stretch being dimmed *)
   sl : Light.dir;  (** an area light's sample's direction *)
+  mutable through : Object.t option;  (** the light's projected_through object *)
+  mutable occlude : bool;  (** the light casts shadows (it is not shadowless) *)
+  ph : Hit.t;  (** the crossing of the projected_through object *)
+  pf : Object.found;
 }
 
 let shadow_key =
@@ -96,7 +100,8 @@ let shadow_key =
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
-        fd = Vec3.m (); sp = Media.span (); sl = Light.dir () })
+        fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); through = None; occlude = true;
+        ph = Hit.create infinity; pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)) })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -268,28 +273,52 @@ let stretches (w : walk) =
     lo := Float.max !lo hi
   done
 
+(* POV-Ray's projected_through (trace.cpp, TracePointLightShadowRay):
+   the light passes only when the shadow ray meets the object (its first
+   crossing past 1e-4, POV-Ray's MIN_ISECT_DEPTH) before the light; then
+   only what lies before that crossing (less 0.001, its SMALL_TOLERANCE)
+   casts shadows, whence [w.ray.far]. From inside the object the ray's
+   way out is such a crossing; a point on the object's own surface facing
+   the light has none ahead. *)
+let projected (w : walk) (o : Object.t) =
+  let h = w.ph in
+  h.t <- infinity;
+  h.floor <- neg_infinity;
+  Object.hit_s o w.ray 1e-4 h w.pf
+  && h.t < w.seg.len
+  && begin
+       w.ray.far <- h.t -. 0.001;
+       true
+     end
+
 (* Light reaching the origin of the walk's ray from [w.seg.len] along its
    unit direction: the product of (f*P + t) of every surface crossed, with
    interior fade over the lengths travelled inside fading objects; black
-   when something opaque blocks. Left in [w.acc]: stored in the walk's
-   own fields, nothing is allocated or written through [caml_modify]
-   unless a crossing lets light through. *)
+   when something opaque blocks (or, with projected_through, when the ray
+   misses the object). Left in [w.acc]: stored in the walk's own fields,
+   nothing is allocated or written through [caml_modify] unless a
+   crossing lets light through. *)
 let shadow_into (s : Scene.t) (w : walk) =
   let dist = w.seg.len in
   Color.acc_set w.acc 1. 1. 1.;
   w.nf <- 0;
   w.ray.far <- dist;
-  let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
-  if not visible then Color.acc_set w.acc 0. 0. 0.
-  else begin
-    if w.nf > 0 || w.fogs != [] then stretches w;
-    (* atmospheric media: over the whole shadow ray, inside solids too
-       (POV-Ray 3.7 does so, measured: a clear solid box on the way
-       dims the light as much as a hollow one) *)
-    if w.air <> [] then begin
-      w.sp.lo <- 0.;
-      w.sp.hi <- dist;
-      Media.transmittance_into w.air w.ray w.sp w.acc
+  (* [w.seg.len], not [dist], to [projected]: a float passed is boxed *)
+  let seen = match w.through with None -> true | Some o -> projected w o in
+  if not seen then Color.acc_set w.acc 0. 0. 0.
+  else if w.occlude then begin
+    let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
+    if not visible then Color.acc_set w.acc 0. 0. 0.
+    else begin
+      if w.nf > 0 || w.fogs != [] then stretches w;
+      (* atmospheric media: over the whole shadow ray, inside solids too
+         (POV-Ray 3.7 does so, measured: a clear solid box on the way
+         dims the light as much as a hollow one) *)
+      if w.air <> [] then begin
+        w.sp.lo <- 0.;
+        w.sp.hi <- dist;
+        Media.transmittance_into w.air w.ray w.sp w.acc
+      end
     end
   end
 
@@ -313,6 +342,8 @@ let area_sample (w : walk) i j (out : Color.acc) =
 let[@inline] aim (s : Scene.t) (w : walk) (light : Light.t) =
   (let f = if light.media_attenuation && light.media_interaction then s.fog else [] in
    if w.fogs != f then w.fogs <- f);
+  if w.through != light.projected_through then w.through <- light.projected_through;
+  w.occlude <- not light.shadowless;
   match s.atmosphere with
   | [] -> if w.air != [] then w.air <- []
   | (i : Interior.t) :: _ ->

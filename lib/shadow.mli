@@ -24,7 +24,11 @@ val point : Scene.t -> walk -> Light.t -> Vec3.m -> unit
 (** [point s w l p]: the light let through from the point light [l]
     (or one sample of it) whose direction is in [toward w] to [p], into
     [passed w]; the scene's atmospheric media dim it when [l] has
-    media_attenuation on. *)
+    media_attenuation on. A light with a projected_through object lets
+    nothing through unless the ray meets the object before the light;
+    then only what lies before that crossing casts shadows. A shadowless
+    light is asked only that (callers ask a shadowless light without a
+    projected_through object nothing). *)
 
 val light : Scene.t -> walk -> Light.t -> Vec3.m -> unit
 (** [light s w l p]: the same for light [l] at [p] (its direction in

@@ -53,11 +53,13 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
       let att = Light.attenuation_m light p in
       if att > 0. then begin
         (* no tuple: the channels stay unboxed *)
-        if not light.shadowless then Shadow.light s w light p;
+        (* a shadowless light is still tested for its projected_through *)
+        let walk = match light.projected_through with Some _ -> true | None -> not light.shadowless in
+        if walk then Shadow.light s w light p;
         let a = Shadow.passed w in
-        let sr = if light.shadowless then 1. else a.ar
-        and sg = if light.shadowless then 1. else a.ag
-        and sb = if light.shadowless then 1. else a.ab in
+        let sr = if walk then a.ar else 1.
+        and sg = if walk then a.ag else 1.
+        and sb = if walk then a.ab else 1. in
         (* the light travels along -l, the eye is back along the ray *)
         let c = (l.lx *. r.dx) +. (l.ly *. r.dy) +. (l.lz *. r.dz) in
         let k = att *. Media.phase sc c in

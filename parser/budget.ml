@@ -25,7 +25,9 @@ let rec nodes acc (o : Sdl.obj) =
     | Sdl.Csg (_, cs) | Light_group (_, cs) -> List.fold_left nodes acc cs
     | Inverse c -> nodes acc c
     | Clipped (c, cs) | Bounded (c, cs) -> List.fold_left nodes (nodes acc c) cs
-    | Light { looks_like = Some c; _ } -> nodes acc c
+    | Light { looks_like; projected_through; _ } ->
+        let acc = match looks_like with Some c -> nodes acc c | None -> acc in
+        (match projected_through with Some c -> nodes acc c | None -> acc)
     | _ -> acc
 
 let place (o : Sdl.obj) =

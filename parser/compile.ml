@@ -219,7 +219,7 @@ let camera loc items =
    cone factor is 1 along its own axis: POV-Ray's parallel spotlight
    lights everything), a cylinder stays one (its rays are parallel
    already) *)
-let light (o : Sdl.obj) (l : Sdl.light) =
+let light (o : Sdl.obj) (l : Sdl.light) projected_through =
   let x = o.xform in
   let point_at = Transform.point x l.point_at in
   let kind =
@@ -248,6 +248,7 @@ let light (o : Sdl.obj) (l : Sdl.light) =
         (fun (a : Light.area) ->
           { a with axis1 = Transform.vector x a.axis1; axis2 = Transform.vector x a.axis2 })
         l.area;
+    projected_through;
   }
 
 let positive (o : Sdl.obj) what r =
@@ -428,7 +429,12 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
   | Sdl.Light l ->
-      ctx.lights := light o l :: !(ctx.lights);
+      (* projected_through: an object of the light's own, in its frame,
+         never drawn (its light sources, if any, dropped) *)
+      let projected =
+        Option.bind l.projected_through (fun p -> obj { ctx' with lights = ref []; no_shadow = true } p)
+      in
+      ctx.lights := light o l projected :: !(ctx.lights);
       (* looks_like: an ordinary object placed at the light, casting no
          shadow (so that it does not block its own light) *)
       Option.bind l.looks_like (fun (ll : Sdl.obj) ->

@@ -25,6 +25,17 @@ let light_param (p1, p2) what ?(parallel = false) f (o : Sdl.obj) =
       { o with shape = Sdl.Light (f l) }
   | _ -> o
 
+(* projected_through { OBJECT }, once per light; the object is kept in the
+   light's frame as it stands now, so that only the transformations
+   written after it move it (as in POV-Ray) *)
+let projected_through (p1, p2) (p : Sdl.obj) (o : Sdl.obj) =
+  match o.shape with
+  | Sdl.Light l ->
+      if Option.is_some l.projected_through then
+        Diag.error (loc (p1, p2)) "only one projected_through is allowed per light_source";
+      let p = if Transform.is_identity o.xform then p else Sdl.transform_obj (Transform.inverse o.xform) p in
+      { o with shape = Sdl.Light { l with projected_through = Some p } }
+  | _ -> o
 let light_field f (o : Sdl.obj) = match o.shape with
   | Sdl.Light l -> { o with shape = Sdl.Light (f l) } | _ -> o
 let nonzero_scale l (v : Vec3.t) =

@@ -14,6 +14,10 @@ val light_param :
     [what]; an error at [loc] on a point light (with [~parallel:true], a
     parallel point light takes it too: point_at). *)
 
+val projected_through : Lexing.position * Lexing.position -> Sdl.obj -> Sdl.obj -> Sdl.obj
+(** [projected_through loc p light]: the light's [projected_through]
+    object (an error at [loc] when it has one already), kept so that only
+    the transformations written after it move it. *)
 val light_field : (Sdl.light -> Sdl.light) -> Sdl.obj -> Sdl.obj
 
 val nonzero_scale : Lexing.position * Lexing.position -> Camlray.Vec3.t -> Camlray.Vec3.t

@@ -1,7 +1,7 @@
 (* Light sources, textures, pigments, finishes, interiors. *)
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
-%token LIGHT_SOURCE SPOTLIGHT PARALLEL POINT_AT RADIUS FALLOFF TIGHTNESS
+%token LIGHT_SOURCE SPOTLIGHT PARALLEL POINT_AT RADIUS FALLOFF TIGHTNESS PROJECTED_THROUGH
 %token FADE_DISTANCE FADE_POWER FADE_COLOR SHADOWLESS CAUSTICS
 %token TEXTURE PIGMENT FINISH INTERIOR UV_MAPPING
 %token AMBIENT EMISSION DIFFUSE BRILLIANCE PHONG PHONG_SIZE SPECULAR ROUGHNESS METALLIC
@@ -40,7 +40,7 @@
       { let l = { Sdl.position = v3 $loc(p) p; color = Value.to_rgb (loc $loc(c)) c;
                   kind = Sdl.Point_light; point_at = Vec3.unit_z; parallel = false; fade_distance = 0.; fade_power = 0.; shadowless = false;
                   media_interaction = true; media_attenuation = false;
-                  area = None; looks_like = None } in
+                  area = None; looks_like = None; projected_through = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
                   texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None } in
         List.fold_left (fun o f -> f o) o ms }
@@ -95,6 +95,12 @@
   | AREA_ILLUMINATION b = param
       { let on = Value.to_bool (loc $loc) b in area_field (fun a -> { a with area_illumination = on }) }
   | LOOKS_LIKE LBRACE o = object_ RBRACE { light_field (fun l -> { l with looks_like = Some o }) }
+  (* projected_through { OBJECT [modifiers] }: the light reaches only what
+     sees it through the object, which is never drawn *)
+  | PROJECTED_THROUGH LBRACE o = object_ ms = list(object_mod) RBRACE
+      { projected_through $loc (List.fold_left (fun o f -> f o) o ms) }
+  | PROJECTED_THROUGH LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
+      { projected_through $loc (List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc(o) } ms) }
   (* looks_like { Name [modifiers] }: a declared object without object { } *)
   | LOOKS_LIKE LBRACE o = OBJECT_ID ms = list(object_mod) RBRACE
       { let o = List.fold_left (fun o f -> f o) { o with Sdl.loc = loc $loc(o) } ms in

@@ -70,6 +70,7 @@ let object_keywords =
 let texture_keywords =
   [
     ("light_source", LIGHT_SOURCE); ("spotlight", SPOTLIGHT); ("parallel", PARALLEL);
+    ("projected_through", PROJECTED_THROUGH);
     ("point_at", POINT_AT); ("radius", RADIUS); ("falloff", FALLOFF);
     ("tightness", TIGHTNESS); ("fade_distance", FADE_DISTANCE); ("fade_power", FADE_POWER);
     ("fade_color", FADE_COLOR); ("fade_colour", FADE_COLOR); ("shadowless", SHADOWLESS);

@@ -124,6 +124,7 @@ let rec parts (o : Sdl.obj) =
   | Sdl.Light l ->
       ( Printf.sprintf "light_source { %s, %s%s fade_distance %s fade_power %s" (vec l.position)
           (rgb l.color) (light_kind l) (float l.fade_distance) (float l.fade_power)
+          ^ (match l.projected_through with Some p -> " projected_through { " ^ obj p ^ " }" | None -> "")
           ^ (if l.media_interaction then "" else " media_interaction off")
           ^ (if l.media_attenuation then " media_attenuation on" else ""),
         if Transform.is_identity o.xform then [] else [ matrix o.xform ] )

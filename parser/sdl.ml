@@ -115,6 +115,10 @@ and light = {
   media_attenuation : bool;
   area : Light.area option;
   looks_like : obj option;  (** drawn at the light's position, casts no shadow *)
+  projected_through : obj option;
+      (** the light reaches only what sees it through this object; written
+          in the light's frame as it stood when read (transformations
+          written after [projected_through] move it) *)
 }
 
 (** POV-Ray's light types as a light_source reads them; the compiled

@@ -233,6 +233,50 @@ let light_types () =
       check "point_at turned y" 0. point_at.y
   | _ -> Alcotest.fail "not a cylinder"
 
+(* projected_through: pixels of a plane lit from <0,0,-5> through a ball
+   of radius 0.5 at z = -2 (diffuse 1, head on: 1 where lit) *)
+let projected () =
+  let scene ?(light = "") ?(extra = "") ?(ball = "sphere { <0, 0, -2>, 0.5 }") x =
+    Scn.pixel
+      (Printf.sprintf
+         "camera { orthographic location <%g, 0, -10> look_at <%g, 0, 0> right 0.01*x up 0.01*y }
+          light_source { <0, 0, -5>, rgb 1 %s projected_through { %s } }
+          plane { z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }
+%s" x x light ball extra)
+  in
+  Scn.gray "through the ball" 1. (scene 0.);
+  Scn.gray "beside it" 0. (scene 1.);
+  (* the ball's shadow of a point light: |x| < 0.5 * 5/3 (about 0.83) *)
+  Scn.gray "its rim" (5. /. Float.sqrt 25.64) (scene 0.8);
+  Scn.gray "just outside its rim" 0. (scene 0.85);
+  let block z = Printf.sprintf "box { <-0.2, -0.2, %g>, <0.2, 0.2, %g> pigment { rgb 1 } no_image }" (z -. 0.1) (z +. 0.1) in
+  Scn.gray "a block between the ball and the light casts no shadow" 1. (scene ~extra:(block (-3.5)) 0.);
+  Scn.gray "a block between the plane and the ball does" 0. (scene ~extra:(block (-1.)) 0.);
+  Scn.gray "shadowless: no shadow" 1. (scene ~light:"shadowless" ~extra:(block (-1.)) 0.);
+  Scn.gray "shadowless: still through the ball only" 0. (scene ~light:"shadowless" 1.);
+  (* the plane through the ball: inside it lit (its way out is the crossing) *)
+  Scn.gray "inside the object" 1. (scene ~ball:"sphere { 0, 0.5 }" 0.);
+  let c = 5. /. Float.sqrt 25.16 in
+  Scn.gray "inside, off the axis" c (scene ~ball:"sphere { 0, 0.5 }" 0.4);
+  (* the object's own surface facing the light: no crossing ahead *)
+  let lit_face =
+    Scn.pixel
+      "camera { orthographic location <0, 0, -10> look_at 0 right 0.01*x up 0.01*y }
+       light_source { <0, 0, -5>, rgb 1 projected_through { sphere { <0, 0, -2>, 0.5 } } }
+       sphere { <0, 0, -2>, 0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }"
+  in
+  Scn.gray "its own face toward the light" 0. lit_face;
+  (* transformations written after projected_through move the object,
+     those before do not *)
+  let bounds text =
+    match (Scn.compile text).lights.(0).projected_through with
+    | Some o -> (match Object.bounds o with Some (lo, hi) -> Vec3.scale 0.5 (Vec3.add lo hi) | None -> Vec3.zero)
+    | None -> Alcotest.fail "no projected_through"
+  in
+  let c = bounds "light_source { 0, 1 translate 5*x projected_through { sphere { 0, 1 } } translate y }" in
+  check "not moved by the translate before" 0. c.x;
+  check "moved by the translate after" 1. c.y
+
 let tests =
   ( "light",
     [
@@ -247,4 +291,5 @@ let tests =
       QCheck_alcotest.to_alcotest cylinder_parallel;
       Alcotest.test_case "cylinder light in a scene: pool and parallel shadow" `Quick cylinder_scene;
       Alcotest.test_case "light types switched as POV-Ray's parser does" `Quick light_types;
+      Alcotest.test_case "projected_through: through, beside, shadows, inside, own face, transforms" `Quick projected;
     ] )

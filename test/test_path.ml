@@ -607,6 +607,38 @@ let light_group () =
         [ ("red", r, wr, er); ("green", g, wg, eg); ("blue", b, wb, eb) ])
     [ (8, "in a group", (1., 0., 0.)); (24, "global_lights on", (0., 1., 1.)); (40, "outside", (0., 0., 1.)) ]
 
+(* A cylinder light and a projected_through light in mc mode: delta
+   lights, the beam's fall-off across its axis and the object as a
+   condition on what the light sees (next-event estimation), the same as
+   whitted mode's (and POV-Ray's). A plane seen head on, black sky, one
+   bounce: each pixel's mean is the whitted pixel integral; a blocker
+   between the projected object and its light casts no shadow, one
+   before it does. *)
+let cylinder_projected () =
+  let text =
+    header
+    ^ "camera { orthographic location <0,0,-10> look_at 0 right 8*x up 4*y }\n\
+       #default { finish { ambient 0 diffuse 0.8 } }\n\
+       light_source { <-2,0,-5> rgb <1,0.6,0.3> cylinder point_at <-2,0,0> radius 0.5 falloff 1.5 tightness 1 }\n\
+       light_source { <2,0,-5> rgb <0.3,0.6,1> projected_through { box { <1.5,-0.5,-2.1>, <2.5,0.5,-1.9> } } }\n\
+       box { <1.8,-0.2,-3.1>, <2.2,0.2,-2.9> no_image }\n\
+       box { <2.4,-0.3,-1.1>, <2.7,0.3,-0.9> no_image }\n\
+       plane { z, 0 pigment { rgb 1 } }\n"
+  in
+  let w = 32 and h = 16 in
+  let mc = render ~w ~h ~spp:16 ~depth:4 text and wh = whitted_boxed ~w ~h ~k:4 text in
+  let m1 = mean mc and m2 = mean wh in
+  if m2 < 0.05 then Alcotest.failf "whitted too dark: %g" m2;
+  if Float.abs (m1 -. m2) > 0.02 *. m2 then Alcotest.failf "image means: mc %g, whitted %g" m1 m2;
+  let p = psnr mc wh in
+  if p < 35. then Alcotest.failf "mc against whitted: PSNR %.1f dB (at least 35)" p;
+  (* pixel x covers [(x - 16) / 4, (x - 15) / 4]: the window is seen on
+     the plane over [1.17, 2.83], the near blocker would shade [1.5,
+     2.5], the far one shades [2.5, 2.875] *)
+  let lit x = let _, _, b = Helpers.pixel mc x 8 in b in
+  if lit 23 < 0.7 then Alcotest.failf "through the window, behind the near blocker: %g" (lit 23);
+  if lit 26 > 1e-9 then Alcotest.failf "in the far blocker's shadow: %g" (lit 26)
+
 let tests =
   ( "path",
     [
@@ -627,6 +659,7 @@ let tests =
     Alcotest.test_case "area light from a scene: far field = point light" `Quick area_light_from_scene;
     Alcotest.test_case "area light: a c <cos> over a plane" `Quick area_light;
     Alcotest.test_case "light_group: each surface by its light set" `Quick light_group;
+    Alcotest.test_case "cylinder and projected_through lights: mc = whitted" `Quick cylinder_projected;
       Alcotest.test_case "test/mc scenes render" `Quick mc_scenes;
       Alcotest.test_case "a sample allocates nothing (point, area and sphere lights, normals)" `Quick allocation;
       QCheck_alcotest.to_alcotest sphere_emitter_in_place;

@@ -86,7 +86,7 @@ let gen_obj =
                   Sdl.Light
                     { Sdl.position = p; color = c; kind; point_at = at; parallel = par; fade_distance = fd;
                       fade_power = fp; shadowless = sh; media_interaction = not sh;
-                      media_attenuation = sh; area = None; looks_like = None })
+                      media_attenuation = sh; area = None; looks_like = None; projected_through = None })
                 gen_vec gen_col
                 (pair (triple gen_pos gen_pos gen_bool) (triple (int_range 0 2) gen_vec gen_bool));
             ])
@@ -150,7 +150,8 @@ let fixpoint () =
      isosurface { function { abs(x) + pow(y, 2) - min(z, 0.5) * N } contained_by { sphere { <0, 0.5, 0>, 2 } } accuracy 1e-4\n\
        all_intersections pigment { rgb 1 } }\n\
      isosurface { function (a, b, c) { a*b - c } contained_by { box { -2, <1, 2, 3> } } max_trace 3 }\n\
-     light_source { <1, 2, 3>, rgb 1 cylinder point_at 0 radius 0.5 falloff 2 tightness 3 rotate 10*x translate x }\n\
+     light_source { <1, 2, 3>, rgb 1 cylinder point_at 0 radius 0.5 falloff 2 tightness 3 rotate 10*x\n\
+       projected_through { sphere { 0, 1 } scale 2 } translate x }\n\
      light_source { 0, rgb 1 spotlight point_at y shadowless parallel }\n"
   in
   let text =
@@ -166,7 +167,7 @@ let fixpoint () =
   List.iter
     (fun w -> if not (Scn.contains once w) then Alcotest.failf "%S is not printed" w)
     [ "sor {"; "interior_texture {"; "isosurface {"; "height_field {"; "lathe {"; "prism {"; "blob {";
-      "superellipsoid {"; " open"; "julia_fractal {"; "cube"; " cylinder point_at";
+      "superellipsoid {"; " open"; "julia_fractal {"; "cube"; " cylinder point_at"; "projected_through {";
       " parallel point_at <0, 1, 0> shadowless" ];
   Alcotest.(check string) "fixpoint" once (print (parse once))
 
