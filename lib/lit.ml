@@ -140,7 +140,10 @@ let sort a n =
     Float.Array.set a (!j + 1) x
   done
 
-let cut t (lights : Light.t array) (r : Ray.scratch) len =
+(* [cut] with the ray's length in [r.far] (a float passed to a function
+   not inlined would be boxed) *)
+let cut_far t (lights : Light.t array) (r : Ray.scratch) =
+  let len = r.far in
   let nl = Array.length lights in
   if Float.Array.length t.b < 3 * ((2 * nl) + 1) then begin
     t.s0 <- Float.Array.make nl 0.;
@@ -198,3 +201,7 @@ let cut t (lights : Light.t array) (r : Ray.scratch) len =
     let last = hi t (t.n - 1) in
     if last < len then push t last len false
   end
+
+let[@inline] cut t lights (r : Ray.scratch) len =
+  r.far <- len;
+  cut_far t lights r

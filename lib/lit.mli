@@ -48,7 +48,8 @@ val cut : t -> Light.t array -> Ray.scratch -> float -> unit
     before [len] and ends past 0.001), any other light all of it; the lit
     parts, merged where they overlap, are the lit stretches, the gaps
     between them and the ends of the ray the unlit ones. No light: one
-    unlit stretch. *)
+    unlit stretch. Sets [r.far] to [len] (the length is read from there,
+    unboxed). *)
 
 val lights : t -> int -> float -> bool
 (** [lights t i x]: whether light [i] (its index in the array given to
