@@ -176,13 +176,21 @@ let work_key =
   Scratch.key (fun () ->
       { found = Float.Array.make 3 0.; uv = Float.Array.make 2 0. })
 
-(* the roots of a polynomial of degree [deg] (coefficients in [e],
-   constant first) in [lo, hi), in order, into [found]; their number *)
-(* How far a root [r] found in floating point may lie from the computed
-   polynomial's own: the rounding error of evaluating it there (Horner's,
-   2 deg eps sum |e_i| |r|^i) over its slope, at most 1e-6 (1 + |r|) (a
-   double root's slope is about 0) *)
-let uncertainty e deg r =
+let step_key = Scratch.key (fun () -> Float.Array.make 2 0.)
+
+(* Where the search goes on after the root in [w]'s first float: past it
+   and past the sign changes rounding makes around it (the search from a
+   root's own value may find it again; roots nearer than that are the
+   same root to the arithmetic), and at least 1e-12 on from where it
+   started, held in [w]'s second float. How far a root [r] found in
+   floating point may lie from the computed polynomial's own: the
+   rounding error of evaluating it there (Horner's, 2 deg eps
+   sum |e_i| |r|^i) over its slope, at most 1e-6 (1 + |r|) (a double
+   root's slope is about 0). Out of line, floats passed in [w] (they
+   would be boxed): [all_roots] stays small enough for lathes' and sors'
+   inside tests to inline it. *)
+let[@inline never] step_past e deg (w : Float.Array.t) =
+  let r = Float.Array.unsafe_get w 0 in
   let a = ref 0. and d = ref 0. and ar = Float.abs r in
   for i = deg downto 1 do
     a := (!a *. ar) +. Float.abs (Float.Array.unsafe_get e i);
@@ -190,23 +198,25 @@ let uncertainty e deg r =
   done;
   let a = (!a *. ar) +. Float.abs (Float.Array.unsafe_get e 0) in
   let bound = 1e-6 *. (1. +. ar) and err = 2. *. float_of_int deg *. epsilon_float *. a in
-  if err >= bound *. Float.abs !d then bound else err /. Float.abs !d
+  let u = if err >= bound *. Float.abs !d then bound else err /. Float.abs !d in
+  Float.Array.unsafe_set w 1
+    (Float.max
+       (Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (r +. (4. *. u)))
+       (Float.Array.unsafe_get w 1 +. 1e-12))
 
+(* the roots of a polynomial of degree [deg] (coefficients in [e],
+   constant first) in [lo, hi), in order, into [found]; their number *)
 let all_roots sc e deg (found : Float.Array.t) lo hi =
-  let n = ref 0 and from = ref (lo -. 1e-12) in
-  while !n < deg && Poly.first_root_in sc e deg !from hi do
+  let n = ref 0 and w = Scratch.get step_key in
+  Float.Array.unsafe_set w 1 (lo -. 1e-12);
+  while !n < deg && Poly.first_root_in sc e deg (Float.Array.unsafe_get w 1) hi do
     let r = Poly.root sc in
     if r >= lo then begin
       Float.Array.unsafe_set found !n r;
       incr n
     end;
-    (* past it and past the sign changes rounding makes around it: the
-       search from a root's own value may find it again (roots nearer
-       than that are the same root to the arithmetic) *)
-    from :=
-      Float.max
-        (Float.max (r +. (1e-12 *. (1. +. Float.abs r))) (r +. (4. *. uncertainty e deg r)))
-        (!from +. 1e-12)
+    Float.Array.unsafe_set w 0 r;
+    step_past e deg w
   done;
   !n
 
