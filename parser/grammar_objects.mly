@@ -143,11 +143,11 @@ prism_point: COMMA? p = param { (loc $loc(p), p) }
 blob_item:
   | THRESHOLD e = param { `Threshold (fl $loc(e) e) }
   | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param ts = list(transformation) RBRACE
-      { `Comp (Shapes.blob_moved (loc $loc) ts
+      { `Comp (Shapes.blob_moved ts
                  (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s))) }
   | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param COMMA? STRENGTH? s = param
     ts = list(transformation) RBRACE
-      { `Comp (Shapes.blob_moved (loc $loc) ts
+      { `Comp (Shapes.blob_moved ts
                  (Shapes.blob_cylinder (loc $loc) (v3 $loc(a) a) (v3 $loc(b) b) (fl $loc(r) r) (fl $loc(s) s))) }
   | COMPONENT s = param COMMA? r = param COMMA? c = param
       { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }

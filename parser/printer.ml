@@ -184,11 +184,14 @@ let rec parts (o : Sdl.obj) =
       let str x = "\"" ^ String.concat "" (List.map (function '"' -> "\\\"" | '\\' -> "\\\\" | c -> String.make 1 c) (List.of_seq (String.to_seq x))) ^ "\"" in
       simple (Printf.sprintf "text { ttf %s %s %s, %s" (str t.font) (str t.chars) (float t.thickness) (vec t.offset))
   | Sdl.Blob (threshold, comps) ->
-      let comp = function
+      let rec comp = function
         | Blob.Sphere { center; radius; strength } ->
             Printf.sprintf "sphere { %s, %s, strength %s }" (vec center) (float radius) (float strength)
         | Blob.Cylinder { a; b; radius; strength } ->
             Printf.sprintf "cylinder { %s, %s, %s, strength %s }" (vec a) (vec b) (float radius) (float strength)
+        | Blob.Placed { shape; xform } ->
+            let s = comp shape in
+            String.sub s 0 (String.length s - 1) ^ matrix xform ^ " }"
       in
       simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
   | Sdl.Height_field hf ->

@@ -321,24 +321,27 @@ let blob_cylinder loc a b radius strength =
   Blob.Cylinder { a; b; radius; strength }
 
 (* Transformations on a blob component: moves, turns and uniform scales
-   (what keeps a sphere a sphere) *)
-let blob_moved loc ts (c : Blob.component) =
+   move it (a sphere stays a sphere, as in POV-Ray); anything else places
+   it, its field taken in its own space *)
+let blob_moved ts (c : Blob.component) =
   match ts with
   | [] -> c
-  | _ ->
+  | _ -> (
       let t = List.fold_left Transform.then_ Transform.identity ts in
       let ax = Transform.vector t Vec3.unit_x and ay = Transform.vector t Vec3.unit_y
       and az = Transform.vector t Vec3.unit_z in
       let k = Vec3.length ax in
       let close a b = Float.abs (a -. b) <= 1e-9 *. Float.max 1. (Float.abs b) in
-      if not (close (Vec3.length ay) k && close (Vec3.length az) k && close (Vec3.dot ax ay) 0.
-              && close (Vec3.dot ax az) 0. && close (Vec3.dot ay az) 0.)
-      then Diag.error loc "a blob component can be moved, turned and scaled evenly; this transformation stretches it";
-      (match c with
-       | Blob.Sphere { center; radius; strength } ->
-           Blob.Sphere { center = Transform.point t center; radius = radius *. k; strength }
-       | Blob.Cylinder { a; b; radius; strength } ->
-           Blob.Cylinder { a = Transform.point t a; b = Transform.point t b; radius = radius *. k; strength })
+      let even =
+        close (Vec3.length ay) k && close (Vec3.length az) k && close (Vec3.dot ax ay) 0.
+        && close (Vec3.dot ax az) 0. && close (Vec3.dot ay az) 0.
+      in
+      match c with
+      | Blob.Sphere { center; radius; strength } when even ->
+          Blob.Sphere { center = Transform.point t center; radius = radius *. k; strength }
+      | Blob.Cylinder { a; b; radius; strength } when even ->
+          Blob.Cylinder { a = Transform.point t a; b = Transform.point t b; radius = radius *. k; strength }
+      | c -> Blob.place t c)
 
 (* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in
    the terms of an order-2 poly: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1 *)
