@@ -121,7 +121,8 @@ let lobe m i =
   | _ -> Glass { eta = e; reflect = col m.c2; transmit = col m.c }
 
 (* A texture_map's or block pattern's texture at [p]: the entry the
-   pattern picks, the heavier of two blended ones (nested maps in turn) *)
+   pattern picks, the heavier of two blended ones; an average's or a
+   blob's components' heaviest (nested maps in turn) *)
 let pick_key = Scratch.key Texture.pick
 
 let rec resolve (tex : Texture.t) (p : Vec3.m) =
@@ -129,7 +130,7 @@ let rec resolve (tex : Texture.t) (p : Vec3.m) =
   | { Texture.tmap = Some m; _ } :: _ ->
       let pk = Scratch.get pick_key in
       Texture.blend_m m p pk;
-      resolve (if pk.n = 2 && pk.w.k1 > pk.w.k0 then pk.t1 else pk.t0) p
+      resolve (Texture.heaviest m pk) p
   | _ -> tex
 
 (* The material of a layer at [p] into [m], as [of_texture] makes it

@@ -6,7 +6,8 @@ type layer = {
   uv_texture : bool;
 }
 
-and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool; average : bool }
+and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool; kind : kind }
+and kind = Map | Average | Field of { blob : Blob.t; cut : float }
 and t = layer list
 
 let layer pigment finish = { pigment; normal = None; finish; tmap = None; uv_texture = false }
@@ -15,16 +16,33 @@ let default = plain Pigment.black Finish.default
 
 let patterned pattern entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern; entries; xform = Transform.identity; uv = false; average = false } }
+    tmap = Some { pattern; entries; xform = Transform.identity; uv = false; kind = Map } }
 
 let averaged entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern = Pattern.make Pattern.Bozo; entries; xform = Transform.identity; uv = false; average = true } }
+    tmap = Some { pattern = Pattern.make Pattern.Bozo; entries; xform = Transform.identity; uv = false; kind = Average } }
+
+let blob_field blob ~cut xform entries =
+  { (layer Pigment.black Finish.default) with
+    tmap =
+      Some
+        { pattern = Pattern.make Pattern.Bozo; entries = Array.map (fun t -> (0., t)) entries; xform; uv = false;
+          kind = Field { blob; cut } } }
 
 type weights = { mutable k0 : float; mutable k1 : float }
-type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
 
-let pick () = { n = 0; t0 = []; t1 = []; w = { k0 = 0.; k1 = 0. } }
+type pick = {
+  mutable n : int;
+  mutable t0 : t;
+  mutable t1 : t;
+  w : weights;
+  mutable ws : Float.Array.t;  (* a blob field's shares ... *)
+  mutable ix : int array;  (* ... and their entries *)
+  q : Vec3.m;  (* the point in the blob's space *)
+}
+
+let pick () =
+  { n = 0; t0 = []; t1 = []; w = { k0 = 0.; k1 = 0. }; ws = Float.Array.make 4 0.; ix = Array.make 4 0; q = Vec3.m () }
 
 let[@inline] one pk t =
   pk.n <- 1;
@@ -34,9 +52,34 @@ let[@inline] one pk t =
 (* per domain: the pattern's work *)
 let work_key = Scratch.key Pattern.work
 
+(* POV-Ray's textures of a blob's components (blob.cpp's
+   Determine_Textures and its use in trace.cpp): each component whose
+   field is not zero at the point, by its share; shares below [cut] (the
+   scene's adc_bailout) left out, the others not scaled up *)
+let field_blend m blob cut (point : Vec3.m) pk =
+  let k = Blob.components blob in
+  if Float.Array.length pk.ws < k then begin
+    pk.ws <- Float.Array.make k 0.;
+    pk.ix <- Array.make k 0
+  end;
+  Transform.inv_point_m m.xform point pk.q;
+  let n = Blob.weights blob pk.q pk.ws pk.ix in
+  let kept = ref 0 in
+  for j = 0 to n - 1 do
+    let w = Float.Array.unsafe_get pk.ws j in
+    if w >= cut then begin
+      Float.Array.unsafe_set pk.ws !kept w;
+      Array.unsafe_set pk.ix !kept (Array.unsafe_get pk.ix j);
+      incr kept
+    end
+  done;
+  pk.n <- !kept
+
 let blend_m m (point : Vec3.m) pk =
-  if m.average then pk.n <- Array.length m.entries
-  else
+  match m.kind with
+  | Average -> pk.n <- Array.length m.entries
+  | Field { blob; cut } -> field_blend m blob cut point pk
+  | Map ->
   let point = if m.uv then Pattern.uv_point () else point in
   let v = Pattern.eval_at m.pattern m.xform point (Scratch.get work_key) in
   let n = Array.length m.entries in
@@ -59,14 +102,38 @@ let blend_m m (point : Vec3.m) pk =
       end
   end
 
-let[@inline] entry m pk j = if m.average then snd (Array.unsafe_get m.entries j) else if j = 0 then pk.t0 else pk.t1
+let[@inline] entry m pk j =
+  match m.kind with
+  | Map -> if j = 0 then pk.t0 else pk.t1
+  | Average -> snd (Array.unsafe_get m.entries j)
+  | Field _ -> snd (Array.unsafe_get m.entries (Array.unsafe_get pk.ix j))
 
 let[@inline] weight m pk j =
-  if m.average then fst (Array.unsafe_get m.entries j) else if j = 0 then pk.w.k0 else pk.w.k1
+  match m.kind with
+  | Map -> if j = 0 then pk.w.k0 else pk.w.k1
+  | Average -> fst (Array.unsafe_get m.entries j)
+  | Field _ -> Float.Array.unsafe_get pk.ws j
 
-(* A layer that lets no light through makes the whole texture block it. *)
-let blocks_light (t : t) =
-  List.exists (fun l -> match l.tmap with None -> Pigment.opaque l.pigment | Some _ -> false) t
+let heaviest m pk =
+  match m.kind with
+  | Map -> if pk.n = 2 && pk.w.k1 > pk.w.k0 then pk.t1 else pk.t0
+  | Average | Field _ ->
+      let best = ref 0 in
+      for j = 1 to pk.n - 1 do
+        if weight m pk j > weight m pk !best then best := j
+      done;
+      if pk.n = 0 then [] else entry m pk !best
+
+(* A layer that lets no light through makes the whole texture block it;
+   a blob's components' textures block it when they all do *)
+let rec blocks_light (t : t) =
+  List.exists
+    (fun l ->
+      match l.tmap with
+      | None -> Pigment.opaque l.pigment
+      | Some { kind = Field _; entries; _ } -> Array.for_all (fun (_, t) -> blocks_light t) entries
+      | Some _ -> false)
+    t
 
 (* POV-Ray: transformations written after a uv-mapped texture (the
    object's) do not move its patterns (measured): a uv pattern's

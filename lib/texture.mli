@@ -24,10 +24,23 @@ and tmap = {
   uv : bool;
       (** [uv_mapping]: the pattern taken at the surface's [<u, v, 0>]
           (see {!Pattern.uv_point}); later transformations leave it *)
-  average : bool;
+  kind : kind;
+}
+
+(** How the entries are picked and weighed *)
+and kind =
+  | Map  (** by the pattern's value: one entry, or the two around it *)
+  | Average
       (** POV-Ray's [texture { average texture_map { [w T] ... } }]: every
           entry shaded, the results weighted *)
-}
+  | Field of { blob : Blob.t; cut : float }
+      (** a blob's components' own textures (entry [i] for component [i],
+          the pattern unused): each component whose field is not zero at
+          the point, weighed by its share of the fields there
+          ({!Blob.weights}; [xform] is the blob's, object to world), as
+          POV-Ray shades a blob whose components have textures; shares
+          below [cut] (the scene's [adc_bailout]) are left out and the
+          others kept as they are, as POV-Ray does *)
 
 and t = layer list
 
@@ -46,25 +59,42 @@ val averaged : (float * t) array -> layer
 (** An average of textures, the weights summing to 1 (the texture_map
     may also come later, by a modifier). *)
 
+val blob_field : Blob.t -> cut:float -> Transform.t -> t array -> layer
+(** [blob_field b ~cut xform textures]: the layer of a {!Field} (the
+    textures by component, [xform] the blob's object to world). *)
+
 type weights = { mutable k0 : float; mutable k1 : float }
 
-type pick = { mutable n : int; mutable t0 : t; mutable t1 : t; w : weights }
-(** [n] (1 or 2) textures with their weights (flat: storing them
-    allocates nothing). *)
+type pick = private {
+  mutable n : int;
+  mutable t0 : t;
+  mutable t1 : t;
+  w : weights;
+  mutable ws : Float.Array.t;
+  mutable ix : int array;
+  q : Vec3.m;
+}
+(** [n] textures with their weights (1 or 2 from a {!Map}; flat: storing
+    them allocates nothing). Read them with {!entry} and {!weight}. *)
 
 val pick : unit -> pick
 
 val blend_m : tmap -> Vec3.m -> pick -> unit
 (** [blend_m m point pk]: the textures to shade at a world point with
-    their weights (summing to 1), one or the two around the pattern's
-    value, into [pk], allocating nothing; for an average, only their
-    number (read them with {!entry} and {!weight}). *)
+    their weights (summing to 1, but for a {!Field}'s shares left out),
+    one or the two around the pattern's value, or a blob's components'
+    there, into [pk], allocating nothing (a pick grows once to a blob's
+    number of components); for an average, only their number (read them
+    with {!entry} and {!weight}). *)
 
 val entry : tmap -> pick -> int -> t
 val weight : tmap -> pick -> int -> float
 (** [entry m pk j] and [weight m pk j], [j < pk.n]: after {!blend_m}, the
-    [j]th texture to shade and its weight (an average's entries, else the
-    pick's). *)
+    [j]th texture to shade and its weight. *)
+
+val heaviest : tmap -> pick -> t
+(** After {!blend_m}: the texture of largest weight (the first of equal
+    ones; [[]] when there is none). *)
 
 val uv : turns:bool -> t -> t
 (** POV-Ray's [texture { uv_mapping ... }] ([turns]) and an object's

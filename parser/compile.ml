@@ -264,6 +264,10 @@ let parts : (int, Sdl.mesh) Hashtbl.t Phys.t = Phys.create 16
 (* how BVHs are built in parallel while a scene compiles (see [scene]) *)
 let par : (int -> (int -> unit) -> unit) option ref = ref None
 
+(* the scene's adc_bailout, known before its objects are compiled: the
+   blob components' textures lighter than it are left out (see [blob]) *)
+let bailout = ref Scene.default_settings.adc_bailout
+
 let rec mesh (o : Sdl.obj) (m : Sdl.mesh) =
   match Phys.find_opt built m with
   | Some s -> s
@@ -330,7 +334,7 @@ let shape (o : Sdl.obj) =
       let inside_below = if a.quadric then Some (Float.succ 0.) else None in
       Shape.Algebraic (Algebraic.make ?inside_below a.order a.coef)
   | Sdl.Text t -> Shape.Text t.glyphs
-  | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold comps)
+  | Sdl.Blob (threshold, comps) -> Shape.Blob (Blob.make ~threshold (List.map (fun (c : Sdl.blob_component) -> c.comp) comps))
   | Sdl.Superellipsoid (e, n) -> Shape.Superellipsoid (Superellipsoid.make e n)
   | Sdl.Julia { jc; hypercomplex; cube; max_iteration; precision } -> (
       match Julia.make ~c:jc ~hypercomplex ~cube ~max_iteration ~precision with
@@ -487,15 +491,37 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
         leaf ctx' { o with shape = Sdl.Mesh m' } texture inter
       in
       Some (Object.union (Array.of_list (Hashtbl.fold (fun t f acc -> part t f :: acc) groups [])))
+  | Sdl.Blob (threshold, comps) when List.exists (fun (c : Sdl.blob_component) -> c.ctex <> None) comps ->
+      Some (blob ctx' o tex inter threshold comps)
   | _ -> Some (leaf ctx' o tex inter)
 
+(* a texture as a leaf takes it: shared, lit from behind when asked *)
+and leaf_texture ctx tex =
+  let t = match tex with Some t -> Shapes.share_texture t | None -> Texture.default in
+  if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both t else t
+
 and leaf ctx o tex inter =
-  let texture = match tex with Some t -> Shapes.share_texture t | None -> Texture.default in
-  let texture = if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both texture else texture in
+  let texture = leaf_texture ctx tex in
   let interior = Option.value ~default:Interior.default inter in
-  let back = Option.map (fun t -> let t = Shapes.share_texture t in
-                                  if ctx.flags land Sdl.double_illuminate <> 0 then illuminate_both t else t) ctx.inner in
+  let back = Option.map (fun t -> leaf_texture ctx (Some t)) ctx.inner in
   Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset (shape o)
+
+(* A blob whose components have textures of their own: POV-Ray shades
+   each component's (the blob's for those without), weighed by its share
+   of the fields at the point, and takes no interior_texture. Component
+   textures are in the blob's space: they move with it. *)
+and blob ctx o tex inter threshold comps =
+  let b = Blob.make ~threshold (List.map (fun (c : Sdl.blob_component) -> c.comp) comps) in
+  let own = leaf_texture ctx tex in
+  let textures =
+    List.map
+      (fun (c : Sdl.blob_component) ->
+        match c.ctex with Some t -> leaf_texture ctx (Some (Texture.transform o.xform t)) | None -> own)
+      comps
+  in
+  let texture = [ Texture.blob_field b ~cut:!bailout o.xform (Array.of_list textures) ] in
+  let interior = Option.value ~default:Interior.default inter in
+  Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset (Shape.Blob b)
 
 (* An object compiled on its own while the scene is still being read
    (POV-Ray's trace(), inside(), min_extent() and max_extent() ask
@@ -531,7 +557,12 @@ let rec top ctx (o : Sdl.obj) acc =
 let rec scene ?par:p (s : Sdl.scene) =
   par := p;
   Fun.protect
-    ~finally:(fun () -> par := None; Phys.reset built; Phys.reset parts; Shapes.forget_textures ())
+    ~finally:(fun () ->
+      par := None;
+      bailout := Scene.default_settings.adc_bailout;
+      Phys.reset built;
+      Phys.reset parts;
+      Shapes.forget_textures ())
     (fun () -> scene_ s)
 
 and scene_ (s : Sdl.scene) =
@@ -541,6 +572,13 @@ and scene_ (s : Sdl.scene) =
     let sky = ref Sky.none and fog = ref [] and media = ref [] in
     let rainbows = ref [] in
     group_sets := [];
+    bailout :=
+      List.fold_left
+        (fun b -> function
+          | Sdl.Global_settings (_, gs) ->
+              List.fold_left (fun b -> function Sdl.Adc_bailout a -> a | _ -> b) b gs
+          | _ -> b)
+        Scene.default_settings.adc_bailout s.items;
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter

@@ -142,15 +142,28 @@ prism_point: COMMA? p = param { (loc $loc(p), p) }
 
 blob_item:
   | THRESHOLD e = param { `Threshold (fl $loc(e) e) }
-  | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param ts = list(transformation) RBRACE
-      { `Comp (Shapes.blob_moved ts
+  | SPHERE LBRACE c = param COMMA? r = param COMMA? STRENGTH? s = param ms = list(blob_mod) RBRACE
+      { `Comp (Shapes.blob_component (loc $loc) ms
                  (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s))) }
   | CYLINDER LBRACE a = param COMMA? b = param COMMA? r = param COMMA? STRENGTH? s = param
-    ts = list(transformation) RBRACE
-      { `Comp (Shapes.blob_moved ts
+    ms = list(blob_mod) RBRACE
+      { `Comp (Shapes.blob_component (loc $loc) ms
                  (Shapes.blob_cylinder (loc $loc) (v3 $loc(a) a) (v3 $loc(b) b) (fl $loc(r) r) (fl $loc(s) s))) }
   | COMPONENT s = param COMMA? r = param COMMA? c = param
-      { `Comp (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s)) }
+      { `Comp (Shapes.blob_component (loc $loc) []
+                 (Shapes.blob_sphere (loc $loc) (v3 $loc(c) c) (fl $loc(r) r) (fl $loc(s) s))) }
+
+(* what a blob's sphere or cylinder takes after its numbers, in any order
+   (POV-Ray's Parse_Blob_Element_Mods): transformations, which move the
+   texture written before them, and its own texture *)
+blob_mod:
+  | t = transformation { Sdl.transform_obj t }
+  | TEXTURE LBRACE t = texture_body RBRACE
+      { fun (o : Sdl.obj) -> { o with texture = Some (match o.texture with
+          | Some layers -> Gram.layered (loc $loc) ~above:t ~below:layers | None -> t) } }
+  | PIGMENT LBRACE p = pigment_edit RBRACE { with_texture $loc (fun l -> { l with Texture.pigment = p l.pigment }) }
+  | NORMAL LBRACE n = normal_edit RBRACE { with_texture $loc (fun l -> { l with Texture.normal = n l.normal }) }
+  | FINISH LBRACE f = finish_edit RBRACE { with_texture $loc (fun l -> { l with Texture.finish = f l.finish }) }
 
 (* children and modifiers, in any order (POV-Ray wants the children
    first; modifiers apply in order to the whole CSG) *)

@@ -193,7 +193,15 @@ let rec parts (o : Sdl.obj) =
             let s = comp shape in
             String.sub s 0 (String.length s - 1) ^ matrix xform ^ " }"
       in
-      simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map comp comps)))
+      (* the texture after the transformation (which would move it) *)
+      let part (c : Sdl.blob_component) =
+        let s = comp c.comp in
+        match c.ctex with
+        | None -> s
+        | Some layers ->
+            String.sub s 0 (String.length s - 1) ^ String.concat " " (List.rev_map layer layers) ^ " }"
+      in
+      simple (Printf.sprintf "blob { threshold %s %s" (float threshold) (String.concat " " (List.map part comps)))
   | Sdl.Height_field hf ->
       let src =
         match hf.source with

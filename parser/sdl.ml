@@ -14,7 +14,7 @@ type shape =
   | Algebraic of algebraic
       (** [poly], [cubic], [quartic], [quadric] *)
   | Text of text
-  | Blob of float * Blob.component list  (** threshold, components *)
+  | Blob of float * blob_component list  (** threshold, components *)
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
   | Sor of { points : (float * float) array; sor_open : bool }
@@ -85,6 +85,8 @@ and isosurface = {
   iso_open : bool;
   max_trace : int;  (** [max_int] for [all_intersections] *)
 }
+
+and blob_component = { comp : Blob.component; ctex : Texture.t option }
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }
 

@@ -18,7 +18,7 @@ type shape =
   | Algebraic of algebraic
       (** [poly], [cubic], [quartic], [quadric] *)
   | Text of text
-  | Blob of float * Blob.component list  (** threshold, components *)
+  | Blob of float * blob_component list  (** threshold, components *)
   | Prism of prism
   | Lathe of Prism.spline * (float * float) array
   | Sor of { points : (float * float) array; sor_open : bool }  (** POV-Ray's [sor] *)
@@ -91,6 +91,13 @@ and isosurface = {
   evaluate : (float * float * float) option;  (** read, not used (see docs/language.md) *)
   iso_open : bool;
   max_trace : int;  (** [max_int] for [all_intersections] *)
+}
+
+and blob_component = {
+  comp : Blob.component;
+  ctex : Texture.t option;
+      (** its own texture, in the blob's space (moved by the component's
+          transformations written after it); [None]: the blob's *)
 }
 
 and disc = { center : Vec3.t; normal : Vec3.t; radius : float; hole : float }

@@ -320,28 +320,37 @@ let blob_cylinder loc a b radius strength =
   if Vec3.dist a b = 0. then Diag.error loc "a blob cylinder's two end points must differ";
   Blob.Cylinder { a; b; radius; strength }
 
-(* Transformations on a blob component: moves, turns and uniform scales
+(* A blob component's transformation: moves, turns and uniform scales
    move it (a sphere stays a sphere, as in POV-Ray); anything else places
    it, its field taken in its own space *)
-let blob_moved ts (c : Blob.component) =
-  match ts with
-  | [] -> c
-  | _ -> (
-      let t = List.fold_left Transform.then_ Transform.identity ts in
-      let ax = Transform.vector t Vec3.unit_x and ay = Transform.vector t Vec3.unit_y
-      and az = Transform.vector t Vec3.unit_z in
-      let k = Vec3.length ax in
-      let close a b = Float.abs (a -. b) <= 1e-9 *. Float.max 1. (Float.abs b) in
-      let even =
-        close (Vec3.length ay) k && close (Vec3.length az) k && close (Vec3.dot ax ay) 0.
-        && close (Vec3.dot ax az) 0. && close (Vec3.dot ay az) 0.
-      in
-      match c with
-      | Blob.Sphere { center; radius; strength } when even ->
-          Blob.Sphere { center = Transform.point t center; radius = radius *. k; strength }
-      | Blob.Cylinder { a; b; radius; strength } when even ->
-          Blob.Cylinder { a = Transform.point t a; b = Transform.point t b; radius = radius *. k; strength }
-      | c -> Blob.place t c)
+let blob_moved t (c : Blob.component) =
+  if Transform.is_identity t then c
+  else
+    let ax = Transform.vector t Vec3.unit_x and ay = Transform.vector t Vec3.unit_y
+    and az = Transform.vector t Vec3.unit_z in
+    let k = Vec3.length ax in
+    let close a b = Float.abs (a -. b) <= 1e-9 *. Float.max 1. (Float.abs b) in
+    let even =
+      close (Vec3.length ay) k && close (Vec3.length az) k && close (Vec3.dot ax ay) 0.
+      && close (Vec3.dot ax az) 0. && close (Vec3.dot ay az) 0.
+    in
+    match c with
+    | Blob.Sphere { center; radius; strength } when even ->
+        Blob.Sphere { center = Transform.point t center; radius = radius *. k; strength }
+    | Blob.Cylinder { a; b; radius; strength } when even ->
+        Blob.Cylinder { a = Transform.point t a; b = Transform.point t b; radius = radius *. k; strength }
+    | c -> Blob.place t c
+
+(* The modifiers are applied, in order, to a stand-in object: its
+   transform is the component's, its texture the component's own (moved
+   by the transformations written after it, as an object's) *)
+let blob_component loc ms comp =
+  let o =
+    { Sdl.loc; shape = Sdl.Sphere (Vec3.zero, 1.); xform = Transform.identity; texture = None; interior = None;
+      no_shadow = false; hollow = false; flags = 0; inner = None }
+  in
+  let o = List.fold_left (fun o f -> f o) o ms in
+  { Sdl.comp = blob_moved o.xform comp; ctex = o.texture }
 
 (* A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x + H y + I z + J, in
    the terms of an order-2 poly: x^2, xy, xz, x, y^2, yz, y, z^2, z, 1 *)

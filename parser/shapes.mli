@@ -167,9 +167,11 @@ val default_texture : Sdl.obj -> Sdl.obj
     Known difference: "there" is after the parser's lookahead, so an
     object followed directly by a [#default] gets that new default. *)
 
-val blob_moved : Camlray.Transform.t list -> Camlray.Blob.component -> Camlray.Blob.component
-(** A blob component's transformations: moves, turns and even scales move
-    it; any other transformation places it ({!Camlray.Blob.place}). *)
+val blob_component : Loc.t -> (Sdl.obj -> Sdl.obj) list -> Camlray.Blob.component -> Sdl.blob_component
+(** A blob's sphere or cylinder with its modifiers (transformations and
+    texture, as an object takes them, in order): moves, turns and even
+    scales move it; any other transformation places it
+    ({!Camlray.Blob.place}). *)
 
 val bicubic_patch : Loc.t -> u_steps:int -> v_steps:int -> Camlray.Vec3.t array -> Sdl.shape
 (** POV-Ray's [bicubic_patch] of 16 control points, as a smooth mesh of
