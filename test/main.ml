@@ -21,6 +21,7 @@ let () =
       Test_supplier.tests;
       Test_fn.tests;
       Test_shape.tests;
+      Test_blob.tests;
       Test_algebraic.tests;
       Test_poly.tests;
       Test_bvh.tests;

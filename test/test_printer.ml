@@ -138,6 +138,8 @@ let fixpoint () =
        color rgbft <1, 1, 1, 0.2, 0.1> turbulence 0.3 turb_depth 0.4 octaves 4 omega 0.6 lambda 2.5 }\n\
      blob { threshold 0.4 sphere { 0, 1, 1 } cylinder { -x, x, 0.5, strength -2 } component 1, 1, y sturm\n\
        hierarchy off pigment { rgb 1 } rotate 10*z }\n\
+     blob { sphere { 0, 1, 1 pigment { rgb <1, 0, 0> } scale <1, 2, 1> finish { phong 0.5 } }\n\
+       cylinder { 0, y, 0.5, 1 rotate 30*x texture { pigment { rgb 0.2 } } texture { pigment { rgbt <0, 1, 0, 0.5> } } } }\n\
      prism { conic_sweep cubic_spline 0.2, 1, 7, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0>, <1, 1> open }\n\
      lathe { quadratic_spline 4, <0, 0>, <1, 0.5>, <0.5, 1>, <0, 1.5> sturm }\n\
      superellipsoid { <0.3, 2> scale 2 }\n\
