@@ -131,9 +131,13 @@ let rec blocks_light (t : t) =
     (fun l ->
       match l.tmap with
       | None -> Pigment.opaque l.pigment
-      | Some { kind = Field _; entries; _ } -> Array.for_all (fun (_, t) -> blocks_light t) entries
+      | Some { kind = Field _; entries; _ } -> all_block entries 0
       | Some _ -> false)
     t
+
+(* no Array.for_all: its loop is a closure made at each call (this runs
+   for every shadow ray) *)
+and all_block entries i = i >= Array.length entries || (blocks_light (snd entries.(i)) && all_block entries (i + 1))
 
 (* POV-Ray: transformations written after a uv-mapped texture (the
    object's) do not move its patterns (measured): a uv pattern's
