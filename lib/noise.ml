@@ -75,25 +75,48 @@ let[@inline] snoise3 x y z =
 let snoise (p : Vec3.t) = snoise3 p.x p.y p.z
 let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
 
-let off1 = Vec3.make 31.416 17.21 (-9.73)
-let off2 = Vec3.make (-23.1) 41.7 13.3
+(* one component over the cell: the eight corners' gradients [k0] to
+   [k7] (hashes), blended by the fades [u], [v], [w] *)
+let[@inline] cell_noise u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
+  lerp w
+    (lerp v (lerp u (grad k0 x y z) (grad k1 x1 y z)) (lerp u (grad k2 x y1 z) (grad k3 x1 y1 z)))
+    (lerp v (lerp u (grad k4 x y z1) (grad k5 x1 y z1)) (lerp u (grad k6 x y1 z1) (grad k7 x1 y1 z1)))
 
-(* three decorrelated signed noises: the displacement of one octave of
-   [turbulence_m] (inlined where it is used: a call would box its floats) *)
+(* Three signed noises from one pass over the lattice cell of (x, y, z)
+   (the displacement of one octave of [turbulence_m]): the first is
+   [snoise3 x y z] to the bit; the second and third use gradients picked
+   by other bits of the same corner hashes, so the cell's floor, fade and
+   hashing are shared, as POV-Ray's DNoise shares them (inlined where it
+   is used: a call would box its floats) *)
 let[@inline] dnoise3 x y z (out : Vec3.m) =
-  Vec3.set out (snoise3 x y z)
-    (snoise3 (x +. off1.x) (y +. off1.y) (z +. off1.z))
-    (snoise3 (x +. off2.x) (y +. off2.y) (z +. off2.z))
+  let ix = ifloor x and iy = ifloor y and iz = ifloor z in
+  let xi = ix land 255 and yi = iy land 255 and zi = iz land 255 in
+  let x = x -. float_of_int ix and y = y -. float_of_int iy and z = z -. float_of_int iz in
+  let u = fade x and v = fade y and w = fade z in
+  let a = p xi + yi and b = p (xi + 1) + yi in
+  let aa = p a + zi and ab = p (a + 1) + zi in
+  let ba = p b + zi and bb = p (b + 1) + zi in
+  let x1 = x -. 1. and y1 = y -. 1. and z1 = z -. 1. in
+  let h0 = p aa and h1 = p ba and h2 = p ab and h3 = p bb in
+  let h4 = p (aa + 1) and h5 = p (ba + 1) and h6 = p (ab + 1) and h7 = p (bb + 1) in
+  (* the first gradient by a corner hash's low four bits (as [snoise3]),
+     the second by its high four, the third by the table's entry at it *)
+  Vec3.set out
+    (cell_noise u v w x y z x1 y1 z1 h0 h1 h2 h3 h4 h5 h6 h7)
+    (cell_noise u v w x y z x1 y1 z1 (h0 lsr 4) (h1 lsr 4) (h2 lsr 4) (h3 lsr 4) (h4 lsr 4) (h5 lsr 4)
+       (h6 lsr 4) (h7 lsr 4))
+    (cell_noise u v w x y z x1 y1 z1 (p h0) (p h1) (p h2) (p h3) (p h4) (p h5) (p h6) (p h7))
 
 let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
+  let px = p.mx and py = p.my and pz = p.mz in
   let ax = ref 0. and ay = ref 0. and az = ref 0. and amp = ref 1. and freq = ref 1. in
   for _ = 1 to Int.max 1 octaves do
     (* dnoise (freq p), the same sums as with vectors *)
     let f = !freq and a = !amp in
-    let x = f *. p.mx and y = f *. p.my and z = f *. p.mz in
-    ax := !ax +. (a *. snoise3 x y z);
-    ay := !ay +. (a *. snoise3 (x +. off1.x) (y +. off1.y) (z +. off1.z));
-    az := !az +. (a *. snoise3 (x +. off2.x) (y +. off2.y) (z +. off2.z));
+    dnoise3 (f *. px) (f *. py) (f *. pz) out;
+    ax := !ax +. (a *. out.mx);
+    ay := !ay +. (a *. out.my);
+    az := !az +. (a *. out.mz);
     amp := !amp *. omega;
     freq := !freq *. lambda
   done;
