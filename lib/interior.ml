@@ -52,28 +52,28 @@ type entered = {
   mutable next : int;
 }
 
-let entered_key =
-  Scratch.key (fun () ->
-      { inners = Array.make entered_size default; outers = Array.make entered_size [];
-        lists = Array.make entered_size []; filled = 0; next = 0 })
+let ring () =
+  { inners = Array.make entered_size default; outers = Array.make entered_size [];
+    lists = Array.make entered_size []; filled = 0; next = 0 }
+
+let entered_key = Scratch.key ring
 
 (* the same for the lists left: [media] without [inner] *)
-let left_key =
-  Scratch.key (fun () ->
-      { inners = Array.make entered_size default; outers = Array.make entered_size [];
-        lists = Array.make entered_size []; filled = 0; next = 0 })
+let left_key = Scratch.key ring
 
 let rec without inner = function [] -> [] | i :: r -> if i == inner then without inner r else i :: without inner r
+let cons inner media = inner :: media
 
-let leave inner media =
-  let e = Scratch.get left_key in
+(* [make inner media] as kept in [e] for the pair, made and kept there
+   when it is not ([make] a top-level function: no closure per call) *)
+let memo e make inner media =
   let i = ref 0 in
   while !i < e.filled && not (Array.unsafe_get e.inners !i == inner && Array.unsafe_get e.outers !i == media) do
     incr i
   done;
   if !i < e.filled then Array.unsafe_get e.lists !i
   else begin
-    let l = without inner media and k = e.next in
+    let l = make inner media and k = e.next in
     e.inners.(k) <- inner;
     e.outers.(k) <- media;
     e.lists.(k) <- l;
@@ -82,22 +82,8 @@ let leave inner media =
     l
   end
 
-let enter inner media =
-  let e = Scratch.get entered_key in
-  let i = ref 0 in
-  while !i < e.filled && not (Array.unsafe_get e.inners !i == inner && Array.unsafe_get e.outers !i == media) do
-    incr i
-  done;
-  if !i < e.filled then Array.unsafe_get e.lists !i
-  else begin
-    let l = inner :: media and k = e.next in
-    e.inners.(k) <- inner;
-    e.outers.(k) <- media;
-    e.lists.(k) <- l;
-    e.next <- (k + 1) mod entered_size;
-    if e.filled < entered_size then e.filled <- e.filled + 1;
-    l
-  end
+let leave inner media = memo (Scratch.get left_key) without inner media
+let enter inner media = memo (Scratch.get entered_key) cons inner media
 
 let beyond inner media =
   if not (List.memq inner media) then enter inner media
