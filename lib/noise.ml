@@ -54,6 +54,13 @@ let[@inline] ifloor x =
    entry at most 255, and the sums at most 255 + 255 + 1 *)
 let[@inline] p i = Array.unsafe_get perm i
 
+(* one component over the cell: the eight corners' gradients [k0] to
+   [k7] (hashes), blended by the fades [u], [v], [w] *)
+let[@inline] cell_noise u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
+  lerp w
+    (lerp v (lerp u (grad k0 x y z) (grad k1 x1 y z)) (lerp u (grad k2 x y1 z) (grad k3 x1 y1 z)))
+    (lerp v (lerp u (grad k4 x y z1) (grad k5 x1 y z1)) (lerp u (grad k6 x y1 z1) (grad k7 x1 y1 z1)))
+
 (* inlined where it is used: a call would box its arguments and result *)
 let[@inline] snoise3 x y z =
   let ix = ifloor x and iy = ifloor y and iz = ifloor z in
@@ -64,23 +71,10 @@ let[@inline] snoise3 x y z =
   let aa = p a + zi and ab = p (a + 1) + zi in
   let ba = p b + zi and bb = p (b + 1) + zi in
   let x1 = x -. 1. and y1 = y -. 1. and z1 = z -. 1. in
-  lerp w
-    (lerp v
-       (lerp u (grad (p aa) x y z) (grad (p ba) x1 y z))
-       (lerp u (grad (p ab) x y1 z) (grad (p bb) x1 y1 z)))
-    (lerp v
-       (lerp u (grad (p (aa + 1)) x y z1) (grad (p (ba + 1)) x1 y z1))
-       (lerp u (grad (p (ab + 1)) x y1 z1) (grad (p (bb + 1)) x1 y1 z1)))
+  cell_noise u v w x y z x1 y1 z1 (p aa) (p ba) (p ab) (p bb) (p (aa + 1)) (p (ba + 1)) (p (ab + 1)) (p (bb + 1))
 
 let snoise (p : Vec3.t) = snoise3 p.x p.y p.z
 let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
-
-(* one component over the cell: the eight corners' gradients [k0] to
-   [k7] (hashes), blended by the fades [u], [v], [w] *)
-let[@inline] cell_noise u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
-  lerp w
-    (lerp v (lerp u (grad k0 x y z) (grad k1 x1 y z)) (lerp u (grad k2 x y1 z) (grad k3 x1 y1 z)))
-    (lerp v (lerp u (grad k4 x y z1) (grad k5 x1 y z1)) (lerp u (grad k6 x y1 z1) (grad k7 x1 y1 z1)))
 
 (* Three signed noises from one pass over the lattice cell of (x, y, z)
    (the displacement of one octave of [turbulence_m]): the first is
