@@ -369,15 +369,7 @@ let hit_s b (r : Ray.scratch) tmin (h : Hit.t) =
       Float.Array.unsafe_set e ((2 * i) + 1) (Float.Array.unsafe_get w.pieces ((7 * i) + 1))
     done;
     let m = 2 * n in
-    for i = 1 to m - 1 do
-      let x = Float.Array.unsafe_get e i in
-      let j = ref (i - 1) in
-      while !j >= 0 && Float.Array.unsafe_get e !j > x do
-        Float.Array.unsafe_set e (!j + 1) (Float.Array.unsafe_get e !j);
-        decr j
-      done;
-      Float.Array.unsafe_set e (!j + 1) x
-    done;
+    Floats.sort_prefix e m;
     (* a stretch is searched whole, not cut at [h.t]: the root found must
        not depend on the order objects are tried in *)
     let lo_t = tmin *. dl and hi_t = h.t *. dl in

@@ -128,18 +128,6 @@ let[@inline] push t lo hi lit =
   Float.Array.set t.b (k + 2) (if lit then 1. else 0.);
   t.n <- t.n + 1
 
-(* insertion sort of the first [n] (a handful of lights) *)
-let sort a n =
-  for i = 1 to n - 1 do
-    let x = Float.Array.get a i in
-    let j = ref (i - 1) in
-    while !j >= 0 && Float.Array.get a !j > x do
-      Float.Array.set a (!j + 1) (Float.Array.get a !j);
-      decr j
-    done;
-    Float.Array.set a (!j + 1) x
-  done
-
 (* [cut] with the ray's length in [r.far] (a float passed to a function
    not inlined would be boxed) *)
 let cut_far t (lights : Light.t array) (r : Ray.scratch) =
@@ -184,8 +172,8 @@ let cut_far t (lights : Light.t array) (r : Ray.scratch) =
   else begin
     (* POV-Ray sorts the starts and the ends each on its own: the merged
        stretches are the union of the lit parts all the same *)
-    sort t.s0 m;
-    sort t.s1 m;
+    Floats.sort_prefix t.s0 m;
+    Floats.sort_prefix t.s1 m;
     let s0 = Float.Array.get t.s0 0 in
     if s0 > 0. then push t 0. s0 false;
     push t s0 (Float.Array.get t.s1 0) true;

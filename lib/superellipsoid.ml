@@ -199,15 +199,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
       end
     done;
     let n = !n in
-    for k = 1 to n - 1 do
-      let x = get w k in
-      let j = ref (k - 1) in
-      while !j >= 0 && get w !j > x do
-        set w (!j + 1) (get w !j);
-        decr j
-      done;
-      set w (!j + 1) x
-    done;
+    Floats.sort_prefix w n;
     let found = ref false and stop = ref false in
     let v0 = ref (at s w (get w 0)) in
     if Float.abs !v0 < zero_tolerance && accept h tmin len (get w 0) then found := true;

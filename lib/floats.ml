@@ -1,0 +1,11 @@
+let sort_prefix a n =
+  if n < 0 || n > Float.Array.length a then invalid_arg "Floats.sort_prefix";
+  for i = 1 to n - 1 do
+    let x = Float.Array.unsafe_get a i in
+    let j = ref (i - 1) in
+    while !j >= 0 && Float.Array.unsafe_get a !j > x do
+      Float.Array.unsafe_set a (!j + 1) (Float.Array.unsafe_get a !j);
+      decr j
+    done;
+    Float.Array.unsafe_set a (!j + 1) x
+  done
