@@ -71,4 +71,34 @@ let prop =
                    (Render.image ~domains:1 ~width:w ~height:h
                       (Path.pixel (Path.prepare s) ~width:w ~height:h ~seed:1 ~spp:2 ~max_depth:6))))
 
-let tests = ("numerics", [ QCheck_alcotest.to_alcotest prop ])
+(* Floats.sort_prefix against List.sort: the first [n] in order, the
+   rest untouched, nothing lost or made up (NaN-free lists, infinities
+   and repeated values included) *)
+let sort_prefix_prop =
+  let open QCheck in
+  let value = Gen.(oneof [ float_range (-1e3) 1e3; oneof_list [ 0.; -0.; 1.; infinity; neg_infinity ] ]) in
+  Test.make ~name:"Floats.sort_prefix sorts the first n and leaves the rest" ~count:500
+    (make
+       ~print:Print.(pair (list float) int)
+       Gen.(list_size (int_range 0 40) value >>= fun l -> map (fun n -> (l, n)) (int_range 0 (List.length l))))
+    (fun (l, n) ->
+      let a = Float.Array.of_list l in
+      Floats.sort_prefix a n;
+      let got = Float.Array.to_list a in
+      let head = List.filteri (fun i _ -> i < n) l and tail = List.filteri (fun i _ -> i >= n) l in
+      let sorted = List.sort Float.compare head in
+      (* -0. and 0. compare equal: keep the count of each, not their order *)
+      let same a b = List.length a = List.length b && List.for_all2 (fun x y -> x = y) a b in
+      same (List.filteri (fun i _ -> i < n) got) sorted && List.filteri (fun i _ -> i >= n) got = tail)
+
+let sort_prefix_bounds () =
+  Alcotest.check_raises "n past the end" (Invalid_argument "Floats.sort_prefix") (fun () ->
+      Floats.sort_prefix (Float.Array.make 3 0.) 4);
+  let a = Float.Array.of_list [ 3.; 1.; 2. ] in
+  Floats.sort_prefix a 0;
+  Alcotest.(check (list (float 0.))) "n = 0 leaves the array" [ 3.; 1.; 2. ] (Float.Array.to_list a)
+
+let tests =
+  ( "numerics",
+    [ QCheck_alcotest.to_alcotest prop; QCheck_alcotest.to_alcotest sort_prefix_prop;
+      Alcotest.test_case "Floats.sort_prefix bounds" `Quick sort_prefix_bounds ] )
