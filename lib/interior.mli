@@ -14,6 +14,10 @@ type t = {
           times the light it lets through, cos between the ray and the
           surface's normal (whitted mode) *)
   media : Media.t list;  (** its [media { }], in source order (whitted mode) *)
+  mutable slot : int;
+      (** a number for the caches of {!beyond}, given by {!number} when a
+          scene is made (0 before); two interiors may share one, which
+          only slows the caches. Not read by anything else. *)
 }
 
 val default : t
@@ -51,5 +55,11 @@ val relative_ior : t -> t list -> float
 
 val beyond : t -> t list -> t list
 (** [beyond inner media]: the media past a surface of [inner], [inner]
-    entered or left. An entered list is made once per domain for each of
-    the last 16 pairs met: refracting through glass allocates nothing. *)
+    entered or left. A list is made once per domain for each pair met,
+    and kept in a cache of 1,024 pairs (4 a set, by their slots): refracting
+    through glass allocates nothing. *)
+
+val number : t -> unit
+(** Give the interior a new [slot] (numbers from a counter shared by all
+    domains); done for every object's interior as a scene is made, before
+    it renders. *)

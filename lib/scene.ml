@@ -80,7 +80,13 @@ let test_cost (o : Object.t) =
     | Object.Prim (Shape.Isosurface _) -> 64.
     | Object.Prim (Shape.Mesh _) | Object.Union _ | Object.Merge _ | Object.Intersection _ -> 8.
 
+(* every interior a ray can enter numbered for [Interior.beyond]'s caches *)
+let rec number (o : Object.t) =
+  Interior.number o.interior;
+  match o.geom with Prim _ -> () | Union a | Intersection a | Merge a -> Array.iter number a
+
 let accelerate ?par objects =
+  Array.iter number objects;
   let box (o : Object.t) =
     match o.bounds with
     | Some ((lo : Vec3.t), (hi : Vec3.t)) when Vec3.is_finite lo && Vec3.is_finite hi -> Some (lo, hi)
@@ -140,11 +146,17 @@ let accelerate ?par objects =
   let reach = List.filter (fun o -> (not (in_bvh o)) || beyond o) (Array.to_list objects) in
   { finite; bvh; infinite = Array.of_list infinite; spheres; reach = Array.of_list reach }
 
-let atmosphere = function [] -> [] | media -> [ { Interior.default with hollow = true; media } ]
+let atmosphere = function
+  | [] -> []
+  | media ->
+      let i = { Interior.default with hollow = true; media } in
+      Interior.number i;
+      [ i ]
 
 let make ?(sky = Sky.none) ?(fog = []) ?(rainbows = []) ?(media = []) ?(groups = [||]) ~objects ~lights ~camera ~background ~settings () =
+  let atmosphere = atmosphere media in
   let accel = accelerate objects in
-  { objects; lights; light_sets = Array.append [| lights |] groups; camera; background; sky; fog; rainbows; atmosphere = atmosphere media; settings; accel; all = accel;
+  { objects; lights; light_sets = Array.append [| lights |] groups; camera; background; sky; fog; rainbows; atmosphere; settings; accel; all = accel;
     views = { image = None; reflected = None } }
 
 let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }

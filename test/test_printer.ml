@@ -41,7 +41,7 @@ let gen_layer =
 
 let gen_interior =
   QCheck.Gen.(
-    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc; hollow = false; caustics = 0.; media = [] })
+    map (fun (ior, fd, fp, fc) -> { Interior.ior; fade_distance = fd; fade_power = fp; fade_color = fc; hollow = false; caustics = 0.; media = []; slot = 0 })
       (quad gen_pos gen_pos gen_pos gen_col))
 
 let gen_obj =
