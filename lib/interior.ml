@@ -85,7 +85,11 @@ let set_of inner media =
   go (inner.slot * 7) 0 media land (sets - 1)
 
 let numbered = Atomic.make 0
-let number i = i.slot <- Atomic.fetch_and_add numbered 1
+(* [default], shared by every object without an interior and copied by
+   the parser into every interior it reads, keeps slot 0: a scene made
+   must not change what later parses build (interiors are compared
+   whole) *)
+let number i = if i != default then i.slot <- Atomic.fetch_and_add numbered 1
 
 (* the same interiors in the same order (a list left is made afresh,
    and equals one kept) *)

@@ -62,4 +62,5 @@ val beyond : t -> t list -> t list
 val number : t -> unit
 (** Give the interior a new [slot] (numbers from a counter shared by all
     domains); done for every object's interior as a scene is made, before
-    it renders. *)
+    it renders. [default] keeps slot 0 (the parser copies it into every
+    interior it reads). *)
