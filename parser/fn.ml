@@ -7,8 +7,8 @@ open Camlray
 type code = float array -> int -> unit
 
 type vector =
-  | Apply of { width : int option; apply : float array -> float array }
-      (** transform and spline functions: [width] components when known *)
+  | Transform of Transform.t  (** the point moved by it: x, y, z *)
+  | Spline of Spline.fn  (** its value at the parameter *)
   | Colour of Pigment.t  (** a pigment function: red, green, blue, filter, transmit *)
 
 type t = {
@@ -29,14 +29,8 @@ let make ?source ~params ~frame ~out ~unsupported run =
 
 let vector_fn params v = { params; frame = Array.length params; out = 0; run = nothing; unsupported = None; vector = Some v; source = None }
 
-let of_transform tr =
-  let apply (a : float array) =
-    let p = Transform.point tr (Vec3.make a.(0) a.(1) a.(2)) in
-    [| p.x; p.y; p.z |]
-  in
-  vector_fn [| "x"; "y"; "z" |] (Apply { width = Some 3; apply })
-
-let of_spline eval = vector_fn [| "t" |] (Apply { width = None; apply = (fun a -> eval a.(0)) })
+let of_transform tr = vector_fn [| "x"; "y"; "z" |] (Transform tr)
+let of_spline s = vector_fn [| "t" |] (Spline (Spline.prepare s))
 let of_pigment p = vector_fn [| "x"; "y"; "z" |] (Colour p)
 let is_vector f = f.vector <> None
 let frame f = f.frame
@@ -62,11 +56,6 @@ let member = function
 
 let[@inline] gray_of r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
 
-let component a m =
-  let n = Array.length a in
-  let get i = if i < n then a.(i) else 0. in
-  if m = gray then gray_of (get 0) (get 1) (get 2) else get m
-
 let check_args loc f n =
   let k = Array.length f.params in
   if n <> k then Diag.error loc "this function takes %d argument%s, got %d" k (if k = 1 then "" else "s") n
@@ -78,14 +67,33 @@ let member_code loc f m ~args ~out =
   check_args loc f (Array.length args);
   match f.vector with
   | None -> Diag.error loc "this function returns a float: it has no members"
-  | Some (Apply { width; apply }) ->
-      (match width with
-      | Some w when m <> gray && m >= w ->
-          Diag.error loc "this function's value has %d components: this member does not exist" w
-      | _ -> ());
+  | Some (Transform tr) ->
+      if m <> gray && m >= 3 then Diag.error loc "this function's value has 3 components: this member does not exist";
+      (* each domain its own point and image, as for a pigment function *)
+      let key = Scratch.key (fun () -> (Vec3.m (), Vec3.m ())) in
+      let ax = args.(0) and ay = args.(1) and az = args.(2) in
       fun s b ->
-        let a = Array.map (fun i -> s.(b + i)) args in
-        s.(b + out) <- component (apply a) m
+        let q, o = Scratch.get key in
+        Vec3.set q (Array.unsafe_get s (b + ax)) (Array.unsafe_get s (b + ay)) (Array.unsafe_get s (b + az));
+        Transform.point_m tr q o;
+        let i = b + out in
+        (match m with
+        | 0 -> Array.unsafe_set s i o.mx
+        | 1 -> Array.unsafe_set s i o.my
+        | 2 -> Array.unsafe_set s i o.mz
+        | _ -> Array.unsafe_set s i (gray_of o.mx o.my o.mz))
+  | Some (Spline sp) ->
+      let a = args.(0) in
+      if m <> gray then fun s b -> Spline.component_into sp s (b + a) m s (b + out)
+      else
+        (* the three channels in the domain's own slots *)
+        let key = Scratch.key (fun () -> Array.make 3 0.) in
+        fun s b ->
+          let w = Scratch.get key in
+          Spline.component_into sp s (b + a) 0 w 0;
+          Spline.component_into sp s (b + a) 1 w 1;
+          Spline.component_into sp s (b + a) 2 w 2;
+          Array.unsafe_set s (b + out) (gray_of (Array.unsafe_get w 0) (Array.unsafe_get w 1) (Array.unsafe_get w 2))
   | Some (Colour pig) ->
       (match m with
       | 0 | 1 | 2 | 3 | 4 -> ()
@@ -127,7 +135,11 @@ let call loc f args =
 
 let call_vector loc f args =
   match f.vector with
-  | Some (Apply { apply; _ }) -> apply (frame_of loc f args)
+  | Some (Transform tr) ->
+      let a = frame_of loc f args in
+      let p = Transform.point tr (Vec3.make a.(0) a.(1) a.(2)) in
+      [| p.x; p.y; p.z |]
+  | Some (Spline sp) -> Spline.value sp (frame_of loc f args).(0)
   | Some (Colour p) -> (
       match args with
       | [ x; y; z ] ->

@@ -12,8 +12,7 @@ type code = float array -> int -> unit
 (** Compiled code runs in a frame: [code s base] reads its parameters
     from [s.(base)], [s.(base + 1)], ... and works in slots [base ..
     base + frame - 1] (the frames of the functions it calls included),
-    leaving its value in [s.(base + out)]. It allocates nothing unless
-    it calls a transform or spline function. *)
+    leaving its value in [s.(base + out)]. It allocates nothing. *)
 
 val make :
   ?source:string -> params:string array -> frame:int -> out:int -> unsupported:string option -> code -> t
@@ -25,8 +24,10 @@ val of_transform : Camlray.Transform.t -> t
 (** [function { transform { ... } }]: a vector function of [x, y, z]
     giving the transformed point. *)
 
-val of_spline : (float -> float array) -> t
-(** [function { spline { ... } }]: a vector function of one parameter. *)
+val of_spline : Spline.t -> t
+(** [function { spline { ... } }]: a vector function of one parameter
+    (a natural spline's coefficients computed here, once). Raises
+    [Invalid_argument] on an empty spline. *)
 
 val of_pigment : Camlray.Pigment.t -> t
 (** [function { pigment { ... } }]: a vector function of [x, y, z]
@@ -54,7 +55,7 @@ val member_code : Loc.t -> t -> int -> args:int array -> out:int -> code
 (** [member_code loc f m ~args ~out]: code calling the vector function
     [f] with the values in slots [args] (from the base) and leaving
     component [m] (as {!member} numbers them) of its value in slot
-    [out]. A pigment function's call allocates nothing. A located error
+    [out]. The call allocates nothing. A located error
     when [f] is not a vector function, takes another number of
     arguments, or has no such component. *)
 

@@ -38,8 +38,10 @@ let add s p ~terms v =
       { s with pars = ins s.pars p; vecs = ins s.vecs v; terms }
 
 (* The index of the first entry with a parameter above p (n past the
-   end); 0 at or before the first. *)
-let findt s p =
+   end); 0 at or before the first. Inlined, as are the formulas below, so
+   that the in-place evaluation passes no float to a call (a float passed
+   to or returned from a function that is not inlined is boxed). *)
+let[@inline] findt s p =
   let n = Array.length s.pars in
   if p <= s.pars.(0) then 0
   else if p >= s.pars.(n - 1) then n
@@ -50,12 +52,12 @@ let findt s p =
     !i
   end
 
-let linear s i k p =
+let[@inline] linear s i k p =
   let p1 = s.pars.(i) and p2 = s.pars.(i + 1) in
   let v1 = s.vecs.(i).(k) and v2 = s.vecs.(i + 1).(k) in
   ((p -. p1) *. (v2 -. v1) /. (p2 -. p1)) +. v1
 
-let quadratic s i k p =
+let[@inline] quadratic s i k p =
   let p1 = s.pars.(i - 1) and p2 = s.pars.(i) and p3 = s.pars.(i + 1) in
   let v1 = s.vecs.(i - 1).(k) and v2 = s.vecs.(i).(k) and v3 = s.vecs.(i + 1).(k) in
   let n = (p2 -. p1) *. (p3 -. p1) *. (p3 -. p2) in
@@ -96,7 +98,7 @@ let natural_coeffs s =
     done;
   co
 
-let natural s co i k p =
+let[@inline] natural s co i k p =
   let h = s.pars.(i + 1) -. s.pars.(i) in
   let d = p -. s.pars.(i) in
   let tmp = (co.(i).(k) /. 2.) +. (d *. (co.(i + 1).(k) -. co.(i).(k)) /. (6. *. h)) in
@@ -107,17 +109,20 @@ let natural s co i k p =
   in
   s.vecs.(i).(k) +. (d *. tmp)
 
-let catmull_rom s i k p =
-  let par j = s.pars.(j) and vec j = s.vecs.(j).(k) in
-  let dt = par (i + 1) -. par i in
-  let u = (p -. par i) /. dt in
-  let slope a b = (vec b -. vec a) /. (par b -. par a) in
-  let dp0 = (slope (i - 1) i +. slope i (i + 1)) /. 2. *. dt in
-  let dp1 = (slope (i + 1) (i + 2) +. slope i (i + 1)) /. 2. *. dt in
+(* Catmull-Rom on the segment (i, i + 1), the slopes of its neighbours'
+   chords giving the tangents *)
+let[@inline] catmull_rom s i k p =
+  let p0 = s.pars.(i - 1) and p1 = s.pars.(i) and p2 = s.pars.(i + 1) and p3 = s.pars.(i + 2) in
+  let v0 = s.vecs.(i - 1).(k) and v1 = s.vecs.(i).(k) and v2 = s.vecs.(i + 1).(k) and v3 = s.vecs.(i + 2).(k) in
+  let dt = p2 -. p1 in
+  let u = (p -. p1) /. dt in
+  let before = (v1 -. v0) /. (p1 -. p0) and here = (v2 -. v1) /. (p2 -. p1) and after = (v3 -. v2) /. (p3 -. p2) in
+  let dp0 = (before +. here) /. 2. *. dt in
+  let dp1 = (after +. here) /. 2. *. dt in
   let u2 = u *. u in
   let u3 = u2 *. u in
-  (vec i *. ((2. *. u3) -. (3. *. u2) +. 1.))
-  +. (vec (i + 1) *. ((3. *. u2) -. (2. *. u3)))
+  (v1 *. ((2. *. u3) -. (3. *. u2) +. 1.))
+  +. (v2 *. ((3. *. u2) -. (2. *. u3)))
   +. (dp0 *. (u3 -. (2. *. u2) +. u))
   +. (dp1 *. (u3 -. u2))
 
@@ -149,3 +154,52 @@ let eval ?kind s p =
               else catmull_rom s (i - 1) k p)
   in
   Array.sub v 0 s.terms
+
+(* A spline made ready for render-time calls: the natural spline's
+   coefficients computed once here. *)
+type fn = { spline : t; co : float array array }
+
+let prepare s =
+  if Array.length s.pars = 0 then invalid_arg "Spline.prepare: empty spline";
+  { spline = s; co = (if s.kind = Natural then natural_coeffs s else [||]) }
+
+let terms f = f.spline.terms
+
+(* [eval]'s value, one component at a time: each case stores its value
+   (a float joined from the cases could be boxed) *)
+let component_into f (src : float array) si k (dst : float array) j =
+  let s = f.spline in
+  if k >= s.terms then dst.(j) <- 0.
+  else
+    let p = src.(si) in
+    let last = Array.length s.pars - 1 in
+    if last = 0 then dst.(j) <- s.vecs.(0).(k)
+    else
+      let i = findt s p in
+      match s.kind with
+      | Linear ->
+          if i = 0 then dst.(j) <- s.vecs.(0).(k)
+          else if i > last then dst.(j) <- s.vecs.(last).(k)
+          else dst.(j) <- linear s (i - 1) k p
+      | Quadratic ->
+          if i = 0 then dst.(j) <- s.vecs.(0).(k)
+          else if i > last then dst.(j) <- s.vecs.(last).(k)
+          else if last = 1 then dst.(j) <- linear s (i - 1) k p
+          else if i > 1 then dst.(j) <- quadratic s (i - 1) k p
+          else dst.(j) <- quadratic s i k p
+      | Natural ->
+          if i = 0 then dst.(j) <- s.vecs.(0).(k)
+          else if i > last then dst.(j) <- s.vecs.(last).(k)
+          else dst.(j) <- natural s f.co (i - 1) k p
+      | Cubic ->
+          if last = 1 then dst.(j) <- (s.vecs.(0).(k) +. s.vecs.(1).(k)) /. 2.
+          else if i < 2 then dst.(j) <- s.vecs.(1).(k)
+          else if i >= last then dst.(j) <- s.vecs.(last - 1).(k)
+          else dst.(j) <- catmull_rom s (i - 1) k p
+
+let value f p =
+  let src = [| p |] and a = Array.make f.spline.terms 0. in
+  for k = 0 to Array.length a - 1 do
+    component_into f src 0 k a k
+  done;
+  a

@@ -22,3 +22,22 @@ val eval : ?kind:kind -> t -> float -> float array
 (** The value at a parameter, with [max 2 terms] components, optionally
     with another interpolation. Raises [Invalid_argument] on an empty
     spline. *)
+
+type fn
+(** A spline made ready for calls at render time, [function { spline {
+    ... } }]: its kind fixed, a natural spline's coefficients computed
+    once. *)
+
+val prepare : t -> fn
+(** Raises [Invalid_argument] on an empty spline. *)
+
+val terms : fn -> int
+(** The number of components of its values ({!eval}'s length). *)
+
+val component_into : fn -> float array -> int -> int -> float array -> int -> unit
+(** [component_into f src i k dst j]: component [k] (below 5) of the
+    value at the parameter [src.(i)] into [dst.(j)], [0.] from {!terms}
+    on; the same bits as {!eval}'s, nothing allocated. *)
+
+val value : fn -> float -> float array
+(** The value at a parameter, {!eval}'s, from {!component_into}. *)

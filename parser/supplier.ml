@@ -286,7 +286,7 @@ and function_body t loc params =
       let sloc = (raw_next t).loc in
       let s = Splread.read t sloc in
       expect_tok t Parser.RBRACE "'}' to close the function";
-      (Fn.of_spline (Spline.eval s), None)
+      (Fn.of_spline s, None)
   | Tok Parser.PIGMENT -> (
       if params <> [ "x"; "y"; "z" ] then fail t loc "a pigment function takes no parameter list";
       match parse t Parser.Incremental.declare_rhs with
