@@ -8,8 +8,7 @@
     vector and pigment functions' values ([F(x, y, z).gray], see
     {!Fn.member}). [internal(n)] and [pattern {...}] bodies are accepted
     but marked {!Fn.unsupported}, and so are calls of such functions
-    (whatever their number of arguments). Evaluation allocates nothing
-    (unless it calls a transform or spline function). *)
+    (whatever their number of arguments). Evaluation allocates nothing. *)
 
 type resolved = Const of float | Vec of float array | Func of Fn.t | Unknown
 (** What a name other than a parameter means, at definition time

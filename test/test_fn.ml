@@ -5,6 +5,100 @@ open Camlray_lang
 let f = Scn.float
 let check = Scn.check_float ~eps:1e-9
 
+
+(* Random splines as spline { ... } makes them: 1 to 8 entries (a
+   parameter repeated replaces the value), float values (5 copies, 2
+   terms) or vectors of 2 to 5 components; parameters on a grid of
+   quarters (repeats, knots hit exactly) or anywhere *)
+let same_bits a b = Int64.equal (Int64.bits_of_float a) (Int64.bits_of_float b)
+
+let kinds = [ Spline.Linear; Spline.Quadratic; Spline.Cubic; Spline.Natural ]
+let kind_name = function
+  | Spline.Linear -> "linear_spline" | Quadratic -> "quadratic_spline" | Cubic -> "cubic_spline" | Natural -> "natural_spline"
+
+let gen_par =
+  QCheck.Gen.(oneof_weighted [ (2, map (fun i -> float_of_int i /. 4.) (int_range (-4) 12)); (1, float_range (-1.) 3.) ])
+
+let gen_value =
+  QCheck.Gen.(
+    oneof_weighted
+      [ (1, map (fun x -> (Array.make 5 x, 2)) (float_range (-5.) 5.));
+        (3, int_range 2 5 >>= fun t -> map (fun v -> (v, t)) (array_size (return t) (float_range (-5.) 5.))) ])
+
+let gen_spline =
+  QCheck.Gen.(
+    triple (oneof_list kinds) (list_size (int_range 1 8) (pair gen_par gen_value))
+      (list_size (return 6) (oneof_weighted [ (4, gen_par); (1, float_range (-3.) 5.) ])))
+
+let print_spline (kind, entries, ps) =
+  Printf.sprintf "%s { %s } at %s" (kind_name kind)
+    (String.concat " "
+       (List.map
+          (fun (p, (v, t)) ->
+            Printf.sprintf "%h, <%s> (%d terms)" p (String.concat ", " (Array.to_list (Array.map (Printf.sprintf "%h") v))) t)
+          entries))
+    (String.concat " " (List.map (Printf.sprintf "%h") ps))
+
+let make_spline kind entries =
+  List.fold_left (fun s (p, (v, terms)) -> Spline.add s p ~terms v) (Spline.empty kind) entries
+
+(* eval's component k, 0 past its length *)
+let nth a k = if k < Array.length a then a.(k) else 0.
+
+(* the in-place evaluation a spline function uses at render time, each
+   component written into a slot between others, against Spline.eval;
+   and the five components allocate nothing *)
+let in_place_prop =
+  QCheck.Test.make ~name:"Spline.component_into and Spline.value = Spline.eval, to the bit, allocating nothing"
+    ~count:2000 (QCheck.make ~print:print_spline gen_spline)
+    (fun (kind, entries, ps) ->
+      let s = make_spline kind entries in
+      let f = Spline.prepare s in
+      List.for_all
+        (fun p ->
+          let want = Spline.eval s p in
+          let src = [| 7.; p; 9. |] and dst = Array.make 9 42. in
+          let before = Gc.minor_words () in
+          for k = 0 to 4 do
+            Spline.component_into f src 1 k dst (k + 2)
+          done;
+          let words = Gc.minor_words () -. before in
+          let value = Spline.value f p in
+          let bad k = QCheck.Test.fail_reportf "at %h, component %d: got %h, want %h" p k dst.(k + 2) (nth want k) in
+          (words = 0. || QCheck.Test.fail_reportf "at %h: %g words" p words)
+          && Spline.terms f = Array.length want
+          && Array.length value = Array.length want
+          && Array.for_all2 same_bits value want
+          && List.for_all (fun k -> same_bits dst.(k + 2) (nth want k) || bad k) [ 0; 1; 2; 3; 4 ]
+          && dst.(0) = 42. && dst.(1) = 42. && dst.(7) = 42. && dst.(8) = 42.
+          && src = [| 7.; p; 9. |])
+        ps)
+
+(* a spline function's members in a function body (its render-time
+   code: Fn.member_code), each one and gray, against Spline.eval *)
+let member_prop =
+  let members = [ ("x", 0); ("y", 1); ("z", 2); ("t", 3); ("transmit", 4); ("gray", -1) ] in
+  QCheck.Test.make ~name:"S(t).member in a function body = Spline.eval's component, to the bit" ~count:300
+    (QCheck.make ~print:print_spline gen_spline)
+    (fun (kind, entries, ps) ->
+      let s = make_spline kind entries in
+      let sf = Fn.of_spline s in
+      let resolve _ name = if name = "S" then Fnparse.Func sf else Fnparse.Unknown in
+      List.for_all
+        (fun (m, k) ->
+          let toks = Lexer.tokenize ~file:"<fn>" (Printf.sprintf "S(a).%s" m) in
+          let g = Fnparse.compile ~resolve ~params:[ "a" ] toks in
+          List.for_all
+            (fun p ->
+              let e = Spline.eval s p in
+              let want =
+                if k < 0 then (0.297 *. nth e 0) +. (0.589 *. nth e 1) +. (0.114 *. nth e 2) else nth e k
+              in
+              let got = Fn.eval g [| p |] in
+              same_bits got want || QCheck.Test.fail_reportf ".%s at %h: got %h, want %h" m p got want)
+            ps)
+        members)
+
 let tests =
   ( "fn",
     [
@@ -171,4 +265,4 @@ let tests =
               let two = one +. (w *. ridge 0.7 (3.1 *. x) (3.1 *. y) (3.1 *. z) *. (3.1 ** -0.1)) in
               Scn.close ~eps:1e-12 "2 octaves" two (Scn.float ~prelude ("f_ridged_mf(" ^ p ^ ", 0.1, 3.1, 2, 0.7, 0.8, 2)")))
             [ (0.3, 1.7, -2.2); (10.5, -3.25, 0.125); (-7.1, 4.4, 9.9) ]);
-    ] )
+    ] @ List.map QCheck_alcotest.to_alcotest [ in_place_prop; member_prop ] )
