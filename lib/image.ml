@@ -273,6 +273,14 @@ let read_indices path =
       | exception (Sys_error m | Invalid_argument m) -> failwith m
       | exception Images.Wrong_file_type -> failwith "unreadable PNG"
 
+let palette_size path =
+  let s = read_file path in
+  if not (String.starts_with ~prefix:Png_codec.signature s) then None
+  else
+    naming path @@ fun () ->
+    if Png_codec.check s <> 3 then None
+    else match Png_codec.chunk s "PLTE" with Some p -> Some (String.length p / 3) | None -> failwith "no PLTE chunk"
+
 (* A palette's alphas come from its tRNS chunk (entries past its end are
    opaque), camlimages keeping only one transparent index; an alpha
    channel from camlimages' RGBA image (grey and alpha too) *)

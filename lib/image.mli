@@ -98,6 +98,10 @@ val read_indices : string -> (int * int * Bytes.t) option
     from the top; [None] for any other image. Raises [Failure] as
     {!read}. *)
 
+val palette_size : string -> int option
+(** How many colours a palette PNG's palette holds; [None] for any other
+    image. Raises [Failure] as {!read}. *)
+
 val read_alpha : string -> Bytes.t option
 (** The alpha of each pixel (one byte a pixel, row by row from the top)
     of a PNG with an alpha channel (grey or colour) or a palette (from

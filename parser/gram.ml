@@ -160,3 +160,11 @@ let rainbow loc items =
     | None -> Diag.error loc "a rainbow needs a colour_map"
   in
   Rainbow.make ~angle:!angle ~width:!width ~distance:!distance ~jitter:!jitter ~direction:d ~up:u ~arc ~falloff pigment
+
+(* an image_map's [filter ...] or [transmit ...] (POV-Ray takes no other
+   channel there) *)
+let image_channel l c =
+  match c with
+  | "filter" -> `Filter
+  | "transmit" -> `Transmit
+  | c -> Diag.error (loc l) "an image_map takes filter or transmit here, not %s" c

@@ -81,3 +81,7 @@ val rainbow :
   Camlray.Rainbow.t
 (** A [rainbow { }] from its items in order, POV-Ray's checks as located
     errors. *)
+
+val image_channel : Lexing.position * Lexing.position -> string -> [ `Filter | `Transmit ]
+(** An image_map's [filter ...] or [transmit ...]: any other channel is a
+    located error. *)

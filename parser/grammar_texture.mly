@@ -259,19 +259,26 @@
         x }
 
 %public image_item:
-  | ONCE { fun (i : Pigment.image) -> { i with once = true } }
-  | INTERPOLATE e = param { let n = Value.to_int (loc $loc(e)) e in fun (i : Pigment.image) -> { i with interpolate = n > 0 } }
+  | ONCE { Texdesc.Every (fun (i : Pigment.image) -> { i with once = true }) }
+  | INTERPOLATE e = param
+      { let n = Value.to_int (loc $loc(e)) e in Texdesc.Every (fun (i : Pigment.image) -> { i with interpolate = n > 0 }) }
   | MAP_TYPE e = param
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 0 || n > 2 then
           Diag.warning (loc $loc)
             (Printf.sprintf "an image_map's map_type %d is drawn planar: camlray has 0 (planar), 1 (spherical) and 2 (cylindrical)" n);
         let n = if n < 0 || n > 2 then 0 else n in
-        fun (i : Pigment.image) -> { i with map_type = n } }
+        Texdesc.Every (fun (i : Pigment.image) -> { i with map_type = n }) }
   | c = CHANNEL ALL e = param
       { let x = fl $loc(e) e in
-        fun (i : Pigment.image) -> { i with px = Array.map (fun (p : Color.rgbft) ->
-          if c = "filter" then { p with filter = x } else if c = "transmit" then { p with transmit = x } else p) i.px } }
+        let set : Color.rgbft -> Color.rgbft =
+          match image_channel $loc(c) c with
+          | `Filter -> fun p -> { p with filter = x }
+          | `Transmit -> fun p -> { p with transmit = x }
+        in
+        Texdesc.Every (fun (i : Pigment.image) -> { i with px = Array.map set i.px }) }
+  | c = CHANNEL n = param COMMA e = param
+      { Texdesc.Entry { loc = loc $loc(n); channel = image_channel $loc(c) c; entry = fl $loc(n) n; amount = fl $loc(e) e } }
 
 (* the object pattern's object: 1 inside, 0 outside (POV-Ray's [object {
    OBJECT cell0 cell1 }], where the object takes only transformations

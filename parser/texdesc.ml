@@ -178,6 +178,10 @@ let normal_map loc es p =
     Diag.error loc "the weights of an average's normal_map must not sum to 0";
   { p with nmap = Some (Array.of_list es) }
 
+type image_mod =
+  | Every of (Pigment.image -> Pigment.image)
+  | Entry of { loc : Loc.t; channel : [ `Filter | `Transmit ]; entry : float; amount : float }
+
 let image_map loc ?file_gamma ~gamma_decode file mods =
   (* beside the scene or on the include path, as POV-Ray looks *)
   let path =
@@ -205,7 +209,34 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
         Color.opaque (Color.make (b 0) (b 1) (b 2)))
   in
   let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false; map_type = 0 } in
-  Pigment.Image_map { image = List.fold_left (fun i f -> f i) im mods; xform = Transform.identity }
+  (* the palette's entry of each pixel, read when a change names one *)
+  let palette =
+    lazy
+      (try
+         match (Image.read_indices path, Image.palette_size path) with
+         | Some (_, _, idx), Some n -> Some (idx, n)
+         | _ -> None
+       with Sys_error e | Failure e -> Diag.error loc "cannot read image_map %s: %s" file e)
+  in
+  let apply (i : Pigment.image) = function
+    | Every f -> f i
+    | Entry { loc; channel; entry; amount } -> (
+        let name = match channel with `Filter -> "filter" | `Transmit -> "transmit" in
+        match Lazy.force palette with
+        | None ->
+            Diag.error loc
+              "%s %g, %g sets a palette entry, and %s has no palette (%s all %g acts on every pixel of any image)"
+              name entry amount file name amount
+        | Some (idx, n) ->
+            let k = int_of_float (entry +. 0.01) in
+            if k < 0 || k >= n then
+              Diag.error loc "palette entry %d is out of range: %s has %d (0 to %d)" k file n (n - 1);
+            let set (p : Color.rgbft) =
+              match channel with `Filter -> { p with filter = amount } | `Transmit -> { p with transmit = amount }
+            in
+            { i with px = Array.mapi (fun j p -> if Char.code (Bytes.get idx j) = k then set p else p) i.px })
+  in
+  Pigment.Image_map { image = List.fold_left apply im mods; xform = Transform.identity }
 
 (* a PNG's bit depth and colour type (IHDR's bytes 24 and 25; colour
    type 3 is a palette, 0 grey), [None] for other files *)

@@ -73,11 +73,20 @@ val density_file : Loc.t -> string -> Pattern.kind
 (** [density_file df3 "file"]: the file read (located errors when it is
     missing or damaged). *)
 
-val image_map :
-  Loc.t -> ?file_gamma:float -> gamma_decode:bool -> string -> (Pigment.image -> Pigment.image) list -> Pigment.t
+(** What follows an image_map's file: a change of every pixel ([once],
+    [filter all A], ...), or POV-Ray's [filter N, A] / [transmit N, A],
+    the filter or transmit of the palette's entry [N] (its number as
+    written, taken as POV-Ray does: [int (N + 0.01)]). *)
+type image_mod =
+  | Every of (Pigment.image -> Pigment.image)
+  | Entry of { loc : Loc.t; channel : [ `Filter | `Transmit ]; entry : float; amount : float }
+
+val image_map : Loc.t -> ?file_gamma:float -> gamma_decode:bool -> string -> image_mod list -> Pigment.t
 (** Read a PNG (beside the scene or on the include path) into an image
     map: values c^[file_gamma] when the scene gives the file's gamma,
-    else decoded from sRGB when [gamma_decode]. Errors are located. *)
+    else decoded from sRGB when [gamma_decode]; the changes applied in
+    order. Errors are located: a palette entry on an image without a
+    palette, or past the palette's end, is one. *)
 
 val image_pattern :
   Loc.t ->

@@ -107,6 +107,45 @@ let image_map () =
   Scn.color "right texel, repeated" (0., 1., 0.) (px "<-1.75, -0.5, 0>");
   Sys.remove file
 
+(* POV-Ray's [filter N, A] and [transmit N, A] in an image_map: the
+   filter or transmit of palette entry N (int (N + 0.01)), after and
+   before [... all A] in the order written; an image without a palette,
+   an entry past the palette's end, or another channel, are located
+   errors (interior/media/media3.pov, "unexpected number" before) *)
+let image_map_palette () =
+  let pal = Printf.sprintf "camlray-pal-%d.png" (Unix.getpid ()) in
+  let rgb = Printf.sprintf "camlray-rgb-%d.png" (Unix.getpid ()) in
+  (* 2 x 1: entry 1 (40, 50, 60) then entry 0 (10, 20, 30) *)
+  Test_image.write_file pal
+    (Test_image.hand_png ~before:[ ("PLTE", "\010\020\030\040\050\060") ] ~w:2 ~h:1 ~ct:3 ~depth:8
+       (Test_image.zlib_stored "\000\001\000"));
+  Image.write_png rgb { Image.w = 2; h = 1; data = Bytes.make 6 '\100' };
+  Fun.protect
+    ~finally:(fun () -> Sys.remove pal; Sys.remove rgb)
+    (fun () ->
+      let px items =
+        match (Scn.compile (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\" %s } } }" pal items)).objects.(0).texture with
+        | { pigment = Pigment.Image_map { image; _ }; _ } :: _ ->
+            Array.to_list (Array.map (fun (c : Color.rgbft) -> (c.filter, c.transmit)) image.px)
+        | _ -> Alcotest.fail "no image_map"
+      in
+      let ft = Alcotest.(list (pair (float 0.) (float 0.))) in
+      Alcotest.check ft "transmit 1, 1: the first pixel" [ (0., 1.); (0., 0.) ] (px "transmit 1, 1");
+      Alcotest.check ft "filter 0.995, 0.5 is entry 1" [ (0.5, 0.); (0., 0.) ] (px "filter 0.995, 0.5");
+      Alcotest.check ft "in order: all, then one entry" [ (0., 0.3); (0., 1.) ] (px "transmit all 0.3 transmit 0, 1");
+      Alcotest.check ft "in order: one entry, then all" [ (0.2, 0.); (0.2, 0.) ] (px "filter 1, 0.9 filter all 0.2");
+      let err file items =
+        Scn.error (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\"\n  %s } } }" file items)
+      in
+      let located what (d : Camlray_lang.Diag.t) line col sub =
+        Alcotest.(check (pair int int)) (what ^ ": where") (line, col) (Camlray_lang.Loc.line d.loc, Camlray_lang.Loc.col d.loc);
+        if not (Scn.contains d.msg sub) then Alcotest.failf "%s: message %S does not contain %S" what d.msg sub
+      in
+      located "no palette" (err rgb "transmit 1, 1") 2 12 "has no palette";
+      located "past the end" (err pal "filter 2, 1") 2 10 "palette entry 2 is out of range";
+      located "negative" (err pal "filter -2, 1") 2 10 "palette entry -1 is out of range";
+      located "a colour channel" (err pal "red all 1") 2 3 "filter or transmit here, not red")
+
 (* normal { PATTERN, BUMP_SIZE }: the comma is optional (POV-Ray reads
    both forms; textures/patterns/gradient.pov uses it) *)
 let normal_comma () =
@@ -759,6 +798,7 @@ let tests =
       Alcotest.test_case "transforms" `Quick transforms;
       Alcotest.test_case "normal bump size after a comma" `Quick normal_comma;
       Alcotest.test_case "image_map" `Quick image_map;
+      Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
       Alcotest.test_case "spiral1 and spiral2" `Quick spirals;
       Alcotest.test_case "quilted" `Quick quilted;
       Alcotest.test_case "mandel" `Quick mandel;
