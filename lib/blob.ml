@@ -138,7 +138,9 @@ let normal_into b (p : Vec3.m) (out : Vec3.m) =
           gz := !gz +. lz
     end
   done;
-  if !gx = 0. && !gy = 0. && !gz = 0. then Vec3.set out 0. 1. 0.
+  (* no component reaches [p] (a crossing of a stretch clamped to start
+     at 0, see [add_piece]): +x, as POV-Ray's Blob::Normal *)
+  if !gx = 0. && !gy = 0. && !gz = 0. then Vec3.set out 1. 0. 0.
   else begin
     Vec3.set out !gx !gy !gz;
     Vec3.normalize_m out
@@ -221,8 +223,25 @@ let work_key =
       { pieces = Float.Array.make 70 0.; n = 0; ends = Float.Array.make 20 0.; sum = Float.Array.make 5 0.;
         roots = Poly.scratch 4; dir = Vec3.m (); lo = Vec3.m (); ld = Vec3.m () })
 
-let[@inline] add_piece w t0 t1 s r2 a b c =
-  if t1 > t0 then begin
+(* POV-Ray's DEPTH_TOLERANCE for blobs (blob.cpp): no crossing this
+   near the ray's origin, in the world's units, is taken ([hit_s]); and
+   the ends of components' stretches are clamped by it, in the blob's own
+   units ([add_piece]) *)
+let depth_tolerance = 1e-2
+
+(* The stretch [t0, t1] of a component. As POV-Ray's elements do
+   (intersect_sphere, _ellipsoid, _cylinder and _hemisphere in blob.cpp),
+   an end marked [clamp0] or [clamp1] that lies before [depth_tolerance]
+   is moved to 0, and the stretch is dropped when nothing is left: a
+   stretch ending that near the origin counts nowhere; one starting in
+   (0, depth_tolerance) counts from 0 on, its quartic summed there too,
+   though the ray is outside the component, where the quartic rises
+   again. *)
+let[@inline] add_piece w t0 t1 clamp0 clamp1 s r2 a b c =
+  let t0' = if clamp0 && t0 < depth_tolerance then 0. else t0
+  and t1' = if clamp1 && t1 < depth_tolerance then 0. else t1 in
+  if t1 > t0 && t1' > t0' then begin
+    let t0 = t0' and t1 = t1' in
     if 7 * (w.n + 1) > Float.Array.length w.pieces then begin
       let p = Float.Array.make (2 * Float.Array.length w.pieces) 0. in
       Float.Array.blit w.pieces 0 p 0 (7 * w.n);
@@ -240,8 +259,12 @@ let[@inline] add_piece w t0 t1 s r2 a b c =
     w.n <- w.n + 1
   end
 
-(* where a t^2 + b t + c < r2, clipped to (lo, hi): the stretch added *)
-let[@inline] within w s r2 a b c lo hi =
+(* where a t^2 + b t + c < r2, clipped to (lo, hi): the stretch added.
+   An end at [lo] or [hi] (a cylinder's end plane) is clamped (see
+   [add_piece]); one where the ray meets the quadric when [rc] (a
+   sphere's, a cylinder's side; not an end cap's, which POV-Ray leaves
+   as they are) *)
+let[@inline] within w s r2 a b c lo hi rc =
   if a > 1e-12 then begin
     let disc = (b *. b) -. (4. *. a *. (c -. r2)) in
     if disc > 0. then begin
@@ -250,12 +273,12 @@ let[@inline] within w s r2 a b c lo hi =
       (* [max lo r0, min hi r1], each end passed as a plain float (one
          chosen by an [if] would be boxed) *)
       if lo >= r0 then
-        if hi <= r1 then add_piece w lo hi s r2 a b c else add_piece w lo r1 s r2 a b c
-      else if hi <= r1 then add_piece w r0 hi s r2 a b c
-      else add_piece w r0 r1 s r2 a b c
+        if hi <= r1 then add_piece w lo hi true true s r2 a b c else add_piece w lo r1 true rc s r2 a b c
+      else if hi <= r1 then add_piece w r0 hi rc true s r2 a b c
+      else add_piece w r0 r1 rc rc s r2 a b c
     end
   end
-  else if c < r2 then add_piece w lo hi s r2 0. 0. c
+  else if c < r2 then add_piece w lo hi true true s r2 0. 0. c
 
 (* The stretches of a sphere (centre [p]) along the ray [o + t n], where
    [dd] is [n . n] (1 in the blob's space, where [n] is the unit
@@ -263,7 +286,7 @@ let[@inline] within w s r2 a b c lo hi =
 let[@inline] sphere_pieces w s r2 (p : Vec3.t) ox oy oz nx ny nz dd =
   let ex = ox -. p.x and ey = oy -. p.y and ez = oz -. p.z in
   within w s r2 dd (2. *. ((ex *. nx) +. (ey *. ny) +. (ez *. nz))) ((ex *. ex) +. (ey *. ey) +. (ez *. ez))
-    neg_infinity infinity
+    neg_infinity infinity true
 
 (* The same for a cylinder from [pa] to [pb] with round ends *)
 let[@inline] cylinder_pieces w s r2 (pa : Vec3.t) (pb : Vec3.t) ox oy oz nx ny nz dd =
@@ -281,26 +304,26 @@ let[@inline] cylinder_pieces w s r2 (pa : Vec3.t) (pb : Vec3.t) ox oy oz nx ny n
   let ba = dd -. (hw *. hw) and bb = 2. *. (en -. (h0 *. hw)) and bc = e2 -. (h0 *. h0) in
   if hw = 0. then begin
     if h0 < 0. then begin
-      within w s r2 ba bb bc 1. 0.;
-      within w s r2 dd (2. *. en) e2 neg_infinity infinity
+      within w s r2 ba bb bc 1. 0. true;
+      within w s r2 dd (2. *. en) e2 neg_infinity infinity false
     end
     else if h0 > len then begin
-      within w s r2 ba bb bc 1. 0.;
-      within w s r2 dd (2. *. fn) f2 neg_infinity infinity
+      within w s r2 ba bb bc 1. 0. true;
+      within w s r2 dd (2. *. fn) f2 neg_infinity infinity false
     end
-    else within w s r2 ba bb bc neg_infinity infinity
+    else within w s r2 ba bb bc neg_infinity infinity true
   end
   else begin
     let t0 = -.h0 /. hw and t1 = (len -. h0) /. hw in
     if hw > 0. then begin
-      within w s r2 ba bb bc t0 t1;
-      within w s r2 dd (2. *. en) e2 neg_infinity t0;
-      within w s r2 dd (2. *. fn) f2 t1 infinity
+      within w s r2 ba bb bc t0 t1 true;
+      within w s r2 dd (2. *. en) e2 neg_infinity t0 false;
+      within w s r2 dd (2. *. fn) f2 t1 infinity false
     end
     else begin
-      within w s r2 ba bb bc t1 t0;
-      within w s r2 dd (2. *. en) e2 t0 infinity;
-      within w s r2 dd (2. *. fn) f2 neg_infinity t1
+      within w s r2 ba bb bc t1 t0 true;
+      within w s r2 dd (2. *. en) e2 t0 infinity false;
+      within w s r2 dd (2. *. fn) f2 neg_infinity t1 false
     end
   end
 
@@ -352,8 +375,14 @@ let[@inline] surely_rootless (p : Float.Array.t) u v =
   (b0 > eps && b1 > eps && b2 > eps && b3 > eps && b4 > eps)
   || (b0 < -.eps && b1 < -.eps && b2 < -.eps && b3 < -.eps && b4 < -.eps)
 
-let hit_s b (r : Ray.scratch) tmin (h : Hit.t) =
-  let tmin = if h.floor > tmin then h.floor else tmin in
+let hit_s b (r : Ray.scratch) (world : Ray.scratch) tmin (h : Hit.t) =
+  (* [+. 0.] keeps it unboxed: joined with a boxed argument, the choice
+     would box [h.floor] *)
+  let tmin = let t = tmin +. 0. in if h.floor > t then h.floor else t in
+  (* POV-Ray's depth tolerance, a distance in the world: in units of the
+     world ray's direction *)
+  let wl = Float.sqrt ((world.dx *. world.dx) +. (world.dy *. world.dy) +. (world.dz *. world.dz)) in
+  let tmin = fmax tmin (depth_tolerance /. wl) in
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let w = Scratch.get work_key in
   Vec3.set w.dir (r.dx /. dl) (r.dy /. dl) (r.dz /. dl);

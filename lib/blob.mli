@@ -33,10 +33,25 @@ val field : t -> float -> float -> float -> float
 (** The sum of the components' fields at a point. *)
 
 val inside : t -> float -> float -> float -> bool
-val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
+
+val hit_s : t -> Ray.scratch -> Ray.scratch -> float -> Hit.t -> bool
+(** [hit_s b r world tmin h]: the nearest crossing of the ray [r] (in the
+    blob's own space) past [tmin] and before [h.t]; [world] is the same
+    ray in the world (the same parameter), read for its direction's
+    length only. POV-Ray's depth tolerance (blob.cpp, 0.01) as POV-Ray
+    applies it: no crossing nearer than 0.01 to the origin in the world
+    is taken; and a component's stretch along the ray (a sphere's, an
+    ellipsoid's, a cylinder's side; an end cap's only at its plane)
+    whose end lies within 0.01 of the origin in the blob's own units has
+    that end moved to 0: ending there, it counts nowhere; starting there,
+    it counts from 0, where its field, a quartic along the ray, rises
+    again outside the component (POV-Ray's shells around the components
+    of a blob scaled up from a small one). *)
+
 val normal_into : t -> Vec3.m -> Vec3.m -> unit
 (** [normal_into b p out]: the outward unit normal at [p] (against the
-    field's gradient); [p] and [out] may be the same vector. *)
+    field's gradient; +x where no component reaches, as POV-Ray); [p] and
+    [out] may be the same vector. *)
 
 val weights : t -> Vec3.m -> Float.Array.t -> int array -> int
 (** [weights b p ws ix]: POV-Ray's shares of the components in the

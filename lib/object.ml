@@ -326,6 +326,12 @@ and in_bound bs r tmin i =
 
 and raw_hit o r tmin h f =
   match o.geom with
+  | Prim (Shape.Blob b) ->
+      (* a blob's depth tolerance is a distance in the world: it reads
+         the world ray as well *)
+      let got = Blob.hit_s b (local o r f) r tmin h in
+      if got then f.leaf <- o;
+      got
   | Prim s ->
       let got = Shape.hit_s s (local o r f) tmin h in
       if got then f.leaf <- o;

@@ -228,7 +228,7 @@ let hit_s s (r : Ray.scratch) tmin (h : Hit.t) =
   | Mesh m -> Mesh.hit_s m r tmin h
   | Algebraic a -> Algebraic.hit_s a r tmin h
   | Text t -> Text.hit_s t r tmin h
-  | Blob b -> Blob.hit_s b r tmin h
+  | Blob b -> Blob.hit_s b r r tmin h
   | Prism p -> Prism.hit_s p r tmin h
   | Lathe l -> Lathe.hit_s l r tmin h
   | Sor s -> Sor.hit_s s r tmin h

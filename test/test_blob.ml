@@ -210,7 +210,54 @@ let parse_rules =
           | [] -> Alcotest.fail "empty entry")
       | _ -> Alcotest.fail "expected a blob field texture")
 
+(* POV-Ray's depth tolerance for blobs (blob.cpp, 0.01): one component of
+   strength 1 at threshold 1/4 has its surface at sqrt(1/2) of its
+   radius. A crossing nearer than 0.01 to the origin, a distance in the
+   world, is not taken; ends of a component's stretch nearer than 0.01 in
+   the blob's own units are moved to 0 (a stretch ending there is
+   dropped; one starting there counts from 0, where its quartic rises
+   again outside the component). *)
+let depth_tolerance =
+  Alcotest.test_case "depth tolerance: crossings within 0.01 in the world, stretch ends within 0.01 in the blob" `Quick
+    (fun () ->
+      let r = Float.sqrt 0.5 in
+      let sph rad = Blob.Sphere { center = Vec3.zero; radius = rad; strength = 1. } in
+      let unit = Object.make (Shape.Blob (Blob.make ~threshold:0.25 [ sph 1. ])) in
+      let hit o orig d = Object.intersect o (Ray.make orig d) 1e-9 infinity in
+      let z = v 0. 0. 1. in
+      Alcotest.(check (float 1e-9)) "0.02 ahead: taken" 0.02 (hit unit (v 0. 0. (-.(r +. 0.02))) z);
+      Alcotest.(check (float 1e-9)) "0.005 ahead: the far side instead" (0.005 +. (2. *. r))
+        (hit unit (v 0. 0. (-.(r +. 0.005))) z);
+      (* a direction of length 2: 0.004 along it is 0.008 away, 0.006 is 0.012 *)
+      let z2 = v 0. 0. 2. in
+      Alcotest.(check (float 1e-9)) "0.008 away along a long direction: not taken" ((0.008 +. (2. *. r)) /. 2.)
+        (hit unit (v 0. 0. (-.(r +. 0.008))) z2);
+      Alcotest.(check (float 1e-9)) "0.012 away: taken" 0.006 (hit unit (v 0. 0. (-.(r +. 0.012))) z2);
+      (* radius 0.02, scaled by 100: 0.01 in the blob is 1 in the world;
+         the surface at 100 * 0.02 * sqrt(1/2) *)
+      let big =
+        Object.make ~xform:(Transform.scale (v 100. 100. 100.)) (Shape.Blob (Blob.make ~threshold:0.25 [ sph 0.02 ]))
+      in
+      let x = v 1. 0. 0. and mx = v (-1.) 0. 0. in
+      let surface = 2. *. r in
+      (* from inside, outward: the stretch ends 0.007 (blob) ahead and is
+         dropped, the crossing 0.114 ahead in the world with it *)
+      Alcotest.(check (float 0.)) "stretch ending within 0.01: no field, no crossing" infinity
+        (hit big (v 1.3 0. 0.) x);
+      Alcotest.(check (float 1e-9)) "ending 0.011 ahead: kept" (surface -. 0.9) (hit big (v 0.9 0. 0.) x);
+      (* from outside, inward, entering 0.008 (blob) ahead: counted from
+         0, where (1 - d^2/R^2)^2 is 0.9216 (d = 1.4 R); it falls to 1/4
+         at d^2 = 1.5 R^2, 0.35051 ahead in the world, outside the
+         component: a crossing there, the normal +x (no component's
+         gradient: POV-Ray's default) *)
+      let t = hit big (v 2.8 0. 0.) mx in
+      Alcotest.(check (float 1e-9)) "stretch starting within 0.01: a shell outside it" (2.8 -. (2. *. Float.sqrt 1.5)) t;
+      let n = Object.normal big (v (2.8 -. t) 0. 0.) (Hit.create t) in
+      Alcotest.(check (float 1e-12)) "its normal: +x" 1. n.x;
+      (* entering 0.012 ahead: as it is, the surface *)
+      Alcotest.(check (float 1e-9)) "starting 0.012 ahead: the surface" (3.2 -. surface) (hit big (v 3.2 0. 0.) mx))
+
 let tests =
   ( "blob",
-    [ weights_known; render_known; parse_rules ]
+    [ weights_known; render_known; parse_rules; depth_tolerance ]
     @ List.map QCheck_alcotest.to_alcotest [ field_through; hits_on_surface ] )
