@@ -38,7 +38,7 @@ type t = {
   fade_power : float;
   shadowless : bool;
   area : area option;
-  media_interaction : bool;  (** scattered by media (true) *)
+  media_interaction : bool;  (** scattered by media (true; a shadowless light never is) *)
   media_attenuation : bool;  (** dimmed by atmospheric media (false) *)
   projected_through : Object.t option;
       (** POV-Ray's [projected_through]: the light reaches a point only

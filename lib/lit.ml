@@ -146,7 +146,10 @@ let cut_far t (lights : Light.t array) (r : Ray.scratch) =
     let l = lights.(i) in
     Float.Array.set t.on0 i infinity;
     Float.Array.set t.on1 i neg_infinity;
-    if l.media_interaction then begin
+    (* POV-Ray 3.7's list of lights for media (media.cpp,
+       ComputeOneMediaLightInterval) holds point, spot and cylinder
+       lights: a shadowless light is a fill light there, left out *)
+    if l.media_interaction && not l.shadowless then begin
       match l.kind with
       | Light.Spot _ | Light.Cylinder _ ->
           let crossed = match l.kind with Light.Cylinder _ -> cylinder l r t.sp | _ -> cone l r t.sp in

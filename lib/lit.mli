@@ -42,7 +42,8 @@ val make : unit -> t
 
 val cut : t -> Light.t array -> Ray.scratch -> float -> unit
 (** [cut t lights r len]: the stretches of [[0, len]] along [r] as POV-Ray
-    3.7 makes them from its [media_interaction] lights: each spotlight
+    3.7 makes them from its [media_interaction] lights (not
+    shadowless ones: fill lights, which its media leave out): each spotlight
     lights the part of its cone within the ray (a cylindrical light its
     {!cylinder} stretch) (kept when it starts
     before [len] and ends past 0.001), any other light all of it; the lit

@@ -38,8 +38,9 @@ let key =
         lit_spans = Lit.make (); lit_now = false;
         at = { x = 0.; lo = 0.; hi = 0.; thr = 0. }; stack = Float.Array.make (3 * (max_depth + 2)) 0. })
 
-(* the light of every media-interacting light reaching [p], each weighted
-   by the phase of [sc] toward the eye, into [st.lit] *)
+(* the light of every light that lights the ray at [p] (media-interacting
+   and not shadowless: see {!Lit.cut}), each weighted by the phase of [sc]
+   toward the eye, into [st.lit] *)
 let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
   let lit = st.lit and r = st.r in
   Color.acc_set lit 0. 0. 0.;
@@ -52,21 +53,17 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
       Light.direction_into light p l;
       let att = Light.attenuation_m light p in
       if att > 0. then begin
-        (* no tuple: the channels stay unboxed *)
-        (* a shadowless light is still tested for its projected_through *)
-        let walk = match light.projected_through with Some _ -> true | None -> not light.shadowless in
-        if walk then Shadow.light s w light p;
+        (* no tuple: the channels stay unboxed; a shadowless light
+           never gets here *)
+        Shadow.light s w light p;
         let a = Shadow.passed w in
-        let sr = if walk then a.ar else 1.
-        and sg = if walk then a.ag else 1.
-        and sb = if walk then a.ab else 1. in
         (* the light travels along -l, the eye is back along the ray *)
         let c = (l.lx *. r.dx) +. (l.ly *. r.dy) +. (l.lz *. r.dz) in
         let k = att *. Media.phase sc c in
         Color.acc_set lit
-          (lit.ar +. (k *. sr *. light.color.r))
-          (lit.ag +. (k *. sg *. light.color.g))
-          (lit.ab +. (k *. sb *. light.color.b))
+          (lit.ar +. (k *. a.ar *. light.color.r))
+          (lit.ag +. (k *. a.ag *. light.color.g))
+          (lit.ab +. (k *. a.ab *. light.color.b))
       end
     end
   done

@@ -12,6 +12,7 @@ val apply : Scene.t -> Vec3.m -> Vec3.m -> float -> Interior.t list -> Color.acc
     media of the interiors [inside]: dimmed by
     [exp (-integral of extinction)], plus emission and the single
     scattering of each light (with its shadow, media_interaction lights
-    only, each within its own lit stretch). The settings are those of
+    only, and not shadowless ones, which POV-Ray's media leave out; each
+    within its own lit stretch). The settings are those of
     the medium with the most intervals. Nothing happens when no interior has media, or [t] is
     infinite. *)

@@ -88,6 +88,10 @@ let merged () =
   check "media_interaction off" [ (0., 10., false) ];
   Lit.cut t [| beam 2.; Light.point (Vec3.make 0. 5. 0.) Color.white |] r 10.;
   check "a point light lights all" [ (0., 10., true) ];
+  (* a shadowless light is a fill light: POV-Ray's media leave it out *)
+  Lit.cut t [| beam 2.; { (Light.point (Vec3.make 0. 5. 0.) Color.white) with shadowless = true } |] r 10.;
+  check "a shadowless light lights nothing" [ (0., 2. -. h, false); (2. -. h, 2. +. h, true); (2. +. h, 10., false) ];
+  if Lit.lights t 1 5. then Alcotest.fail "the shadowless light at 5";
   (* the ray ends inside a beam, and one beyond its end *)
   Lit.cut t [| beam 9.; beam 12. |] r 9.;
   check "cut at the ray's end" [ (0., 9. -. h, false); (9. -. h, 9., true) ];

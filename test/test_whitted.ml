@@ -814,6 +814,24 @@ let media () =
     (box ~d:1. ~extra:side "media { scattering { 5, 0.1 eccentricity 0.5 extinction 0 } }");
   gray "media_interaction off" 0.
     (box ~d:1. ~extra:"light_source { <1000, 0, 1.5>, rgb 1 media_interaction off }\n" "media { scattering { 1, 0.1 } }");
+  (* a shadowless light is POV-Ray's fill light, not in its media's list
+     of lights: nothing scattered, and the ray unlit (a constant medium
+     sampled as one stretch, as with no light); a spotlight written after
+     shadowless is a spotlight again, its cone over the whole ray *)
+  gray "shadowless: not scattered" 0.
+    (box ~d:1. ~extra:"light_source { <1000, 0, 1.5>, rgb 1 shadowless }\n" "media { scattering { 1, 0.1 } }");
+  (* three intervals: one stretch when unlit (a constant medium), three
+     when a light crosses the ray; POV-Ray 3.7's pictures: with the
+     shadowless light as with none, with a point light not *)
+  let glow = "media { emission 0.1 absorption 1 intervals 3 }" in
+  let unlit = box glow and lit = box ~extra:"light_source { <1000, 0, 1.5>, rgb 1 }\n" glow in
+  if Float.abs (lit.r -. unlit.r) < 1e-4 then Alcotest.failf "a lit ray sampled as an unlit one (%g)" lit.r;
+  color ~eps:0. "shadowless: sampled as unlit" (unlit.r, unlit.g, unlit.b)
+    (box ~extra:"light_source { <1000, 0, 1.5>, rgb 1 shadowless }\n" glow);
+  gray ~eps:2e-5 "shadowless, then spotlight: scattered" 0.08682
+    (box ~d:1.
+       ~extra:"light_source { <1000, 0, 1.5>, rgb 1 shadowless spotlight point_at <0, 0, 1.5> radius 10 falloff 10 }\n"
+       "media { scattering { 1, 0.1 } }");
   (* a lit plane behind an absorbing box: the shadow ray is dimmed too *)
   gray ~eps:1e-4 "shadow through media" (Float.exp (-2.))
     (pixel
