@@ -167,13 +167,18 @@ let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1))
 (* The point [(u, v)] of the light's area seen from [p], into [out];
    inlined, so that [u] and [v] are not boxed. Scalars, no vectors made. *)
 let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
-  (* square [-0.5,0.5]^2 to the disc of diameter 1 (concentric map) *)
-  let circ = a.circular && (u <> 0. || v <> 0.) in
-  let x = 2. *. u and y = 2. *. v in
-  let xr = Float.abs x > Float.abs y in
-  let r = if xr then x else y in
-  let phi = if not circ then 0. else if xr then Float.pi /. 4. *. (y /. x) else (Float.pi /. 2.) -. (Float.pi /. 4. *. (x /. y)) in
-  let u = if circ then 0.5 *. r *. Float.cos phi else u and v = if circ then 0.5 *. r *. Float.sin phi else v in
+  (* circular: POV-Ray's square [-0.5,0.5]^2 to the disc of diameter 1
+     (trace.cpp, TraceAreaLightSubsetShadowRay): the offsets moved by
+     0.001 each, then along their own direction to the distance of the
+     larger of them *)
+  let circ = a.circular in
+  let ju = u +. 0.001 and jv = v +. 0.001 in
+  let au = Float.abs ju and av = Float.abs jv in
+  let n = Float.sqrt ((ju *. ju) +. (jv *. jv)) in
+  (* (0, 0) only for offsets of -0.001, never on the grid (mc's
+     continuous samples might): left there *)
+  let k = if n > 0. then (if au > av then au else av) /. n else 1. in
+  let u = if circ then ju *. k else u and v = if circ then jv *. k else v in
   let c = l.position in
   if not a.orient then begin
     let a1 = a.axis1 and a2 = a.axis2 in
@@ -181,23 +186,27 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
       (c.z +. ((u *. a1.z) +. (v *. a2.z)))
   end
   else begin
-    (* axes turned to be perpendicular to the direction to the point (a
-       cylindrical light's rays: its axis) *)
-    let dx0 = match l.kind with Cylinder { point_at; _ } -> point_at.x -. c.x | _ -> p.mx -. c.x
-    and dy0 = match l.kind with Cylinder { point_at; _ } -> point_at.y -. c.y | _ -> p.my -. c.y
-    and dz0 = match l.kind with Cylinder { point_at; _ } -> point_at.z -. c.z | _ -> p.mz -. c.z in
+    (* POV-Ray's orient (trace.cpp, TraceAreaLightShadowRay and
+       ComputeFullAreaDiffuseLight): [d], the unit direction of the light
+       ray at [p] (toward the light; a cylindrical or parallel light's
+       runs from its point_at to it); the first axis along d x z (d x y
+       when d is within 0.01 of +-z), the second along d x (the first);
+       both as long as the first axis written (a square) *)
+    let dx0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.x -. point_at.x | _ -> c.x -. p.mx
+    and dy0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.y -. point_at.y | _ -> c.y -. p.my
+    and dz0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.z -. point_at.z | _ -> c.z -. p.mz in
     let dx = Vec3.unit_k dx0 dy0 dz0 0 and dy = Vec3.unit_k dx0 dy0 dz0 1 and dz = Vec3.unit_k dx0 dy0 dz0 2 in
-    let hy = Float.abs dy < 0.9 in
-    let hx = if hy then 0. else 1. and hyv = if hy then 1. else 0. and hz = 0. in
-    (* e1 = normalize (helper x d), e2 = d x e1 *)
-    let cx = (hyv *. dz) -. (hz *. dy) and cy = (hz *. dx) -. (hx *. dz) and cz = (hx *. dy) -. (hyv *. dx) in
+    let near_z = Float.abs (Float.abs dz -. 1.) < 0.01 in
+    (* d x (0, 0, 1) = (dy, -dx, 0); d x (0, 1, 0) = (-dz, 0, dx) *)
+    let cx = if near_z then -.dz else dy and cy = if near_z then 0. else -.dx and cz = if near_z then dx else 0. in
     let e1x = Vec3.unit_k cx cy cz 0 and e1y = Vec3.unit_k cx cy cz 1 and e1z = Vec3.unit_k cx cy cz 2 in
-    let e2x = (dy *. e1z) -. (dz *. e1y) and e2y = (dz *. e1x) -. (dx *. e1z) and e2z = (dx *. e1y) -. (dy *. e1x) in
-    let l1 = Vec3.length a.axis1 and l2 = Vec3.length a.axis2 in
+    let fx = (dy *. e1z) -. (dz *. e1y) and fy = (dz *. e1x) -. (dx *. e1z) and fz = (dx *. e1y) -. (dy *. e1x) in
+    let e2x = Vec3.unit_k fx fy fz 0 and e2y = Vec3.unit_k fx fy fz 1 and e2z = Vec3.unit_k fx fy fz 2 in
+    let l1 = Vec3.length a.axis1 in
     Vec3.set out
-      (c.x +. ((u *. (l1 *. e1x)) +. (v *. (l2 *. e2x))))
-      (c.y +. ((u *. (l1 *. e1y)) +. (v *. (l2 *. e2y))))
-      (c.z +. ((u *. (l1 *. e1z)) +. (v *. (l2 *. e2z))))
+      (c.x +. ((u *. (l1 *. e1x)) +. (v *. (l1 *. e2x))))
+      (c.y +. ((u *. (l1 *. e1y)) +. (v *. (l1 *. e2y))))
+      (c.z +. ((u *. (l1 *. e1z)) +. (v *. (l1 *. e2z))))
   end
 
 let position_at l a (p : Vec3.t) u v =

@@ -18,9 +18,16 @@ type area = {
   n2 : int;
   adaptive : int;  (** levels subdivided unconditionally (100 without [adaptive]) *)
   circular : bool;
-      (** samples moved onto a disc (Shirley's concentric map: close to,
-          not exactly, POV-Ray's arrangement) *)
-  orient : bool;  (** axes turned to face each lit point *)
+      (** samples moved onto a disc as POV-Ray moves them: the offsets
+          [(u, v)] in [[-1/2, 1/2]] plus 0.001 each, then along their
+          direction to the distance of the larger (set by [orient] too,
+          as POV-Ray's parser sets it, when both sizes exceed 1) *)
+  orient : bool;
+      (** axes turned to face each lit point, as POV-Ray builds them: with
+          [d] the unit direction toward the light (a cylindrical or
+          parallel light's, from its point_at to it), the first along
+          [d x z] ([d x y] within 0.01 of [+-z]), the second along [d x]
+          the first, both as long as [axis1] *)
   jitter : bool;  (** parsed, ignored: camlray's area lights are never jittered *)
   area_illumination : bool;
       (** diffuse and highlights computed per sample and averaged like the

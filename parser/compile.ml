@@ -214,6 +214,28 @@ let camera loc items =
     normal = find (function Sdl.Cam_normal n -> Some n | _ -> None);
   }
 
+(* An area light's axes moved with the light, and POV-Ray's rules for
+   circular and orient (parser.cpp: Parse_Light_Source, then
+   Post_Process): circular needs more than one sample along each axis (an
+   error); orient makes the light circular, unless a size is 1; with
+   orient only the first axis's length counts and the sizes should be
+   equal (warnings, as POV-Ray's) *)
+let area_of (o : Sdl.obj) x (a : Light.area) =
+  if a.circular && (a.n1 <= 1 || a.n2 <= 1) then
+    Diag.error o.loc "a circular area light must have more than one sample along each axis (found %d, %d)" a.n1 a.n2;
+  let axis1 = Transform.vector x a.axis1 and axis2 = Transform.vector x a.axis2 in
+  if a.orient then begin
+    if not a.circular then
+      Diag.warning o.loc
+        (if a.n1 <= 1 || a.n2 <= 1 then
+           "orient is only used with circular area lights, and a light with one sample along an axis cannot be circular"
+         else "orient is only used with circular area lights: this area light is made circular");
+    if Float.abs (Vec3.length axis1 -. Vec3.length axis2) > 1e-10 then
+      Diag.warning o.loc "with orient, an area light's two axes should be of equal length: only the first axis's is used";
+    if a.n1 <> a.n2 then Diag.warning o.loc "with orient, an area light's two sample sizes should be equal"
+  end;
+  { a with axis1; axis2; circular = a.circular || (a.orient && a.n1 > 1 && a.n2 > 1) }
+
 (* POV-Ray's light as compiled from its type and parallel flag: a
    parallel point light or spotlight is a parallel light (a spotlight's
    cone factor is 1 along its own axis: POV-Ray's parallel spotlight
@@ -243,11 +265,7 @@ let light (o : Sdl.obj) (l : Sdl.light) projected_through =
     shadowless = l.shadowless;
     media_interaction = l.media_interaction;
     media_attenuation = l.media_attenuation;
-    area =
-      Option.map
-        (fun (a : Light.area) ->
-          { a with axis1 = Transform.vector x a.axis1; axis2 = Transform.vector x a.axis2 })
-        l.area;
+    area = Option.map (area_of o x) l.area;
     projected_through;
   }
 

@@ -36,6 +36,72 @@ let positions () =
   eq "corner" (Vec3.make (-1.) 5. (-2.)) (p 0 0);
   eq "middle of axis 1, end of axis 2" (Vec3.make 0. 5. 2.) (p 1 1)
 
+(* POV-Ray's orient (trace.cpp): with d the unit direction from the lit
+   point to the light, the axes along d x z (d x y within 0.01 of +-z)
+   and d x (the first), both as long as the first axis; a parallel light's
+   d runs from its point_at to it, wherever the point. POV-Ray's circular
+   map: offsets plus 0.001, out to the larger one's distance. *)
+let orient_rules () =
+  let eq msg (e : Vec3.t) (v : Vec3.t) =
+    Scn.close ~eps:1e-12 (msg ^ " x") e.x v.x; Scn.close ~eps:1e-12 (msg ^ " y") e.y v.y;
+    Scn.close ~eps:1e-12 (msg ^ " z") e.z v.z
+  in
+  (* axis 2 of another length: only axis 1's (2) counts *)
+  let a = { (Light.area (Vec3.make 2. 0. 0.) (Vec3.make 0. 5. 0.) 3 3) with orient = true } in
+  let l = { (Light.point Vec3.zero Color.white) with area = Some a } in
+  (* from below: d = +y, d x z = +x, d x x = -z *)
+  eq "d along y" (Vec3.make 1. 0. (-1.)) (Light.position_at l a (Vec3.make 0. (-10.) 0.) 0.5 0.5);
+  (* from in front: d = +z, within 0.01 of z: d x y = -x, d x -x = -y *)
+  eq "d along z" (Vec3.make (-1.) (-1.) 0.) (Light.position_at l a (Vec3.make 0. 0. (-10.)) 0.5 0.5);
+  (* |d.z| = 0.995: still the d x y case; 0.98: the d x z case *)
+  let dz z = Vec3.make (Float.sqrt (1. -. (z *. z))) 0. z in
+  let from z = Vec3.neg (Vec3.scale 10. (dz z)) in
+  let d = dz 0.995 in
+  let e1 = Vec3.normalize (Vec3.cross d Vec3.unit_y) in
+  eq "0.995: d x y" (Vec3.scale 1. e1) (Light.position_at l a (from 0.995) 0.5 0.);
+  let d = dz 0.98 in
+  let e1 = Vec3.normalize (Vec3.cross d Vec3.unit_z) in
+  eq "0.98: d x z" (Vec3.scale 1. e1) (Light.position_at l a (from 0.98) 0.5 0.);
+  (* a parallel light: d from its point_at (0, -1, 0) to it, +y *)
+  let par = { l with kind = Light.Parallel { point_at = Vec3.make 0. (-1.) 0. } } in
+  eq "parallel" (Vec3.make 1. 0. (-1.)) (Light.position_at par a (Vec3.make 5. (-3.) 7.) 0.5 0.5);
+  (* circular, not oriented: axes x and y *)
+  let c = { (Light.area Vec3.unit_x Vec3.unit_y 5 5) with circular = true } in
+  let lc = { l with area = Some c } in
+  let disc u v =
+    let ju = u +. 0.001 and jv = v +. 0.001 in
+    let k = Float.max (Float.abs ju) (Float.abs jv) /. Float.sqrt ((ju *. ju) +. (jv *. jv)) in
+    Vec3.make (ju *. k) (jv *. k) 0.
+  in
+  eq "circular (1, 3/4)" (disc 0.5 0.25) (Light.position_at lc c Vec3.zero 0.5 0.25);
+  eq "circular corner" (disc (-0.5) 0.5) (Light.position_at lc c Vec3.zero (-0.5) 0.5);
+  eq "circular centre" (disc 0. 0.) (Light.position_at lc c Vec3.zero 0. 0.);
+  (* the corner (0.501, 0.251) lands at the distance 0.501, on its own direction *)
+  let p = Light.position_at lc c Vec3.zero 0.5 0.25 in
+  Scn.close ~eps:1e-12 "on the disc" 0.501 (Vec3.length p);
+  Scn.close ~eps:1e-12 "its direction" (0.251 /. 0.501) (p.y /. p.x)
+
+(* POV-Ray's parser: orient makes an area light circular, unless one of
+   its sizes is 1; circular with a size of 1 is an error *)
+let orient_circular () =
+  let area src =
+    match (Helpers.compile_string ("#version 3.7;\nlight_source { 0, rgb 1 " ^ src ^ " }\n")).lights with
+    | [| { area = Some a; _ } |] -> a
+    | _ -> Alcotest.fail "expected one area light"
+  in
+  Alcotest.(check bool) "orient: circular" true (area "area_light x, y, 3, 3 orient").circular;
+  Alcotest.(check bool) "orient, 3x1: not circular" false (area "area_light x, y, 3, 1 orient").circular;
+  Alcotest.(check bool) "no orient: as written" false (area "area_light x, y, 3, 3").circular;
+  match Camlray_lang.Parse.string "#version 3.7;\nlight_source { 0, rgb 1 area_light x, y, 3, 1 circular }\n" with
+  | Error _ -> Alcotest.fail "parse error"
+  | Ok sdl -> (
+      match Camlray_lang.Compile.scene sdl with
+      | Ok _ -> Alcotest.fail "circular 3x1 accepted"
+      | Error d ->
+          let msg = Camlray_lang.Diag.to_string d in
+          if not (Str.string_match (Str.regexp ".*:2:1: error: a circular area light must have more than one sample") msg 0)
+          then Alcotest.failf "message %S" msg)
+
 (* a blocker covering one end sample of a 3x1 light: 0.75 of the light *)
 let scene () =
   let c =
@@ -283,6 +349,8 @@ let tests =
       Alcotest.test_case "recursive averaging" `Quick averaging;
       Alcotest.test_case "adaptive" `Quick adaptive;
       Alcotest.test_case "sample positions" `Quick positions;
+      Alcotest.test_case "orient and circular: POV-Ray's axes and disc" `Quick orient_rules;
+      Alcotest.test_case "orient makes a light circular; circular needs 2 samples an axis" `Quick orient_circular;
       Alcotest.test_case "area light in a scene" `Quick scene;
       Alcotest.test_case "shadows kept per point" `Quick kept_shadows;
       Alcotest.test_case "light_group sets" `Quick groups;
