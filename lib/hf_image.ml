@@ -138,10 +138,20 @@ let pnm s =
   in
   { w; h; v }
 
+(* {2 JPEG} POV-Ray keeps a grey JPEG as 8-bit grey, a colour one as
+   8-bit colour (red the high byte, green the low one) *)
+let jpeg path s =
+  let grey = Image.jpeg_components s = 1 in
+  let img = Image.read_jpeg path in
+  let b i = Char.code (Bytes.get img.data i) in
+  let v = Array.init (img.w * img.h) (fun i -> if grey then of_gray8 (b (3 * i)) else of_rgb8 (b (3 * i)) (b ((3 * i) + 1))) in
+  { w = img.w; h = img.h; v }
+
 let read path =
   let s = try In_channel.with_open_bin path In_channel.input_all with Sys_error m -> failwith m in
   let starts p = String.starts_with ~prefix:p s in
   if starts "\137PNG\r\n\026\n" then png s
   else if String.length s > 2 && s.[0] = 'P' && String.contains "2356" s.[1] then pnm s
-  else if starts "GIF8" then failwith "GIF height fields are not supported (PNG, PGM and PPM are)"
-  else failwith "unknown image format (height fields read PNG, PGM and PPM)"
+  else if Image.is_jpeg s then jpeg path s
+  else if starts "GIF8" then failwith "GIF height fields are not supported (PNG, JPEG, PGM and PPM are)"
+  else failwith "unknown image format (height fields read PNG, JPEG, PGM and PPM)"

@@ -360,9 +360,39 @@ let read_ppm s =
   done;
   { w; h; data }
 
+let is_jpeg s = String.starts_with ~prefix:"\xFF\xD8\xFF" s
+
+(* the number of colour components of a JPEG's frame (1 grey, 3 colour),
+   from its first start-of-frame marker *)
+let jpeg_components s =
+  let n = String.length s in
+  let rec go i =
+    if i + 4 > n then failwith "JPEG without a frame header"
+    else if s.[i] <> '\xFF' then failwith "damaged JPEG markers"
+    else
+      let m = Char.code s.[i + 1] in
+      if m = 0xFF then go (i + 1)
+      else if m = 0xD8 || (m >= 0xD0 && m <= 0xD7) || m = 0x01 then go (i + 2)
+      else
+        let len = (Char.code s.[i + 2] lsl 8) lor Char.code s.[i + 3] in
+        (* SOF0 to SOF15, not DHT (C4), JPG (C8) or DAC (CC) *)
+        if m >= 0xC0 && m <= 0xCF && m <> 0xC4 && m <> 0xC8 && m <> 0xCC then
+          if i + 9 >= n then failwith "truncated JPEG frame header" else Char.code s.[i + 9]
+        else if m = 0xDA || m = 0xD9 then failwith "JPEG without a frame header"
+        else go (i + 2 + len)
+  in
+  go 2
+
+let read_jpeg path =
+  naming path @@ fun () ->
+  match Jpeg.load path [] with
+  | img -> of_camlimages img
+  | exception (Sys_error m | Invalid_argument m) -> failwith m
+
 let read path =
   let s = read_file path in
   if String.starts_with ~prefix:Png_codec.signature s then read_png path s
   else if String.starts_with ~prefix:"P6" s || String.starts_with ~prefix:"P3" s
   then naming path (fun () -> read_ppm s)
-  else failwith (path ^ ": unknown image format (expected PNG or PPM P3/P6)")
+  else if is_jpeg s then read_jpeg path
+  else failwith (path ^ ": unknown image format (expected PNG, JPEG or PPM P3/P6)")

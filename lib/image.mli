@@ -109,8 +109,20 @@ val read_alpha : string -> Bytes.t option
     other PNGs (a tRNS colour key is not read) and PPMs. The pixels are
     those {!read} gives. Raises [Failure] as {!read}. *)
 
+val is_jpeg : string -> bool
+(** Whether a file's contents start as a JPEG's. *)
+
+val jpeg_components : string -> int
+(** A JPEG's colour components (1 grey, 3 colour), read from the file's
+    contents. Raises [Failure] when it has no frame header. *)
+
+val read_jpeg : string -> rgb8
+(** Read a JPEG file (libjpeg through camlimages; grey as r = g = b).
+    Raises [Failure] naming the file on error. *)
+
 val read : string -> rgb8
-(** Read a PNG (any colour type camlimages reads; alpha dropped) or a PPM
+(** Read a PNG (any colour type camlimages reads; alpha dropped), a JPEG
+    (decoded by libjpeg through camlimages; grey as r = g = b) or a PPM
     (P6 or P3, maxval up to 65535, scaled to 8 bits), told apart by their
     first bytes. A PNG's chunks, CRCs and compressed data are checked before
     camlimages decodes it. Raises [Failure] with a message naming the file

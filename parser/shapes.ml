@@ -173,8 +173,8 @@ let height_field src opts =
     match src with
     | Hf_file (loc, kind, file) -> (
         (match kind with
-         | Some ("gif" | "tga" | "iff" | "sys" | "jpeg" | "tiff" | "bmp" | "exr" | "hdr" | "pot" as k) ->
-             Diag.error loc "%s (a height_field file type) is not supported by camlray: png, pgm and ppm are" k
+         | Some ("gif" | "tga" | "iff" | "sys" | "tiff" | "bmp" | "exr" | "hdr" | "pot" as k) ->
+             Diag.error loc "%s (a height_field file type) is not supported by camlray: png, jpeg, pgm and ppm are" k
          | _ -> ());
         let path =
           match Defaults.find_file loc file with

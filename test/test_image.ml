@@ -610,8 +610,65 @@ let atomic_tests =
             Alcotest.(check (list string)) "nothing created" [] (files dir)));
   ]
 
+(* JPEG: the frame's component count read from its markers (POV-Ray keeps
+   a grey JPEG as grey, a colour one as colour), decoding through
+   Image.read, and height fields from a colour JPEG by POV-Ray's 8-bit
+   colour rule (red the high byte, green the low one) *)
+let jpeg_tests =
+  let seg m body = "\xFF" ^ String.make 1 (Char.chr m) ^ (let n = String.length body + 2 in String.init 2 (fun i -> Char.chr (if i = 0 then n lsr 8 else n land 0xFF))) ^ body in
+  (* a frame header: precision 8, 16 x 8, [k] components of 3 bytes *)
+  let sof m k = seg m ("\008\000\008\000\016" ^ String.make 1 (Char.chr k) ^ String.make (3 * k) '\001') in
+  let soi = "\xFF\xD8" and app0 = seg 0xE0 "JFIF\000\001\001\000\000\001\000\001\000\000" in
+  [
+    Alcotest.test_case "jpeg_components reads the frame header" `Quick (fun () ->
+        Alcotest.(check int) "grey baseline" 1 (Image.jpeg_components (soi ^ app0 ^ sof 0xC0 1));
+        Alcotest.(check int) "colour progressive" 3 (Image.jpeg_components (soi ^ app0 ^ sof 0xC2 3));
+        Alcotest.(check int) "after a Huffman table (C4 is not a frame)" 1
+          (Image.jpeg_components (soi ^ seg 0xC4 "\000\001\002" ^ sof 0xC1 1));
+        Alcotest.(check int) "fill bytes before a marker" 3 (Image.jpeg_components (soi ^ "\xFF\xFF" ^ sof 0xC0 3));
+        Alcotest.check_raises "scan before any frame" (Failure "JPEG without a frame header") (fun () ->
+            ignore (Image.jpeg_components (soi ^ seg 0xDA "\001")));
+        Alcotest.check_raises "cut short" (Failure "truncated JPEG frame header") (fun () ->
+            ignore (Image.jpeg_components (soi ^ "\xFF\xC0\000\011\008\000"))));
+    Alcotest.test_case "a JPEG image_map and height field" `Quick (fun () ->
+        with_tmpdir (fun dir ->
+            let path = Filename.concat dir "c.jpg" in
+            let w = 16 and h = 8 in
+            let img = Rgb24.create w h in
+            for y = 0 to h - 1 do
+              for x = 0 to w - 1 do
+                Rgb24.set img x y ({ r = 200; g = 100 + (4 * x); b = 30 } : Rgb24.elt)
+              done
+            done;
+            Jpeg.save path [ Images.Save_Quality 100 ] (Images.Rgb24 img);
+            Alcotest.(check bool) "told apart by its first bytes" true (Image.is_jpeg (read_file path));
+            Alcotest.(check int) "colour" 3 (Image.jpeg_components (read_file path));
+            let im = Image.read path in
+            Alcotest.(check (pair int int)) "size" (w, h) (im.w, im.h);
+            (* libjpeg's decoding, near the colours written *)
+            let b x y k = Char.code (Bytes.get im.data ((3 * ((y * w) + x)) + k)) in
+            for x = 0 to w - 1 do
+              if abs (b x 3 0 - 200) > 3 || abs (b x 3 1 - (100 + (4 * x))) > 3 then
+                Alcotest.failf "pixel (%d, 3) decoded as (%d, %d)" x (b x 3 0) (b x 3 1)
+            done;
+            let hf = Hf_image.read path in
+            Alcotest.(check (pair int int)) "height field size" (w, h) (hf.w, hf.h);
+            for i = 0 to (w * h) - 1 do
+              let r = Char.code (Bytes.get im.data (3 * i)) and g = Char.code (Bytes.get im.data ((3 * i) + 1)) in
+              let expected = ((r * 256) + g) * 255 / 255 in
+              (* of_rgb8: (r/255 * 256 + g/255) * 255 in single precision, truncated *)
+              if abs (hf.v.(i) - expected) > 1 then
+                Alcotest.failf "height %d: %d, red %d green %d give %d" i hf.v.(i) r g expected
+            done;
+            write_file path "\xFF\xD8\xFF\xE0garbage";
+            match Image.read path with
+            | _ -> Alcotest.fail "a damaged JPEG was read"
+            | exception Failure m ->
+                if not (contains m path) then Alcotest.failf "the message %S does not name the file" m));
+  ]
+
 let tests =
   ( "image",
-    (table_edges :: encoding_tests) @ png_tests @ ppm_tests @ pfm_tests @ metric_tests
+    (table_edges :: encoding_tests) @ png_tests @ ppm_tests @ pfm_tests @ metric_tests @ jpeg_tests
     @ atomic_tests
     @ List.map QCheck_alcotest.to_alcotest props )
