@@ -168,3 +168,9 @@ let image_channel l c =
   | "filter" -> `Filter
   | "transmit" -> `Transmit
   | c -> Diag.error (loc l) "an image_map takes filter or transmit here, not %s" c
+
+(* an image file type camlray reads where POV-Ray takes any *)
+let readable_kind l k =
+  match k with
+  | "jpeg" | "ppm" -> ()
+  | k -> Diag.error (loc l) "%s images are not read by camlray here: png, jpeg and ppm are" k

@@ -85,3 +85,7 @@ val rainbow :
 val image_channel : Lexing.position * Lexing.position -> string -> [ `Filter | `Transmit ]
 (** An image_map's [filter ...] or [transmit ...]: any other channel is a
     located error. *)
+
+val readable_kind : Lexing.position * Lexing.position -> string -> unit
+(** An image_map's, image_pattern's or bump_map's file type: jpeg and ppm
+    are read (png has its own token); any other is a located error. *)

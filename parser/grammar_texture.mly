@@ -219,7 +219,7 @@
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
   | OBJECT LBRACE k = pattern_object cs = block_cells RBRACE ms = list(pigment_mod)
       { let p = Texdesc.(pigment (apply ms { (of_pattern k) with cells = cs })) in fun _ -> p }
-  | IMAGE_MAP LBRACE ioption(PNG) f = string_arg file_gamma = ioption(file_gamma) ims = list(image_item) RBRACE
+  | IMAGE_MAP LBRACE ioption(image_file_kind) f = string_arg file_gamma = ioption(file_gamma) ims = list(image_item) RBRACE
     ms = list(pigment_mod)
       { let p = Texdesc.image_map (loc $loc(f)) ?file_gamma ~gamma_decode:(Defaults.version () >= 3.7) f ims in
         let p = Texdesc.(pigment (apply ms (of_pigment p))) in
@@ -257,6 +257,12 @@
       { let x = fl $loc(g) g in
         if not (x > 0.) then Diag.error (loc $loc(g)) "an image file's gamma must be positive, found %g" x;
         x }
+
+(* the file type before an image's name: PNG, JPEG and PPM are read (by
+   their first bytes), others refused by name *)
+image_file_kind:
+  | PNG { () }
+  | k = IMAGE_KIND { readable_kind $loc k }
 
 %public image_item:
   | ONCE { Texdesc.Every (fun (i : Pigment.image) -> { i with once = true }) }
@@ -308,7 +314,7 @@
   | DENSITY_FILE DF3 f = string_arg { Texdesc.density_file (loc $loc(f)) f }
   (* image_pattern { [png] FILE [gamma G] [once] [map_type N] [interpolate N]
      [use_color|use_index|use_alpha] } *)
-  | IMAGE_PATTERN LBRACE ioption(PNG) f = string_arg g = ioption(file_gamma) items = list(image_pattern_item) RBRACE
+  | IMAGE_PATTERN LBRACE ioption(image_file_kind) f = string_arg g = ioption(file_gamma) items = list(image_pattern_item) RBRACE
       { let alpha = List.fold_left (fun a i -> match i with `Alpha b -> b | _ -> a) false items in
         let interpolate = List.fold_left (fun a i -> match i with `Interpolate n -> n | _ -> a) 0 items in
         let map_type = List.fold_left (fun a i -> match i with `Map_type n -> n | _ -> a) 0 items in
@@ -569,7 +575,7 @@
         let n = Some (Texdesc.normal p) in
         fun _ -> n }
   (* bump_map { png FILE [bump_size F] [interpolate N] [use_index|use_color] [map_type 0] [once] } *)
-  | BUMP_MAP LBRACE ioption(PNG) f = string_arg items = list(bump_item) RBRACE ms = list(normal_mod)
+  | BUMP_MAP LBRACE ioption(image_file_kind) f = string_arg items = list(bump_item) RBRACE ms = list(normal_mod)
       { let index = List.fold_left (fun a i -> match i with `Index b -> Some b | _ -> a) None items in
         let interpolate = List.fold_left (fun a i -> match i with `Interpolate n -> n | _ -> a) 0 items in
         let once = List.exists (fun i -> i = `Once) items in

@@ -107,6 +107,23 @@ let image_map () =
   Scn.color "right texel, repeated" (0., 1., 0.) (px "<-1.75, -0.5, 0>");
   Sys.remove file
 
+(* an image's file type before its name: png, jpeg and ppm read (by their
+   bytes), others refused by name where they are written *)
+let image_kinds () =
+  let file = Printf.sprintf "camlray-kind-%d.ppm" (Unix.getpid ()) in
+  Image.write_ppm file { Image.w = 1; h = 1; data = Bytes.of_string "\255\000\000" };
+  Fun.protect
+    ~finally:(fun () -> Sys.remove file)
+    (fun () ->
+      let src kind = Printf.sprintf "plane { z, 1 pigment { image_map { %s \"%s\" } } finish { ambient 1 diffuse 0 } }" kind file in
+      Scn.color "ppm keyword" (1., 0., 0.) (Scn.pixel (src "ppm"));
+      Scn.color "no keyword" (1., 0., 0.) (Scn.pixel (src ""));
+      let d = Scn.error (src "gif") in
+      Alcotest.(check (pair int int)) "gif: where" (1, 36) (Camlray_lang.Loc.line d.loc, Camlray_lang.Loc.col d.loc);
+      if not (Scn.contains d.msg "gif images are not read") then Alcotest.failf "gif: %S" d.msg;
+      let d = Scn.error (Printf.sprintf "plane { z, 1 normal { bump_map { tga \"%s\" } } }" file) in
+      if not (Scn.contains d.msg "tga images are not read") then Alcotest.failf "bump_map tga: %S" d.msg)
+
 (* POV-Ray's [filter N, A] and [transmit N, A] in an image_map: the
    filter or transmit of palette entry N (int (N + 0.01)), after and
    before [... all A] in the order written; an image without a palette,
@@ -799,6 +816,7 @@ let tests =
       Alcotest.test_case "normal bump size after a comma" `Quick normal_comma;
       Alcotest.test_case "image_map" `Quick image_map;
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
+      Alcotest.test_case "image file types" `Quick image_kinds;
       Alcotest.test_case "spiral1 and spiral2" `Quick spirals;
       Alcotest.test_case "quilted" `Quick quilted;
       Alcotest.test_case "mandel" `Quick mandel;
