@@ -59,3 +59,11 @@ val value : t -> Vec3.m -> float
     of the sphere, the axis of the cylinder or the torus, the torus's
     core circle), as POV-Ray's image_pattern. Inlined where it is
     called: it allocates nothing. *)
+
+val locate : w:int -> h:int -> once:bool -> map_type:int -> Vec3.m -> Vec3.m -> bool
+(** [locate ~w ~h ~once ~map_type q c]: POV-Ray's map_pos (imageutil.cpp)
+    for a [w] x [h] image: the point [q] (pattern space) taken to the
+    image's column [c.mx] and row from the top [c.my], in [0, w) and
+    [0, h), its tiny offset included; false off the image ([once], or a
+    point the mapping leaves out). Image maps, image patterns and bump
+    maps all place points by it. Allocates nothing. *)

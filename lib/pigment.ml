@@ -101,30 +101,21 @@ let pixel (im : image) i j =
   let i = ((i mod im.w) + im.w) mod im.w and j = ((j mod im.h) + im.h) mod im.h in
   im.px.((j * im.w) + i)
 
-(* the longitude of (x, z) from +x towards +z, in turns *)
-let[@inline] longitude x z =
-  if (x *. x) +. (z *. z) = 0. then 0.
-  else
-    let a = Float.atan2 z x in
-    (if a < 0. then a +. (2. *. Float.pi) else a) /. (2. *. Float.pi)
-
 (* the image at [p] (in its own space) into [o]; interpolated: the lerp of
    two lerps, as [lerp] makes it, channel by channel (no tuple or closure:
    the floats stay unboxed) *)
+(* the point's place on the image, per domain *)
+let coords_key = Scratch.key Vec3.m
+
+(* POV-Ray's map_pos ({!Bump_map.locate}): column and row from the top,
+   with its tiny offset, so that a point on a row's edge takes the row
+   POV-Ray takes (the row above, by (1 - v) h, every fifth row of a
+   120-row image seen at one pixel per 0.01) *)
 let image_into (im : image) (p : Vec3.m) (o : out) =
-  let x = p.mx and y = p.my and z = p.mz in
-  let mt = im.map_type in
-  (* spherical: the latitude from the distance to the centre *)
-  let l = if mt = 1 then Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) else 1. in
-  let u = if mt = 1 then if l = 0. then 0. else longitude x z else if mt = 2 then longitude x z else x in
-  let v =
-    if mt = 1 then if l = 0. then 0. else 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi)
-    else y
-  in
-  if im.once && (u < 0. || u >= 1. || v < 0. || v >= 1.) then set o clear
+  let c = Scratch.get coords_key in
+  if not (Bump_map.locate ~w:im.w ~h:im.h ~once:im.once ~map_type:im.map_type p c) then set o clear
   else
-    let u = u -. Float.floor u and v = v -. Float.floor v in
-    let fx = u *. float_of_int im.w and fy = (1. -. v) *. float_of_int im.h in
+    let fx = c.mx and fy = c.my in
     if not im.interpolate then set o (pixel im (int_of_float fx) (int_of_float fy))
     else begin
       let x = fx -. 0.5 and y = fy -. 0.5 in

@@ -107,6 +107,29 @@ let image_map () =
   Scn.color "right texel, repeated" (0., 1., 0.) (px "<-1.75, -0.5, 0>");
   Sys.remove file
 
+(* a point on the edge between two rows takes the upper row, as POV-Ray's
+   map_pos does with its tiny offset ((1 - v) h gave the lower one: every
+   fifth row of a 120-row image seen at 0.01 a pixel differed) *)
+let image_map_edges () =
+  let file = Printf.sprintf "camlray-rows-%d.png" (Unix.getpid ()) in
+  (* one column, rows from the top: red, green, blue, white *)
+  Image.write_png file { Image.w = 1; h = 4; data = Bytes.of_string "\255\000\000\000\255\000\000\000\255\255\255\255" };
+  Fun.protect
+    ~finally:(fun () -> Sys.remove file)
+    (fun () ->
+      let pig =
+        match (Scn.compile (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\" } } }" file)).objects.(0).texture with
+        | { pigment; _ } :: _ -> pigment
+        | [] -> Alcotest.fail "no texture"
+      in
+      let at y = let c = Pigment.eval pig (Vec3.make 0.5 y 0.) in (c.c.r, c.c.g, c.c.b) in
+      let rgb = Alcotest.(triple (float 0.) (float 0.) (float 0.)) in
+      Alcotest.check rgb "inside the lowest row" (1., 1., 1.) (at 0.1);
+      Alcotest.check rgb "on the edge 0.25: the row above (blue)" (0., 0., 1.) (at 0.25);
+      Alcotest.check rgb "on the edge 0.5: green" (0., 1., 0.) (at 0.5);
+      Alcotest.check rgb "on the edge 0.75: red" (1., 0., 0.) (at 0.75);
+      Alcotest.check rgb "on the bottom edge 0: the lowest row" (1., 1., 1.) (at 0.))
+
 (* an image's file type before its name: png, jpeg and ppm read (by their
    bytes), others refused by name where they are written *)
 let image_kinds () =
@@ -817,6 +840,7 @@ let tests =
       Alcotest.test_case "image_map" `Quick image_map;
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
       Alcotest.test_case "image file types" `Quick image_kinds;
+      Alcotest.test_case "image_map rows' edges as POV-Ray's map_pos" `Quick image_map_edges;
       Alcotest.test_case "spiral1 and spiral2" `Quick spirals;
       Alcotest.test_case "quilted" `Quick quilted;
       Alcotest.test_case "mandel" `Quick mandel;
