@@ -270,10 +270,10 @@ image_file_kind:
       { let n = Value.to_int (loc $loc(e)) e in Texdesc.Every (fun (i : Pigment.image) -> { i with interpolate = n > 0 }) }
   | MAP_TYPE e = param
       { let n = Value.to_int (loc $loc(e)) e in
-        if n < 0 || n > 2 then
-          Diag.warning (loc $loc)
-            (Printf.sprintf "an image_map's map_type %d is drawn planar: camlray has 0 (planar), 1 (spherical) and 2 (cylindrical)" n);
-        let n = if n < 0 || n > 2 then 0 else n in
+        (* POV-Ray's parser takes these; its map_pos draws 7 (angular)
+           planar, as Bump_map.locate does *)
+        if not (List.mem n [ 0; 1; 2; 5; 7 ]) then
+          Diag.error (loc $loc(e)) "an image_map's map_type must be 0 (planar), 1 (spherical), 2 (cylindrical), 5 (torus) or 7, found %d" n;
         Texdesc.Every (fun (i : Pigment.image) -> { i with map_type = n }) }
   | c = CHANNEL ALL e = param
       { let x = fl $loc(e) e in

@@ -130,6 +130,30 @@ let image_map_edges () =
       Alcotest.check rgb "on the edge 0.75: red" (1., 0., 0.) (at 0.75);
       Alcotest.check rgb "on the bottom edge 0: the lowest row" (1., 1., 1.) (at 0.))
 
+(* map_type 5: the torus of major radius 1 about y, columns by the angle
+   about y from +x towards +z (POV-Ray's map_pos; drawn planar before);
+   a map_type POV-Ray's parser refuses is a located error *)
+let image_map_torus () =
+  let file = Printf.sprintf "camlray-torus-%d.png" (Unix.getpid ()) in
+  (* one row of four columns: red, green, blue, white *)
+  Image.write_png file { Image.w = 4; h = 1; data = Bytes.of_string "\255\000\000\000\255\000\000\000\255\255\255\255" };
+  Fun.protect
+    ~finally:(fun () -> Sys.remove file)
+    (fun () ->
+      let pig =
+        match (Scn.compile (Printf.sprintf "torus { 1, 0.25 pigment { image_map { png \"%s\" map_type 5 } } }" file)).objects.(0).texture with
+        | { pigment; _ } :: _ -> pigment
+        | [] -> Alcotest.fail "no texture"
+      in
+      let at x y z = let c = Pigment.eval pig (Vec3.make x y z) in (c.c.r, c.c.g, c.c.b) in
+      let rgb = Alcotest.(triple (float 0.) (float 0.) (float 0.)) in
+      Alcotest.check rgb "an eighth of a turn: the first column" (1., 0., 0.) (at 0.8 0. 0.8);
+      Alcotest.check rgb "a quarter turn, towards +z: the second" (0., 1., 0.) (at 0. 0. 1.25);
+      Alcotest.check rgb "five eighths of a turn: the third" (0., 0., 1.) (at (-0.8) 0.1 (-0.8));
+      Alcotest.check rgb "seven eighths: the fourth" (1., 1., 1.) (at 0.8 (-0.1) (-0.8));
+      let d = Scn.error (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\" map_type 3 } } }" file) in
+      if not (Scn.contains d.msg "map_type must be 0") then Alcotest.failf "map_type 3: %S" d.msg)
+
 (* an image's file type before its name: png, jpeg and ppm read (by their
    bytes), others refused by name where they are written *)
 let image_kinds () =
@@ -840,6 +864,7 @@ let tests =
       Alcotest.test_case "image_map" `Quick image_map;
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
       Alcotest.test_case "image file types" `Quick image_kinds;
+      Alcotest.test_case "image_map map_type 5 (torus)" `Quick image_map_torus;
       Alcotest.test_case "image_map rows' edges as POV-Ray's map_pos" `Quick image_map_edges;
       Alcotest.test_case "spiral1 and spiral2" `Quick spirals;
       Alcotest.test_case "quilted" `Quick quilted;
