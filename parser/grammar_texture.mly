@@ -270,10 +270,9 @@ image_file_kind:
       { let n = Value.to_int (loc $loc(e)) e in Texdesc.Every (fun (i : Pigment.image) -> { i with interpolate = n > 0 }) }
   | MAP_TYPE e = param
       { let n = Value.to_int (loc $loc(e)) e in
-        (* POV-Ray's parser takes these; its map_pos draws 7 (angular)
-           planar, as Bump_map.locate does *)
-        if not (List.mem n [ 0; 1; 2; 5; 7 ]) then
-          Diag.error (loc $loc(e)) "an image_map's map_type must be 0 (planar), 1 (spherical), 2 (cylindrical), 5 (torus) or 7, found %d" n;
+        (* the ones POV-Ray 3.7.0's parser takes (7, angular, it refuses) *)
+        if not (List.mem n [ 0; 1; 2; 5 ]) then
+          Diag.error (loc $loc(e)) "an image_map's map_type must be 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), found %d" n;
         Texdesc.Every (fun (i : Pigment.image) -> { i with map_type = n }) }
   | c = CHANNEL ALL e = param
       { let x = fl $loc(e) e in
