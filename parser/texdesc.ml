@@ -300,17 +300,28 @@ let bump_map loc file ~index ~interpolate ~once =
     | None -> Diag.error loc "cannot find bump_map image %s (looked in the scene's folder and the include path)" file
   in
   let palette = png_palette file in
+  let fail e = Diag.error loc "cannot read bump_map %s: %s" file e in
   (* POV-Ray 3.7 reads a bump map's colours unless use_index (measured on
-     a palette PNG: no keyword and use_color alike, use_index apart) *)
-  if palette && index = Some true then
+     a palette PNG: no keyword and use_color alike, use_index apart); by
+     index, the heights are the palette's indices as they are, 0 to 255
+     (imageutil.cpp's bump_map: Amount * index), a relief far steeper
+     than the colours' *)
+  let by_palette = palette && index = Some true in
+  if by_palette && interpolate <> 0 then
     Diag.error loc
-      "a bump_map by palette index is not supported by camlray (%s): add use_color to read its colours' intensity"
+      "an interpolated bump_map by palette index is not supported by camlray (%s): leave out interpolate, or add use_color"
       file;
-  let img =
-    try Image.read file with Sys_error e | Failure e -> Diag.error loc "cannot read bump_map %s: %s" file e
+  let img = try Image.read file with Sys_error e | Failure e -> fail e in
+  let heights =
+    if by_palette then
+      match Image.read_indices file with
+      | Some (_, _, idx) -> Float.Array.init (img.w * img.h) (fun i -> float_of_int (Char.code (Bytes.get idx i)))
+      | None -> fail "no palette read"
+      | exception (Sys_error e | Failure e) -> fail e
+    else
+      let c i k = float_of_int (Char.code (Bytes.get img.data ((3 * i) + k))) /. 255. in
+      Float.Array.init (img.w * img.h) (fun i -> Bump_map.grey (c i 0) (c i 1) (c i 2))
   in
-  let c i k = float_of_int (Char.code (Bytes.get img.data ((3 * i) + k))) /. 255. in
-  let heights = Float.Array.init (img.w * img.h) (fun i -> Bump_map.grey (c i 0) (c i 1) (c i 2)) in
   let b = Bump_map.make ~w:img.w ~h:img.h ~once ~interpolate ~by_index:(index = Some true) heights in
   { empty with bump = Some b; amount = 0.5 }
 
