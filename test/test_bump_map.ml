@@ -88,7 +88,10 @@ let errors () =
   (* (written where the scene may read: the working folder) *)
   let f = Printf.sprintf "bump-map-palette-%d.png" (Unix.getpid ()) in
   Helpers.write_file f (Png_codec.signature ^ "\000\000\000\013IHDR\000\000\000\001\000\000\000\001\008\003\000\000\000");
-  Scn.check_message (Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" use_index } } }" f) "palette index";
+  Scn.check_message (Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" use_index interpolate 2 } } }" f)
+    "interpolated bump_map by palette index";
+  (* read by index, not interpolated: the damaged file is told *)
+  Scn.check_message (Printf.sprintf "plane { z, 0 normal { bump_map { png \"%s\" use_index } } }" f) "cannot read bump_map";
   Sys.remove f
 
 
