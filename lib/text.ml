@@ -15,13 +15,13 @@ let glyph_count t = Array.length t.first - 1
 let thickness t = t.thickness
 let bounds t = (t.lo, t.hi)
 
-let make font s ~thickness ~(offset : Vec3.t) =
+let make_codes font codes ~thickness ~(offset : Vec3.t) =
   let f = 1. /. float (Ttf.units_per_em font) in
   let pieces = ref [] and firsts = ref [ 0 ] and boxes = ref [] and count = ref 0 in
   let total_x = ref 0. and total_y = ref 0. and last = ref 0 in
-  String.iteri
-    (fun i ch ->
-      let g = Ttf.glyph_index font (Char.code ch) in
+  Array.iteri
+    (fun i code ->
+      let g = Ttf.glyph_index font code in
       let gl = Ttf.glyph font g in
       let aw = float (Ttf.advance font g) and lsb = float (Ttf.lsb font g) in
       (* POV-Ray's setting: the first glyph's left edge at 0, then each
@@ -64,7 +64,7 @@ let make font s ~thickness ~(offset : Vec3.t) =
         gl.contours;
       firsts := !count :: !firsts;
       boxes := [ !bx0; !by0; !bx1; !by1 ] :: !boxes)
-    s;
+    codes;
   let segs = Float.Array.of_list (List.concat (List.rev !pieces)) in
   let boxes = Float.Array.of_list (List.concat (List.rev !boxes)) in
   let n = Float.Array.length boxes / 4 in
@@ -78,6 +78,8 @@ let make font s ~thickness ~(offset : Vec3.t) =
   done;
   let lo, hi = if !lo.x <= !hi.x then (!lo, !hi) else (Vec3.zero, Vec3.make 0. 0. thickness) in
   { segs; first = Array.of_list (List.rev !firsts); boxes; thickness; lo; hi }
+
+let make font s ~thickness ~offset = make_codes font (Array.init (String.length s) (fun i -> Char.code s.[i])) ~thickness ~offset
 
 let[@inline] g a i = Float.Array.unsafe_get a i
 

@@ -6,8 +6,12 @@
 
 type t
 
+val make_codes : Ttf.t -> int array -> thickness:float -> offset:Vec3.t -> t
+(** The glyphs of these character codes (Unicode code points, as the
+    font's character map reads them), set in a row. *)
+
 val make : Ttf.t -> string -> thickness:float -> offset:Vec3.t -> t
-(** The string's bytes are character codes. *)
+(** [make_codes] of the string's bytes. *)
 
 val glyph_count : t -> int
 val thickness : t -> float

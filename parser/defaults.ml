@@ -6,6 +6,7 @@ let first = ref None
 let items_seen = ref false
 let tex = ref (Texture.layer Pigment.black Finish.default)
 let tex_set = ref false
+let charset_ = ref `Ascii
 
 let reset () =
   version_ := 3.62;
@@ -13,9 +14,12 @@ let reset () =
   first := None;
   items_seen := false;
   tex := Texture.layer Pigment.black Finish.default;
-  tex_set := false
+  tex_set := false;
+  charset_ := `Ascii
 
 let version () = !version_
+let charset () = !charset_
+let set_charset c = charset_ := c
 
 let set_version v =
   version_ := v;

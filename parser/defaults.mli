@@ -5,6 +5,12 @@
 
 val reset : unit -> unit
 val version : unit -> float
+
+val charset : unit -> [ `Ascii | `Utf8 | `Sys ]
+(** global_settings' [charset] (POV-Ray's default: ascii): how a text
+    object's string becomes characters. *)
+
+val set_charset : [ `Ascii | `Utf8 | `Sys ] -> unit
 val set_version : float -> unit
 val restore_version : float -> unit
 (** Put back the version an included file started with, at its end

@@ -78,6 +78,32 @@ let poly order_loc loc order v =
 (* fonts read in this process, by path *)
 let fonts : (string, Ttf.t) Hashtbl.t = Hashtbl.create 4
 
+(* The characters of a text's string by global_settings' charset, as
+   POV-Ray 3.7 reads them: ascii (its default) keeps bytes below 128 and
+   puts a space for each other byte, with a warning; utf8 decodes; sys
+   POV-Ray cannot convert on this platform (its error, for any text) *)
+let text_codes loc s =
+  match Defaults.charset () with
+  | `Sys -> Diag.error loc "charset sys: system-specific text cannot be converted here (POV-Ray's error too): use utf8"
+  | `Ascii ->
+      let codes = Array.init (String.length s) (fun i -> Char.code s.[i]) in
+      if Array.exists (fun c -> c >= 128) codes then begin
+        Diag.warning loc "non-ASCII characters replaced by spaces, as POV-Ray does (charset ascii): add charset utf8 to global_settings";
+        Array.map (fun c -> if c >= 128 then 32 else c) codes
+      end
+      else codes
+  | `Utf8 ->
+      let n = String.length s in
+      let rec go i acc =
+        if i >= n then Array.of_list (List.rev acc)
+        else
+          let d = String.get_utf_8_uchar s i in
+          if not (Uchar.utf_decode_is_valid d) then
+            Diag.error loc "this text's string is not valid UTF-8 (byte %d), as charset utf8 requires" (i + 1)
+          else go (i + Uchar.utf_decode_length d) (Uchar.to_int (Uchar.utf_decode_uchar d) :: acc)
+      in
+      go 0 []
+
 let text loc font chars thickness offset =
   (* POV-Ray also tries the name with .ttf added *)
   let path =
@@ -99,7 +125,7 @@ let text loc font chars thickness offset =
         | exception Failure m -> Diag.error loc "cannot read font %s" m)
   in
   if thickness < 0. then Diag.error loc "a text's thickness must be >= 0, found %g" thickness;
-  Sdl.Text { font; chars; thickness; offset; glyphs = Text.make f chars ~thickness ~offset }
+  Sdl.Text { font; chars; thickness; offset; glyphs = Text.make_codes f (text_codes loc chars) ~thickness ~offset }
 
 (* a prism's or lathe's spline and sweep words, its counted 2-D points *)
 let spline_words loc what kinds =

@@ -149,6 +149,17 @@ and ident t name loc =
                 let f, text = function_body t loc [ "x"; "y"; "z" ] in
                 (Parser.FUNCTION_SIZED (w, h, f, text), loc)
           else if List.mem name [ "trace"; "inside"; "min_extent"; "max_extent" ] then probe t name loc
+          else if name = "charset" then begin
+            (* global_settings { charset ascii | utf8 | sys }: how text
+               objects read their strings *)
+            let w = raw_next t in
+            (match w.raw with
+            | Ident "ascii" -> Defaults.set_charset `Ascii
+            | Ident "utf8" -> Defaults.set_charset `Utf8
+            | Tok (Parser.IMAGE_KIND "sys") -> Defaults.set_charset `Sys
+            | _ -> fail t w.loc "charset takes ascii, utf8 or sys");
+            next t
+          end
           else if name = "hf_gray_16" then begin
             (* an output setting (16-bit grey files): read and ignored *)
             (match (raw_peek t).raw with

@@ -125,4 +125,49 @@ let internal_fonts =
         | Ok _ -> Alcotest.fail "internal 4 accepted"
       end)
 
-let tests = ("text", [ facts; o_ring; internal_fonts ] @ List.map QCheck_alcotest.to_alcotest [ surface; damaged ])
+(* global_settings { charset }: POV-Ray 3.7 (checked with its renders)
+   puts a space for each byte past ASCII by default (charset ascii),
+   decodes UTF-8 with charset utf8, and refuses text under charset sys on
+   this platform *)
+let charset =
+  Alcotest.test_case "charset ascii, utf8, sys" `Quick
+    (with_font (fun f ->
+         let glyphs settings str =
+           let src =
+             Printf.sprintf "global_settings { %s }\ntext { ttf \"timrom.ttf\" \"%s\" 0.1, 0 }\n" settings str
+           in
+           match Camlray_lang.Parse.string src with
+           | Ok { Camlray_lang.Sdl.items; _ } -> (
+               match
+                 List.find_map
+                   (function
+                     | Camlray_lang.Sdl.Object { shape = Camlray_lang.Sdl.Text { glyphs; _ }; _ } -> Some glyphs
+                     | _ -> None)
+                   items
+               with
+               | Some g -> g
+               | None -> Alcotest.fail "no text")
+           | Error d -> Alcotest.failf "%s" (Camlray_lang.Diag.to_string d)
+         in
+         let same what a b =
+           Alcotest.(check int) (what ^ ": glyphs") (Text.glyph_count a) (Text.glyph_count b);
+           let (l1 : Vec3.t), (h1 : Vec3.t) = Text.bounds a and (l2 : Vec3.t), (h2 : Vec3.t) = Text.bounds b in
+           Alcotest.(check (list (float 1e-12))) (what ^ ": bounds") [ l1.x; l1.y; h1.x; h1.y ] [ l2.x; l2.y; h2.x; h2.y ]
+         in
+         let codes c = Text.make_codes f c ~thickness:0.1 ~offset:Vec3.zero in
+         same "ascii by default: a space for each byte of the copyright sign" (glyphs "assumed_gamma 1" "A\xc2\xa9B") (codes [| 65; 32; 32; 66 |]);
+         same "charset ascii" (glyphs "charset ascii" "A\xc2\xa9B") (codes [| 65; 32; 32; 66 |]);
+         same "charset utf8: one copyright sign" (glyphs "charset utf8" "A\xc2\xa9B") (codes [| 65; 169; 66 |]);
+         if Ttf.glyph_index f 169 = 0 then Alcotest.fail "timrom.ttf has no copyright sign: the test shows nothing";
+         let err src sub =
+           match Camlray_lang.Parse.string src with
+           | Ok _ -> Alcotest.failf "accepted: %s" src
+           | Error d ->
+               let m = Camlray_lang.Diag.to_string d in
+               if not (Scn.contains m sub) then Alcotest.failf "message %S lacks %S" m sub
+         in
+         err "global_settings { charset sys }\ntext { ttf \"timrom.ttf\" \"A\" 0.1, 0 }" "2:23: error: charset sys";
+         err "global_settings { charset utf8 }\ntext { ttf \"timrom.ttf\" \"A\xc3\" 0.1, 0 }" "2:27: error: invalid UTF-8 input";
+         err "global_settings { charset latin1 }" "1:27: error: charset takes ascii, utf8 or sys"))
+
+let tests = ("text", [ facts; o_ring; internal_fonts; charset ] @ List.map QCheck_alcotest.to_alcotest [ surface; damaged ])
