@@ -1,7 +1,7 @@
 (* Objects: shapes, CSG, object modifiers. *)
 (* (the OCaml header, opening Camlray and Gram, is in grammar_lang.mly) *)
 
-%token SPHERE PLANE OBJECT NO_SHADOW HOLLOW NO_IMAGE NO_REFLECTION DOUBLE_ILLUMINATE
+%token SPHERE PLANE OBJECT NO_SHADOW HOLLOW NO_IMAGE NO_REFLECTION NO_RADIOSITY DOUBLE_ILLUMINATE
 %token BOX CYLINDER CONE TORUS DISC TRIANGLE SMOOTH_TRIANGLE MESH MESH2 OPEN STURM
 %token VERTEX_VECTORS NORMAL_VECTORS UV_VECTORS FACE_INDICES NORMAL_INDICES UV_INDICES
 %token TEXTURE_LIST INSIDE_VECTOR
@@ -275,6 +275,9 @@ hf_option:
 object_flag:
   | NO_IMAGE { Sdl.no_image }
   | NO_REFLECTION { Sdl.no_reflection }
+  (* POV-Ray hides the object from its radiosity's sample rays: whitted
+     mode has none (read, no effect), mc mode's indirect light sees it *)
+  | NO_RADIOSITY { 0 }
   | DOUBLE_ILLUMINATE { Sdl.double_illuminate }
 
 (* type 0|1, flatness: how POV-Ray keeps its subpatches (camlray always

@@ -43,7 +43,7 @@ let scene_keywords =
 let object_keywords =
   [
     ("sphere", SPHERE); ("plane", PLANE); ("object", OBJECT); ("no_shadow", NO_SHADOW);
-    ("no_image", NO_IMAGE); ("no_reflection", NO_REFLECTION); ("double_illuminate", DOUBLE_ILLUMINATE);
+    ("no_image", NO_IMAGE); ("no_reflection", NO_REFLECTION); ("no_radiosity", NO_RADIOSITY); ("double_illuminate", DOUBLE_ILLUMINATE);
     ("hollow", HOLLOW); ("box", BOX); ("cylinder", CYLINDER); ("cone", CONE); ("torus", TORUS);
     ("disc", DISC); ("triangle", TRIANGLE); ("smooth_triangle", SMOOTH_TRIANGLE); ("mesh", MESH);
     ("mesh2", MESH2); ("open", OPEN); ("sturm", STURM); ("vertex_vectors", VERTEX_VECTORS);
