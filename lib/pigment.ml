@@ -3,7 +3,7 @@ type image = {
   h : int;
   px : Color.rgbft array;
   once : bool;
-  interpolate : bool;
+  interpolate : int;
   map_type : int;
 }
 
@@ -101,6 +101,65 @@ let pixel (im : image) i j =
   let i = ((i mod im.w) + im.w) mod im.w and j = ((j mod im.h) + im.h) mod im.h in
   im.px.((j * im.w) + i)
 
+(* a corner for normalized-distance and bicubic interpolation, as POV-Ray
+   fetches it: repeated images wrap, a [once] image gives its edge *)
+let corner (im : image) i j =
+  if im.once then im.px.((Int.max 0 (Int.min (im.h - 1) j) * im.w) + Int.max 0 (Int.min (im.w - 1) i))
+  else pixel im i j
+
+(* o += k c, channel by channel *)
+let[@inline] add_scaled (o : out) k (c : Color.rgbft) =
+  o.r <- o.r +. (k *. c.c.r);
+  o.g <- o.g +. (k *. c.c.g);
+  o.b <- o.b +. (k *. c.c.b);
+  o.filter <- o.filter +. (k *. c.filter);
+  o.transmit <- o.transmit +. (k *. c.transmit)
+
+let zero (o : out) =
+  o.r <- 0.;
+  o.g <- 0.;
+  o.b <- 0.;
+  o.filter <- 0.;
+  o.transmit <- 0.
+
+(* POV-Ray's cubic weights (imageutil.cpp) of the four texels around, for
+   the fraction [p] of the coordinate *)
+let[@inline] cubic_weight p k =
+  let q = 1. -. p in
+  if k = 0 then -0.5 *. p *. q *. q
+  else if k = 1 then 0.5 *. q *. ((q *. ((3. *. p) +. 1.)) +. 1.)
+  else if k = 2 then 0.5 *. p *. ((p *. ((3. *. q) +. 1.)) +. 1.)
+  else -0.5 *. q *. p *. p
+
+(* interpolate 4: the four texels around (the one at [ix, iy], left, up,
+   up-left), each by the inverse square of its distance, normalised *)
+let norm_dist_into (im : image) fx fy (o : out) =
+  let x = fx +. 0.5 and y = fy +. 0.5 in
+  let ix = int_of_float x and iy = int_of_float y in
+  let p = x -. float_of_int ix and q = y -. float_of_int iy in
+  let p1 = 1. -. p and q1 = 1. -. q in
+  let w0 = 1. /. ((p1 *. p1) +. (q1 *. q1)) and w1 = 1. /. ((p *. p) +. (q1 *. q1)) in
+  let w2 = 1. /. ((p1 *. p1) +. (q *. q)) and w3 = 1. /. ((p *. p) +. (q *. q)) in
+  let s = w0 +. w1 +. w2 +. w3 in
+  zero o;
+  add_scaled o (w0 /. s) (corner im ix iy);
+  add_scaled o (w1 /. s) (corner im (ix - 1) iy);
+  add_scaled o (w2 /. s) (corner im ix (iy - 1));
+  add_scaled o (w3 /. s) (corner im (ix - 1) (iy - 1))
+
+(* interpolate 3: the 4 x 4 texels around, by cubic weights along each
+   axis *)
+let bicubic_into (im : image) fx fy (o : out) =
+  let x = fx +. 0.5 and y = fy +. 0.5 in
+  let ix = int_of_float x and iy = int_of_float y in
+  let p = x -. float_of_int ix and q = y -. float_of_int iy in
+  zero o;
+  for i = 0 to 3 do
+    for j = 0 to 3 do
+      add_scaled o (cubic_weight p i *. cubic_weight q j) (corner im (ix + i - 2) (iy + j - 2))
+    done
+  done
+
 (* the image at [p] (in its own space) into [o]; interpolated: the lerp of
    two lerps, as [lerp] makes it, channel by channel (no tuple or closure:
    the floats stay unboxed) *)
@@ -116,7 +175,9 @@ let image_into (im : image) (p : Vec3.m) (o : out) =
   if not (Bump_map.locate ~w:im.w ~h:im.h ~once:im.once ~map_type:im.map_type p c) then set o clear
   else
     let fx = c.mx and fy = c.my in
-    if not im.interpolate then set o (pixel im (int_of_float fx) (int_of_float fy))
+    if im.interpolate = 0 then set o (pixel im (int_of_float fx) (int_of_float fy))
+    else if im.interpolate = 4 then norm_dist_into im fx fy o
+    else if im.interpolate = 3 then bicubic_into im fx fy o
     else begin
       let x = fx -. 0.5 and y = fy -. 0.5 in
       let i = int_of_float (Float.floor x) and j = int_of_float (Float.floor y) in

@@ -8,7 +8,7 @@ type image = {
   h : int;
   px : Color.rgbft array;  (** row-major, row 0 at the top, linear values *)
   once : bool;
-  interpolate : bool;
+  interpolate : int;  (** 0 none, 2 bilinear, 3 bicubic, 4 normalized distance, as POV-Ray's *)
   map_type : int;
 }
 (** An image map. [map_type] 0 (planar): the image covers the unit square

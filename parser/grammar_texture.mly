@@ -267,7 +267,12 @@ image_file_kind:
 %public image_item:
   | ONCE { Texdesc.Every (fun (i : Pigment.image) -> { i with once = true }) }
   | INTERPOLATE e = param
-      { let n = Value.to_int (loc $loc(e)) e in Texdesc.Every (fun (i : Pigment.image) -> { i with interpolate = n > 0 }) }
+      { let n = Value.to_int (loc $loc(e)) e in
+        (* POV-Ray's: 2 bilinear, 3 bicubic, 4 normalized distance (0, none,
+           camlray reads too) *)
+        if not (List.mem n [ 0; 2; 3; 4 ]) then
+          Diag.error (loc $loc(e)) "an image_map's interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), found %d" n;
+        Texdesc.Every (fun (i : Pigment.image) -> { i with interpolate = n }) }
   | MAP_TYPE e = param
       { let n = Value.to_int (loc $loc(e)) e in
         (* the ones POV-Ray 3.7.0's parser takes (7, angular, it refuses) *)

@@ -208,7 +208,7 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
         let b k = dec (Char.code (Bytes.get img.data ((3 * i) + k))) in
         Color.opaque (Color.make (b 0) (b 1) (b 2)))
   in
-  let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = false; map_type = 0 } in
+  let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = 0; map_type = 0 } in
   (* the palette's entry of each pixel, read when a change names one *)
   let palette =
     lazy
