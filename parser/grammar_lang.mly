@@ -42,7 +42,7 @@ open Gram
 (* Greedy parsing where POV-Ray is greedy: a parameter extends over a
    following '+'/'-', a member access binds to the nearest value. *)
 %nonassoc below_shift
-%nonassoc PLUS MINUS MEMBER RGB
+%nonassoc PLUS MINUS RGB
 
 %start <Decl.t> declare_rhs
 %start <Value.t> paren_expr
@@ -176,6 +176,10 @@ open Gram
   | a = add PLUS b = mul { Value.binop (loc $loc) "+" a b }
   | a = add MINUS b = mul { Value.binop (loc $loc) "-" a b }
   | e = mul { e }
+  (* POV-Ray reads a whole expression after rgb: rgb 0.2 + 0.5 is
+     rgb 0.7, not rgb 0.2 plus 0.5 in every channel (filter and transmit
+     too) *)
+  | k = RGB e = add %prec below_shift { Value.rgb_kind (loc $loc) k e }
 
 %public mul:
   | a = mul STAR b = unary { Value.binop (loc $loc) "*" a b }
@@ -186,7 +190,7 @@ open Gram
   | MINUS e = unary { Value.neg (loc $loc) e }
   | PLUS e = unary { e }
   | BANG e = unary { Value.not_ (loc $loc) e }
-  | e = postfix %prec below_shift { e }
+  | e = postfix { e }
 
 %public postfix:
   | e = primary { e }
@@ -217,7 +221,7 @@ open Gram
       { let args = List.map (Value.to_float (loc $loc)) args in
         if Fn.is_vector f then Value.Vector (Fn.call_vector (loc $loc) f args)
         else Value.Float (Fn.call (loc $loc) f args) }
-  | k = RGB e = unary { Value.rgb_kind (loc $loc) k e }
+
 
 %public param:
   | e = add %prec below_shift { e }

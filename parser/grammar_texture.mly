@@ -248,7 +248,7 @@
   | COLOR e = param ms = list(channel) { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) e ms }
   | COLOR ms = nonempty_list(channel)
       { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.Vector (Array.make 5 0.)) ms }
-  | k = RGB e = unary ms = list(channel)
+  | k = RGB e = add ms = list(channel)
       { List.fold_left (fun v (l, c, x) -> Value.set_channel l v c x) (Value.rgb_kind (loc $loc) k e) ms }
 
 (* [gamma G] after an image file's name: the file's values are c^G *)

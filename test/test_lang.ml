@@ -294,9 +294,26 @@ let mesh2_items () =
   | Ok _ -> Alcotest.fail "unexpected scene"
   | Error d -> Alcotest.fail (Diag.to_string d)
 
+(* rgb takes a whole expression, as POV-Ray's parser does: rgb 0.2 + 0.5
+   is rgb 0.7 (it was rgb 0.2 plus 0.5 in all five channels, a colour
+   half transparent: POV-Ray's incdemo/screen.pov's boxes) *)
+let rgb_expression () =
+  let f e = Scn.float ~prelude:"#declare C = rgb 0.2 + 0.5 * 0.5;\n#declare D = rgb <1, 0, 0> * 0.5 filter 0.3;" e in
+  Scn.check_floats "rgb 0.2 + 0.5 * 0.5" [ 0.45; 0.45; 0.45; 0.; 0. ]
+    [ f "C.red"; f "C.green"; f "C.blue"; f "C.filter"; f "C.transmit" ];
+  Scn.check_floats "rgb <1, 0, 0> * 0.5 filter 0.3" [ 0.5; 0.; 0.; 0.3; 0. ]
+    [ f "D.red"; f "D.green"; f "D.blue"; f "D.filter"; f "D.transmit" ];
+  Scn.check_floats "rgb 0.2 + <0.5, 0, 0> (POV-Ray: 0.7 0.2 0)" [ 0.7; 0.2; 0. ]
+    (let g = Scn.float ~prelude:"#declare H = rgb 0.2 + <0.5, 0, 0>;" in [ g "H.red"; g "H.green"; g "H.transmit" ]);
+  (* as in POV-Ray, rgb starts a colour, not a term of a sum *)
+  Scn.check_message "#declare E = 0.5 + rgb 0.2;" "found keyword rgb";
+  (* no_radiosity: read, nothing to hide from in whitted mode *)
+  ignore (Scn.parse "sphere { 0, 1 no_radiosity }")
+
 let tests =
   ( "lang",
     [
+      Alcotest.test_case "rgb takes a whole expression; no_radiosity read" `Quick rgb_expression;
       Alcotest.test_case "rand matches povray" `Quick rand_sequence;
       Alcotest.test_case "standard includes parse" `Quick std_includes;
       Alcotest.test_case "declared identifiers reused" `Quick declared_use;
