@@ -147,11 +147,26 @@ let jpeg path s =
   let v = Array.init (img.w * img.h) (fun i -> if grey then of_gray8 (b (3 * i)) else of_rgb8 (b (3 * i)) (b ((3 * i) + 1))) in
   { w = img.w; h = img.h; v }
 
-let read path =
+(* {2 GIF and POT} A GIF's heights are its palette indices (POV-Ray's
+   8-bit indexed rule); a POT file (Fractint's continuous potential) is a
+   GIF twice as wide as the field, the left half's index the high byte of
+   a 16-bit height and the right half's the low byte *)
+let gif ~pot path =
+  let w, h, idx, _ = Image.gif_indices path in
+  let b i = Char.code (Bytes.get idx i) in
+  if pot then begin
+    if w mod 2 <> 0 then failwith "a POT file's width must be even (two halves)";
+    let hw = w / 2 in
+    { w = hw; h; v = Array.init (hw * h) (fun i -> let x = i mod hw and y = i / hw in of_gray16 ((b ((y * w) + x) lsl 8) lor b ((y * w) + x + hw))) }
+  end
+  else { w; h; v = Array.init (w * h) (fun i -> of_index (b i)) }
+
+let read ?(pot = false) path =
   let s = try In_channel.with_open_bin path In_channel.input_all with Sys_error m -> failwith m in
   let starts p = String.starts_with ~prefix:p s in
-  if starts "\137PNG\r\n\026\n" then png s
+  if pot && not (Image.is_gif s) then failwith "a POT file is a GIF: this one is not"
+  else if starts "\137PNG\r\n\026\n" then png s
   else if String.length s > 2 && s.[0] = 'P' && String.contains "2356" s.[1] then pnm s
   else if Image.is_jpeg s then jpeg path s
-  else if starts "GIF8" then failwith "GIF height fields are not supported (PNG, JPEG, PGM and PPM are)"
-  else failwith "unknown image format (height fields read PNG, JPEG, PGM and PPM)"
+  else if Image.is_gif s then gif ~pot path
+  else failwith "unknown image format (height fields read PNG, JPEG, GIF, POT, PGM and PPM)"

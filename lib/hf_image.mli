@@ -10,9 +10,11 @@
 
 type image = { w : int; h : int; v : int array  (** height values, row 0 the image's top row *) }
 
-val read : string -> image
-(** A PNG (non-interlaced, any colour type and depth), PGM or PPM (P2,
-    P3, P5, P6) file, told apart by its first bytes. Raises [Failure]. *)
+val read : ?pot:bool -> string -> image
+(** A PNG (non-interlaced, any colour type and depth), JPEG, GIF, PGM or
+    PPM (P2, P3, P5, P6) file, told apart by its first bytes; with [pot]
+    a POT file (a GIF twice as wide as the field, a 16-bit height from
+    its two halves' indices). Raises [Failure]. *)
 
 val of_gray8 : int -> int
 val of_gray16 : int -> int

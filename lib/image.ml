@@ -260,9 +260,27 @@ let read_png path s =
   (* load_as_rgb24 refuses palettes with transparency; Png.load reads them *)
   try load Png.load_as_rgb24 with Failure _ when ct = 3 -> load Png.load
 
+let is_gif s = String.starts_with ~prefix:"GIF87a" s || String.starts_with ~prefix:"GIF89a" s
+
+(* a GIF's first image, its palette kept: libgif through camlimages *)
+let gif_index8 path =
+  naming path @@ fun () ->
+  match Gif.load_first path [] with
+  | Index8 b -> b
+  | _ -> failwith "not a palette image"
+  | exception (Sys_error m | Invalid_argument m) -> failwith m
+  | exception Not_found -> failwith "damaged GIF"
+
+let read_gif path = of_camlimages (Index8 (gif_index8 path))
+
+let gif_indices path =
+  let b = gif_index8 path in
+  (b.width, b.height, Index8.dump b, b.colormap.map |> Array.length)
+
 let read_indices path =
   let s = read_file path in
-  if not (String.starts_with ~prefix:Png_codec.signature s) then None
+  if is_gif s then (let w, h, b, _ = gif_indices path in Some (w, h, b))
+  else if not (String.starts_with ~prefix:Png_codec.signature s) then None
   else
     naming path @@ fun () ->
     if Png_codec.check s <> 3 then None
@@ -275,7 +293,8 @@ let read_indices path =
 
 let palette_size path =
   let s = read_file path in
-  if not (String.starts_with ~prefix:Png_codec.signature s) then None
+  if is_gif s then (let _, _, _, n = gif_indices path in Some n)
+  else if not (String.starts_with ~prefix:Png_codec.signature s) then None
   else
     naming path @@ fun () ->
     if Png_codec.check s <> 3 then None
@@ -395,4 +414,5 @@ let read path =
   else if String.starts_with ~prefix:"P6" s || String.starts_with ~prefix:"P3" s
   then naming path (fun () -> read_ppm s)
   else if is_jpeg s then read_jpeg path
-  else failwith (path ^ ": unknown image format (expected PNG, JPEG or PPM P3/P6)")
+  else if is_gif s then read_gif path
+  else failwith (path ^ ": unknown image format (expected PNG, JPEG, GIF or PPM P3/P6)")

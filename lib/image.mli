@@ -94,13 +94,13 @@ val write_pfm : string -> t -> unit
     bottom row first as the format requires; written atomically. *)
 
 val read_indices : string -> (int * int * Bytes.t) option
-(** A palette PNG's size and pixel indices, one byte a pixel, row by row
-    from the top; [None] for any other image. Raises [Failure] as
+(** A palette PNG's or a GIF's size and pixel indices, one byte a pixel,
+    row by row from the top; [None] for any other image. Raises [Failure] as
     {!read}. *)
 
 val palette_size : string -> int option
-(** How many colours a palette PNG's palette holds; [None] for any other
-    image. Raises [Failure] as {!read}. *)
+(** How many colours a palette PNG's or a GIF's palette holds; [None]
+    for any other image. Raises [Failure] as {!read}. *)
 
 val read_alpha : string -> Bytes.t option
 (** The alpha of each pixel (one byte a pixel, row by row from the top)
@@ -115,6 +115,18 @@ val is_jpeg : string -> bool
 val jpeg_components : string -> int
 (** A JPEG's colour components (1 grey, 3 colour), read from the file's
     contents. Raises [Failure] when it has no frame header. *)
+
+val is_gif : string -> bool
+(** Whether a file's contents start as a GIF's. *)
+
+val read_gif : string -> rgb8
+(** Read a GIF file's first image (libgif through camlimages). Raises
+    [Failure] naming the file on error. *)
+
+val gif_indices : string -> int * int * Bytes.t * int
+(** A GIF's first image: its size, each pixel's palette index (one byte
+    a pixel, row by row from the top) and its palette's size. Raises
+    [Failure] naming the file on error. *)
 
 val read_jpeg : string -> rgb8
 (** Read a JPEG file (libjpeg through camlimages; grey as r = g = b).

@@ -172,5 +172,5 @@ let image_channel l c =
 (* an image file type camlray reads where POV-Ray takes any *)
 let readable_kind l k =
   match k with
-  | "jpeg" | "ppm" -> ()
-  | k -> Diag.error (loc l) "%s images are not read by camlray here: png, jpeg and ppm are" k
+  | "jpeg" | "ppm" | "gif" -> ()
+  | k -> Diag.error (loc l) "%s images are not read by camlray here: png, jpeg, gif and ppm are" k

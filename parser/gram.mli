@@ -87,5 +87,6 @@ val image_channel : Lexing.position * Lexing.position -> string -> [ `Filter | `
     located error. *)
 
 val readable_kind : Lexing.position * Lexing.position -> string -> unit
-(** An image_map's, image_pattern's or bump_map's file type: jpeg and ppm
-    are read (png has its own token); any other is a located error. *)
+(** An image_map's, image_pattern's or bump_map's file type: jpeg, gif
+    and ppm are read (png has its own token); any other is a located
+    error. *)

@@ -199,15 +199,15 @@ let height_field src opts =
     match src with
     | Hf_file (loc, kind, file) -> (
         (match kind with
-         | Some ("gif" | "tga" | "iff" | "sys" | "tiff" | "bmp" | "exr" | "hdr" | "pot" as k) ->
-             Diag.error loc "%s (a height_field file type) is not supported by camlray: png, jpeg, pgm and ppm are" k
+         | Some ("tga" | "iff" | "sys" | "tiff" | "bmp" | "exr" | "hdr" as k) ->
+             Diag.error loc "%s (a height_field file type) is not supported by camlray: png, jpeg, gif, pot, pgm and ppm are" k
          | _ -> ());
         let path =
           match Defaults.find_file loc file with
           | Some p -> p
           | None -> Diag.error loc "cannot find height_field image %s (looked in the scene's folder and the include path)" file
         in
-        match Hf_image.read path with
+        match Hf_image.read ~pot:(kind = Some "pot") path with
         | im -> ((im.w, im.h, im.v), Sdl.Hf_file (kind, file))
         | exception Failure m -> Diag.error loc "cannot read height_field image %s: %s" file m)
     | Hf_fn (loc, w, h, f, text) ->

@@ -246,7 +246,15 @@ let png_kind file =
   | _ -> None
   | exception (Sys_error _ | End_of_file) -> None
 
-let png_palette file = match png_kind file with Some (_, 3) -> true | _ -> false
+(* a palette image: a palette PNG, or a GIF (always one) *)
+let png_palette file =
+  match png_kind file with
+  | Some (_, 3) -> true
+  | Some _ -> false
+  | None -> (
+      match In_channel.with_open_bin file (fun ic -> really_input_string ic 6) with
+      | s -> Image.is_gif s
+      | exception (Sys_error _ | End_of_file) -> false)
 
 (* single precision, as POV-Ray's colours are *)
 let single x = Int32.float_of_bits (Int32.bits_of_float x)

@@ -17,7 +17,7 @@ have_ocaml() {
     ocaml -version 2>/dev/null | grep -q 'version 5\.' &&
     command -v dune >/dev/null 2>&1 && command -v menhir >/dev/null 2>&1 &&
     for lib in domainslib sedlex cmdliner alcotest qcheck-alcotest \
-      multicore-bench camlimages.png camlimages.jpeg mtime.clock zip; do
+      multicore-bench camlimages.png camlimages.jpeg camlimages.gif mtime.clock zip; do
       ocamlfind query "$lib" >/dev/null 2>&1 || return 1
     done
 }

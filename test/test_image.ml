@@ -667,8 +667,40 @@ let jpeg_tests =
                 if not (contains m path) then Alcotest.failf "the message %S does not name the file" m));
   ]
 
+(* GIF: colours through the palette (Image.read), indices and the
+   palette's size, and as a height field POV-Ray's 8-bit indexed rule
+   (index x 256) or, read as a POT file, a 16-bit height from the two
+   halves' indices (high byte left) *)
+let gif_tests =
+  [
+    Alcotest.test_case "a GIF image, its indices, as a height field and as POT" `Quick (fun () ->
+        with_tmpdir (fun dir ->
+            let path = Filename.concat dir "i.gif" in
+            let img = Index8.create 4 1 in
+            (* camlimages' Color (Camlray's is open here): its records by their types *)
+            let cmap = img.colormap in
+            cmap.max <- 255;
+            cmap.map <- Array.init 256 (fun i : Rgb24.elt -> { r = i; g = 255 - i; b = 7 });
+            List.iteri (fun x v -> Index8.set img x 0 v) [ 1; 2; 3; 4 ];
+            Gif.save_image path [] (Images.Index8 img);
+            Alcotest.(check bool) "told apart by its first bytes" true (Image.is_gif (read_file path));
+            check_rgb8 "colours through the palette" (rgb8 4 1 [ 1; 254; 7; 2; 253; 7; 3; 252; 7; 4; 251; 7 ]) (Image.read path);
+            let w, h, idx, n = Image.gif_indices path in
+            Alcotest.(check (list int)) "indices" [ 4; 1; 1; 2; 3; 4 ] ([ w; h ] @ List.init 4 (fun i -> Char.code (Bytes.get idx i)));
+            if n < 5 then Alcotest.failf "palette of %d entries" n;
+            let hf = Hf_image.read path in
+            Alcotest.(check (list int)) "heights: index x 256" [ 256; 512; 768; 1024 ] (Array.to_list hf.v);
+            let pot = Hf_image.read ~pot:true path in
+            Alcotest.(check (pair int int)) "POT: half as wide" (2, 1) (pot.w, pot.h);
+            Alcotest.(check (list int)) "POT: left high byte, right low byte" [ (1 lsl 8) lor 3; (2 lsl 8) lor 4 ] (Array.to_list pot.v);
+            write_file path "GIF89agarbage";
+            match Image.read path with
+            | _ -> Alcotest.fail "a damaged GIF was read"
+            | exception Failure m -> if not (contains m path) then Alcotest.failf "the message %S does not name the file" m));
+  ]
+
 let tests =
   ( "image",
-    (table_edges :: encoding_tests) @ png_tests @ ppm_tests @ pfm_tests @ metric_tests @ jpeg_tests
+    (table_edges :: encoding_tests) @ png_tests @ ppm_tests @ pfm_tests @ metric_tests @ jpeg_tests @ gif_tests
     @ atomic_tests
     @ List.map QCheck_alcotest.to_alcotest props )
