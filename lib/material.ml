@@ -125,13 +125,56 @@ let lobe m i =
    blob's components' heaviest (nested maps in turn) *)
 let pick_key = Scratch.key Texture.pick
 
-let rec resolve (tex : Texture.t) (p : Vec3.m) =
+(* Per domain: where the texture [resolve] found is taken (the point
+   the maps above it passed on, see {!Texture.blend_m}) and the frames of
+   those maps, outermost first, [nchain] of them (its normal is perturbed
+   in the innermost one's space, as POV-Ray 3.7 does) *)
+type resolved = { rp : Vec3.m; mutable chain : Transform.t array; mutable nchain : int; rn : Vec3.m }
+
+let resolved_key = Scratch.key (fun () -> { rp = Vec3.m (); chain = [||]; nchain = 0; rn = Vec3.m () })
+
+let chain_push r t =
+  let n = r.nchain in
+  if n = Array.length r.chain then r.chain <- Array.append r.chain (Array.make (Int.max 4 n) t);
+  Array.unsafe_set r.chain n t;
+  r.nchain <- n + 1
+
+let rec resolve_in r (tex : Texture.t) (p : Vec3.m) =
   match tex with
   | { Texture.tmap = Some m; _ } :: _ ->
       let pk = Scratch.get pick_key in
       Texture.blend_m m p pk;
-      resolve (Texture.heaviest m pk) p
+      Vec3.set r.rp pk.tp.mx pk.tp.my pk.tp.mz;
+      (match m.kind with
+      | Texture.Field _ -> ()
+      | Texture.Map | Texture.Average -> if not (Transform.is_identity m.frame) then chain_push r m.frame);
+      resolve_in r (Texture.heaviest m pk) r.rp
   | _ -> tex
+
+let resolve (tex : Texture.t) (p : Vec3.m) =
+  let r = Scratch.get resolved_key in
+  r.nchain <- 0;
+  Vec3.set r.rp p.mx p.my p.mz;
+  resolve_in r tex r.rp
+
+(* [nm] perturbs [n] at the resolved point, in the frames of the maps
+   above it, into [out] *)
+let perturb_resolved nm (n : Vec3.m) (out : Vec3.m) =
+  let r = Scratch.get resolved_key in
+  if r.nchain = 0 then Normal.perturb_m nm r.rp n out
+  else begin
+    let tn = r.rn and chain = r.chain in
+    Vec3.set tn n.mx n.my n.mz;
+    for i = 0 to r.nchain - 1 do
+      Transform.normal_inverse_m (Array.unsafe_get chain i) tn;
+      Vec3.normalize_m tn
+    done;
+    Normal.perturb_m nm r.rp tn out;
+    for i = r.nchain - 1 downto 0 do
+      Transform.normal_m (Array.unsafe_get chain i) out;
+      Vec3.normalize_m out
+    done
+  end
 
 (* The material of a layer at [p] into [m], as [of_texture] makes it
    (the same arithmetic); inlined where it is called, so that [cos_o]
@@ -229,16 +272,17 @@ let into m tex inter (p : Vec3.m) (n : Vec3.m) (wo : Vec3.m) ~entering =
       m.bumped <- false;
       Color.acc_set m.em 0. 0. 0.
   | (layer : Texture.layer) :: _ -> (
+      let tp = (Scratch.get resolved_key).rp in
       match layer.normal with
       | None ->
           m.bumped <- false;
-          fill m layer inter p ((n.mx *. wo.mx) +. (n.my *. wo.my) +. (n.mz *. wo.mz)) entering
+          fill m layer inter tp ((n.mx *. wo.mx) +. (n.my *. wo.my) +. (n.mz *. wo.mz)) entering
       | Some nm ->
           let ns = m.ns in
-          Normal.perturb_m nm p n ns;
+          perturb_resolved nm n ns;
           face ns n wo;
           m.bumped <- true;
-          fill m layer inter p ((ns.mx *. wo.mx) +. (ns.my *. wo.my) +. (ns.mz *. wo.mz)) entering)
+          fill m layer inter tp ((ns.mx *. wo.mx) +. (ns.my *. wo.my) +. (ns.mz *. wo.mz)) entering)
 
 let of_lobes m = { lobes = Array.init m.count (lobe m); emission = Color.of_acc m.em }
 
@@ -247,5 +291,5 @@ let of_texture (tex : Texture.t) (inter : Interior.t) (p : Vec3.t) ~cos_o ~enter
   Vec3.load pm p;
   (match resolve tex pm with
   | [] -> Color.acc_set m.em 0. 0. 0.
-  | layer :: _ -> fill m layer inter pm cos_o entering);
+  | layer :: _ -> fill m layer inter (Scratch.get resolved_key).rp cos_o entering);
   of_lobes m

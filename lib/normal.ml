@@ -207,7 +207,7 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
       (match map with
       | Blend entries ->
           let v = Pattern.eval_at nm.pattern nm.xform point w.pw in
-          into_space nm point n l;
+          into_warped w nm n l;
           let k = Array.length entries in
           let i = Pattern.around entries v in
           if i = 0 then perturb_d w (snd entries.(0)) l.lq l.ln out (d + 1)
@@ -226,7 +226,7 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
           end
       | Cells cells ->
           let v = Pattern.eval_at nm.pattern nm.xform point w.pw in
-          into_space nm point n l;
+          into_warped w nm n l;
           let k = Array.length cells in
           perturb_d w cells.(Int.min (k - 1) (Int.max 0 (int_of_float v))) l.lq l.ln out (d + 1)
       | Average entries ->
@@ -260,9 +260,20 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
 
 and into_space nm point n l =
   Transform.inv_point_m nm.xform point l.lq;
+  into_frame nm n l
+
+and into_frame nm n l =
   Vec3.set l.ln n.mx n.my n.mz;
   Transform.normal_inverse_m nm.xform l.ln;
   Vec3.normalize_m l.ln
+
+(* POV-Ray 3.7 (normal.cpp's Perturb_Normal): a normal_map's entries are
+   taken at the point its pattern was just evaluated at (its warps and
+   turbulence applied), the normal turned by its transformations only *)
+and into_warped w nm n l =
+  let p = Pattern.entries_point nm.pattern w.pw in
+  Vec3.set l.lq p.mx p.my p.mz;
+  into_frame nm n l
 
 let perturb_m nm point n out =
   let w = Scratch.get work_key in

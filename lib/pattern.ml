@@ -329,9 +329,17 @@ let[@inline] interior_shade f a b m2 =
   | 6 -> (a *. a) +. (b *. b *. i) (* sic: POV-Ray scales b^2 only *)
   | _ -> 0.
 
-type work = { p : Vec3.m; d : Vec3.m; r : result }
+type work = { p : Vec3.m; d : Vec3.m; r : result; e : Vec3.m }
 
-let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. } }
+let work () = { p = Vec3.m (); d = Vec3.m (); r = { v = 0. }; e = Vec3.m () }
+
+(* POV-Ray 3.7's patterns that handle their turbulence themselves
+   (HasSpecialTurbulenceHandling: marble, wood): the point their map's
+   entries are taken at has none *)
+let[@inline] own_turbulence t =
+  match (t.kind, t.turbulence) with (Marble | Wood), Some _ -> true | _ -> false
+
+let[@inline] entries_point t w = if own_turbulence t then w.e else w.p
 
 (* The surface normal (world space, unit) at the point being shaded, for
    the slope pattern: set by the shader, per domain *)
@@ -736,7 +744,11 @@ let warped_m t (q : Vec3.m) (w : work) =
     apply_warp wp w.p w.d;
     if not id then Transform.inv_point_m wp.back w.p w.p
   done;
-  match t.turbulence with None -> () | Some tb -> add_turbulence tb w.p w.d
+  match t.turbulence with
+  | None -> ()
+  | Some tb ->
+      if own_turbulence t then Vec3.set w.e w.p.mx w.p.my w.p.mz;
+      add_turbulence tb w.p w.d
 
 let eval_m t (q : Vec3.m) (w : work) =
   warped_m t q w;

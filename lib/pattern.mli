@@ -230,10 +230,21 @@ val value : t -> Vec3.t -> float
 
 type result = { mutable v : float }
 
-type work = { p : Vec3.m; d : Vec3.m; r : result }
+type work = { p : Vec3.m; d : Vec3.m; r : result; e : Vec3.m }
 (** Where {!eval_m} works: the warped point, the turbulence, the value
     (in a flat record: storing a float into a record with other fields
-    would allocate). *)
+    would allocate), and for marble and wood the warped point before
+    their turbulence (see {!entries_point}). *)
+
+val entries_point : t -> work -> Vec3.m
+(** After {!eval_m} (or {!eval_at}): the point a map's entries are taken
+    at, as POV-Ray 3.7 passes it on to them (Warp_EPoint's TPoint): the
+    point in the pattern's space with its warps and turbulence applied
+    ([w.p]); for marble and wood, which handle their turbulence
+    themselves in POV-Ray, without the turbulence (measured: a marble
+    pigment_map's checker entries are not turbulated, a gradient's
+    are). The work's own vector: copy it before evaluating another
+    pattern with the same work. *)
 
 val work : unit -> work
 

@@ -43,15 +43,11 @@ let default_entries (k : Pattern.kind) =
 let rec transform t p =
   match p with
   | Solid _ -> p
-  | Map m ->
-      Map
-        {
-          m with
-          xform = Transform.then_ m.xform t;
-          entries = Array.map (fun (v, q) -> (v, transform t q)) m.entries;
-        }
-  | Blocks b ->
-      Blocks { b with xform = Transform.then_ b.xform t; cells = Array.map (transform t) b.cells }
+  (* POV-Ray 3.7 (pattern.cpp's Transform_Tpattern): only the map's own
+     pattern moves; its entries are taken at the point the pattern is
+     evaluated at, so they follow it *)
+  | Map m -> Map { m with xform = Transform.then_ m.xform t }
+  | Blocks b -> Blocks { b with xform = Transform.then_ b.xform t }
   | Image_map i -> Image_map { i with xform = Transform.then_ i.xform t }
   | Average es -> Average (Array.map (fun (w, q) -> (w, transform t q)) es)
   (* POV-Ray: transformations written after a uv-mapped pigment (the
@@ -210,16 +206,35 @@ and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && 
    first depth no running evaluation holds (a pigment function in a
    pattern evaluates a pigment inside another's evaluation: it starts
    there). *)
-type work = { q : Vec3.m; pw : Pattern.work; tmp : out Scratch.levels; mutable used : int }
+type work = {
+  q : Vec3.m;
+  pw : Pattern.work;
+  tmp : out Scratch.levels;
+  pts : Vec3.m Scratch.levels;  (* per depth: the point a map's entries are taken at *)
+  mutable used : int;
+}
 
-let work_key = Scratch.key (fun () -> { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out; used = 0 })
+let work_key =
+  Scratch.key (fun () ->
+      { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out; pts = Scratch.levels Vec3.m; used = 0 })
+
+(* The point a map's entries are evaluated at (POV-Ray 3.7's Compute_Pigment:
+   the pattern's own point, its transformations, warps and turbulence
+   applied), kept at depth [d]: the entries' evaluations use deeper
+   levels only *)
+let[@inline] entries_point w pattern d =
+  let e = Scratch.level w.pts d in
+  if w.used <= d then w.used <- d + 1;
+  let p = Pattern.entries_point pattern w.pw in
+  Vec3.set e p.mx p.my p.mz;
+  e
 
 (* The commonest pattern, a checker of the pattern space itself, read
    without the pattern's work: the cell at [point] (any other pigment is
    itself) *)
 let[@inline] checker_cell p point =
   match p with
-  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; _ }; cells; xform }
+  | Blocks { pattern = { kind = Pattern.Checker; turbulence = None; warps = [||]; _ }; cells; xform }
     when Transform.is_identity xform && Array.length cells > 0 ->
       cells.(Int.min (Array.length cells - 1) (Pattern.checker_m point))
   | _ -> p
@@ -232,25 +247,26 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       let n = Array.length entries in
       if n = 0 then set o (Color.opaque Color.black)
       else begin
+        let e = entries_point w pattern d in
         let i = Pattern.around entries v in
-        if i = 0 then into_d w (snd entries.(0)) point o d
-        else if i >= n then into_d w (snd entries.(n - 1)) point o d
+        if i = 0 then into_d w (snd entries.(0)) e o (d + 1)
+        else if i >= n then into_d w (snd entries.(n - 1)) e o (d + 1)
         else
           let vi, pi = entries.(i) and vp, pp = entries.(i - 1) in
-          if vi -. vp <= 0. then into_d w pi point o d
+          if vi -. vp <= 0. then into_d w pi e o (d + 1)
           else begin
             let k = (v -. vp) /. (vi -. vp) in
             let t = Scratch.level w.tmp d in
-            if w.used <= d then w.used <- d + 1;
-            into_d w pp point o (d + 1);
-            into_d w pi point t (d + 1);
+            into_d w pp e o (d + 1);
+            into_d w pi e t (d + 1);
             lerp_into o t k
           end
       end
   | Blocks { pattern; cells; xform } ->
       let i = int_of_float (Pattern.eval_at pattern xform point w.pw) in
       let n = Array.length cells in
-      if n = 0 then set o (Color.opaque Color.black) else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) point o d
+      if n = 0 then set o (Color.opaque Color.black)
+      else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) (entries_point w pattern d) o (d + 1)
   | Image_map { image; xform } ->
       Transform.inv_point_m xform point w.q;
       image_into image w.q o

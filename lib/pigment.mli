@@ -21,13 +21,19 @@ type t =
   | Solid of Color.rgbft
   | Map of { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t }
       (** colour_map / pigment_map: entries sorted by value; solid entries
-          are colour map entries *)
+          are colour map entries. As in POV-Ray 3.7, the entries are
+          taken at the point the pattern is evaluated at, in its space
+          (the pattern's transformations, warps and turbulence applied):
+          their own transformations are relative to it, whatever the
+          order the map and the pattern's modifiers were written in *)
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
-      (** checker, hexagon, brick with their list of colours or pigments *)
+      (** checker, hexagon, brick with their list of colours or pigments
+          (taken as a map's entries are) *)
   | Image_map of { image : image; xform : Transform.t }
   | Average of (float * t) array
       (** POV-Ray's [average pigment_map]: the entries' colours weighted
-          (weights summing to 1) *)
+          (weights summing to 1), each at the point (the average's own
+          transformations are carried by its entries) *)
   | Uv of t
       (** POV-Ray's [uv_mapping]: the pigment taken at the surface's
           [<u, v, 0>] (see {!Pattern.uv_point}) instead of the point;
@@ -44,8 +50,10 @@ val default_entries : Pattern.kind -> (float * t) array
     otherwise. *)
 
 val transform : Transform.t -> t -> t
-(** Move a pigment (and its sub-pigments) by a transform applied after
-    its current one. Solid colours are unchanged. *)
+(** Move a pigment by a transform applied after its current one: a
+    map's or block pattern's own pattern (its entries follow it, being
+    taken in its space), an image map, an average's entries. Solid
+    colours and uv-mapped pigments are unchanged. *)
 
 val uv : t -> t
 (** [Uv p] (a pigment already uv-mapped is kept). *)

@@ -28,7 +28,7 @@ let rec filter_into (tex : Texture.t) (q : Vec3.m) (out : Color.acc) d =
             Texture.blend_m m q pk;
             Color.acc_set f 0. 0. 0.;
             for j = 0 to pk.n - 1 do
-              filter_into (Texture.entry m pk j) q sub (d + 1);
+              filter_into (Texture.entry m pk j) pk.tp sub (d + 1);
               let k = Texture.weight m pk j in
               Color.acc_set f (f.ar +. (k *. sub.ar)) (f.ag +. (k *. sub.ag)) (f.ab +. (k *. sub.ab))
             done;

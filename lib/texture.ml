@@ -6,7 +6,15 @@ type layer = {
   uv_texture : bool;
 }
 
-and tmap = { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t; uv : bool; kind : kind }
+and tmap = {
+  pattern : Pattern.t;
+  entries : (float * t) array;
+  xform : Transform.t;
+  uv : bool;
+  turns : bool;
+  frame : Transform.t;
+  kind : kind;
+}
 and kind = Map | Average | Field of { blob : Blob.t; cut : float }
 and t = layer list
 
@@ -16,18 +24,24 @@ let default = plain Pigment.black Finish.default
 
 let patterned pattern entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern; entries; xform = Transform.identity; uv = false; kind = Map } }
+    tmap =
+      Some
+        { pattern; entries; xform = Transform.identity; uv = false; turns = false; frame = Transform.identity;
+          kind = Map } }
 
 let averaged entries =
   { (layer Pigment.black Finish.default) with
-    tmap = Some { pattern = Pattern.make Pattern.Bozo; entries; xform = Transform.identity; uv = false; kind = Average } }
+    tmap =
+      Some
+        { pattern = Pattern.make Pattern.Bozo; entries; xform = Transform.identity; uv = false; turns = false;
+          frame = Transform.identity; kind = Average } }
 
 let blob_field blob ~cut xform entries =
   { (layer Pigment.black Finish.default) with
     tmap =
       Some
         { pattern = Pattern.make Pattern.Bozo; entries = Array.map (fun t -> (0., t)) entries; xform; uv = false;
-          kind = Field { blob; cut } } }
+          turns = false; frame = Transform.identity; kind = Field { blob; cut } } }
 
 type weights = { mutable k0 : float; mutable k1 : float }
 
@@ -39,10 +53,12 @@ type pick = {
   mutable ws : Float.Array.t;  (* a blob field's shares ... *)
   mutable ix : int array;  (* ... and their entries *)
   q : Vec3.m;  (* the point in the blob's space *)
+  tp : Vec3.m;  (* the point the entries are taken at *)
 }
 
 let pick () =
-  { n = 0; t0 = []; t1 = []; w = { k0 = 0.; k1 = 0. }; ws = Float.Array.make 4 0.; ix = Array.make 4 0; q = Vec3.m () }
+  { n = 0; t0 = []; t1 = []; w = { k0 = 0.; k1 = 0. }; ws = Float.Array.make 4 0.; ix = Array.make 4 0; q = Vec3.m ();
+    tp = Vec3.m () }
 
 let[@inline] one pk t =
   pk.n <- 1;
@@ -75,13 +91,26 @@ let field_blend m blob cut (point : Vec3.m) pk =
   done;
   pk.n <- !kept
 
+(* POV-Ray 3.7 (trace.cpp's ComputeOneTextureColour): a map's or a block
+   pattern's entries are taken at the point its pattern is evaluated at,
+   in its space (its transformations, warps and turbulence applied); an
+   average's at the point in its space; a blob's components' textures at
+   the point itself *)
 let blend_m m (point : Vec3.m) pk =
   match m.kind with
-  | Average -> pk.n <- Array.length m.entries
-  | Field { blob; cut } -> field_blend m blob cut point pk
+  | Average ->
+      let point = if m.uv then Pattern.uv_point () else point in
+      Transform.inv_point_m m.xform point pk.tp;
+      pk.n <- Array.length m.entries
+  | Field { blob; cut } ->
+      Vec3.set pk.tp point.mx point.my point.mz;
+      field_blend m blob cut point pk
   | Map ->
   let point = if m.uv then Pattern.uv_point () else point in
-  let v = Pattern.eval_at m.pattern m.xform point (Scratch.get work_key) in
+  let w = Scratch.get work_key in
+  let v = Pattern.eval_at m.pattern m.xform point w in
+  (let p = Pattern.entries_point m.pattern w in
+   Vec3.set pk.tp p.mx p.my p.mz);
   let n = Array.length m.entries in
   if n = 0 then one pk default
   else if Pattern.is_block m.pattern.kind then one pk (snd m.entries.(Int.max 0 (Int.min (n - 1) (int_of_float v))))
@@ -144,6 +173,9 @@ and all_block entries i = i >= Array.length entries || (blocks_light (snd entrie
    transform stays, its uv-mapped pigments ignore them, and its
    uv-mapped normals take them as the frame they tilt the normal in
    (see {!Normal.uv}) *)
+(* POV-Ray 3.7 (texture.cpp's Transform_Textures): a patterned layer's
+   own pattern moves, its entries follow it (taken in its space, see
+   [blend_m]); a blob's components' textures are each moved *)
 let rec transform_layer tr l =
   {
     l with
@@ -152,11 +184,12 @@ let rec transform_layer tr l =
     tmap =
       Option.map
         (fun m ->
-          {
-            m with
-            xform = (if m.uv then m.xform else Transform.then_ m.xform tr);
-            entries = Array.map (fun (v, t) -> (v, transform tr t)) m.entries;
-          })
+          match m.kind with
+          | Field _ ->
+              { m with xform = Transform.then_ m.xform tr; entries = Array.map (fun (v, t) -> (v, transform tr t)) m.entries }
+          | Map | Average ->
+              if m.uv then { m with frame = (if m.turns then Transform.then_ m.frame tr else m.frame) }
+              else { m with xform = Transform.then_ m.xform tr; frame = Transform.then_ m.frame tr })
         l.tmap;
   }
 
@@ -168,7 +201,13 @@ let rec uv_layer ~turns l =
     pigment = Pigment.uv l.pigment;
     normal = Option.map (Normal.uv ~turns) l.normal;
     tmap =
-      Option.map (fun m -> { m with uv = true; entries = Array.map (fun (v, t) -> (v, uv ~turns t)) m.entries }) l.tmap;
+      Option.map
+        (fun m ->
+          match m.kind with
+          | Field _ -> { m with entries = Array.map (fun (v, t) -> (v, uv ~turns t)) m.entries }
+          (* the pattern taken at the surface's uv; the entries follow it *)
+          | Map | Average -> { m with uv = true; turns = m.turns || turns })
+        l.tmap;
   }
 
 and uv ~turns t = List.map (uv_layer ~turns) t

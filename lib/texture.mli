@@ -19,11 +19,24 @@ and tmap = {
   pattern : Pattern.t;  (** unused by an average *)
   entries : (float * t) array;
       (** by value; for block patterns, one per cell; for an average, the
-          weights (summing to 1) *)
-  xform : Transform.t;
+          weights (summing to 1). As in POV-Ray 3.7, they are taken at
+          the point the pattern is evaluated at, in its space (its
+          transformations, warps and turbulence applied; an average's at
+          the point in its space): their own transformations are relative
+          to it, and their normals are perturbed in it (turned by
+          [frame]). A blob's components' textures are taken at the point
+          itself. See {!blend_m}. *)
+  xform : Transform.t;  (** pattern space to world (to the blob's for a {!Field}) *)
   uv : bool;
       (** [uv_mapping]: the pattern taken at the surface's [<u, v, 0>]
           (see {!Pattern.uv_point}); later transformations leave it *)
+  turns : bool;
+      (** uv-mapped by [texture { uv_mapping ... }]: the transformations
+          written after it turn the entries' normals (see {!uv}) *)
+  frame : Transform.t;
+      (** what turns the entries' normals into the space they are
+          perturbed in: [xform], and for a uv-mapped map that [turns] the
+          transformations written after it too; unused by a {!Field} *)
   kind : kind;
 }
 
@@ -73,9 +86,11 @@ type pick = private {
   mutable ws : Float.Array.t;
   mutable ix : int array;
   q : Vec3.m;
+  tp : Vec3.m;
 }
 (** [n] textures with their weights (1 or 2 from a {!Map}; flat: storing
-    them allocates nothing). Read them with {!entry} and {!weight}. *)
+    them allocates nothing). Read them with {!entry} and {!weight}; [tp]
+    is the point they are to be taken at. *)
 
 val pick : unit -> pick
 
@@ -85,7 +100,10 @@ val blend_m : tmap -> Vec3.m -> pick -> unit
     one or the two around the pattern's value, or a blob's components'
     there, into [pk], allocating nothing (a pick grows once to a blob's
     number of components); for an average, only their number (read them
-    with {!entry} and {!weight}). *)
+    with {!entry} and {!weight}). The point the textures are to be taken
+    at into [pk.tp] (see {!tmap}: for a map, its pattern's point after
+    its transformations, warps and turbulence, as POV-Ray 3.7's
+    ComputeOneTextureColour passes it on); [point] may be [pk.tp]. *)
 
 val entry : tmap -> pick -> int -> t
 val weight : tmap -> pick -> int -> float
@@ -99,7 +117,8 @@ val heaviest : tmap -> pick -> t
 val uv : turns:bool -> t -> t
 (** POV-Ray's [texture { uv_mapping ... }] ([turns]) and an object's
     [uv_mapping] (not [turns]): every pigment, normal and texture pattern
-    of the texture taken at the surface's [<u, v, 0>]; the
+    of the texture's layers taken at the surface's [<u, v, 0>] (a
+    patterned layer's entries follow its pattern, see {!tmap}); the
     transformations written after it do not move them, but with
     [turns] they turn its normals (see {!Normal.uv}). *)
 
@@ -129,4 +148,6 @@ val blocks_light : t -> bool
 val transform_layer : Transform.t -> layer -> layer
 val transform : Transform.t -> t -> t
 (** Move the patterns of a texture (a texture written before an object
-    transform moves with the object). *)
+    transform moves with the object): a plain layer's pigment and
+    normal, a patterned layer's own pattern (its entries follow it, as in
+    POV-Ray 3.7's Transform_Textures), a blob's components' textures. *)

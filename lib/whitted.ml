@@ -69,13 +69,30 @@ type frame = {
   mutable has_uv : bool;
   sh : Direct.shadows;  (** the shadows found at [p] *)
   mutable lights : Light.t array;  (** the lights of the surface at [p] (its light set) *)
+  mutable chain : Transform.t array;
+      (** the frames of the texture maps whose entry is being shaded,
+          outermost first, [nchain] of them: a layer's normal is
+          perturbed in the innermost one's space, as POV-Ray 3.7 does
+          (trace.cpp's ComputeLightedTexture: Warp_Normal through each
+          patterned texture above the layer, then back) *)
+  mutable nchain : int;
+  tn : Vec3.m;  (** the normal turned into that space *)
 }
 
 let new_frame () =
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
-    uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||] }
+    uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||]; chain = [||]; nchain = 0;
+    tn = Vec3.m () }
+
+(* a texture map's frame entered (the chain grows once, to the deepest
+   nesting met) *)
+let chain_push fr t =
+  let n = fr.nchain in
+  if n = Array.length fr.chain then fr.chain <- Array.append fr.chain (Array.make (Int.max 4 n) t);
+  Array.unsafe_set fr.chain n t;
+  fr.nchain <- n + 1
 
 let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
@@ -259,13 +276,13 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   let guess = total_internal eta (-.dot d n0) in
   let c = fr.c and tr = fr.tr in
   let tex = if entering then obj.texture else obj.back in
-  layers s d level media fr (not guess) c tr tex;
+  layers s d level media fr (not guess) c tr fr.p tex;
   let n = if fr.top_set then fr.top else n0 in
   if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.dot d n)) then begin
     fr.top_set <- false;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
-    layers s d level media fr guess c tr tex
+    layers s d level media fr guess c tr fr.p tex
   end;
   if Color.acc_luminance tr <= bailout then Color.acc_set out c.ar c.ag c.ab
   else
@@ -305,8 +322,10 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
    [refl]: add the finishes' reflection (POV-Ray leaves it out where the
    light passing through is totally reflected inside: the TIR ray stands
    for it). A function of its own, not a closure in [shade]: it runs for
-   every hit. *)
-and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) = function
+   every hit. The textures' patterns are taken at [tp]: the hit point,
+   or in a texture map's entry the point its pattern passed on (see
+   {!Texture.blend_m}). *)
+and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (tp : Vec3.m) = function
   | [] -> ()
   | (layer : Texture.layer) :: rest -> (
       (* set again for each layer: rays traced for the layers above
@@ -317,22 +336,28 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           (* a patterned layer: blend the textures around the value *)
           let lv = tmap_enter () in
           let pk = lv.pick and c = lv.c and f = lv.f in
-          Texture.blend_m m fr.p pk;
+          Texture.blend_m m tp pk;
+          let framed =
+            (match m.kind with Texture.Field _ -> false | Texture.Map | Texture.Average -> true)
+            && not (Transform.is_identity m.frame)
+          in
+          if framed then chain_push fr m.frame;
           Color.acc_set c 0. 0. 0.;
           Color.acc_set f 0. 0. 0.;
           for j = 0 to pk.n - 1 do
             let c' = lv.c1 and f' = lv.f1 in
             Color.acc_set c' 0. 0. 0.;
             Color.acc_set f' 1. 1. 1.;
-            layers s d level media fr refl c' f' (Texture.entry m pk j);
+            layers s d level media fr refl c' f' pk.tp (Texture.entry m pk j);
             let k = Texture.weight m pk j in
             Color.acc_set c (c.ar +. (k *. c'.ar)) (c.ag +. (k *. c'.ag)) (c.ab +. (k *. c'.ab));
             Color.acc_set f (f.ar +. (k *. f'.ar)) (f.ag +. (k *. f'.ag)) (f.ab +. (k *. f'.ab))
           done;
           Color.acc_set acc (acc.ar +. (w.ar *. c.ar)) (acc.ag +. (w.ag *. c.ag)) (acc.ab +. (w.ab *. c.ab));
           Color.acc_set w (w.ar *. f.ar) (w.ag *. f.ag) (w.ab *. f.ab);
+          if framed then fr.nchain <- fr.nchain - 1;
           tmap_leave ();
-          if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest
+          if not (Color.acc_is_black w) then layers s d level media fr refl acc w tp rest
       | None ->
           let p = fr.p and n0 = fr.n0 in
           let n =
@@ -343,7 +368,20 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
                    POV-Ray: the lights in front of the surface then miss
                    it, and [mirror] mends the rays it reflects *)
                 let pn = fr.pn in
-                Normal.perturb_m nm p n0 pn;
+                if fr.nchain = 0 then Normal.perturb_m nm tp n0 pn
+                else begin
+                  let tn = fr.tn and chain = fr.chain in
+                  Vec3.set tn n0.mx n0.my n0.mz;
+                  for i = 0 to fr.nchain - 1 do
+                    Transform.normal_inverse_m (Array.unsafe_get chain i) tn;
+                    Vec3.normalize_m tn
+                  done;
+                  Normal.perturb_m nm tp tn pn;
+                  for i = fr.nchain - 1 downto 0 do
+                    Transform.normal_m (Array.unsafe_get chain i) pn;
+                    Vec3.normalize_m pn
+                  done
+                end;
                 pn
           in
           if not fr.top_set then begin
@@ -352,7 +390,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
           end;
           let f = layer.finish in
           let pig = fr.pig in
-          Pigment.into layer.pigment p pig;
+          Pigment.into layer.pigment tp pig;
           let pc = pig in
           let k = fr.k in
           fr.a.alpha <-
@@ -383,7 +421,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) =
             (w.ar *. ((pig.filter *. pc.r) +. pig.transmit))
             (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
             (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
-          if not (Color.acc_is_black w) then layers s d level media fr refl acc w rest)
+          if not (Color.acc_is_black w) then layers s d level media fr refl acc w tp rest)
 
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
    starts at the frame's point along its [rd], weighs [fr.k.refl] times

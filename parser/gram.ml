@@ -57,7 +57,8 @@ let tmap_pattern (m : Texdesc.modifier) (l : Texture.layer) =
   match l.tmap with
   | None -> l
   | Some t -> (
-      match (m { (Texdesc.of_pattern Pattern.Bozo) with pattern = Some t.pattern }).pattern with
+      (* the layer's transformations so far: a warp is written after them *)
+      match (m { (Texdesc.of_pattern Pattern.Bozo) with pattern = Some t.pattern; xform = t.xform }).pattern with
       | Some pattern -> { l with tmap = Some { t with pattern } }
       | None -> l)
 

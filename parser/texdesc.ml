@@ -49,18 +49,13 @@ let transform t p =
   match p.pattern with
   | _ when p.uv <> None -> { p with uv = Option.map (Normal.transform t) p.uv }
   | None when p.bump <> None -> { p with xform = Transform.then_ p.xform t }
-  | None when p.average ->
-      (* a normal's entries are relative to its transform: they follow it *)
-      { p with entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries;
-        xform = Transform.then_ p.xform t }
+  (* POV-Ray 3.7 moves an average's or a pattern's own point only
+     (Transform_Tpattern): the entries of its map, written before or after,
+     are taken at that point and follow it; an average pigment's entries
+     are given its transform when it is built *)
+  | None when p.average -> { p with xform = Transform.then_ p.xform t }
   | None -> { p with base = Pigment.transform t p.base }
-  | Some _ ->
-      {
-        p with
-        xform = Transform.then_ p.xform t;
-        entries = Option.map (Array.map (fun (v, q) -> (v, Pigment.transform t q))) p.entries;
-        cells = List.map (Pigment.transform t) p.cells;
-      }
+  | Some _ -> { p with xform = Transform.then_ p.xform t }
 
 let pattern_mod f p = match p.pattern with Some pt -> { p with pattern = Some (f pt) } | None -> p
 
@@ -100,7 +95,7 @@ let pigment p =
       let es = Option.value ~default:[||] p.entries in
       let total = Array.fold_left (fun s (w, _) -> s +. w) 0. es in
       if Array.length es = 0 || total = 0. then Pigment.black
-      else Pigment.Average (Array.map (fun (w, q) -> (w /. total, q)) es)
+      else Pigment.Average (Array.map (fun (w, q) -> (w /. total, Pigment.transform p.xform q)) es)
   | None -> p.base
   | Some pattern ->
       if Pattern.is_block pattern.kind then
