@@ -727,7 +727,8 @@ let apply_warp (wp : warp) (p : Vec3.m) (d : Vec3.m) =
       let dx = d.mx -. c.mx and dy = d.my -. c.my and dz = d.mz -. c.mz in
       let l = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
       if l < radius then begin
-        let k = strength *. Float.pow (1. -. (l /. radius)) falloff in
+        (* clipped at 1, as POV-Ray 3.7 (warp.cpp): a point moves at most to the hole *)
+        let k = Float.min 1. (strength *. Float.pow (1. -. (l /. radius)) falloff) in
         let k = if inverse then -.k else k in
         Vec3.set p (ox +. (k *. dx)) (oy +. (k *. dy)) (oz +. (k *. dz))
       end

@@ -161,7 +161,7 @@ type warp_kind =
     }
       (** points within [radius] of the hole pushed out of it (pulled in
           when [inverse]) by [strength (1 - d / radius)^falloff] of their
-          distance [d] *)
+          distance [d], that share at most 1 (POV-Ray's clip) *)
   | Turbulence of turbulence  (** [warp { turbulence ... }] *)
   | Planar_map of { orient : Vec3.t; offset : float }
       (** [planar [orient, offset]]: (x, y, offset), turned so that the
