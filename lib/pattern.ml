@@ -751,8 +751,7 @@ let warped_m t (q : Vec3.m) (w : work) =
       if own_turbulence t then Vec3.set w.e w.p.mx w.p.my w.p.mz;
       add_turbulence tb w.p w.d
 
-let eval_m t (q : Vec3.m) (w : work) =
-  warped_m t q w;
+let eval_warped t (w : work) =
   (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
      (on top of the warp): read by [raw_m] from [w.r.v] *)
   (match (t.kind, t.turbulence) with
@@ -774,6 +773,10 @@ let eval_m t (q : Vec3.m) (w : work) =
       shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
     end
   end
+
+let eval_m t (q : Vec3.m) (w : work) =
+  warped_m t q w;
+  eval_warped t w
 
 (* The pattern at [point] taken into its space by [xform]'s inverse
    (inlined: the value is not boxed). [eval_m] reads its point before

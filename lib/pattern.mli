@@ -271,6 +271,12 @@ val warped_m : t -> Vec3.m -> work -> unit
     warps and turbulence applied, into [w.p] (what {!eval_m} evaluates
     the raw pattern at). *)
 
+val eval_warped : t -> work -> unit
+(** [eval_warped t w], after [warped_m t q w]: the rest of {!eval_m} (the
+    raw pattern at [w.p], then the value's shaping), into [w.r.v]. A
+    function pattern may evaluate other patterns meanwhile: what a
+    caller keeps of [w] (the point for the entries) is read before. *)
+
 val eval_m : t -> Vec3.m -> work -> unit
 (** [eval_m t q w]: {!value} at a point written in place, into [w.r.v]
     (the same arithmetic), allocating nothing. *)

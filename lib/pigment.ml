@@ -218,16 +218,26 @@ let work_key =
   Scratch.key (fun () ->
       { q = Vec3.m (); pw = Pattern.work (); tmp = Scratch.levels out; pts = Scratch.levels Vec3.m; used = 0 })
 
-(* The point a map's entries are evaluated at (POV-Ray 3.7's Compute_Pigment:
-   the pattern's own point, its transformations, warps and turbulence
-   applied), kept at depth [d]: the entries' evaluations use deeper
-   levels only *)
-let[@inline] entries_point w pattern d =
+(* The pattern of a map at [point] (taken into its space by [xform]'s
+   inverse), and the point its entries are evaluated at (POV-Ray 3.7's
+   Compute_Pigment: the pattern's own point, its transformations, warps
+   and turbulence applied) kept at depth [d], read with [entries_at]: the
+   entries' evaluations use deeper levels only. Kept before the raw
+   pattern is evaluated: a function pattern's pigments are evaluated
+   with this domain's work too (at depths from [w.used] on). Inlined:
+   the value is not boxed. *)
+let[@inline] eval_keeping w pattern xform (point : Vec3.m) d =
+  let pw = w.pw in
+  Transform.inv_point_m xform point pw.p;
+  Pattern.warped_m pattern pw.p pw;
   let e = Scratch.level w.pts d in
   if w.used <= d then w.used <- d + 1;
-  let p = Pattern.entries_point pattern w.pw in
+  let p = Pattern.entries_point pattern pw in
   Vec3.set e p.mx p.my p.mz;
-  e
+  Pattern.eval_warped pattern pw;
+  pw.r.v
+
+let[@inline] entries_at w d = Scratch.level w.pts d
 
 (* The commonest pattern, a checker of the pattern space itself, read
    without the pattern's work: the cell at [point] (any other pigment is
@@ -243,11 +253,11 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
   match checker_cell p point with
   | Solid c -> set o c
   | Map { pattern; entries; xform } ->
-      let v = Pattern.eval_at pattern xform point w.pw in
+      let v = eval_keeping w pattern xform point d in
       let n = Array.length entries in
       if n = 0 then set o (Color.opaque Color.black)
       else begin
-        let e = entries_point w pattern d in
+        let e = entries_at w d in
         let i = Pattern.around entries v in
         if i = 0 then into_d w (snd entries.(0)) e o (d + 1)
         else if i >= n then into_d w (snd entries.(n - 1)) e o (d + 1)
@@ -263,10 +273,10 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
           end
       end
   | Blocks { pattern; cells; xform } ->
-      let i = int_of_float (Pattern.eval_at pattern xform point w.pw) in
+      let i = int_of_float (eval_keeping w pattern xform point d) in
       let n = Array.length cells in
       if n = 0 then set o (Color.opaque Color.black)
-      else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) (entries_point w pattern d) o (d + 1)
+      else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) (entries_at w d) o (d + 1)
   | Image_map { image; xform } ->
       Transform.inv_point_m xform point w.q;
       image_into image w.q o

@@ -81,6 +81,59 @@ let maps () =
     (pig "gradient x pigment_map { [0 checker rgb 0, rgb <1,1,0>] [1 rgb <0,1,0>] } translate <0.5,0.5,0>");
   Scn.color "frequency" (0.4, 0.4, 0.4) (pig "gradient x frequency 2 translate -x*0.2")
 
+(* Where a map's entries are taken (POV-Ray 3.7's Compute_Pigment and
+   ComputeOneTextureColour): at the map's pattern's point, after its
+   transformations and warps, whatever the order they and the map were
+   written in. The hit is (0, 0, 1); each value worked out by hand, and
+   POV-Ray's 1x1 renders of the pigments agree to its 8 bits. *)
+let red_y = "gradient y color_map { [0 rgb 0] [1 rgb <1,0,0>] }"
+
+let map_space () =
+  (* scale 4 written before the map: the pattern's point (1, 2, 1) / 4;
+     gradient x 0.25 blends 3/4 of the first entry, gradient y there
+     0.5, and 1/4 blue *)
+  Scn.color "a scale before the map moves the entries" (0.375, 0., 0.25)
+    (pig (Printf.sprintf "gradient x scale 4 pigment_map { [0 %s] [1 rgb <0,0,1>] } translate <-1, -2, 0>" red_y));
+  Scn.color "and after it alike" (0.375, 0., 0.25)
+    (pig (Printf.sprintf "gradient x pigment_map { [0 %s] [1 rgb <0,0,1>] } scale 4 translate <-1, -2, 0>" red_y));
+  (* repeat x*0.5 offset y*0.25 at (0.7, 0.1, 1): the second copy, x 0.2
+     and y 0.1 + 0.25 *)
+  Scn.color "entries at the warped point" (0.28, 0., 0.2)
+    (pig (Printf.sprintf "gradient x warp { repeat x*0.5 offset y*0.25 } pigment_map { [0 %s] [1 rgb <0,0,1>] } translate <-0.7, -0.1, 0>" red_y));
+  (* a nested map's entries: in the inner map's space, inside the outer's:
+     (0.25, 0.5, 0.25) / 0.8, gradient y 0.625 *)
+  Scn.color "nested maps" (0.46875, 0., 0.25)
+    (pig
+       (Printf.sprintf
+          "gradient x scale 4 pigment_map { [0 gradient x scale 0.8 pigment_map { [0 %s] [1 %s] }] [1 rgb <0,0,1>] } translate <-1, -2, 0>"
+          red_y red_y));
+  (* a pigment_pattern's own pigment is evaluated in the middle of the
+     outer map's: the entries still get the outer's point (1, 0.3, 1);
+     the inner gradient x scale 2 gives 0.5 *)
+  Scn.color "pigment_pattern: entries at the outer point" (0.15, 0., 0.5)
+    (pig
+       (Printf.sprintf
+          "pigment_pattern { gradient x scale 2 } pigment_map { [0 %s] [1 rgb <0,0,1>] } translate <-1, -0.3, 0>"
+          red_y));
+  (* a block pattern's pigments follow it *)
+  Scn.color "a checker's pigments follow its scale" (0.5, 0., 0.)
+    (pig (Printf.sprintf "checker pigment { %s } pigment { rgb 1 } scale 2 translate <-0.5, -1, 0>" red_y));
+  (* an average: its transformations move its entries' point *)
+  Scn.color "average scaled" (0.25, 0., 0.5)
+    (pig (Printf.sprintf "average scale 2 pigment_map { [1 %s] [1 rgb <0,0,1>] } translate <0, -1, 0>" red_y));
+  (* texture_map: the same point *)
+  Scn.color "texture_map entries scaled before" (0.375, 0., 0.25)
+    (Scn.pixel
+       (Printf.sprintf
+          "plane { z, 1 texture { gradient x scale 4 texture_map { [0 pigment { %s } finish { ambient 1 diffuse 0 }] [1 pigment { rgb <0,0,1> } finish { ambient 1 diffuse 0 }] } translate <-1, -2, 0> } }"
+          red_y));
+  (* marble handles its turbulence itself: its entries are not moved by
+     it (gradient y stays 0.4); a gradient's are *)
+  let turb k = pig (Printf.sprintf "%s turbulence 1 pigment_map { [0 %s] [1 %s] } translate <-0.3, -0.4, 0>" k red_y red_y) in
+  Scn.color "marble's entries without its turbulence" (0.4, 0., 0.) (turb "marble");
+  let c = turb "gradient x" in
+  if Float.abs (c.r -. 0.4) < 1e-3 then Alcotest.failf "gradient x turbulence: entries not turbulated (%g)" c.r
+
 let transforms () =
   (* checker scaled by 2: the cell [0,2)^3 is blue, x in [-2,0) green *)
   Scn.color "pattern scale" (0., 0., 1.) (pig "checker scale 2 translate -x*1.5");
@@ -889,6 +942,7 @@ let tests =
       Alcotest.test_case "gradient and waves" `Quick gradient;
       Alcotest.test_case "maps" `Quick maps;
       Alcotest.test_case "transforms" `Quick transforms;
+      Alcotest.test_case "maps' entries in the map's space = POV-Ray 3.7" `Quick map_space;
       Alcotest.test_case "normal bump size after a comma" `Quick normal_comma;
       Alcotest.test_case "image_map" `Quick image_map;
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
