@@ -174,22 +174,33 @@ let[@inline] checker3 x y z =
   if s land 1 = 0 then 0. else 1.
 
 (* Hexagons in the xz plane, side 1, corners along x (flat sides facing
-   +-z), centred at the origin (cell 0); cells around are numbered as
-   POV-Ray does: (2q + r) mod 3 in axial coordinates. *)
-let sqrt3 = Float.sqrt 3.
+   +-z), centred at the origin (cell 0), by POV-Ray's own construction,
+   so that points on an edge fall where POV-Ray puts them: |x|, and a
+   negative z moved up by six rows (no mirror image across x); the plane
+   cut in a 6 x 6 grid of half-triangles (x in halves, z in the
+   triangles' heights, POV-Ray's 0.866025404), most blocks one cell, the
+   blocks of columns 1 and 4 split along their diagonal (flipped where
+   the slope is negative), the lower half taken by a slope below 1 *)
+let[@inline] hex_low zm = if zm = 0 || zm = 3 then 0 else if zm = 2 || zm = 5 then 1 else 2
+let[@inline] hex_high zm = if zm = 0 || zm = 3 then 2 else if zm = 2 || zm = 5 then 0 else 1
 
 let[@inline] hexagon3 x z =
-  (* axial coordinates of the nearest hexagon centre (pointy along x) *)
-  let q = x *. 2. /. 3. and r = (-.x /. 3.) +. (sqrt3 /. 3. *. z) in
-  let s = -.q -. r in
-  let rq = Float.round q and rr = Float.round r and rs = Float.round s in
-  let dq = Float.abs (rq -. q) and dr = Float.abs (rr -. r) and ds = Float.abs (rs -. s) in
-  (* the rounded coordinate furthest off is remade from the other two *)
-  let q_off = dq > dr && dq > ds in
-  let cq = if q_off then -.rr -. rs else rq in
-  let cr = if q_off then rr else if dr > ds then -.rq -. rs else rr in
-  let c = ((2 * int_of_float cq) + int_of_float cr) mod 3 in
-  float_of_int (if c < 0 then c + 3 else c)
+  let x = Float.abs x in
+  let z = if z < 0. then 5.196152424 -. Float.abs z else z in
+  let xs = x /. 0.5 and zs = z /. 0.866025404 in
+  let xs = xs -. (Float.floor (xs /. 6.) *. 6.) and zs = zs -. (Float.floor (zs /. 6.) *. 6.) in
+  let xm = int_of_float (Float.floor xs) mod 6 and zm = int_of_float (Float.floor zs) mod 6 in
+  let c =
+    if xm = 0 || xm = 5 then if zm = 0 || zm = 5 then 0 else if zm <= 2 then 1 else 2
+    else if xm = 2 || xm = 3 then if zm <= 1 then 2 else if zm <= 3 then 0 else 1
+    else begin
+      let xl = xs -. float_of_int xm and zl = zs -. float_of_int zm in
+      let xl = if (xm + zm) mod 2 = 1 then 1. -. xl else xl in
+      let xl = if xl = 0. then 0.0001 else xl in
+      if zl /. xl < 1. then hex_low zm else hex_high zm
+    end
+  in
+  float_of_int c
 
 (* Bricks of [size] with mortar of width [mortar] at the upper end of
    each cell; even rows (in y) shift z by half a brick, odd rows shift x

@@ -236,6 +236,18 @@ let image_map_interpolation () =
       Scn.check_message (Printf.sprintf "plane { z, 1 pigment { image_map { png \"%s\" interpolate 1 } } }" file)
         "interpolate is 2 (bilinear), 3 (bicubic) or 4")
 
+(* hexagon on its cells' edges, as POV-Ray 3.7's function { pattern {
+   hexagon } } gives them (read with #debug): corners and sides on z = 0,
+   a negative x, an edge at negative z (camlray's nearest-centre rounding
+   gave 0 1 1 _ _ 2 at four of them) *)
+let hexagon_edges () =
+  let f = Scn.float ~prelude:"#declare F = function { pattern { hexagon } }" in
+  Scn.check_floats "edges"
+    [ 0.; 2.; 2.; 0.; 0.; 0.; 0.; 0. ]
+    (List.map f
+       [ "F(0.75, 0, 0)"; "F(1, 0, 0)"; "F(1.5, 0, 0)"; "F(2, 0, 0)"; "F(-0.75, 0, 0)"; "F(0.3, 0, -0.866025404)";
+         "F(3, 0, 0.5)"; "F(0.25, 0, 0.4330127)" ])
+
 (* an image's file type before its name: png, jpeg and ppm read (by their
    bytes), others refused by name where they are written *)
 let image_kinds () =
@@ -947,6 +959,7 @@ let tests =
       Alcotest.test_case "image_map" `Quick image_map;
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
       Alcotest.test_case "image file types" `Quick image_kinds;
+      Alcotest.test_case "hexagon on its cells' edges = POV-Ray's" `Quick hexagon_edges;
       Alcotest.test_case "image_map interpolate 2, 3 and 4" `Quick image_map_interpolation;
       Alcotest.test_case "image_map map_type 5 (torus)" `Quick image_map_torus;
       Alcotest.test_case "image_map rows' edges as POV-Ray's map_pos" `Quick image_map_edges;
