@@ -161,20 +161,7 @@ let resolve (tex : Texture.t) (p : Vec3.m) =
    above it, into [out] *)
 let perturb_resolved nm (n : Vec3.m) (out : Vec3.m) =
   let r = Scratch.get resolved_key in
-  if r.nchain = 0 then Normal.perturb_m nm r.rp n out
-  else begin
-    let tn = r.rn and chain = r.chain in
-    Vec3.set tn n.mx n.my n.mz;
-    for i = 0 to r.nchain - 1 do
-      Transform.normal_inverse_m (Array.unsafe_get chain i) tn;
-      Vec3.normalize_m tn
-    done;
-    Normal.perturb_m nm r.rp tn out;
-    for i = r.nchain - 1 downto 0 do
-      Transform.normal_m (Array.unsafe_get chain i) out;
-      Vec3.normalize_m out
-    done
-  end
+  Normal.perturb_through nm r.rp n r.chain r.nchain r.rn out
 
 (* The material of a layer at [p] into [m], as [of_texture] makes it
    (the same arithmetic); inlined where it is called, so that [cos_o]

@@ -284,3 +284,18 @@ let perturb_m nm point n out =
       let base = w.used in
       perturb_d w nm point n out base;
       w.used <- base
+
+let perturb_through nm point (n : Vec3.m) (chain : Transform.t array) nchain (tn : Vec3.m) (out : Vec3.m) =
+  if nchain = 0 then perturb_m nm point n out
+  else begin
+    Vec3.set tn n.mx n.my n.mz;
+    for i = 0 to nchain - 1 do
+      Transform.normal_inverse_m (Array.unsafe_get chain i) tn;
+      Vec3.normalize_m tn
+    done;
+    perturb_m nm point tn out;
+    for i = nchain - 1 downto 0 do
+      Transform.normal_m (Array.unsafe_get chain i) out;
+      Vec3.normalize_m out
+    done
+  end

@@ -73,6 +73,13 @@ val perturb_m : t -> Vec3.m -> Vec3.m -> Vec3.m -> unit
     point, into [out] (not [n]), allocating nothing (per domain, nested
     maps' work is kept by depth). *)
 
+val perturb_through : t -> Vec3.m -> Vec3.m -> Transform.t array -> int -> Vec3.m -> Vec3.m -> unit
+(** [perturb_through nm point n chain nchain tn out]: [perturb_m] in the
+    frames of the texture maps above the layer (the first [nchain] of
+    [chain], innermost last, as POV-Ray's Warp_Normal / UnWarp_Normal):
+    [n] turned into them, perturbed, turned back, into [out]; [tn] is
+    scratch. Allocates nothing. *)
+
 val slope_height : Float.Array.t -> float -> float
 (** [slope_height map v]: the height a slope map gives the value [v]:
     the first entry's height at or below its value, the last's past its

@@ -368,20 +368,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
                    POV-Ray: the lights in front of the surface then miss
                    it, and [mirror] mends the rays it reflects *)
                 let pn = fr.pn in
-                if fr.nchain = 0 then Normal.perturb_m nm tp n0 pn
-                else begin
-                  let tn = fr.tn and chain = fr.chain in
-                  Vec3.set tn n0.mx n0.my n0.mz;
-                  for i = 0 to fr.nchain - 1 do
-                    Transform.normal_inverse_m (Array.unsafe_get chain i) tn;
-                    Vec3.normalize_m tn
-                  done;
-                  Normal.perturb_m nm tp tn pn;
-                  for i = fr.nchain - 1 downto 0 do
-                    Transform.normal_m (Array.unsafe_get chain i) pn;
-                    Vec3.normalize_m pn
-                  done
-                end;
+                Normal.perturb_through nm tp n0 fr.chain fr.nchain fr.tn pn;
                 pn
           in
           if not fr.top_set then begin
