@@ -43,13 +43,14 @@ let[@inline] relative_ior inner media =
 
 (* Lists of media entered, made once per domain: [inner :: media] for
    the pairs met (a ray entering glass would otherwise make a list cell
-   at every refraction). A pair is looked up by a hash, in one set of [ways] pairs out of [sets]; a set full replaces its
-   pairs in turn. Hashing lets the cache hold many pairs (a scene with
-   dozens of glass objects meets hundreds), where a list searched whole
-   held 16: 4.8 words a camera ray on POV-Ray's stackertransp.pov, 0.9 on
-   glass.pov. The hash is of the interiors' [slot]s, numbers given as a
-   scene is made (an interior's address moves with the collector, and
-   the many glass boxes of stackertransp.pov have the same fields). *)
+   at every refraction). A pair is looked up by a hash, in one set of
+   [ways] pairs out of [sets]; a full set replaces its pairs in turn.
+   Hashing lets the cache hold many pairs (a scene with dozens of glass
+   objects meets hundreds), where a list searched whole held 16: 4.8
+   words a camera ray on POV-Ray's stackertransp.pov, 0.9 on glass.pov.
+   The hash is of the interiors' [slot]s, numbers given as a scene is
+   made (an interior's address moves with the collector, and the many
+   glass boxes of stackertransp.pov have the same fields). *)
 let sets = 256
 let ways = 4
 
