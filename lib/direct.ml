@@ -29,146 +29,183 @@ let irid_k (s : Scene.t) (f : Finish.t) (p : Vec3.m) cl (d : Vec3.m) (n : Vec3.m
   let w = if c = 0 then wl.r else if c = 1 then wl.g else wl.b in
   1. +. (f.irid *. Float.cos (phase /. w))
 
+(* What one light, or one sample of an area light that shades per
+   sample, brings to the point: its colour there (attenuated and
+   shadowed), the cosine [nl] of its direction to the normal (as the
+   finish takes it: |cos| with double_illuminate), and the cosine
+   iridescence is found with. All floats, stored flat: passing it boxes
+   nothing. *)
+type lightlet = {
+  mutable lr : float;
+  mutable lg : float;
+  mutable lb : float;
+  mutable nl : float;
+  mutable icos : float;
+}
+
+(* Diffuse and highlights of the lightlet [c] coming along [l] (the unit
+   direction toward it), on the back side with [back], added into [out] *)
+let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
+    (light : Light.t) (l : Light.dir) back (c : lightlet) (out : Color.acc) =
+  let alpha = k.alpha and lr = c.lr and lg = c.lg and lb = c.lb and nl = c.nl in
+  if back then begin
+    let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
+    let ir = if f.irid > 0. then irid_k s f p c.icos d n 0 else 1. and ig = if f.irid > 0. then irid_k s f p c.icos d n 1 else 1.
+    and ib = if f.irid > 0. then irid_k s f p c.icos d n 2 else 1. in
+    out.ar <- out.ar +. (ir *. k *. (pc.r *. lr));
+    out.ag <- out.ag +. (ig *. k *. (pc.g *. lg));
+    out.ab <- out.ab +. (ib *. k *. (pc.b *. lb))
+  end
+  else begin
+    let cr = ref 0. and cg = ref 0. and cb = ref 0. in
+    if f.diffuse > 0. then begin
+      let k = alpha *. f.diffuse *. (if f.brilliance = 1. then nl else Float.pow nl f.brilliance) in
+      cr := !cr +. (k *. (pc.r *. lr));
+      cg := !cg +. (k *. (pc.g *. lg));
+      cb := !cb +. (k *. (pc.b *. lb))
+    end;
+    if not light.shadowless then begin
+      let m = f.metallic in
+      let mk = if m = 0. then 0. else Finish.metallic_k m nl in
+      let mr = lr *. Finish.tint m mk pc.r and mg = lg *. Finish.tint m mk pc.g and mb = lb *. Finish.tint m mk pc.b in
+      if f.phong > 0. then begin
+        (* r = d - 2 (d.n) n, the mirror direction *)
+        let k = -2. *. Vec3.dot_m d n in
+        let rx = d.mx +. (k *. n.mx) and ry = d.my +. (k *. n.my) and rz = d.mz +. (k *. n.mz) in
+        let rl = (rx *. l.lx) +. (ry *. l.ly) +. (rz *. l.lz) in
+        if rl > 0. then begin
+          let k = f.phong *. Float.pow rl f.phong_size in
+          cr := !cr +. (k *. mr);
+          cg := !cg +. (k *. mg);
+          cb := !cb +. (k *. mb)
+        end
+      end;
+      if f.specular > 0. then begin
+        (* h = (l - d) / |l - d|, the half vector *)
+        let hx = l.lx -. d.mx and hy = l.ly -. d.my and hz = l.lz -. d.mz in
+        let len = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+        let k = if len > 0. then 1. /. len else 1. in
+        let nh = (n.mx *. (k *. hx)) +. (n.my *. (k *. hy)) +. (n.mz *. (k *. hz)) in
+        if nh > 0. then begin
+          let k = f.specular *. Float.pow nh (1. /. f.roughness) in
+          cr := !cr +. (k *. mr);
+          cg := !cg +. (k *. mg);
+          cb := !cb +. (k *. mb)
+        end
+      end
+    end;
+    if f.irid > 0. then begin
+      (* POV-Ray's iridescence scales this light's diffuse and highlights *)
+      cr := !cr *. irid_k s f p c.icos d n 0;
+      cg := !cg *. irid_k s f p c.icos d n 1;
+      cb := !cb *. irid_k s f p c.icos d n 2
+    end;
+    out.ar <- out.ar +. !cr;
+    out.ag <- out.ag +. !cg;
+    out.ab <- out.ab +. !cb
+  end
+
+(* The shadow of light [j] at [p] (its direction in [toward w]) into
+   [passed w]: kept in [cache], or traced and kept *)
+let find_shadow s w (light : Light.t) p cache j =
+  let sh = Shadow.passed w in
+  if cache.stamp.(j) = cache.gen then
+    Color.acc_set sh cache.col.(3 * j) cache.col.((3 * j) + 1) cache.col.((3 * j) + 2)
+  else begin
+    Shadow.light s w light p;
+    cache.stamp.(j) <- cache.gen;
+    cache.col.(3 * j) <- sh.ar;
+    cache.col.((3 * j) + 1) <- sh.ag;
+    cache.col.((3 * j) + 2) <- sh.ab
+  end
+
 (* Diffuse and highlights of one light seen from [p], added into [out];
-   the shadow is {!Shadow.light} (an area light's samples come here as
-   point lights). Scalars throughout: nothing is allocated unless the
-   shadow ray crosses something transparent. *)
+   the shadow is {!Shadow.light} (an area light's samples averaged).
+   Scalars throughout: nothing is allocated unless the shadow ray crosses
+   something transparent. *)
 let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
-    (light : Light.t) (lp : Vec3.m) sampled (cache : shadows) j (out : Color.acc) =
-  let alpha = k.alpha in
+    (light : Light.t) (cache : shadows) j (c : lightlet) (out : Color.acc) =
   let w = Shadow.walk () in
   let l = Shadow.toward w in
-  (* [sampled]: a sample of an area light at [lp], as a point light *)
-  if sampled then Light.direction_at light lp.mx lp.my lp.mz p l else Light.direction_into light p l;
+  Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
   (* double_illuminate: a light behind lights as from the front, by |cos| *)
   let nl = if f.double_illuminate then Float.abs nl else nl in
   let front = nl >= light_min_cos in
   let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
-  let att =
-    if not (front || back) then 0.
-    else if sampled then Light.attenuation_at light lp.mx lp.my lp.mz p
-    else Light.attenuation_m light p
-  in
+  let att = if not (front || back) then 0. else Light.attenuation_m light p in
   if att > 0. then begin
     let lr = att *. light.color.r and lg = att *. light.color.g and lb = att *. light.color.b in
     (* no tuple: the channels stay unboxed *)
     let sh = Shadow.passed w in
     (* a shadowless light is still tested for its projected_through *)
     let walk = match light.projected_through with Some _ -> true | None -> not light.shadowless in
-    (* [j] < 0: an area light's sample, never kept *)
-    if walk then
-      if sampled then Shadow.point s w light p
-      else if j >= 0 && cache.stamp.(j) = cache.gen then
-        Color.acc_set sh cache.col.(3 * j) cache.col.((3 * j) + 1) cache.col.((3 * j) + 2)
-      else begin
-        Shadow.light s w light p;
-        if j >= 0 then begin
-          cache.stamp.(j) <- cache.gen;
-          cache.col.(3 * j) <- sh.ar;
-          cache.col.((3 * j) + 1) <- sh.ag;
-          cache.col.((3 * j) + 2) <- sh.ab
-        end
-      end;
+    if walk then find_shadow s w light p cache j;
     let lr = if walk then lr *. sh.ar else lr
     and lg = if walk then lg *. sh.ag else lg
     and lb = if walk then lb *. sh.ab else lb in
-    if not (lr = 0. && lg = 0. && lb = 0.) then
-      if back then begin
-        let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
-        let ir = if f.irid > 0. then irid_k s f p nl d n 0 else 1. and ig = if f.irid > 0. then irid_k s f p nl d n 1 else 1.
-        and ib = if f.irid > 0. then irid_k s f p nl d n 2 else 1. in
-        out.ar <- out.ar +. (ir *. k *. (pc.r *. lr));
-        out.ag <- out.ag +. (ig *. k *. (pc.g *. lg));
-        out.ab <- out.ab +. (ib *. k *. (pc.b *. lb))
-      end
-      else begin
-        let cr = ref 0. and cg = ref 0. and cb = ref 0. in
-        if f.diffuse > 0. then begin
-          let k = alpha *. f.diffuse *. (if f.brilliance = 1. then nl else Float.pow nl f.brilliance) in
-          cr := !cr +. (k *. (pc.r *. lr));
-          cg := !cg +. (k *. (pc.g *. lg));
-          cb := !cb +. (k *. (pc.b *. lb))
-        end;
-        if not light.shadowless then begin
-          let m = f.metallic in
-          let mk = if m = 0. then 0. else Finish.metallic_k m nl in
-          let mr = lr *. Finish.tint m mk pc.r and mg = lg *. Finish.tint m mk pc.g and mb = lb *. Finish.tint m mk pc.b in
-          if f.phong > 0. then begin
-            (* r = d - 2 (d.n) n, the mirror direction *)
-            let k = -2. *. Vec3.dot_m d n in
-            let rx = d.mx +. (k *. n.mx) and ry = d.my +. (k *. n.my) and rz = d.mz +. (k *. n.mz) in
-            let rl = (rx *. l.lx) +. (ry *. l.ly) +. (rz *. l.lz) in
-            if rl > 0. then begin
-              let k = f.phong *. Float.pow rl f.phong_size in
-              cr := !cr +. (k *. mr);
-              cg := !cg +. (k *. mg);
-              cb := !cb +. (k *. mb)
-            end
-          end;
-          if f.specular > 0. then begin
-            (* h = (l - d) / |l - d|, the half vector *)
-            let hx = l.lx -. d.mx and hy = l.ly -. d.my and hz = l.lz -. d.mz in
-            let len = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
-            let k = if len > 0. then 1. /. len else 1. in
-            let nh = (n.mx *. (k *. hx)) +. (n.my *. (k *. hy)) +. (n.mz *. (k *. hz)) in
-            if nh > 0. then begin
-              let k = f.specular *. Float.pow nh (1. /. f.roughness) in
-              cr := !cr +. (k *. mr);
-              cg := !cg +. (k *. mg);
-              cb := !cb +. (k *. mb)
-            end
-          end
-        end;
-        if f.irid > 0. then begin
-          (* POV-Ray's iridescence scales this light's diffuse and highlights *)
-          cr := !cr *. irid_k s f p nl d n 0;
-          cg := !cg *. irid_k s f p nl d n 1;
-          cb := !cb *. irid_k s f p nl d n 2
-        end;
-        out.ar <- out.ar +. !cr;
-        out.ag <- out.ag +. !cg;
-        out.ab <- out.ab +. !cb
-      end
+    if not (lr = 0. && lg = 0. && lb = 0.) then begin
+      c.lr <- lr;
+      c.lg <- lg;
+      c.lb <- lb;
+      c.nl <- nl;
+      c.icos <- nl;
+      shade s f pc k p n d light l back c out
+    end
   end
 
-let no_cache = shadows ()
+(* Per domain: the lightlet handed to [shade] and a sample's position *)
+type scratch = { ll : lightlet; q : Vec3.m }
 
-(* Per domain: what an area light that shades per sample
-   (area_illumination) needs for each: the scene, the light, the shaded
-   point's finish, pigment, numbers, point, normal and ray, a sample's
-   position *)
-type illum = {
-  mutable iscene : Scene.t option;
-  mutable ilight : Light.t;
-  mutable iarea : Light.area;
-  mutable ifinish : Finish.t;
-  mutable ipc : Pigment.out;
-  mutable ik : opacity;
-  mutable ip : Vec3.m;
-  mutable inn : Vec3.m;
-  mutable id : Vec3.m;
-  ipos : Vec3.m;
-  isum : Color.acc;
-}
+let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0. }; q = Vec3.m () })
 
-let illum_key =
-  Scratch.key (fun () ->
-      { iscene = None; ilight = Light.point Vec3.zero Color.black;
-        iarea = Light.area Vec3.unit_x Vec3.unit_z 1 1; ifinish = Finish.default; ipc = Pigment.out ();
-        ik = { alpha = 1. }; ip = Vec3.m (); inn = Vec3.m (); id = Vec3.m (); ipos = Vec3.m (); isum = Color.acc 0. })
-
-(* sample (i, j) of the area light in [il] shading as a point light there *)
-let illum_sample (il : illum) i j (o : Color.acc) =
-  let light = il.ilight and a = il.iarea in
-  Light.position_into light a il.ip (Light.offset a.n1 i) (Light.offset a.n2 j) il.ipos;
-  Color.acc_set o 0. 0. 0.;
-  match il.iscene with
-  | Some s -> one_light s il.ifinish il.ipc il.ik il.ip il.inn il.id light il.ipos true no_cache (-1) o
-  | None -> ()
-
-(* [one_light]'s position when the light is where it stands (unread) *)
-let own_position = Vec3.m ()
+(* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
+   ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
+   found as without it (the samples' shadows averaged adaptively) for the
+   light's colour unattenuated, and the centre facing away skips nothing;
+   when some light passes, every sample of the grid (all of them, adaptive
+   or not) shades as a point light at its position with 1/(n1 n2) of that
+   shadowed colour, attenuated (fade, spotlight) along its own ray and
+   skipped when it faces away; iridescence by the centre's direction. *)
+let area_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
+    (light : Light.t) (a : Light.area) (cache : shadows) j (sc : scratch) (out : Color.acc) =
+  let w = Shadow.walk () in
+  let l = Shadow.toward w in
+  Light.direction_into light p l;
+  let nl0 = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
+  let nl0 = if f.double_illuminate then Float.abs nl0 else nl0 in
+  let sh = Shadow.passed w in
+  let walk = match light.projected_through with Some _ -> true | None -> not light.shadowless in
+  if walk then find_shadow s w light p cache j;
+  let lr = if walk then light.color.r *. sh.ar else light.color.r
+  and lg = if walk then light.color.g *. sh.ag else light.color.g
+  and lb = if walk then light.color.b *. sh.ab else light.color.b in
+  if not (lr = 0. && lg = 0. && lb = 0.) then begin
+    let nn = float_of_int (a.n1 * a.n2) in
+    let lr = lr /. nn and lg = lg /. nn and lb = lb /. nn in
+    let c = sc.ll and q = sc.q in
+    for v = 0 to a.n2 - 1 do
+      for u = 0 to a.n1 - 1 do
+        Light.position_into light a p (Light.offset a.n1 u) (Light.offset a.n2 v) q;
+        Light.direction_at light q.mx q.my q.mz p l;
+        let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
+        let nl = if f.double_illuminate then Float.abs nl else nl in
+        let front = nl >= light_min_cos in
+        let back = (not front) && f.diffuse_back > 0. && -.nl >= light_min_cos in
+        if front || back then begin
+          let att = Light.attenuation_shifted light q.mx q.my q.mz p in
+          if att > 0. then begin
+            c.lr <- lr *. att;
+            c.lg <- lg *. att;
+            c.lb <- lb *. att;
+            c.nl <- nl;
+            c.icos <- nl0;
+            shade s f pc k p n d light l back c out
+          end
+        end
+      done
+    done
+  end
 
 let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment.out) (k : opacity) p n d
     (out : Color.acc) =
@@ -177,25 +214,10 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     cache.stamp <- Array.make nl 0;
     cache.col <- Array.make (3 * nl) 0.
   end;
+  let sc = Scratch.get scratch_key in
   for j = 0 to nl - 1 do
     let light = Array.unsafe_get ls j in
     match light.area with
-    | Some a when a.area_illumination ->
-        (* every sample shades as a point light; averaged like shadows *)
-        let il = Scratch.get illum_key in
-        (match il.iscene with Some s' when s' == s -> () | _ -> il.iscene <- Some s);
-        il.ilight <- light;
-        il.iarea <- a;
-        il.ifinish <- f;
-        il.ipc <- pc;
-        il.ik <- k;
-        il.ip <- p;
-        il.inn <- n;
-        il.id <- d;
-        let c = il.isum in
-        Light.average_area_into a il illum_sample c;
-        out.ar <- out.ar +. c.ar;
-        out.ag <- out.ag +. c.ag;
-        out.ab <- out.ab +. c.ab
-    | _ -> one_light s f pc k p n d light own_position false cache j out
+    | Some a when a.area_illumination -> area_light s f pc k p n d light a cache j sc out
+    | _ -> one_light s f pc k p n d light cache j sc.ll out
   done

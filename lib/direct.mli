@@ -2,8 +2,9 @@
     light each light source gives a point of a texture layer, with its
     shadow ({!Shadow}): diffuse with brilliance, back-side diffuse,
     Phong and Blinn (specular) highlights, metallic tints; an area light
-    averages its shadow samples, or with [area_illumination] shades each
-    sample as a point light. Ambient, emission, reflection and what passes
+    averages its shadow samples; with [area_illumination] that shadow
+    scales what every sample of the grid gives as a point light, averaged
+    (POV-Ray's rule). Ambient, emission, reflection and what passes
     through are {!Whitted}'s. *)
 
 type opacity = { mutable alpha : float }

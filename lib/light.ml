@@ -120,9 +120,10 @@ let[@inline] cylinder_factor ~radius ~falloff ~tightness d =
     end
     else f
 
-(* The attenuation of the light as if it stood at (cx, cy, cz), at a
-   point written in place, in scalars (inlined: nothing boxed) *)
-let[@inline] attenuation_at l cx cy cz (p : Vec3.m) =
+(* The attenuation of the light as if it stood at (cx, cy, cz), a
+   spotlight's axis from (ox, oy, oz) to its point_at, at a point written
+   in place, in scalars (inlined: nothing boxed) *)
+let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
   let spot =
     match l.kind with
     | Point | Parallel _ -> 1.
@@ -140,7 +141,7 @@ let[@inline] attenuation_at l cx cy cz (p : Vec3.m) =
         end
         else 0.
     | Spot { point_at; radius; falloff; tightness } ->
-        let ax = point_at.x -. cx and ay = point_at.y -. cy and az = point_at.z -. cz in
+        let ax = point_at.x -. ox and ay = point_at.y -. oy and az = point_at.z -. oz in
         let tx = p.mx -. cx and ty = p.my -. cy and tz = p.mz -. cz in
         let cos =
           (Vec3.unit_k ax ay az 0 *. Vec3.unit_k tx ty tz 0)
@@ -152,6 +153,16 @@ let[@inline] attenuation_at l cx cy cz (p : Vec3.m) =
   if l.fade_power > 0. && l.fade_distance <> 0. then
     spot *. 2. /. (1. +. Float.pow (distance_at l cx cy cz p /. l.fade_distance) l.fade_power)
   else spot
+
+(* the spotlight's axis moved with the sample, aimed at its point_at *)
+let[@inline] attenuation_at l cx cy cz (p : Vec3.m) = attenuation_axis l cx cy cz cx cy cz p
+
+(* the spotlight's axis the light's own, whatever the sample (POV-Ray's
+   Attenuate_Light for a sample's ray: the angle to the light's fixed
+   direction) *)
+let[@inline] attenuation_shifted l cx cy cz (p : Vec3.m) =
+  let c = l.position in
+  attenuation_axis l c.x c.y c.z cx cy cz p
 
 let[@inline] attenuation_m l (p : Vec3.m) =
   let c = l.position in

@@ -80,6 +80,12 @@ val attenuation_at : t -> float -> float -> float -> Vec3.m -> float
 (** [attenuation_at l x y z p]: {!attenuation_m} of the light as if it
     stood at [(x, y, z)] (a point of an area light). *)
 
+val attenuation_shifted : t -> float -> float -> float -> Vec3.m -> float
+(** The same, but a spotlight's axis stays the light's own (from its
+    centre toward its point_at), moved to [(x, y, z)] without turning: the
+    angle is from that direction (POV-Ray's rule for the samples of an
+    area light with [area_illumination]). *)
+
 val direction_to : t -> Vec3.t -> Vec3.t * float
 (** Unit vector from the point towards the light, and the distance over
     which shadow rays must look (for parallel and cylindrical lights: to

@@ -145,6 +145,47 @@ let kept_shadows () =
   (* straight under the light, and the kept shadow lets all through *)
   check "kept again: under the sphere, lit" 1. (at 0.)
 
+(* area_illumination by POV-Ray 3.7's rule (trace.cpp,
+   ComputeFullAreaDiffuseLight): the shadow as for any area light, times
+   the mean of what every sample of the grid gives as a point light. A
+   3x1 light 2 above the lit point, its samples at x = -1, 0, 1: cosines
+   2/sqrt 5, 1, 2/sqrt 5, mean (1 + 4/sqrt 5)/3; a small sphere hiding
+   the x = 1 sample alone: the shadow average 0.75, as without
+   area_illumination, times the same mean (each sample shadowed on its
+   own instead gave (2/sqrt 5 + 1)/4 + 1/4 = 0.7236). A spotlight's
+   samples keep the light's axis: a sample beside the light, straight
+   above the point, sees it on the axis. *)
+let area_illumination () =
+  let at blocker =
+    let s =
+      Scn.compile
+        ("light_source { <0,2,0>, rgb 1 area_light <2,0,0>, <0,0,0>, 3, 1 area_illumination on }\n" ^ blocker
+       ^ "plane { y, -1 pigment { rgb 1 } }")
+    in
+    let pc = Pigment.out () in
+    pc.r <- 1.;
+    pc.g <- 1.;
+    pc.b <- 1.;
+    let k = { Direct.alpha = 1. } and n = Vec3.m () and d = Vec3.m () and p = Vec3.m () and out = Color.acc 0. in
+    Vec3.set n 0. 1. 0.;
+    Vec3.set d 0. (-1.) 0.;
+    Direct.lights s (Direct.shadows ()) s.lights { Finish.default with diffuse = 1. } pc k p n d out;
+    out.ar
+  in
+  let mean = (1. +. (4. /. Float.sqrt 5.)) /. 3. in
+  check "unshadowed: the samples' mean cosine" mean (at "");
+  check "one end hidden: 0.75 of it" (0.75 *. mean) (at "sphere { <0.5,1,0>, 0.1 }\n");
+  let spot =
+    {
+      (Light.point Vec3.zero Color.white) with
+      kind = Light.Spot { point_at = Vec3.make 0. (-1.) 0.; radius = 10.; falloff = 20.; tightness = 0. };
+    }
+  in
+  let p = Vec3.m () in
+  Vec3.set p 1. (-1.) 0.;
+  check "spot sample, the light's axis" 1. (Light.attenuation_shifted spot 1. 0. 0. p);
+  check "spot sample, its own axis to point_at: outside" 0. (Light.attenuation_at spot 1. 0. 0. p)
+
 (* light_group as compiled: the group's lights leave the global list and
    make a set of their own, which the group's surfaces name; with
    global_lights on the set starts with the global lights; every
@@ -354,6 +395,7 @@ let tests =
       Alcotest.test_case "area light in a scene" `Quick scene;
       Alcotest.test_case "shadows kept per point" `Quick kept_shadows;
       Alcotest.test_case "light_group sets" `Quick groups;
+      Alcotest.test_case "area_illumination: shadow times the samples' mean" `Quick area_illumination;
       Alcotest.test_case "cylinder light: POV-Ray's formula by hand" `Quick cylinder_formula;
       Alcotest.test_case "cylinder light: axis, plane, direction, fade" `Quick cylinder_light_at;
       QCheck_alcotest.to_alcotest cylinder_parallel;
