@@ -44,7 +44,7 @@ let default_settings =
     ambient_light = Color.white;
     encoding = Image.Srgb;
     legacy_alpha = false;
-    irid_wavelength = Color.make 0.25 0.18 0.14;
+    irid_wavelength = Color.make 0.70 0.52 0.48;
   }
 
 (* What testing an object costs, in tests of a sphere held in the flat
