@@ -277,28 +277,23 @@ let gif_indices path =
   let b = gif_index8 path in
   (b.width, b.height, Index8.dump b, b.colormap.map |> Array.length)
 
-let read_indices path =
+let read_palette path =
   let s = read_file path in
-  if is_gif s then (let w, h, b, _ = gif_indices path in Some (w, h, b))
+  if is_gif s then Some (gif_indices path)
   else if not (String.starts_with ~prefix:Png_codec.signature s) then None
   else
     naming path @@ fun () ->
+    (* a palette PNG has its PLTE chunk (Png_codec.check sees to it) *)
     if Png_codec.check s <> 3 then None
     else
+      let n = match Png_codec.chunk s "PLTE" with Some p -> String.length p / 3 | None -> failwith "no PLTE chunk" in
       match Png.load path [] with
-      | Index8 b -> Some (b.width, b.height, Index8.dump b)
+      | Index8 b -> Some (b.width, b.height, Index8.dump b, n)
       | _ -> None
       | exception (Sys_error m | Invalid_argument m) -> failwith m
       | exception Images.Wrong_file_type -> failwith "unreadable PNG"
 
-let palette_size path =
-  let s = read_file path in
-  if is_gif s then (let _, _, _, n = gif_indices path in Some n)
-  else if not (String.starts_with ~prefix:Png_codec.signature s) then None
-  else
-    naming path @@ fun () ->
-    if Png_codec.check s <> 3 then None
-    else match Png_codec.chunk s "PLTE" with Some p -> Some (String.length p / 3) | None -> failwith "no PLTE chunk"
+let read_indices path = Option.map (fun (w, h, idx, _) -> (w, h, idx)) (read_palette path)
 
 (* A palette's alphas come from its tRNS chunk (entries past its end are
    opaque), camlimages keeping only one transparent index; an alpha

@@ -98,9 +98,9 @@ val read_indices : string -> (int * int * Bytes.t) option
     row by row from the top; [None] for any other image. Raises [Failure] as
     {!read}. *)
 
-val palette_size : string -> int option
-(** How many colours a palette PNG's or a GIF's palette holds; [None]
-    for any other image. Raises [Failure] as {!read}. *)
+val read_palette : string -> (int * int * Bytes.t * int) option
+(** {!read_indices} and the number of colours the palette holds, the file
+    read and decoded once. Raises [Failure] as {!read}. *)
 
 val read_alpha : string -> Bytes.t option
 (** The alpha of each pixel (one byte a pixel, row by row from the top)

@@ -208,9 +208,7 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
   let palette =
     lazy
       (try
-         match (Image.read_indices path, Image.palette_size path) with
-         | Some (_, _, idx), Some n -> Some (idx, n)
-         | _ -> None
+         match Image.read_palette path with Some (_, _, idx, n) -> Some (idx, n) | None -> None
        with Sys_error e | Failure e -> Diag.error loc "cannot read image_map %s: %s" file e)
   in
   let apply (i : Pigment.image) = function
