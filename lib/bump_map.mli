@@ -60,6 +60,12 @@ val value : t -> Vec3.m -> float
     core circle), as POV-Ray's image_pattern. Inlined where it is
     called: it allocates nothing. *)
 
+val weight : int -> float -> float -> int -> float
+(** [weight interpolate p q k]: POV-Ray's weight of corner [k] (0 the
+    texel at the point's integer coordinates, 1 left, 2 up, 3 up-left)
+    for the fractions [p], [q] past it: bilinear for 2, normalized
+    inverse square distance otherwise. Inlined: nothing boxed. *)
+
 val locate : w:int -> h:int -> once:bool -> map_type:int -> Vec3.m -> Vec3.m -> bool
 (** [locate ~w ~h ~once ~map_type q c]: POV-Ray's map_pos (imageutil.cpp)
     for a [w] x [h] image: the point [q] (pattern space) taken to the

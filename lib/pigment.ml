@@ -128,20 +128,17 @@ let[@inline] cubic_weight p k =
   else -0.5 *. q *. p *. p
 
 (* interpolate 4: the four texels around (the one at [ix, iy], left, up,
-   up-left), each by the inverse square of its distance, normalised *)
+   up-left), each by the inverse square of its distance, normalised, as
+   a bump map's ({!Bump_map.weight}) *)
 let norm_dist_into (im : image) fx fy (o : out) =
   let x = fx +. 0.5 and y = fy +. 0.5 in
   let ix = int_of_float x and iy = int_of_float y in
   let p = x -. float_of_int ix and q = y -. float_of_int iy in
-  let p1 = 1. -. p and q1 = 1. -. q in
-  let w0 = 1. /. ((p1 *. p1) +. (q1 *. q1)) and w1 = 1. /. ((p *. p) +. (q1 *. q1)) in
-  let w2 = 1. /. ((p1 *. p1) +. (q *. q)) and w3 = 1. /. ((p *. p) +. (q *. q)) in
-  let s = w0 +. w1 +. w2 +. w3 in
   zero o;
-  add_scaled o (w0 /. s) (corner im ix iy);
-  add_scaled o (w1 /. s) (corner im (ix - 1) iy);
-  add_scaled o (w2 /. s) (corner im ix (iy - 1));
-  add_scaled o (w3 /. s) (corner im (ix - 1) (iy - 1))
+  add_scaled o (Bump_map.weight 4 p q 0) (corner im ix iy);
+  add_scaled o (Bump_map.weight 4 p q 1) (corner im (ix - 1) iy);
+  add_scaled o (Bump_map.weight 4 p q 2) (corner im ix (iy - 1));
+  add_scaled o (Bump_map.weight 4 p q 3) (corner im (ix - 1) (iy - 1))
 
 (* interpolate 3: the 4 x 4 texels around, by cubic weights along each
    axis *)
