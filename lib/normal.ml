@@ -231,6 +231,7 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
           perturb_d w cells.(Int.min (k - 1) (Int.max 0 (int_of_float v))) l.lq l.ln out (d + 1)
       | Average entries ->
           into_space nm point n l;
+          warp_point w nm l;
           Vec3.set l.t1 0. 0. 0.;
           for i = 0 to Array.length entries - 1 do
             let wt, e = Array.unsafe_get entries i in
@@ -240,6 +241,7 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
           Vec3.set out l.t1.mx l.t1.my l.t1.mz
       | Image b ->
           into_space nm point n l;
+          warp_point w nm l;
           Bump_map.tilt b nm.amount l.lq l.ln out
       | Facets f ->
           (* POV-Ray's facets: the point warped, the amount unused *)
@@ -261,6 +263,16 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
 and into_space nm point n l =
   Transform.inv_point_m nm.xform point l.lq;
   into_frame nm n l
+
+(* POV-Ray 3.7 warps the point of a bump map and of an average: the
+   warps and turbulence [nm.pattern] carries (its kind unused), the
+   normal as it is in this space *)
+and warp_point w nm l =
+  let pt = nm.pattern in
+  if Array.length pt.warps > 0 || pt.turbulence <> None then begin
+    Pattern.warped_m pt l.lq w.pw;
+    Vec3.set l.lq w.pw.p.mx w.pw.p.my w.pw.p.mz
+  end
 
 and into_frame nm n l =
   Vec3.set l.ln n.mx n.my n.mz;

@@ -11,8 +11,8 @@ type t =
   | Solid of Color.rgbft
   | Map of { pattern : Pattern.t; entries : (float * t) array; xform : Transform.t }
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
-  | Image_map of { image : image; xform : Transform.t }
-  | Average of (float * t) array
+  | Image_map of { image : image; xform : Transform.t; warp : Pattern.t option }
+  | Average of { entries : (float * t) array; xform : Transform.t; warp : Pattern.t option }
   | Uv of t
 
 let solid c = Solid c
@@ -40,7 +40,7 @@ let default_entries (k : Pattern.kind) =
          (0.1, sc 0. 1. 1.) |]
   | _ -> [| (0., sc 0. 0. 0.); (1., sc 1. 1. 1.) |]
 
-let rec transform t p =
+let transform t p =
   match p with
   | Solid _ -> p
   (* POV-Ray 3.7 (pattern.cpp's Transform_Tpattern): only the map's own
@@ -49,7 +49,7 @@ let rec transform t p =
   | Map m -> Map { m with xform = Transform.then_ m.xform t }
   | Blocks b -> Blocks { b with xform = Transform.then_ b.xform t }
   | Image_map i -> Image_map { i with xform = Transform.then_ i.xform t }
-  | Average es -> Average (Array.map (fun (w, q) -> (w, transform t q)) es)
+  | Average a -> Average { a with xform = Transform.then_ a.xform t }
   (* POV-Ray: transformations written after a uv-mapped pigment (the
      texture's, the object's) leave it as it is (measured) *)
   | Uv _ -> p
@@ -59,7 +59,7 @@ let uv = function Uv _ as p -> p | p -> Uv p
 let rec uses_uv = function
   | Uv _ -> true
   | Solid _ | Image_map _ -> false
-  | Map { entries = es; _ } | Average es -> Array.exists (fun (_, q) -> uses_uv q) es
+  | Map { entries = es; _ } | Average { entries = es; _ } -> Array.exists (fun (_, q) -> uses_uv q) es
   | Blocks { cells; _ } -> Array.exists uses_uv cells
 
 let clear = Color.rgbft 0. 0. 0. 0. 1.
@@ -192,7 +192,7 @@ let rec opaque = function
   | Map { entries; _ } -> entries_opaque entries 0
   | Blocks { cells; _ } -> cells_opaque cells 0
   | Image_map _ -> false
-  | Average es -> entries_opaque es 0
+  | Average { entries; _ } -> entries_opaque entries 0
   | Uv p -> opaque p
 
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
@@ -274,12 +274,22 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       let n = Array.length cells in
       if n = 0 then set o (Color.opaque Color.black)
       else into_d w cells.(Int.min (n - 1) (Int.max 0 i)) (entries_at w d) o (d + 1)
-  | Image_map { image; xform } ->
+  | Image_map { image; xform; warp = None } ->
       Transform.inv_point_m xform point w.q;
       image_into image w.q o
-  | Average es ->
-      let t = Scratch.level w.tmp d in
+  | Image_map { image; xform; warp = Some pattern } ->
+      Transform.inv_point_m xform point w.q;
+      Pattern.warped_m pattern w.q w.pw;
+      image_into image w.pw.p o
+  | Average { entries = es; xform; warp } ->
+      let t = Scratch.level w.tmp d and e = Scratch.level w.pts d in
       if w.used <= d then w.used <- d + 1;
+      Transform.inv_point_m xform point e;
+      (match warp with
+      | None -> ()
+      | Some pattern ->
+          Pattern.warped_m pattern e w.pw;
+          Vec3.set e w.pw.p.mx w.pw.p.my w.pw.p.mz);
       o.r <- 0.;
       o.g <- 0.;
       o.b <- 0.;
@@ -287,7 +297,7 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       o.transmit <- 0.;
       for i = 0 to Array.length es - 1 do
         let k, q = Array.unsafe_get es i in
-        into_d w q point t (d + 1);
+        into_d w q e t (d + 1);
         o.r <- o.r +. (k *. t.r);
         o.g <- o.g +. (k *. t.g);
         o.b <- o.b +. (k *. t.b);

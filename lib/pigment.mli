@@ -29,11 +29,15 @@ type t =
   | Blocks of { pattern : Pattern.t; cells : t array; xform : Transform.t }
       (** checker, hexagon, brick with their list of colours or pigments
           (taken as a map's entries are) *)
-  | Image_map of { image : image; xform : Transform.t }
-  | Average of (float * t) array
+  | Image_map of { image : image; xform : Transform.t; warp : Pattern.t option }
+      (** [warp]: a pattern whose warps and turbulence move the point
+          in the image's space before the image is read (its kind is
+          unused), as POV-Ray 3.7 warps an image map *)
+  | Average of { entries : (float * t) array; xform : Transform.t; warp : Pattern.t option }
       (** POV-Ray's [average pigment_map]: the entries' colours weighted
-          (weights summing to 1), each at the point (the average's own
-          transformations are carried by its entries) *)
+          (weights summing to 1), each taken at the average's own point
+          (its transformations, then [warp]'s warps and turbulence,
+          applied), as a map's entries are *)
   | Uv of t
       (** POV-Ray's [uv_mapping]: the pigment taken at the surface's
           [<u, v, 0>] (see {!Pattern.uv_point}) instead of the point;
@@ -52,7 +56,7 @@ val default_entries : Pattern.kind -> (float * t) array
 val transform : Transform.t -> t -> t
 (** Move a pigment by a transform applied after its current one: a
     map's or block pattern's own pattern (its entries follow it, being
-    taken in its space), an image map, an average's entries. Solid
+    taken in its space), an image map, an average. Solid
     colours and uv-mapped pigments are unchanged. *)
 
 val uv : t -> t

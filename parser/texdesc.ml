@@ -15,6 +15,10 @@ type pat = {
   bump : Bump_map.t option;
   facets : Facets.t option;  (** normals: [facets] *)
   uv : Normal.t option;
+  carrier : Pattern.t option;
+      (** the warps and turbulence written on what has no pattern of its
+          own (image_map, average, bump_map), in a pattern whose kind is
+          unused *)
 }
 
 type modifier = pat -> pat
@@ -22,7 +26,8 @@ type modifier = pat -> pat
 let empty =
   { pattern = None; base = Pigment.black; entries = None; cells = []; xform = Transform.identity;
     amount = 0.5; average = false; slope = Float.Array.create 0;
-    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None; facets = None; uv = None }
+    accuracy = Normal.default_accuracy; nmap = None; ncells = []; bump = None; facets = None; uv = None;
+    carrier = None }
 
 let of_pigment (p : Pigment.t) =
   match p with
@@ -30,6 +35,7 @@ let of_pigment (p : Pigment.t) =
       { empty with pattern = Some pattern; entries = Some entries; xform; base = p }
   | Pigment.Blocks { pattern; cells; xform } ->
       { empty with pattern = Some pattern; cells = Array.to_list cells; xform; base = p }
+  | Pigment.Image_map { warp; _ } | Pigment.Average { warp; _ } -> { empty with base = p; carrier = warp }
   | _ -> { empty with base = p }
 
 let of_pattern k = { empty with pattern = Some (Pattern.make k) }
@@ -57,7 +63,27 @@ let transform t p =
   | None -> { p with base = Pigment.transform t p.base }
   | Some _ -> { p with xform = Transform.then_ p.xform t }
 
-let pattern_mod f p = match p.pattern with Some pt -> { p with pattern = Some (f pt) } | None -> p
+(* POV-Ray 3.7 warps the point of an image map, a bump map and an
+   average (pigment or normal) as it warps a pattern's (checked against
+   its renders: repeat and black_hole warps) *)
+let carries p =
+  p.average || p.bump <> None
+  || match p.base with Pigment.Image_map _ | Pigment.Average _ -> true | _ -> false
+
+(* the transformations a warp written now comes after: an image map's
+   (and a built average's) are its own, the others' in [xform] *)
+let carrier_xform p =
+  match p.base with
+  | Pigment.Image_map { xform; _ } | Pigment.Average { xform; _ } -> xform
+  | _ -> p.xform
+
+let carrier p = match p.carrier with Some c -> c | None -> Pattern.make Pattern.Bozo
+
+let pattern_mod f p =
+  match p.pattern with
+  | Some pt -> { p with pattern = Some (f pt) }
+  | None when carries p -> { p with carrier = Some (f (carrier p)) }
+  | None -> p
 
 let turbulence v =
   pattern_mod (fun pt ->
@@ -95,8 +121,12 @@ let pigment p =
       let es = Option.value ~default:[||] p.entries in
       let total = Array.fold_left (fun s (w, _) -> s +. w) 0. es in
       if Array.length es = 0 || total = 0. then Pigment.black
-      else Pigment.Average (Array.map (fun (w, q) -> (w /. total, Pigment.transform p.xform q)) es)
-  | None -> p.base
+      else Pigment.Average { entries = Array.map (fun (w, q) -> (w /. total, q)) es; xform = p.xform; warp = p.carrier }
+  | None -> (
+      match p.base with
+      | Pigment.Image_map i -> Pigment.Image_map { i with warp = p.carrier }
+      | Pigment.Average a -> Pigment.Average { a with warp = p.carrier }
+      | b -> b)
   | Some pattern ->
       if Pattern.is_block pattern.kind then
         let defaults = Array.map snd (Pigment.default_entries pattern.kind) in
@@ -122,13 +152,12 @@ let built_normal p =
       { (leaf pattern p.amount) with map = Normal.Facets f }
   | pattern, None ->
   match pattern with
-  | None when p.bump <> None ->
-      { (leaf (Pattern.make Pattern.Bozo) p.amount) with map = Normal.Image (Option.get p.bump) }
+  | None when p.bump <> None -> { (leaf (carrier p) p.amount) with map = Normal.Image (Option.get p.bump) }
   | None when p.average ->
       (* POV-Ray divides by the weights' sum *)
       let es = Option.value ~default:[||] p.nmap in
       let total = Array.fold_left (fun s (w, _) -> s +. w) 0. es in
-      let n = leaf (Pattern.make Pattern.Bozo) 0. in
+      let n = leaf (carrier p) 0. in
       if Array.length es = 0 || total = 0. then n
       else { n with map = Normal.Average (Array.map (fun (w, q) -> (w /. total, q)) es) }
   | None -> leaf (Pattern.make Pattern.Bozo) 0.
@@ -150,11 +179,11 @@ let normal p = match p.uv with Some n -> n | None -> built_normal p
 let of_normal (n : Normal.t) =
   let p = { empty with xform = n.xform; amount = n.amount; slope = n.slope; accuracy = n.accuracy } in
   match n.map with
-  | Normal.Average es -> { p with average = true; nmap = Some es }
+  | Normal.Average es -> { p with average = true; nmap = Some es; carrier = Some n.pattern }
   | Normal.Leaf -> { p with pattern = Some n.pattern }
   | Normal.Blend es -> { p with pattern = Some n.pattern; nmap = Some es }
   | Normal.Cells cs -> { p with pattern = Some n.pattern; ncells = Array.to_list cs }
-  | Normal.Image b -> { p with bump = Some b }
+  | Normal.Image b -> { p with bump = Some b; carrier = Some n.pattern }
   | Normal.Facets f -> { p with pattern = Some n.pattern; facets = Some f }
   | Normal.Uv _ -> { p with uv = Some n }
 
@@ -229,7 +258,7 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
             in
             { i with px = Array.mapi (fun j p -> if Char.code (Bytes.get idx j) = k then set p else p) i.px })
   in
-  Pigment.Image_map { image = List.fold_left apply im mods; xform = Transform.identity }
+  Pigment.Image_map { image = List.fold_left apply im mods; xform = Transform.identity; warp = None }
 
 (* a PNG's bit depth and colour type (IHDR's bytes 24 and 25; colour
    type 3 is a palette, 0 grey), [None] for other files *)
@@ -357,8 +386,10 @@ let slope_map loc entries p =
   { p with slope = Float.Array.of_list (List.concat_map (fun (v, h, s) -> [ v; h; s ]) entries) }
 
 let warp loc k p =
+  let add (pt : Pattern.t) xform = { pt with warps = Array.append pt.warps [| Pattern.warp xform k |] } in
   match p.pattern with
-  | Some pt -> { p with pattern = Some { pt with warps = Array.append pt.warps [| Pattern.warp p.xform k |] } }
+  | Some pt -> { p with pattern = Some (add pt p.xform) }
+  | None when carries p -> { p with carrier = Some (add (carrier p) (carrier_xform p)) }
   | None ->
       Diag.warning loc "a warp on a plain colour changes nothing";
       p

@@ -25,6 +25,10 @@ type pat = {
       (** normals: a uv-mapped normal being modified: only
           transformations reach it ({!Normal.transform}); POV-Ray ignores
           the other modifiers of a uv-mapped normal (measured) *)
+  carrier : Pattern.t option;
+      (** the warps and turbulence written on what has no pattern of its
+          own (an image map, an average, a bump map): a pattern whose
+          kind is unused *)
 }
 
 type modifier = pat -> pat
