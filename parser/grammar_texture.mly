@@ -553,10 +553,7 @@ image_file_kind:
         let n = Some (Texdesc.normal p) in
         fun _ -> n }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
-      { if k = Pattern.Checker then
-          (* povray 3.7 shades alternate squares as facing away: not rebuilt *)
-          Diag.error (loc $loc(k)) "checker as a normal pattern is not supported by camlray";
-        let p = Texdesc.of_pattern k in
+      { let p = Texdesc.of_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
