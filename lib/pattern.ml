@@ -57,6 +57,7 @@ type kind =
   | Magnet of { formula : int; julia : bool; cr : float; ci : float; fractal : fractal }
   | Slope of { dir : Vec3.t; lo : float; hi : float; wdir : float; alt : Vec3.t; alo : float; ahi : float; walt : float }
   | Cells
+  | Tiling of int
   | Object of inside
   | Material of { w : int; h : int; once : bool; numbers : Bytes.t; count : int }
   | Function of fn
@@ -234,7 +235,7 @@ let[@inline] feature_point cx cy cz (out : Vec3.m) =
 
 (* the value in a record of its own, flat: a float field of a record with
    other fields is boxed, and each store would allocate *)
-type result = { mutable v : float }
+type result = Tiling.result = { mutable v : float }
 
 (* crackle: by default the distance to the second nearest feature point
    minus the nearest (POV-Ray's form <-1, 1, 0>); else form . (F1, F2,
@@ -575,6 +576,7 @@ let raw_m kind (w : work) =
       let s = (0.5 +. (Float.asin c /. Float.pi) -. lo) /. (hi -. lo) in
       let a = if walt = 0. then 0. else (((x *. alt.x) +. (y *. alt.y) +. (z *. alt.z)) -. alo) /. (ahi -. alo) in
       w.r.v <- ((wdir *. s) +. (walt *. a)) /. (wdir +. walt)
+  | Tiling n -> Tiling.eval n w.p w.r
   | Density_file d -> w.r.v <- density3 d x y z
   | Image b -> w.r.v <- Bump_map.value b w.p
   | Object o -> w.r.v <- (if o.test w.p then 1. else 0.)

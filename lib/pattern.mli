@@ -105,6 +105,10 @@ type kind =
           weighed [wdir] and [walt] (the lengths of the vectors written;
           [dir] and [alt] are unit) *)
   | Cells  (** one value in [[0, 1)] per unit cube, POV-Ray's ({!Cells}) *)
+  | Tiling of int
+      (** POV-Ray's [tiling N], N from 1 to 27 ({!Tiling}): tilings of the
+          xz plane, each kind of tile a band of the value, growing
+          towards the tile's border *)
   | Object of inside
       (** POV-Ray's [object] pattern: cell 1 inside the object, 0 outside
           (a block pattern of two cells) *)
@@ -228,7 +232,7 @@ val value : t -> Vec3.t -> float
     the cell index as a float, no shaping). As POV-Ray, frequency 0
     leaves the value unwrapped (only a negative one is taken mod 1). *)
 
-type result = { mutable v : float }
+type result = Tiling.result = { mutable v : float }
 
 type work = { p : Vec3.m; d : Vec3.m; r : result; e : Vec3.m }
 (** Where {!eval_m} works: the warped point, the turbulence, the value

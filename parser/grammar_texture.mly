@@ -20,6 +20,7 @@
 %token CRAND MATERIAL NUMBER_OF_WAVES NOISE_GENERATOR CRACKLE TEXTURE_MAP
 %token <Camlray.Texture.t option * Camlray.Interior.t option> MATERIAL_ID
 %token <Camlray.Sky.t> SKY_SPHERE_ID
+%token TILING
 %token SPIRAL1 SPIRAL2 QUILTED CONTROL0 CONTROL1 MANDEL EXTERIOR AVERAGE NORMAL_MAP
 %token FACETS COORDS SIZE
 %token JULIA MAGNET
@@ -341,6 +342,12 @@ image_file_kind:
   | SLOPE v = param { Gram.slope $loc(v) v None None }
   | SPIRAL2 e = param { Pattern.Spiral2 (truncate (fl $loc(e) e)) }
   | QUILTED { Pattern.Quilted { c0 = 1.; c1 = 1. } }
+  (* tiling N: POV-Ray truncates N (to a byte); camlray takes 1 to 27 *)
+  | TILING e = param
+      { let f = fl $loc(e) e in
+        if not (f >= 1. && f < 28.) then
+          Diag.error (loc $loc(e)) "tiling takes a number from 1 to 27, found %g" f;
+        Pattern.Tiling (truncate f) }
   | MANDEL e = param
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 then Diag.error (loc $loc(e)) "mandel needs at least 1 iteration";

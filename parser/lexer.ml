@@ -100,7 +100,7 @@ let texture_keywords =
     ("all", ALL); ("crand", CRAND);
     ("material", MATERIAL); ("number_of_waves", NUMBER_OF_WAVES);
     ("noise_generator", NOISE_GENERATOR); ("crackle", CRACKLE);
-    ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED);
+    ("texture_map", TEXTURE_MAP); ("spiral1", SPIRAL1); ("spiral2", SPIRAL2); ("quilted", QUILTED); ("tiling", TILING);
     ("facets", FACETS); ("coords", COORDS); ("size", SIZE);
     ("control0", CONTROL0); ("control1", CONTROL1); ("mandel", MANDEL); ("exterior", EXTERIOR);
     ("average", AVERAGE); ("normal_map", NORMAL_MAP); ("caustics", CAUSTICS);
