@@ -726,7 +726,14 @@ let diamond = 5
 (* the distance across a pentagon's side, scaled by POV-Ray's 5.55 *)
 let[@inline] pentagon_side x = Float.abs (x -. (0.5 /. tan36)) *. 5.55 *. inv_phi
 let[@inline] star_side x z = Float.abs ((sin162 *. (x -. (phi *. 0.5 /. sin36))) -. (cos162 *. z)) *. 5.55 *. inv_phi
-let[@inline] band6 lo d = mn (mx (((lo +. 1.) /. 6.) -. (d /. 6.)) ((lo /. 6.) +. margin)) (((lo +. 1.) /. 6.) -. margin)
+(* [v] kept within [lo, hi], into [r] (stored from the comparisons
+   themselves: bounds folded into constants, joined with [v] in a value
+   bound by [let], would box it) *)
+let[@inline] clamp_into (r : result) v lo hi = r.v <- (if v >= hi then hi else if v > lo then v else lo)
+
+(* the band [lo/6, (lo+1)/6] of tile [lo] of the six, [d] into it *)
+let[@inline] band6 (r : result) lo d =
+  clamp_into r (((lo +. 1.) /. 6.) -. (d /. 6.)) ((lo /. 6.) +. margin) (((lo +. 1.) /. 6.) -. margin)
 
 let penrose1 (p : Vec3.m) (r : result) =
   let rr = Float.sqrt ((p.mx *. p.mx) +. (p.mz *. p.mz)) in
@@ -829,18 +836,18 @@ let penrose1 (p : Vec3.m) (r : result) =
         Vec3.set t x0 0. z0;
         fold5 t (Float.sqrt ((x0 *. x0) +. (z0 *. z0)));
         let d = pentagon_side t.mx in
-        if !tile = 0 then r.v <- mn (mx ((1. /. 6.) -. (d /. 6.)) 0.) ((1. /. 6.) -. margin)
-        else r.v <- band6 (float_of_int !tile) d
-    | 3 -> r.v <- band6 3. (star_side x0 z0)
+        if !tile = 0 then clamp_into r ((1. /. 6.) -. (d /. 6.)) 0. ((1. /. 6.) -. margin)
+        else band6 r (float_of_int !tile) d
+    | 3 -> band6 r 3. (star_side x0 z0)
     | 4 ->
         let d1 = Float.abs (x0 -. (inv_phi *. 0.5 *. cos72 /. sin36)) *. 5.55 *. inv_phi in
         Vec3.set t (-1. *. x0) 0. z0;
         fold5 t (Float.sqrt ((x0 *. x0) +. (z0 *. z0)));
         let d2 = star_side t.mx t.mz in
-        r.v <- mn (mx (mx ((5. /. 6.) -. (d1 /. 6.)) ((5. /. 6.) -. (d2 /. 6.))) ((4. /. 6.) +. margin)) ((5. /. 6.) -. margin)
+        clamp_into r (mx ((5. /. 6.) -. (d1 /. 6.)) ((5. /. 6.) -. (d2 /. 6.))) ((4. /. 6.) +. margin) ((5. /. 6.) -. margin)
     | _ ->
         let d = Float.abs ((sin18 *. (x0 +. (inv_phi *. 0.5 /. sin36))) -. (cos18 *. z0)) *. 5.55 *. inv_phi in
-        r.v <- band6 5. d
+        band6 r 5. d
   end
 
 (* The tiling [n] (1 to 27) at [p] (x and z; y does not matter), into
