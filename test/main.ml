@@ -44,6 +44,7 @@ let () =
       Test_light.tests;
       Test_lit.tests;
       Test_pattern.tests;
+      Test_tiling.tests;
       Test_uv.tests;
       Test_bump_map.tests;
       Test_facets.tests;

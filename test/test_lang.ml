@@ -320,8 +320,8 @@ let tests =
       Alcotest.test_case "reflection { MIN MAX } without a comma" `Quick reflection_without_comma;
       Alcotest.test_case "unsupported use reported" `Quick
         (expect_error
-           "#declare Swirl = pigment { tiling 1 color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
-           "Swirl uses tiling");
+           "#declare Swirl = pigment { aoi color_map { [0 rgb 0] [1 rgb 1] } }\nsphere { 0, 1 pigment { Swirl } }\n"
+           "Swirl uses aoi");
       Alcotest.test_case "unsupported keyword named" `Quick
         (expect_error "ovus { 1, 0.5 }\n" "ovus is not supported by camlray");
       Alcotest.test_case "mesh2 items of every form" `Quick mesh2_items;
