@@ -342,7 +342,8 @@ image_file_kind:
   | SLOPE v = param { Gram.slope $loc(v) v None None }
   | SPIRAL2 e = param { Pattern.Spiral2 (truncate (fl $loc(e) e)) }
   | QUILTED { Pattern.Quilted { c0 = 1.; c1 = 1. } }
-  (* tiling N: POV-Ray truncates N (to a byte); camlray takes 1 to 27 *)
+  (* tiling N: N truncated, then 1 to 27 (POV-Ray 3.7.0: "Tiling number
+     must be between 1 and 27", measured with 0.5, -0.5, 1.5, 27.9, 28) *)
   | TILING e = param
       { let f = fl $loc(e) e in
         if not (f >= 1. && f < 28.) then

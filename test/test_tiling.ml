@@ -333,18 +333,25 @@ let scene () =
   Scn.color "tiling 1, a square's centre" (1., 0., 0.) (top ("tiling 1 " ^ map));
   Scn.color "tiling 1 scaled, halfway to the side" (0., 1., 0.) (top ~at:(0.5, 1.) ("tiling 1 scale 2 " ^ map));
   Scn.color "tiling 15, a large square's core" (0., 1., 0.) (top ~at:(2.3, 0.2) ("tiling 15 " ^ map));
-  (* POV-Ray truncates the number *)
+  (* POV-Ray 3.7.0 truncates the number, then wants 1 to 27 (measured:
+     27.9 and 1.5 draw 27 and 1; 0.5, -0.5 and 28 are errors) *)
   let kind src =
     match (Scn.compile (Printf.sprintf "sphere { 0, 1 pigment { %s } }" src)).objects.(0).texture with
     | { pigment = Pigment.Map { pattern; _ }; _ } :: _ -> pattern.kind
     | _ -> Alcotest.failf "no pattern in %s" src
   in
   if kind "tiling 27.9" <> Pattern.Tiling 27 then Alcotest.fail "tiling 27.9 is tiling 27";
+  if kind "tiling 1.5" <> Pattern.Tiling 1 then Alcotest.fail "tiling 1.5 is tiling 1";
   if kind "tiling 3 frequency 2" <> Pattern.Tiling 3 then Alcotest.fail "tiling 3";
   ignore (Scn.compile "sphere { 0, 1 normal { tiling 16 0.5 scale 0.2 } }");
   ignore (Scn.compile "sphere { 0, 1 texture { tiling 2 texture_map { [0 pigment { rgb 1 }] [1 pigment { rgb 0 }] } } }");
   Scn.check_message "sphere { 0, 1 pigment { tiling 0 } }" "tiling takes a number from 1 to 27, found 0";
   Scn.check_message "sphere { 0, 1 pigment { tiling 28 } }" "tiling takes a number from 1 to 27, found 28";
+  Scn.check_message "sphere { 0, 1 pigment { tiling 0.5 } }" "tiling takes a number from 1 to 27, found 0.5";
+  Scn.check_message "sphere { 0, 1 pigment { tiling -0.5 } }" "tiling takes a number from 1 to 27, found -0.5";
+  (* POV-Ray 3.7.0 refuses a tiling in a pattern function; camlray takes it *)
+  Scn.close ~eps:1e-12 "function { pattern { tiling 1 } }" 0.5
+    (Scn.float ~prelude:"#declare F = function { pattern { tiling 1 } }" "F(0.25, 0, 0.5)");
   Scn.check_message "sphere { 0, 1 pigment { tiling } }" "expected"
 
 let tests =
