@@ -349,6 +349,12 @@ let scene () =
   Scn.check_message "sphere { 0, 1 pigment { tiling 28 } }" "tiling takes a number from 1 to 27, found 28";
   Scn.check_message "sphere { 0, 1 pigment { tiling 0.5 } }" "tiling takes a number from 1 to 27, found 0.5";
   Scn.check_message "sphere { 0, 1 pigment { tiling -0.5 } }" "tiling takes a number from 1 to 27, found -0.5";
+  (* pavement (POV-Ray's tables of polyform tilings) is refused, located *)
+  let d = Scn.error "plane { y, 0 pigment { pavement number_of_sides 4 number_of_tiles 3 pattern 2 } }" in
+  if not (Scn.contains d.Camlray_lang.Diag.msg "pavement is not supported by camlray") then
+    Alcotest.failf "pavement: %s" d.msg;
+  Alcotest.(check (pair int int)) "pavement's line and column" (1, 24)
+    (Camlray_lang.Loc.line d.loc, Camlray_lang.Loc.col d.loc);
   (* POV-Ray 3.7.0 refuses a tiling in a pattern function; camlray takes it *)
   Scn.close ~eps:1e-12 "function { pattern { tiling 1 } }" 0.5
     (Scn.float ~prelude:"#declare F = function { pattern { tiling 1 } }" "F(0.25, 0, 0.5)");
