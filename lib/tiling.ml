@@ -292,11 +292,12 @@ let rectangle_square (p : Vec3.m) (r : result) =
     r.v <- (mx (2. *. Float.abs (x -. 0.5)) (2. *. (mx z 0.5 -. 0.5)) +. 2.) /. 3.
   else r.v <- box_value b (i + (3 * k)) x z
 
-(* 13 and 14: squares turned by 45 degrees, each with four smaller
-   squares around it, in the plane scaled by sqrt2 and cut in 4 x 4
-   blocks folded about their centre into [0, 2]^2: the central square
-   (band 0 of 3; 14: band 4 of 5, the others one band each by the side
-   they stand on). *)
+(* 13 and 14: squares of side sqrt2 on a grid of period 2 sqrt2, the
+   gaps between them cut into hexagons pointed at both ends (the plane
+   scaled by sqrt2 and cut in 4 x 4 blocks folded about their centre
+   into [0, 2]^2, a square at the centre): 13, the squares (with a flat
+   core), the hexagons along x, the hexagons along z; 14, the hexagons
+   by their side of the square (bands 0 to 3), then the squares. *)
 let[@inline] internal_fold c = wrap (c *. s2) 4. -. 2.
 
 let square_internal (p : Vec3.m) (r : result) =
