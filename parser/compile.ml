@@ -135,11 +135,21 @@ let camera loc items =
         up := Vec3.scale ul u
       end
       else begin
-        (* looking along the sky vector: POV-Ray keeps the right vector
-           and turns up to be perpendicular (checked with povray 3.7: a
-           camera above the origin looking down has +x right, +z up) *)
+        (* looking along the sky vector: POV-Ray warns, keeps the right
+           vector's line and turns up to be perpendicular, the side of
+           right chosen by the handedness as above (checked with povray
+           3.7: a camera above the origin looking down has +x right, +z
+           up; with up z and the default direction z, a handedness of 0,
+           it is mirrored) *)
+        Diag.warning loc
+          "the camera looks along its sky vector: the right vector given (or the default) is kept, as POV-Ray does; \
+           give a sky vector across the view to choose the picture's up";
+        let r = Vec3.normalize !right in
+        let u = Vec3.cross d r in
+        let r = if handed > 0. then r else Vec3.neg r in
         direction := Vec3.scale dl d;
-        up := Vec3.scale ul (Vec3.cross d (Vec3.normalize !right))
+        right := Vec3.scale rl r;
+        up := Vec3.scale ul u
       end
   | None -> ());
   (if ortho && ((up0 = None && right0 = None) || angle <> None) then

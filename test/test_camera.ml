@@ -45,6 +45,22 @@ let units =
     Alcotest.test_case "a mirrored right stays mirrored after look_at" `Quick (fun () ->
         let c = cam "camera { right -1.33*x location <0,0,-5> look_at <0,0,0> }" in
         Alcotest.(check bool) "negative x" true (c.right.x < 0.));
+    Alcotest.test_case "looking along the sky: right kept, mirrored by the handedness as POV-Ray" `Quick
+      (fun () ->
+        (* POV-Ray 3.7's pictures (checked with povray: identical renders):
+           default up and direction keep +x right and turn up to +z; up z
+           with the default direction z (handedness 0) mirrors right *)
+        let a = cam "camera { location <0,10,0> look_at 0 }" in
+        Alcotest.(check (float 1e-9)) "a: right +x" 1.33 a.right.x;
+        Alcotest.(check (float 1e-9)) "a: up +z" 1. (Vec3.normalize a.up).z;
+        let b = cam "camera { orthographic location <0,10,0> look_at 0 right x*8 up z*6 }" in
+        Alcotest.(check (float 1e-9)) "b: right -x" (-8.) b.right.x;
+        Alcotest.(check (float 1e-9)) "b: up +z" 6. b.up.z;
+        let c = cam "camera { location <0,-10,0> look_at 0 right x*1.33 up z direction -z }" in
+        (* handedness (z x -z) . x = 0: mirrored; up = d x r, taken
+           before the mirroring: y x x = -z *)
+        Alcotest.(check (float 1e-9)) "c: right -x" (-1.33) c.right.x;
+        Alcotest.(check (float 1e-9)) "c: up -z" (-1.) (Vec3.normalize c.up).z);
     Alcotest.test_case "cylinder 1: the ray turns by x * angle about up, y is flat" `Quick (fun () ->
         let c = cam "camera { cylinder 1 location <0,0,-5> look_at 0 up 2*y angle 120 }" in
         let r = Camera.ray c 0.25 0.1 in
