@@ -12,7 +12,7 @@ let rec query t what loc =
     match (b, (raw_peek t).raw) with
     | Some (Env.Array a), Tok Parser.LBRACKET ->
         ignore (raw_next t);
-        let i = Value.to_int nloc (Cursor.parse t Parser.Incremental.expr_then_rbracket) in
+        let i = Value.to_int nloc (Quick.expr_then_rbracket t) in
         if i < 0 || i >= Array.length a then
           fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
         element a.(i)
@@ -42,7 +42,7 @@ let rec query t what loc =
         if what = "dimensions" then float_of_int (List.length ds)
         else begin
           expect_tok t Parser.COMMA "','";
-          let d = Value.to_int loc (Cursor.parse t Parser.Incremental.expr_then_rparen) in
+          let d = Value.to_int loc (Quick.expr_then_rparen t) in
           (* POV-Ray: 0 outside 1 .. dimensions *)
           float_of_int (if d < 1 || d > List.length ds then 0 else List.nth ds (d - 1))
         end)
@@ -57,7 +57,7 @@ and element t name a loc : Decl.t =
   match tok.raw with
   | Tok Parser.LBRACKET ->
       ignore (raw_next t);
-      let i = Value.to_int loc (Cursor.parse t Parser.Incremental.expr_then_rbracket) in
+      let i = Value.to_int loc (Quick.expr_then_rbracket t) in
       if i < 0 || i >= Array.length a then
         fail t loc "index %d is outside the array %s (size %d)" i name (Array.length a);
       (match a.(i) with
@@ -76,7 +76,7 @@ and make t loc =
     match (raw_peek t).raw with
     | Tok Parser.LBRACKET ->
         ignore (raw_next t);
-        let n = Value.to_int loc (Cursor.parse t Parser.Incremental.expr_then_rbracket) in
+        let n = Value.to_int loc (Quick.expr_then_rbracket t) in
         if n <= 0 then fail t loc "array size must be positive, found %d" n;
         dims (n :: acc)
     | _ -> List.rev acc

@@ -11,7 +11,7 @@ let rec enter_if t loc c =
       match skip_block t ~stop:[ "else"; "elseif" ] with
       | "else", _ -> f.ctrl <- In_if loc :: f.ctrl
       | "elseif", tok ->
-          if Value.to_bool tok.loc (Cursor.parse t Parser.Incremental.paren_expr) then
+          if Value.to_bool tok.loc (Quick.paren_expr t) then
             f.ctrl <- In_if loc :: f.ctrl
           else seek ()
       | _ -> ()
@@ -41,7 +41,7 @@ and end_block t loc =
       f.ctrl <- rest;
       let end_pos = f.pos in
       f.pos <- w.cond_pos;
-      let cond = Value.to_bool loc (Cursor.parse t Parser.Incremental.paren_expr) in
+      let cond = Value.to_bool loc (Quick.paren_expr t) in
       if cond then begin
         if w.count >= t.config.limits.max_loop_iterations then
           fail t loc "#while loop stopped after %d iterations (the limit; raise it with --max-loop)"
@@ -71,11 +71,11 @@ and for_loop t loc =
   expect_tok t Parser.LPAREN "'(' after #for";
   let var, _ = expect_ident t "the loop variable" in
   expect_tok t Parser.COMMA "','";
-  let start = Value.to_float loc (Cursor.parse t Parser.Incremental.expr_then_comma) in
-  let stop, closed = Cursor.parse t Parser.Incremental.macro_arg in
+  let start = Value.to_float loc (Quick.expr_then_comma t) in
+  let stop, closed = Quick.macro_arg t in
   let num d = match d with Decl.Value v -> Value.to_float loc v | _ -> fail t loc "#for bounds must be floats" in
   let stop = num stop in
-  let step = if closed then 1. else Value.to_float loc (Cursor.parse t Parser.Incremental.expr_then_rparen) in
+  let step = if closed then 1. else Value.to_float loc (Quick.expr_then_rparen t) in
   if step = 0. then fail t loc "#for step cannot be 0";
   Env.declare t.env var (Env.Decl (Decl.Value (Value.Float start)));
   let f = top t in
@@ -84,17 +84,17 @@ and for_loop t loc =
   else skip_to_end t
 
 and switch t loc =
-  let v = Value.to_float loc (Cursor.parse t Parser.Incremental.paren_expr) in
+  let v = Value.to_float loc (Quick.paren_expr t) in
   let f = top t in
   let rec seek () =
     match skip_block t ~stop:[ "case"; "range"; "else" ] with
     | "case", tok ->
-        let c = Value.to_float tok.loc (Cursor.parse t Parser.Incremental.paren_expr) in
+        let c = Value.to_float tok.loc (Quick.paren_expr t) in
         if Float.abs (c -. v) <= 1e-10 then f.ctrl <- In_switch loc :: f.ctrl else seek ()
     | "range", tok ->
         expect_tok t Parser.LPAREN "'(' after #range";
-        let lo = Value.to_float tok.loc (Cursor.parse t Parser.Incremental.expr_then_comma) in
-        let hi = Value.to_float tok.loc (Cursor.parse t Parser.Incremental.expr_then_rparen) in
+        let lo = Value.to_float tok.loc (Quick.expr_then_comma t) in
+        let hi = Value.to_float tok.loc (Quick.expr_then_rparen t) in
         if v >= lo && v <= hi then f.ctrl <- In_switch loc :: f.ctrl else seek ()
     | "else", _ -> f.ctrl <- In_switch loc :: f.ctrl
     | _ -> ()

@@ -24,6 +24,7 @@ type config = {
   fold : bool;
       (** fold arithmetic runs before the parser sees them ({!Fold}); the
           scene reads the same either way (off to test that) *)
+  quick : bool;  (** plain expressions of directives evaluated without the parser ({!Quick}) *)
 }
 
 (* Open control structures of one frame, innermost first. *)

@@ -26,6 +26,10 @@ type config = {
   fold : bool;
       (** fold arithmetic runs before the parser sees them ({!Fold}); the
           scene reads the same either way (off to test that) *)
+  quick : bool;
+      (** evaluate plain expressions of directives without the parser
+          ({!Quick}); the scene reads the same either way (off to test
+          that) *)
 }
 
 (* Open control structures of one frame, innermost first. *)

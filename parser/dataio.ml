@@ -40,7 +40,7 @@ let write t loc =
   (* the comma after the file identifier is optional in POV-Ray *)
   (match (raw_peek t).raw with Tok Parser.COMMA -> ignore (raw_next t) | _ -> ());
   let rec items () =
-    let d, closed = Cursor.parse t Parser.Incremental.macro_arg in
+    let d, closed = Quick.macro_arg t in
     (match d with
     | Decl.Value (Value.String s) -> output_string oc s
     | Decl.Value (Value.Float f) -> Printf.fprintf oc "%g" f

@@ -175,3 +175,20 @@ let readable_kind l k =
   match k with
   | "jpeg" | "ppm" | "gif" -> ()
   | k -> Diag.error (loc l) "%s images are not read by camlray here: png, jpeg, gif and ppm are" k
+
+let vector_literal l cs =
+  let n = List.length cs in
+  (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
+  (* and the coefficients of a poly, cubic or quartic: 10, 20, 35 ... *)
+  if (n < 2 || n > 5) && n <> 12
+     && not (List.exists (fun k -> Algebraic.terms k = n) (List.init (Algebraic.max_order - 1) (fun k -> k + 2)))
+  then
+    Diag.error l "a vector has 2 to 5 components, this one has %d" n;
+  Value.Vector (Array.of_list (List.map (fun c -> match c with
+    | Value.Float f -> f
+    | v -> Diag.error l "vector components must be floats, found %s" (Value.type_name v)) cs))
+
+let call_function l f args =
+  let args = List.map (Value.to_float l) args in
+  if Fn.is_vector f then Value.Vector (Fn.call_vector l f args)
+  else Value.Float (Fn.call l f args)

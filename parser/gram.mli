@@ -90,3 +90,12 @@ val readable_kind : Lexing.position * Lexing.position -> string -> unit
 (** An image_map's, image_pattern's or bump_map's file type: jpeg, gif
     and ppm are read (png has its own token); any other is a located
     error. *)
+
+val vector_literal : Loc.t -> Value.t list -> Value.t
+(** The action of a vector literal [< c1, c2, ... >], its components in
+    order: their count checked (2 to 5, 12, or a polynomial's
+    coefficients), each a float. Shared with {!Quick}. *)
+
+val call_function : Loc.t -> Fn.t -> Value.t list -> Value.t
+(** The action of a declared function's call [F(a, b, ...)]: the
+    arguments as floats, then the call. Shared with {!Quick}. *)

@@ -204,24 +204,9 @@ open Gram
   | s = STRING { Value.String s }
   | s = STRING_ID { Value.String s }
   | LPAREN e = expr RPAREN { e }
-  | LT cs = vector_items ioption(COMMA) GT
-      { let cs = List.rev cs in
-        let n = List.length cs in
-        (* 12 numbers are a matrix's argument (tested by the MATRIX rule) *)
-        (* and the coefficients of a poly, cubic or quartic: 10, 20, 35 ... *)
-        if (n < 2 || n > 5) && n <> 12
-           && not (List.exists (fun k -> Algebraic.terms k = n) (List.init (Algebraic.max_order - 1) (fun k -> k + 2)))
-        then
-          Diag.error (loc $loc) "a vector has 2 to 5 components, this one has %d" n;
-        Value.Vector (Array.of_list (List.map (fun c -> match c with
-          | Value.Float f -> f
-          | v -> Diag.error (loc $loc) "vector components must be floats, found %s" (Value.type_name v)) cs)) }
+  | LT cs = vector_items ioption(COMMA) GT { vector_literal (loc $loc) (List.rev cs) }
   | f = FUNC LPAREN args = separated_list(COMMA, expr) RPAREN { Value.call (loc $loc) f args }
-  | f = FUNCTION_ID LPAREN args = separated_list(COMMA, expr) RPAREN
-      { let args = List.map (Value.to_float (loc $loc)) args in
-        if Fn.is_vector f then Value.Vector (Fn.call_vector (loc $loc) f args)
-        else Value.Float (Fn.call (loc $loc) f args) }
-
+  | f = FUNCTION_ID LPAREN args = separated_list(COMMA, expr) RPAREN { call_function (loc $loc) f args }
 
 %public param:
   | e = add %prec below_shift { e }

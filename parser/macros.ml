@@ -85,7 +85,7 @@ and element_ref t f name a =
       f.pos <- f.pos + 1;
       let rec go a =
         ignore (raw_next t);
-        let i = Value.to_int nloc (Cursor.parse t Parser.Incremental.expr_then_rbracket) in
+        let i = Value.to_int nloc (Quick.expr_then_rbracket t) in
         if i < 0 || i >= Array.length a then
           fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
         match ((raw_peek t).raw, a.(i)) with
@@ -118,7 +118,7 @@ and argument t =
       (* POV-Ray's commas between arguments are optional: M(A -y, B) is
          M(A, -y, B) when A is an object (its incdemo/shapes.pov) *)
       t.optional_sep <- Some Parser.COMMA;
-      let d, closed = Cursor.parse t Parser.Incremental.macro_arg in
+      let d, closed = Quick.macro_arg t in
       ((Env.Decl d, None), closed)
 let include_file t loc =
   let tok = raw_next t in

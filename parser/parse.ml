@@ -8,12 +8,13 @@ type options = {
   allow_read : string list;
   confine_reads : bool;
   fold_arithmetic : bool;
+  quick_eval : bool;
 }
 
 let default_options =
   { include_dirs = []; limits = Supplier.default_limits; clock = 0.; image_width = 800;
     image_height = 600; frame_number = 0; allow_read = []; confine_reads = true;
-    fold_arithmetic = true }
+    fold_arithmetic = true; quick_eval = true }
 
 let pov_include_dir = "/usr/share/povray-3.7/include"
 
@@ -47,6 +48,7 @@ let run options ~name text =
         Supplier.include_dirs;
         access;
         fold = options.fold_arithmetic;
+        quick = options.quick_eval;
         limits = options.limits;
         builtins =
           [ ("clock", options.clock); ("image_width", float_of_int options.image_width);

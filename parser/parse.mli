@@ -18,6 +18,11 @@ type options = {
   fold_arithmetic : bool;
       (** fold runs of float arithmetic before the parser (default [true];
           see {!Fold}): the scene is the same either way, only read faster *)
+  quick_eval : bool;
+      (** evaluate the plain expressions of directives ([#declare X = ...;],
+          [#if (...)], [#while (...)], [#write] items, macro arguments,
+          array indices) without the parser (default [true]; see
+          {!Quick}): the scene is the same either way, only read faster *)
 }
 
 val default_options : options

@@ -19,6 +19,7 @@ type config = Cursor.config = {
   builtins : (string * float) list;
   access : Access.t;
   fold : bool;
+  quick : bool;
 }
 
 type t = Cursor.t
@@ -144,7 +145,7 @@ and ident t name loc =
             | _ ->
                 (* height_field's function W, H { ... }: POV-Ray rounds the sizes *)
                 let size v = int_of_float (Float.floor (Value.to_float loc v +. 0.5)) in
-                let w = size (parse t Parser.Incremental.expr_then_comma) in
+                let w = size (Quick.expr_then_comma t) in
                 let h = size (parse t Parser.Incremental.expr_then_lbrace) in
                 let f, text = function_body t loc [ "x"; "y"; "z" ] in
                 (Parser.FUNCTION_SIZED (w, h, f, text), loc)
@@ -238,12 +239,12 @@ and probe t name loc =
       (vector (Probe.extent loc o ~max:(name = "max_extent")), loc)
   | "inside" ->
       expect_tok t Parser.COMMA "','";
-      let p = parse t Parser.Incremental.expr_then_rparen in
+      let p = Quick.expr_then_rparen t in
       (Parser.FLOAT (if Probe.inside loc o (Value.to_vec3 loc p) then 1. else 0.), loc)
   | _ ->
       expect_tok t Parser.COMMA "','";
-      let a = parse t Parser.Incremental.expr_then_comma in
-      let b, more = parse t Parser.Incremental.expr_then_sep in
+      let a = Quick.expr_then_comma t in
+      let b, more = Quick.expr_then_sep t in
       let point, normal = Probe.trace loc o (Value.to_vec3 loc a) (Value.to_vec3 loc b) in
       if more then begin
         let v, vloc = expect_ident t "the name of a vector identifier to receive the normal" in
@@ -525,7 +526,7 @@ and directive t d loc =
       Env.undef t.env name
   | "include" -> Macros.include_file t loc
   | "if" ->
-      let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
+      let c = Value.to_bool loc (Quick.paren_expr t) in
       Control.enter_if t loc c
   | "ifdef" | "ifndef" ->
       let defined = Arrays.query t "defined" loc = 1. in
@@ -541,7 +542,7 @@ and directive t d loc =
   | "end" -> Control.end_block t loc
   | "while" ->
       let cond_pos = f.pos in
-      let c = Value.to_bool loc (parse t Parser.Incremental.paren_expr) in
+      let c = Value.to_bool loc (Quick.paren_expr t) in
       if c then f.ctrl <- In_while { cond_pos; count = 1; wloc = loc } :: f.ctrl else Control.skip_to_end t
   | "for" -> Control.for_loop t loc
   | "switch" -> Control.switch t loc
@@ -594,7 +595,7 @@ and declare t ~local loc =
       (* element assignment: NAME[i]... = value *)
       let rec target a =
         ignore (raw_next t);
-        let i = Value.to_int loc (parse t Parser.Incremental.expr_then_rbracket) in
+        let i = Value.to_int loc (Quick.expr_then_rbracket t) in
         if i < 0 || i >= Array.length a then
           fail t nloc "index %d is outside the array %s (size %d)" i name (Array.length a);
         match (raw_peek t).raw with
@@ -773,6 +774,9 @@ and rhs t =
         match string_without_semi t with
         | `String -> Decl.Value (Value.String (parse t Parser.Incremental.string_arg))
         | `Plain -> (
+            match Quick.declare_value t with
+            | Some d -> d
+            | None ->
             (* POV-Ray: a float, vector or colour #declare ends with ';'
                since #version 3.5; before, the value ends where it can *)
             let missing = ref None in

@@ -31,6 +31,9 @@ type config = {
   builtins : (string * float) list;
   access : Access.t;  (** what #include may read *)
   fold : bool;  (** fold arithmetic runs first ({!Fold}); the same scene either way *)
+  quick : bool;
+      (** plain expressions of directives evaluated without the parser
+          ({!Quick}); the same scene either way *)
       (** [clock], [image_width], [image_height], [frame_number], ... *)
 }
 

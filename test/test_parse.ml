@@ -100,16 +100,26 @@ let context_gen =
         map2 (fun a b -> Printf.sprintf
                 "#for (I, 0, 2) #declare C = <I, %s, 1>; #declare D2 = <%s, I>; sphere { C, D2.x } #end" a b) e e ])
 
-(* the scene (or error) and the warnings, in order, folding on or off *)
-let read_folded fold text =
-  let options = { options with Parse.fold_arithmetic = fold } in
+(* the scene (or error) and the warnings, in order, and what the scene
+   wrote with #write, with folding (Fold) and plain expressions evaluated
+   without the parser (Quick) on or off ([quick] defaults to [fold]) *)
+let written = "quick-write.txt"
+
+let read_with ~fold ~quick text =
+  let options = { options with Parse.fold_arithmetic = fold; quick_eval = quick } in
+  if Sys.file_exists written then Sys.remove written;
   let r, warnings =
     Diag.collect_warnings (fun () ->
         match Parse.string ~options text with
         | Ok s -> (try Ok (Printer.scene s) with e -> Ok ("unprintable: " ^ Printexc.to_string e))
         | Error d -> Error (Diag.to_string d))
   in
-  match r with Ok s -> Ok (s ^ warnings) | Error s -> Error (s ^ warnings)
+  let w =
+    if Sys.file_exists written then "\nwritten: " ^ In_channel.with_open_bin written In_channel.input_all else ""
+  in
+  match r with Ok s -> Ok (s ^ warnings ^ w) | Error s -> Error (s ^ warnings ^ w)
+
+let read_folded fold text = read_with ~fold ~quick:fold text
 
 let folding_changes_nothing gen name count =
   let run = read_folded in
@@ -158,13 +168,18 @@ let fold_cases =
    from what was kept of them stops at the same token, with the same
    message. *)
 let replay_limit =
-  Alcotest.test_case "folding arithmetic: the token limit inside vectors read again" `Quick (fun () ->
-      let text = "#for (I, 0, 99) #declare V = <I, I + 1, I * 2 - 3>; #end sphere { V, 1 }" in
-      List.iter
+  Alcotest.test_case "folding arithmetic, quick evaluation: the token limit inside vectors and phrases read again" `Quick (fun () ->
+      let texts =
+        [ "#for (I, 0, 99) #declare V = <I, I + 1, I * 2 - 3>; #end sphere { V, 1 }";
+          (* Quick's phrases: a #while's condition, #local, #if, macro arguments *)
+          "#macro N(X, Y) #local Z = X + Y * 2; #if (Z > 3 & Z < 1000) sphere { 0, Z } #end #end\n\
+           #declare J = 0; #while (J < 30) N(J, J + 1) #declare J = J + 1; #end" ]
+      in
+      List.iter (fun text -> List.iter
         (fun max_tokens ->
           let run fold =
             let limits = { options.limits with max_tokens } in
-            match Parse.string ~options:{ options with Parse.fold_arithmetic = fold; limits } text with
+            match Parse.string ~options:{ options with Parse.fold_arithmetic = fold; quick_eval = fold; limits } text with
             | Ok s -> Ok (Printer.scene s)
             | Error d -> Error (Diag.to_string d)
           in
@@ -173,10 +188,102 @@ let replay_limit =
           if a <> b then
             Alcotest.failf "limit %d\nfolded: %s\nnot folded: %s" max_tokens
               (match a with Ok s | Error s -> s) (match b with Ok s | Error s -> s))
-        [ 40; 41; 42; 43; 44; 45; 50; 77; 100; 333; 1000; 100_000 ])
+        [ 40; 41; 42; 43; 44; 45; 50; 77; 100; 333; 1000; 100_000 ]) texts)
+
+(* Quick: the expressions of directives read without the parser. The
+   generated expressions (above) in every directive Quick reads them for,
+   and phrases of its own: strings, comparisons, logic, ternaries,
+   members, declared functions, vectors with a trailing comma, calls
+   that fail. *)
+(* expressions Quick reads whole, mostly: every operator and primary of
+   the grammar's expr, names of every kind, warnings (a division by zero),
+   errors (a string in arithmetic, a bad member) and a state (rand) whose
+   order shows; now and then what it leaves to the parser (a macro, an
+   array element, components without commas) *)
+let qexpr_gen =
+  QCheck.Gen.(
+    sized_size (int_bound 10)
+    @@ fix (fun self n ->
+           let leaf =
+             oneof_weighted
+               [ (12, oneof_list
+                        [ "1"; "2.5"; "0"; "A"; "B"; "pi"; "V.x"; "V"; "-3"; "clock"; "rand(R)"; "1/0"; "x";
+                          "<1, A, 2>"; "<A, B>"; "<A, 1, 2, 3, 4>"; "F(A, 1)"; "G(2).y"; "version"; "image_width";
+                          "(A < B)"; "Str"; "\"s\""; "V.t"; "V.u"; "<1, 2,>"; "sqrt(-1)"; "vlength(V)" ]);
+                 (1, oneof_list [ "M()"; "Arr[1]"; "D"; "<1 2 3>"; "U"; "S(1)"; "<1>" ]) ]
+           in
+           if n <= 0 then leaf
+           else
+             let sub = self (n / 2) in
+             let op = oneof_list [ "+"; "-"; "*"; "/"; "<"; "<="; ">"; ">="; "="; "!="; "&"; "|" ] in
+             oneof_weighted
+               [ (3, leaf);
+                 (6, map3 (fun a o b -> a ^ " " ^ o ^ " " ^ b) sub op sub);
+                 (1, map (fun a -> "-" ^ a) sub); (1, map (fun a -> "+" ^ a) sub); (1, map (fun a -> "!" ^ a) sub);
+                 (2, map (fun a -> "(" ^ a ^ ")") sub); (1, map (fun a -> "(" ^ a ^ ").x") sub);
+                 (1, map3 (fun a b c -> a ^ " ? " ^ b ^ " : " ^ c) sub sub sub);
+                 (1, map3 (fun a b c -> "<" ^ a ^ ", " ^ b ^ ", " ^ c ^ ">") sub sub sub);
+                 (1, map2 (fun f a -> f ^ "(" ^ a ^ ")") (oneof_list [ "sin"; "abs"; "int"; "str"; "vnormalize" ]) sub);
+                 (1, map2 (fun a b -> "max(" ^ a ^ ", " ^ b ^ ")") sub sub);
+                 (1, map2 (fun a b -> "F(" ^ a ^ ", " ^ b ^ ")") sub sub) ]))
+
+let quick_gen =
+  QCheck.Gen.(
+    let e = oneof_weighted [ (4, qexpr_gen); (1, expr_gen) ] in
+    let s =
+      oneof_list
+        [ "\"ab\""; "str(A, 0, 16)"; "str(V.y * B, -3, 2)"; "concat(\"x\", str(1/3, 0, 5))"; "Str";
+          "chr(65)"; "substr(\"hello\", 2, 3)"; "str(<1,2>, 0, 0)"; "\"a\" + 1"; "vstr(3, V, \",\", 0, 1)" ]
+    in
+    let c =
+      oneof_list
+        [ "A < B"; "A = 3"; "A != B & B < 0"; "(A > 2) | 0"; "!A"; "\"ab\" = Str"; "Str != \"x\"";
+          "A < 2 ? 1 : 0"; "V.x >= 1"; "1 < 2 < 3"; "A ? B : \"s\""; "F(A, 2) > 1"; "V < 2" ]
+    in
+    oneof
+      [ map2 (fun a b -> Printf.sprintf "#declare X = %s; #local Y = %s; sphere { 0, X + Y }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#declare X = %s; sphere { X, %s }" a b) s e;
+        map3 (fun a b c -> Printf.sprintf "#if (%s) sphere { 0, %s } #elseif (%s) sphere { 0, 2 } #end" a b c) c e c;
+        map2 (fun a b -> Printf.sprintf "#declare J = 0; #while (J < %s & J < 4) sphere { 0, J + %s } #declare J = J + 1; #end" a b) e e;
+        map3 (fun a b c -> Printf.sprintf
+               "#fopen Out \"quick-write.txt\" write #write (Out, %s, \"|\", %s, \"|\", %s, \"\\n\") #fclose Out" a b c) s e c;
+        map2 (fun a b -> Printf.sprintf "#macro T(X, Y) sphere { X, Y } #end T(%s, %s)" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#macro T(X, Y) sphere { 0, 1 } #declare Z = concat(X, \"\"); #end T(%s, %s)" a b) s e;
+        map2 (fun a b -> Printf.sprintf "#declare Y = array[3] { 1, 2, 3 } sphere { 0, Y[%s] + Y[%s] }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#declare O = sphere { 0, 1 } #declare N = <0,0,0>; #declare P = trace(O, %s, <0, 0, 1> + %s, N); sphere { P, N.z }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#switch (%s) #case (1) sphere { 0, 1 } #break #range (%s, 5) sphere { 0, 3 } #end" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#for (I, %s, %s) sphere { 0, I } #end" a b) e e;
+        map3 (fun a b c -> Printf.sprintf "#declare X = %s ? %s : %s; sphere { 0, X }" a b c) c e e;
+        map2 (fun a b -> Printf.sprintf "#declare X = A ? 1/0 + %s : rand(R) + 2/0 + %s; sphere { 0, X }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#declare X = <%s, %s,>; sphere { X, 1 }" a b) e e;
+        map2 (fun a b -> Printf.sprintf "#declare X = F(%s, %s) + G(1).y; sphere { 0, X }" a b) e e;
+        map (fun a -> Printf.sprintf "#declare X = (%s).y + -+!0; sphere { 0, X }" a) e ])
+
+let quick_prelude =
+  prelude
+  ^ "#declare Str = \"ab\"; #declare F = function(a, b) { a * b + 1 }\n\
+     #declare G = function { transform { translate <1, 2, 3> } }\n"
+
+let quick_changes_nothing name count =
+  QCheck.Test.make ~name ~count
+    (QCheck.make ~print:(fun s -> s) (QCheck.Gen.map (fun c -> quick_prelude ^ c) quick_gen))
+    (fun text ->
+      let here = Sys.getcwd () in
+      Sys.chdir (Helpers.temp_dir ());
+      Fun.protect ~finally:(fun () -> Sys.chdir here) (fun () ->
+          let differ a b what =
+            if a <> b then
+              QCheck.Test.fail_reportf "%s:\n%s\nand:\n%s" what
+                (match a with Ok s | Error s -> s) (match b with Ok s | Error s -> s)
+          in
+          let off = read_with ~fold:false ~quick:false text in
+          differ (read_with ~fold:false ~quick:true text) off "quick evaluation on, folding off";
+          differ (read_with ~fold:true ~quick:true text) off "quick evaluation and folding on";
+          true))
 
 let fold_props =
-  [ folding_changes_nothing (QCheck.Gen.map (fun c -> prelude ^ c) context_gen)
+  [ quick_changes_nothing "quick evaluation: the same scene, error, warnings and #write as the parser" 3000;
+    folding_changes_nothing (QCheck.Gen.map (fun c -> prelude ^ c) context_gen)
       "folding arithmetic: the same scene or error as without" 5000;
     folding_changes_nothing (QCheck.Gen.map (fun c -> plain_prelude ^ c) context_gen)
       "folding arithmetic, no deprecated name: the same scene or error as without" 3000;
