@@ -24,10 +24,23 @@ and node =
 
 (* the reader: tokens of the top frame from [i] on, never past what is
    lexed, never a directive or the frame's end *)
-type st = { t : Cursor.t; toks : Toks.t; mutable i : int }
+type st = {
+  t : Cursor.t;
+  toks : Toks.t;
+  mutable i : int;
+  mutable cur : Lexer.token;  (** token [i], when [at] = [i] *)
+  mutable at : int;
+}
 
 let tok st =
-  if Toks.lexed st.toks st.i then Toks.get st.toks st.i else raise Bail
+  if st.at = st.i then st.cur
+  else if Toks.lexed st.toks st.i then begin
+    let k = Toks.get st.toks st.i in
+    st.cur <- k;
+    st.at <- st.i;
+    k
+  end
+  else raise Bail
 
 let peek st = match (tok st).raw with Tok x -> x | Ident _ | Directive _ | Eof -> Parser.EOF
 
@@ -36,9 +49,13 @@ let take st =
   st.i <- st.i + 1;
   x
 
-let expect st (x : Parser.token) =
+let is_lparen : Parser.token -> bool = function LPAREN -> true | _ -> false
+let is_rparen : Parser.token -> bool = function RPAREN -> true | _ -> false
+let is_colon : Parser.token -> bool = function COLON -> true | _ -> false
+
+let expect st is =
   let k = take st in
-  match k.raw with Tok y when y = x -> k.loc | _ -> raise Bail
+  match k.raw with Tok y when is y -> k.loc | _ -> raise Bail
 
 let node start stop node = { node; start; stop }
 
@@ -58,6 +75,15 @@ let name t n =
       | Some (Env.Decl (Decl.Function f)) -> Function f
       | _ -> raise Bail)
 
+(* the operators of each level of the grammar, by name ("": none) *)
+let logic_op : Parser.token -> string = function AND -> "&" | OR -> "|" | _ -> ""
+
+let rel_op : Parser.token -> string = function
+  | LT -> "<" | LE -> "<=" | GT -> ">" | GE -> ">=" | EQ -> "=" | NE -> "!=" | _ -> ""
+
+let add_op : Parser.token -> string = function PLUS -> "+" | MINUS -> "-" | _ -> ""
+let mul_op : Parser.token -> string = function STAR -> "*" | SLASH -> "/" | _ -> ""
+
 (* The grammar's expr / logic / rel / add / mul / unary / postfix /
    primary (grammar_lang.mly), by recursive descent: left-associative
    where its rules are left-recursive, each operator where the grammar
@@ -69,33 +95,24 @@ let rec expr st =
   | QUESTION ->
       st.i <- st.i + 1;
       let a = expr st in
-      ignore (expect st Parser.COLON);
+      ignore (expect st is_colon);
       let b = expr st in
       node c.start b.stop (Cond (c, a, b))
   | _ -> c
 
-and left ops next st =
-  let rec more l =
-    match ops (peek st) with
-    | Some op ->
-        st.i <- st.i + 1;
-        let r = next st in
-        more (node l.start r.stop (Bin (op, l, r)))
-    | None -> l
-  in
-  more (next st)
+(* operands of [next] joined by the operators [ops] names, left to right *)
+and more ops next st l =
+  match ops (peek st) with
+  | "" -> l
+  | op ->
+      st.i <- st.i + 1;
+      let r = next st in
+      more ops next st (node l.start r.stop (Bin (op, l, r)))
 
-and logic st = left (function Parser.AND -> Some "&" | OR -> Some "|" | _ -> None) rel st
-
-and rel st =
-  left
-    (function
-      | Parser.LT -> Some "<" | LE -> Some "<=" | GT -> Some ">" | GE -> Some ">=" | EQ -> Some "="
-      | NE -> Some "!=" | _ -> None)
-    add st
-
-and add st = left (function Parser.PLUS -> Some "+" | MINUS -> Some "-" | _ -> None) mul st
-and mul st = left (function Parser.STAR -> Some "*" | SLASH -> Some "/" | _ -> None) unary st
+and logic st = more logic_op rel st (rel st)
+and rel st = more rel_op add st (add st)
+and add st = more add_op mul st (mul st)
+and mul st = more mul_op unary st (unary st)
 
 and unary st =
   let k = tok st in
@@ -133,15 +150,15 @@ and primary st =
       match name st.t n with
       | Value v -> node l.start l.stop (Val v)
       | Function f ->
-          ignore (expect st Parser.LPAREN);
+          ignore (expect st is_lparen);
           let args, stop = args st in
           node l.start stop (Fcall (f, args)))
   | Tok Parser.LPAREN ->
       let e = expr st in
-      let stop = expect st Parser.RPAREN in
+      let stop = expect st is_rparen in
       node l.start stop.stop (Same e)
   | Tok (Parser.FUNC f) ->
-      ignore (expect st Parser.LPAREN);
+      ignore (expect st is_lparen);
       let args, stop = args st in
       node l.start stop (Call (f, args))
   | Tok Parser.LT ->
@@ -153,7 +170,7 @@ and primary st =
         let k = take st in
         match k.raw with
         | Tok Parser.GT -> (c :: acc, k.loc.stop)
-        | Tok Parser.COMMA when peek st = Parser.GT -> (c :: acc, (take st).loc.stop)
+        | Tok Parser.COMMA when (match peek st with GT -> true | _ -> false) -> (c :: acc, (take st).loc.stop)
         | Tok Parser.COMMA -> items (c :: acc)
         | _ -> raise Bail
       in
@@ -214,9 +231,9 @@ let phrase t ~paren ~(close : Parser.token -> bool) =
   if not (t.config.quick && t.pending = [] && t.stop_at = None) then None
   else
     let f = top t in
-    let st = { t; toks = f.toks; i = f.pos } in
+    let st = { t; toks = f.toks; i = f.pos; cur = Lexer.{ raw = Eof; loc = Loc.none }; at = -1 } in
     match
-      if paren then ignore (expect st Parser.LPAREN);
+      if paren then ignore (expect st is_lparen);
       let e = expr st in
       let k = take st in
       match k.raw with Tok x when close x -> (e, k, x) | _ -> raise Bail
@@ -259,12 +276,12 @@ let expr_then_rbracket t =
 
 let expr_then_sep t =
   match phrase t ~paren:false ~close:(function Parser.COMMA | RPAREN -> true | _ -> false) with
-  | Some (v, x) -> (v, x = Parser.COMMA)
+  | Some (v, x) -> (v, match x with Parser.COMMA -> true | _ -> false)
   | None -> Cursor.parse t Parser.Incremental.expr_then_sep
 
 let macro_arg t =
   match phrase t ~paren:false ~close:(function Parser.COMMA | RPAREN -> true | _ -> false) with
-  | Some (v, x) -> (Decl.Value v, x = Parser.RPAREN)
+  | Some (v, x) -> (Decl.Value v, match x with Parser.RPAREN -> true | _ -> false)
   | None -> Cursor.parse t Parser.Incremental.macro_arg
 
 let declare_value t =
