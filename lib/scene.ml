@@ -5,6 +5,7 @@ type settings = {
   encoding : Image.encoding;
   legacy_alpha : bool;
   irid_wavelength : Color.t;
+  radiosity : Radiosity.t option;
 }
 
 (* [finite] is stored in BVH leaf order. [spheres] holds, per finite
@@ -35,7 +36,7 @@ type t = {
   views : views;
 }
 
-and views = { mutable image : t option; mutable reflected : t option }
+and views = { mutable image : t option; mutable reflected : t option; mutable gather : t option }
 
 let default_settings =
   {
@@ -45,6 +46,7 @@ let default_settings =
     encoding = Image.Srgb;
     legacy_alpha = false;
     irid_wavelength = Color.make 0.70 0.52 0.48;
+    radiosity = None;
   }
 
 (* What testing an object costs, in tests of a sphere held in the flat
@@ -157,9 +159,9 @@ let make ?(sky = Sky.none) ?(fog = []) ?(rainbows = []) ?(media = []) ?(groups =
   let atmosphere = atmosphere media in
   let accel = accelerate objects in
   { objects; lights; light_sets = Array.append [| lights |] groups; camera; background; sky; fog; rainbows; atmosphere; settings; accel; all = accel;
-    views = { image = None; reflected = None } }
+    views = { image = None; reflected = None; gather = None } }
 
-let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None } }
+let with_objects s objects accel = { s with objects; accel; all = accel; views = { image = None; reflected = None; gather = None } }
 
 (* the scene seen without the objects whose [flags] have [bit]: its own
    tree for nearest hits, the whole one for shadows and insides *)
@@ -171,15 +173,37 @@ let without s flags bit =
 
 let hide s flags =
   if Array.length flags <> Array.length s.objects then invalid_arg "Scene.hide";
-  let v = { image = None; reflected = None } in
+  let v = { image = None; reflected = None; gather = None } in
   let s = { s with accel = s.all; views = v } in
   (* set both: a view's own fallback would be itself, not the whole scene *)
   v.image <- Some (Option.value ~default:s (without s flags 1));
   v.reflected <- Some (Option.value ~default:s (without s flags 2));
+  (match s.settings.radiosity with
+  | None -> ()
+  | Some r ->
+      (* what gather rays see: POV-Ray's radiosity rays skip area lights'
+         grids (quality flags without area lights) and, unless media on,
+         media; their ADC bailout is the radiosity's *)
+      let point (l : Light.t) = match l.area with None -> l | Some _ -> { l with area = None } in
+      let rv = { image = None; reflected = None; gather = None } in
+      let g =
+        { s with
+          lights = Array.map point s.lights;
+          light_sets = Array.map (Array.map point) s.light_sets;
+          atmosphere = (if r.media then s.atmosphere else []);
+          settings = { s.settings with adc_bailout = r.adc_bailout };
+          views = rv }
+      in
+      let g = Option.value ~default:g (without g flags 16) in
+      rv.image <- Some g;
+      rv.gather <- Some g;
+      rv.reflected <- Some (Option.value ~default:g (without s flags (16 lor 2) |> Option.map (fun (x : t) -> { g with accel = x.accel })));
+      v.gather <- Some g);
   s
 
 let image s = match s.views.image with Some v -> v | None -> s
 let reflected s = match s.views.reflected with Some v -> v | None -> s
+let radiosity s = match s.views.gather with Some v -> v | None -> s
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 

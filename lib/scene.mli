@@ -9,6 +9,7 @@ type settings = {
   legacy_alpha : bool;
       (** pre-3.7 transparency rule: alpha = 1 - (f max(rgb) + t) *)
   irid_wavelength : Color.t;  (** [irid_wavelength], POV-Ray's <0.25, 0.18, 0.14> by default *)
+  radiosity : Radiosity.t option;  (** global_settings' [radiosity], computed in whitted mode *)
 }
 
 type accel
@@ -42,16 +43,18 @@ type t = {
   views : views;
 }
 
-and views = { mutable image : t option; mutable reflected : t option }
+and views = { mutable image : t option; mutable reflected : t option; mutable gather : t option }
 (** [None]: the scene itself (nothing hidden from that view). *)
 
 val with_objects : t -> Object.t array -> accel -> t
 (** The scene with other objects and their tree; no hidden objects. *)
 
 val hide : t -> int array -> t
-(** [hide s flags]: POV-Ray's [no_image] (bit 1 of [flags.(i)]) and
-    [no_reflection] (bit 2) for [s.objects.(i)]: the scene with views that
-    leave those objects out (each view has its own tree). *)
+(** [hide s flags]: POV-Ray's [no_image] (bit 1 of [flags.(i)]),
+    [no_reflection] (bit 2) and [no_radiosity] (bit 16) for
+    [s.objects.(i)]: the scene with views that leave those objects out
+    (each view has its own tree), and its {!radiosity} view when it has
+    radiosity. *)
 
 val image : t -> t
 (** What camera rays, and rays refracted from them, see: the scene
@@ -59,6 +62,13 @@ val image : t -> t
 
 val reflected : t -> t
 (** What rays after a reflection see: without its [no_reflection] objects. *)
+
+val radiosity : t -> t
+(** What radiosity's gather rays see (set by {!hide} when the scene has
+    radiosity): without its [no_radiosity] objects, area lights shading
+    as the point at their centre, scene media only with the radiosity's
+    [media on], and the radiosity's ADC bailout; its reflected view
+    leaves out the [no_reflection] objects too. *)
 
 val accelerate : ?par:(int -> (int -> unit) -> unit) -> Object.t array -> accel
 (** Build the BVH (binned SAH) over the objects' world bounds; with [par],

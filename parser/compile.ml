@@ -628,6 +628,7 @@ and scene_ (s : Sdl.scene) =
                 | Sdl.Adc_bailout a -> settings := { !settings with adc_bailout = a }
                 | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c }
                 | Sdl.Irid_wavelength c -> settings := { !settings with irid_wavelength = c }
+                | Sdl.Radiosity r -> settings := { !settings with radiosity = Some r }
                 | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;
@@ -643,14 +644,14 @@ and scene_ (s : Sdl.scene) =
     let flagged = Array.of_list (List.rev !objects) in
     let objects = Array.map fst flagged in
     let accel = Scene.accelerate ?par:!par objects in
-    let hidden = Array.map (fun (_, f) -> f land (Sdl.no_image lor Sdl.no_reflection)) flagged in
+    let hidden = Array.map (fun (_, f) -> f land (Sdl.no_image lor Sdl.no_reflection lor Sdl.no_radiosity)) flagged in
     let lights = Array.of_list (List.rev !lights) in
     let s =
       {
         Scene.objects;
         accel;
         all = accel;
-        views = { image = None; reflected = None };
+        views = { image = None; reflected = None; gather = None };
         lights;
         light_sets =
           Array.append [| lights |]
@@ -662,8 +663,10 @@ and scene_ (s : Sdl.scene) =
         fog = List.rev !fog;
         rainbows = List.rev !rainbows;
         atmosphere = Scene.atmosphere (List.rev !media);
-        settings = { !settings with encoding; legacy_alpha = not v37 };
+        settings =
+          { !settings with encoding; legacy_alpha = not v37;
+            radiosity = Option.map (fun (r : Radiosity.t) -> { r with keep_ambient = not v37 }) !settings.radiosity };
       }
     in
-    Ok (if Array.exists (fun f -> f <> 0) hidden then Scene.hide s hidden else s)
+    Ok (if Array.exists (fun f -> f <> 0) hidden || s.settings.radiosity <> None then Scene.hide s hidden else s)
   with Diag.Error d -> Error d

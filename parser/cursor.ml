@@ -80,7 +80,7 @@ type t = {
       (** hand the parser a ';' when this frame reaches this position
           (ends a value that has no terminator, see {!Splread}) *)
   mutable braces : Loc.t list;  (** the '{' not yet closed, innermost first *)
-  mutable skipped : string list;  (** the blocks read past ([radiosity], [photons]), warned once *)
+  mutable skipped : string list;  (** the blocks read past ([photons]), warned once *)
   mutable context : string option;  (** what is being parsed, for messages *)
   deprecated : (string, string * bool * bool ref) Hashtbl.t;
       (** [#declare deprecated [once] "why" NAME = ...]: warn on use *)

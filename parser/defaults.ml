@@ -7,6 +7,7 @@ let items_seen = ref false
 let tex = ref (Texture.layer Pigment.black Finish.default)
 let tex_set = ref false
 let charset_ = ref `Ascii
+let warned : (string, unit) Hashtbl.t = Hashtbl.create 4
 
 let reset () =
   version_ := 3.62;
@@ -15,7 +16,8 @@ let reset () =
   items_seen := false;
   tex := Texture.layer Pigment.black Finish.default;
   tex_set := false;
-  charset_ := `Ascii
+  charset_ := `Ascii;
+  Hashtbl.reset warned
 
 let version () = !version_
 let charset () = !charset_
@@ -39,3 +41,9 @@ let set_normal n = tex_set := true; tex := { !tex with normal = n }
 let finder : (Loc.t -> string -> string option) ref = ref (fun _ _ -> None)
 let set_finder f = finder := f
 let find_file loc name = !finder loc name
+
+let warn_once key loc msg =
+  if not (Hashtbl.mem warned key) then begin
+    Hashtbl.replace warned key ();
+    Diag.warning loc msg
+  end

@@ -25,6 +25,10 @@ val mark_item : unit -> unit
 (** Note that a scene item has been read (later [#version]s do not change
     the gamma rules). *)
 
+val warn_once : string -> Loc.t -> string -> unit
+(** [warn_once key loc msg]: the warning, the first time [key] is met
+    in this parse. *)
+
 val texture : unit -> Camlray.Texture.layer
 
 val texture_set : unit -> bool

@@ -192,3 +192,74 @@ let call_function l f args =
   let args = List.map (Value.to_float l) args in
   if Fn.is_vector f then Value.Vector (Fn.call_vector l f args)
   else Value.Float (Fn.call l f args)
+
+(* global_settings' radiosity { ... }: POV-Ray 3.7's words, each with
+   its value (on/off words alone mean on); save_file and load_file are
+   read and ignored (camlray keeps no radiosity data between renders) *)
+type rad_item = Loc.t * string * (Loc.t * Value.t) option * (Loc.t * Value.t) option
+
+let radiosity (items : rad_item list) =
+  let value l w = function
+    | Some (vl, v) -> (vl, Value.to_float vl v)
+    | None -> Diag.error l "%s needs a value" w
+  in
+  let switch = function Some (vl, v) -> Value.to_float vl v <> 0. | None -> true in
+  let int_in l w lo hi v =
+    let n = int_of_float (Float.floor (v +. 0.5)) in
+    if n < lo || n > hi then Diag.error l "radiosity %s %d: it takes %d to %d" w n lo hi;
+    n
+  in
+  List.fold_left
+    (fun (r : Radiosity.t) (l, w, v, more) ->
+      (match (more, w) with
+      | Some (ml, _), ("count" | "nearest_count") -> ignore ml
+      | Some (ml, _), _ -> Diag.error ml "radiosity %s takes one value" w
+      | None, _ -> ());
+      match w with
+      | "count" ->
+          let vl, x = value l w v in
+          { r with count = int_in vl w 1 1600 x }
+      | "nearest_count" ->
+          let vl, x = value l w v in
+          { r with nearest_count = int_in vl w 1 20 x }
+      | "recursion_limit" ->
+          let vl, x = value l w v in
+          { r with recursion_limit = int_in vl w 1 20 x }
+      | "brightness" -> { r with brightness = snd (value l w v) }
+      | "error_bound" ->
+          let vl, x = value l w v in
+          if not (x > 0.) then Diag.error vl "radiosity error_bound %g: it must be positive" x;
+          { r with error_bound = x }
+      | "gray_threshold" -> { r with gray_threshold = Float.min 1. (Float.max 0. (snd (value l w v))) }
+      | "pretrace_start" -> { r with pretrace_start = snd (value l w v) }
+      | "pretrace_end" -> { r with pretrace_end = snd (value l w v) }
+      | "low_error_factor" -> { r with low_error_factor = snd (value l w v) }
+      | "minimum_reuse" -> { r with minimum_reuse = snd (value l w v) }
+      | "maximum_reuse" -> { r with maximum_reuse = snd (value l w v) }
+      | "adc_bailout" -> { r with adc_bailout = snd (value l w v) }
+      | "max_sample" -> { r with max_sample = snd (value l w v) }
+      | "always_sample" -> { r with always_sample = switch v }
+      | "normal" -> { r with normal = switch v }
+      | "media" -> { r with media = switch v }
+      | "subsurface" | "brilliance" ->
+          if switch v then Defaults.warn_once ("radiosity " ^ w) l (Printf.sprintf "radiosity %s is read and ignored" w);
+          r
+      | "save_file" | "load_file" ->
+          Defaults.warn_once "radiosity file" l
+            "radiosity save_file and load_file are read and ignored: camlray gathers its radiosity anew at every render";
+          r
+      | _ -> Diag.error l "%s belongs in an object's radiosity block, not in global_settings" w)
+    Radiosity.default items
+
+(* an object's radiosity { importance ... }: read and ignored (camlray's
+   gathers shoot every ray) *)
+let object_radiosity l items =
+  List.iter
+    (fun (wl, w, v, _) ->
+      match (w, v) with
+      | "importance", Some (vl, v) -> ignore (Value.to_float vl v)
+      | "importance", None -> Diag.error wl "importance needs a value"
+      | _ -> Diag.error wl "radiosity %s is a global_settings word: an object's radiosity block takes importance" w)
+    items;
+  Defaults.warn_once "object radiosity" l
+    "an object's radiosity { importance } is read and ignored: camlray's gathers shoot all their rays"

@@ -99,3 +99,12 @@ val vector_literal : Loc.t -> Value.t list -> Value.t
 val call_function : Loc.t -> Fn.t -> Value.t list -> Value.t
 (** The action of a declared function's call [F(a, b, ...)]: the
     arguments as floats, then the call. Shared with {!Quick}. *)
+
+type rad_item = Loc.t * string * (Loc.t * Value.t) option * (Loc.t * Value.t) option
+(** A radiosity block's word, its value and a second value after a comma. *)
+
+val radiosity : rad_item list -> Camlray.Radiosity.t
+(** global_settings' [radiosity { ... }] from POV-Ray 3.7's defaults. *)
+
+val object_radiosity : Loc.t -> rad_item list -> unit
+(** An object's [radiosity { importance ... }]: checked, warned about once, ignored. *)

@@ -275,9 +275,11 @@ hf_option:
 object_flag:
   | NO_IMAGE { Sdl.no_image }
   | NO_REFLECTION { Sdl.no_reflection }
-  (* POV-Ray hides the object from its radiosity's sample rays: whitted
-     mode has none (read, no effect), mc mode's indirect light sees it *)
-  | NO_RADIOSITY { 0 }
+  (* POV-Ray hides the object from its radiosity's gather rays (mc
+     mode's indirect light still sees it) *)
+  | NO_RADIOSITY { Sdl.no_radiosity }
+  (* an object's radiosity { importance ... }: read and ignored *)
+  | RADIOSITY LBRACE rs = list(rad_item) RBRACE { Gram.object_radiosity (loc $loc) rs; 0 }
   | DOUBLE_ILLUMINATE { Sdl.double_illuminate }
 
 (* type 0|1, flatness: how POV-Ray keeps its subpatches (camlray always

@@ -6,6 +6,8 @@
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT IRID_WAVELENGTH
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
 %token RAINBOW WIDTH ARC_ANGLE FALLOFF_ANGLE
+%token RADIOSITY
+%token <string> RAD_WORD RAD_FILE
 
 %start <Sdl.item list> scene
 
@@ -119,3 +121,15 @@ fog_item:
   | ADC_BAILOUT e = param { Sdl.Adc_bailout (fl $loc(e) e) }
   | AMBIENT_LIGHT c = color_value { Sdl.Ambient_light (Value.to_rgb (loc $loc(c)) c) }
   | IRID_WAVELENGTH c = color_value { Sdl.Irid_wavelength (Value.to_rgb (loc $loc(c)) c) }
+  | RADIOSITY LBRACE rs = list(rad_item) RBRACE { Sdl.Radiosity (Gram.radiosity rs) }
+
+(* a radiosity block's word and its values (on/off words may stand
+   alone): global_settings' or an object's, told apart by Gram *)
+%public rad_item:
+  | w = RAD_WORD v = ioption(param) m = ioption(preceded(COMMA, param))
+      { (loc $loc(w), w, Option.map (fun v -> (loc $loc(v), v)) v, Option.map (fun m -> (loc $loc(m), m)) m) }
+  | NORMAL v = ioption(param) { (loc $loc, "normal", Option.map (fun v -> (loc $loc(v), v)) v, None) }
+  | MEDIA v = ioption(param) { (loc $loc, "media", Option.map (fun v -> (loc $loc(v), v)) v, None) }
+  | BRILLIANCE v = ioption(param) { (loc $loc, "brilliance", Option.map (fun v -> (loc $loc(v), v)) v, None) }
+  | ADC_BAILOUT v = param { (loc $loc, "adc_bailout", Some (loc $loc(v), v), None) }
+  | w = RAD_FILE s = string_arg { (loc $loc, w, Some (loc $loc(s), Value.String s), None) }

@@ -37,7 +37,12 @@ let scene_keywords =
     ("irid_wavelength", IRID_WAVELENGTH); ("fog", FOG); ("fog_type", FOG_TYPE);
     ("fog_offset", FOG_OFFSET); ("fog_alt", FOG_ALT); ("turb_depth", TURB_DEPTH); ("distance", DISTANCE);
     ("rainbow", RAINBOW); ("width", WIDTH); ("arc_angle", ARC_ANGLE); ("falloff_angle", FALLOFF_ANGLE);
+    ("radiosity", RADIOSITY); ("save_file", RAD_FILE "save_file"); ("load_file", RAD_FILE "load_file");
   ]
+  @ List.map (fun k -> (k, RAD_WORD k))
+      [ "count"; "recursion_limit"; "brightness"; "error_bound"; "pretrace_start"; "pretrace_end";
+        "nearest_count"; "low_error_factor"; "gray_threshold"; "minimum_reuse"; "maximum_reuse";
+        "always_sample"; "max_sample"; "subsurface"; "importance" ]
 
 (* grammar_objects.mly *)
 let object_keywords =

@@ -322,6 +322,15 @@ let global = function
   | Sdl.Irid_wavelength c -> "irid_wavelength " ^ rgb c
   | Sdl.Adc_bailout a -> "adc_bailout " ^ float a
   | Sdl.Ambient_light c -> "ambient_light " ^ rgb c
+  | Sdl.Radiosity r ->
+      let b x = if x then "on" else "off" in
+      Printf.sprintf
+        "radiosity { count %d recursion_limit %d brightness %s error_bound %s nearest_count %d gray_threshold %s \
+         pretrace_start %s pretrace_end %s low_error_factor %s minimum_reuse %s maximum_reuse %s adc_bailout %s \
+         max_sample %s always_sample %s normal %s media %s }"
+        r.count r.recursion_limit (float r.brightness) (float r.error_bound) r.nearest_count (float r.gray_threshold)
+        (float r.pretrace_start) (float r.pretrace_end) (float r.low_error_factor) (float r.minimum_reuse)
+        (float r.maximum_reuse) (float r.adc_bailout) (float r.max_sample) (b r.always_sample) (b r.normal) (b r.media)
   | Sdl.Noise_generator n -> Printf.sprintf "noise_generator %d" n
   | Sdl.Number_of_waves n -> Printf.sprintf "number_of_waves %d" n
 

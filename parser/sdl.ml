@@ -184,6 +184,7 @@ type global =
   | Irid_wavelength of Color.t
   | Adc_bailout of float
   | Ambient_light of Color.t
+  | Radiosity of Radiosity.t  (** [radiosity { ... }]; [keep_ambient] is set by the compiler *)
   | Noise_generator of int  (** parsed; camlray has one noise *)
   | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
@@ -211,3 +212,4 @@ let no_image = 1
 let no_reflection = 2
 let double_illuminate = 4
 let uv_mapping = 8
+let no_radiosity = 16

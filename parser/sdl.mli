@@ -196,6 +196,7 @@ type global =
   | Irid_wavelength of Color.t
   | Adc_bailout of float
   | Ambient_light of Color.t
+  | Radiosity of Radiosity.t  (** [radiosity { ... }]; [keep_ambient] is set by the compiler *)
   | Noise_generator of int  (** parsed; camlray has one noise *)
   | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
@@ -229,5 +230,7 @@ val no_reflection : int
 
 val double_illuminate : int
 val uv_mapping : int
+val no_radiosity : int
+(** [no_radiosity]: hidden from radiosity's gather rays. *)
 (** [uv_mapping] in an object: the textures and pigments written after it are uv-mapped. *)
 (** Lights behind the surface light it too. *)

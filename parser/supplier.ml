@@ -180,11 +180,9 @@ and ident t name loc =
           end
           else if name = "defined" || name = "dimensions" || name = "dimension_size" then
             (Parser.FLOAT (Arrays.query t name loc), loc)
-          else if (name = "radiosity" || name = "photons") && (raw_peek t).raw = Tok Parser.LBRACE then begin
-            (* global_settings { radiosity { ... } }, an object's
-               radiosity { importance ... }, photons { ... } in global
-               settings, objects and lights: read past, a warning once
-               for each *)
+          else if name = "photons" && (raw_peek t).raw = Tok Parser.LBRACE then begin
+            (* photons { ... } in global settings, objects and lights:
+               read past, a warning once *)
             ignore (raw_next t);
             let rec skip depth =
               if depth > 0 then
@@ -198,12 +196,8 @@ and ident t name loc =
             if not (List.mem name t.skipped) then begin
               t.skipped <- name :: t.skipped;
               Diag.warning loc
-                (if name = "radiosity" then
-                   "radiosity is read and ignored: whitted mode computes none (ambient stands in for it); mc \
-                    mode computes global illumination by path tracing"
-                 else
-                   "photons are read and ignored: whitted mode draws no caustics; mc mode finds them by \
-                    path tracing (slowly)")
+                "photons are read and ignored: whitted mode draws no caustics; mc mode finds them by path \
+                 tracing (slowly)"
             end;
             next t
           end

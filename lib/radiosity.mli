@@ -1,0 +1,66 @@
+(** POV-Ray 3.7's radiosity, as whitted mode computes it: its settings
+    (global_settings' [radiosity { ... }]), the directions its gather rays
+    take, the per-domain state of the gathers in progress, and the
+    irradiance cache filled by a pretrace. The gather itself, which
+    traces rays, is {!Whitted}'s. *)
+
+type t = {
+  count : int;  (** rays of a top-level gather (35); deeper gathers shoot half as many per level, at least 5 *)
+  recursion_limit : int;  (** bounces of indirect light (2), 1..20 *)
+  brightness : float;  (** the gathered light's factor (1) *)
+  error_bound : float;  (** how far a cache record is reused (1.8) *)
+  nearest_count : int;  (** records averaged where a point is looked up (5), 1..20 *)
+  gray_threshold : float;  (** how far the gathered light is made grey (0), 0..1 *)
+  pretrace_start : float;  (** the coarsest pretrace's pixel size, a fraction of the image (0.08) *)
+  pretrace_end : float;  (** the finest pretrace's (0.04) *)
+  low_error_factor : float;  (** the error bound's factor during the pretrace (0.5) *)
+  minimum_reuse : float;  (** the least reuse radius, a fraction of the distance to the camera (0.015) *)
+  maximum_reuse : float;  (** the largest (0.2) *)
+  adc_bailout : float;  (** the gather rays' ADC bailout (0.01) *)
+  max_sample : float;  (** the brightest a gather ray may bring back (its largest channel; <= 0: no limit) *)
+  always_sample : bool;  (** the final pass gathers anew where fewer than [nearest_count] records serve (off) *)
+  normal : bool;  (** gather about the perturbed normal (off: the surface's own) *)
+  media : bool;  (** gather rays see media (off) *)
+  keep_ambient : bool;
+      (** a scene of #version before 3.7 keeps its finishes' [ambient]
+          beside the radiosity (POV-Ray's legacy rule); from 3.7 on,
+          radiosity replaces it *)
+}
+
+val default : t
+(** POV-Ray 3.7's defaults. *)
+
+val rays : t -> int -> int
+(** [rays r depth]: the rays of a gather at that recursion depth
+    (0 at a camera ray's surfaces): max 5 (count / 2^depth). *)
+
+val trace_level : int -> int
+(** The trace level a gather ray at a depth starts from, in camlray's
+    counting (a camera ray is level 1): POV-Ray's int (1.5 (depth + 1)),
+    plus one. *)
+
+val weight : t -> int -> float
+(** The ADC weight of a gather ray at a depth: max (adc_bailout +
+    epsilon) ((brightness / 2)^(depth + 1)) (POV-Ray's estimate). *)
+
+val direction_into :
+  Vec3.m -> int -> int -> float -> float -> Vec3.m -> unit
+(** [direction_into n i count r1 r2 out]: the [i]th of [count] directions
+    about the unit normal [n], cosine-weighted (a Hammersley set on the
+    unit square, shifted by [(r1, r2)] modulo 1, mapped to the hemisphere
+    by Malley's method: [sqrt u1] the sine's radius, [2 pi u2] the
+    turn). The tangent frame is POV-Ray's: [x] = n x z normalised (n x y
+    when n is within 0.9 of z), [z] = x x n. *)
+
+val radical_inverse : int -> float
+(** Van der Corput's base-2 radical inverse of an index, in [0, 1). *)
+
+(** The gathers in progress on the calling domain. *)
+
+val depth : unit -> int
+(** The recursion depth of the ray being traced: 0 for a camera ray and
+    the rays it spawns, d inside a depth-(d-1) gather. *)
+
+val descend : unit -> unit
+val ascend : unit -> unit
+val reset_depth : unit -> unit
