@@ -14,6 +14,9 @@ val madd : t -> float -> t -> t
 (** [madd a k b] is [a + k b]. *)
 
 val max_channel : t -> float
+val grey : float -> float -> float -> float
+(** [grey r g b]: {!luminance} of the channels, inlined. *)
+
 val luminance : t -> float
 (** POV-Ray's grey value: 0.297 r + 0.589 g + 0.114 b. *)
 

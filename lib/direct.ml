@@ -9,9 +9,10 @@ type opacity = { mutable alpha : float }
    [col.(3j) .. col.(3j + 2)] when [stamp.(j) = gen] (POV-Ray keeps the
    same per intersection, so that the layers of a texture and the
    textures of a texture map trace each shadow ray once) *)
-type shadows = { mutable gen : int; mutable stamp : int array; mutable col : float array }
+type shadows = { mutable gen : int; mutable stamp : int array; mutable col : float array; mutable highlights : bool }
 
-let shadows () = { gen = 1; stamp = [||]; col = [||] }
+let shadows () = { gen = 1; stamp = [||]; col = [||]; highlights = true }
+let set_highlights c h = c.highlights <- h
 let forget c = c.gen <- c.gen + 1
 
 (* POV-Ray's iridescence of channel [c] (0 red, 1 green, 2 blue): a thin
@@ -41,6 +42,7 @@ type lightlet = {
   mutable lb : float;
   mutable nl : float;
   mutable icos : float;
+  mutable hl : bool;  (** highlights drawn (not for radiosity's gather rays) *)
 }
 
 (* Diffuse and highlights of the lightlet [c] coming along [l] (the unit
@@ -64,7 +66,7 @@ let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Ve
       cg := !cg +. (k *. (pc.g *. lg));
       cb := !cb +. (k *. (pc.b *. lb))
     end;
-    if not light.shadowless then begin
+    if c.hl && not light.shadowless then begin
       let m = f.metallic in
       let mk = if m = 0. then 0. else Finish.metallic_k m nl in
       let mr = lr *. Finish.tint m mk pc.r and mg = lg *. Finish.tint m mk pc.g and mb = lb *. Finish.tint m mk pc.b in
@@ -157,7 +159,7 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
 (* Per domain: the lightlet handed to [shade] and a sample's position *)
 type scratch = { ll : lightlet; q : Vec3.m }
 
-let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0. }; q = Vec3.m () })
+let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; hl = true }; q = Vec3.m () })
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
@@ -215,6 +217,7 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     cache.col <- Array.make (3 * nl) 0.
   end;
   let sc = Scratch.get scratch_key in
+  sc.ll.hl <- cache.highlights;
   for j = 0 to nl - 1 do
     let light = Array.unsafe_get ls j in
     match light.area with

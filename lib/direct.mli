@@ -23,6 +23,10 @@ val shadows : unit -> shadows
 val forget : shadows -> unit
 (** Empty it: the next point shaded is another. *)
 
+val set_highlights : shadows -> bool -> unit
+(** Whether {!lights} draws Phong and specular highlights at the point
+    (POV-Ray draws none for the surfaces radiosity's gather rays meet). *)
+
 val lights :
   Scene.t -> shadows -> Light.t array -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m ->
   Color.acc -> unit

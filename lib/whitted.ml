@@ -77,6 +77,8 @@ type frame = {
           patterned texture above the layer, then back) *)
   mutable nchain : int;
   tn : Vec3.m;  (** the normal turned into that space *)
+  amb : Color.acc;  (** the radiosity gathered at [p], once [amb_done] *)
+  mutable amb_done : bool;
 }
 
 let new_frame () =
@@ -84,7 +86,7 @@ let new_frame () =
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
     uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||]; chain = [||]; nchain = 0;
-    tn = Vec3.m () }
+    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false }
 
 (* a texture map's frame entered (the chain grows once, to the deepest
    nesting met) *)
@@ -101,6 +103,8 @@ let enter () =
   Color.acc_set f.c 0. 0. 0.;
   Color.acc_set f.tr 1. 1. 1.;
   f.top_set <- false;
+  f.amb_done <- false;
+  Color.acc_set f.amb 0. 0. 0.;
   Direct.forget f.sh;
   f
 
@@ -120,6 +124,9 @@ let tmap_enter () = Scratch.push (Scratch.get tmaps_key)
 let tmap_leave () = Scratch.pop (Scratch.get tmaps_key)
 
 let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c.g c.b
+
+(* the numbers turning a gather's directions (per domain) *)
+let gather_key = Scratch.key (fun () -> Sampler.create ~seed:0 ~pixel:0 ~sample:0)
 
 (* a ray's direction made unit, to look up the sky (per domain) *)
 let sky_key = Scratch.key Vec3.m
@@ -235,6 +242,10 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
     else begin
       let t = h.t and obj = f.leaf in
       let fr = enter () in
+      (* POV-Ray draws no highlights where gather rays meet a surface *)
+      (match s.settings.radiosity with
+      | None -> Direct.set_highlights fr.sh true
+      | Some _ -> Direct.set_highlights fr.sh (Radiosity.depth () = 0));
       let p = fr.p in
       Vec3.set p (o.mx +. (t *. d.mx)) (o.my +. (t *. d.my)) (o.mz +. (t *. d.mz));
       Scene.hit_normal_into s f h p fr.n0;
@@ -385,11 +396,25 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
                1. -. ((pig.filter *. Float.max pc.r (Float.max pc.g pc.b)) +. pig.transmit)
              else 1. -. pig.filter -. pig.transmit);
           let alpha = fr.a.alpha in
-          (* this layer's own colour: lights, then ambient and emission *)
+          (* the radiosity first: its gather rays shade other surfaces *)
+          (match s.settings.radiosity with None -> () | Some r -> radiosity_term s r level media fr f w n);
+          (* this layer's own colour: lights, then ambient (or the
+             radiosity) and emission *)
           let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
           Direct.lights s fr.sh fr.lights f pc fr.a p n d dl;
-          let amb = s.settings.ambient_light in
+          let amb =
+            match s.settings.radiosity with
+            | None -> s.settings.ambient_light
+            | Some r ->
+                if Radiosity.depth () < r.recursion_limit then begin
+                  (* POV-Ray 3.7: diffuse x pigment x the light gathered *)
+                  let a = fr.amb and k = alpha *. f.diffuse in
+                  Color.acc_set dl (dl.ar +. (k *. pc.r *. a.ar)) (dl.ag +. (k *. pc.g *. a.ag)) (dl.ab +. (k *. pc.b *. a.ab))
+                end;
+                (* ambient only in scenes older than 3.7 *)
+                if r.keep_ambient then s.settings.ambient_light else Color.black
+          in
           let lr = dl.ar +. (alpha *. (pc.r *. ((f.ambient.r *. amb.r) +. f.emission.r)))
           and lg = dl.ag +. (alpha *. (pc.g *. ((f.ambient.g *. amb.g) +. f.emission.g)))
           and lb = dl.ab +. (alpha *. (pc.b *. ((f.ambient.b *. amb.b) +. f.emission.b))) in
@@ -409,6 +434,63 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
             (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
             (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
           if not (Color.acc_is_black w) then layers s d level media fr refl acc w tp rest)
+
+(* POV-Ray's radiosity at the frame's point, into [fr.amb], once per
+   hit and only where the recursion depth allows it and it can show (the
+   layer's greatest possible share over the ADC bailout, as POV-Ray
+   tests it) *)
+and radiosity_term s (r : Radiosity.t) level media (fr : frame) (f : Finish.t) (w : Color.acc) (n : Vec3.m) =
+  if (not fr.amb_done) && Radiosity.depth () < r.recursion_limit then begin
+    let pc = fr.pig in
+    let most =
+      Color.grey (w.ar *. pc.r) (w.ag *. pc.g) (w.ab *. pc.b) *. fr.a.alpha *. f.diffuse
+    in
+    if most > s.Scene.settings.adc_bailout then begin
+      fr.amb_done <- true;
+      gather s r level media fr (if r.normal then n else fr.n0)
+    end
+  end
+
+(* The light gathered over the hemisphere about [nrm] at the frame's
+   point, into [fr.amb]: the mean of [Radiosity.rays] rays in
+   cosine-weighted directions (a stratified set turned by numbers of the
+   point's own, so that a render does not depend on the domains), each
+   tracing what radiosity's rays see one recursion deeper; each ray's
+   light limited to max_sample, the mean made grey by gray_threshold
+   and scaled by brightness (POV-Ray's GatherLight and ComputeAmbient,
+   without its cache). *)
+and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) =
+  let depth = Radiosity.depth () in
+  let count = Radiosity.rays r depth in
+  let g = Scene.radiosity s in
+  let p = fr.p in
+  let sm = Scratch.get gather_key in
+  let key =
+    Sampler.hash
+      (Int64.to_int (Int64.bits_of_float p.mx)
+      lxor Sampler.hash (Int64.to_int (Int64.bits_of_float p.my) lxor Sampler.hash (Int64.to_int (Int64.bits_of_float p.mz))))
+  in
+  Sampler.reset sm ~seed:(7919 + depth) ~pixel:key ~sample:0;
+  let r1 = Sampler.get sm 0 and r2 = Sampler.get sm 1 in
+  let lvl = Int.min (Radiosity.trace_level depth) g.settings.max_trace_level in
+  let wt = Radiosity.weight r depth in
+  let rd = fr.rd and rc = fr.rc and sum = fr.amb in
+  Color.acc_set sum 0. 0. 0.;
+  Radiosity.descend ();
+  for i = 0 to count - 1 do
+    Radiosity.direction_into nrm i count r1 r2 rd;
+    fr.k.child <- wt;
+    trace_ray g Ray.epsilon infinity p rd lvl fr.k media rc;
+    let m = Float.max rc.ar (Float.max rc.ag rc.ab) in
+    let k = if r.max_sample > 0. && m > r.max_sample then r.max_sample /. m else 1. in
+    Color.acc_set sum (sum.ar +. (k *. rc.ar)) (sum.ag +. (k *. rc.ag)) (sum.ab +. (k *. rc.ab))
+  done;
+  Radiosity.ascend ();
+  let k = 1. /. float_of_int count in
+  let gr = r.gray_threshold in
+  let grey = gr *. Color.grey (k *. sum.ar) (k *. sum.ag) (k *. sum.ab) in
+  let b = r.brightness and c = 1. -. gr in
+  Color.acc_set sum (b *. ((c *. k *. sum.ar) +. grey)) (b *. ((c *. k *. sum.ag) +. grey)) (b *. ((c *. k *. sum.ab) +. grey))
 
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
    starts at the frame's point along its [rd], weighs [fr.k.refl] times
@@ -507,6 +589,7 @@ let camera_key =
 (* the radiance along [r] into [out], from hits nearer than [far] *)
 let trace_camera_ray s far (r : camera_ray) out =
   Scratch.reset (Scratch.get frames_key);
+  if s.Scene.settings.radiosity <> None then Radiosity.reset_depth ();
   (* no_image objects are left out of what camera rays (and rays refracted
      from them) see *)
   trace_ray (Scene.image s) 0. far r.o r.d 1 r.k (start_media s r.o) out
