@@ -226,6 +226,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
       in
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in
+      (* radiosity's pretrace, before the picture reads its cache *)
+      if o.mode = Whitted then Whitted.prepare scene ~width ~height;
       let last = ref 0. in
       let progress ~done_ ~total =
         let now = Unix.gettimeofday () in

@@ -1,6 +1,29 @@
 (* POV-Ray 3.7's radiosity: settings, gather directions, per-domain
    depth (see radiosity.mli). *)
 
+(* A cached gather: where, about which normal, the light found (before
+   gray_threshold and brightness), the harmonic mean distance of what its
+   rays met, the nearest distance and the direction toward it *)
+type record = {
+  px : float; py : float; pz : float;
+  nx : float; ny : float; nz : float;
+  ir : float; ig : float; ib : float;
+  hmd : float;
+  near : float;
+  tx : float; ty : float; tz : float;
+}
+
+(* the records of one recursion depth, in cells of side 2^L (L by each
+   record's reach), keyed by (L, cell) mixed into one int *)
+type store = { cells : (int, record list) Hashtbl.t; used : bool array; mutable n : int }
+
+let levels = 128 (* L from -64 to 63 *)
+
+type cache = { mutable filling : bool; stores : store array }
+
+let new_cache () =
+  { filling = false; stores = Array.init 21 (fun _ -> { cells = Hashtbl.create 256; used = Array.make levels false; n = 0 }) }
+
 type t = {
   count : int;
   recursion_limit : int;
@@ -19,6 +42,7 @@ type t = {
   normal : bool;
   media : bool;
   keep_ambient : bool;
+  cache : cache;
 }
 
 let default =
@@ -40,6 +64,7 @@ let default =
     normal = false;
     media = false;
     keep_ambient = false;
+    cache = new_cache ();
   }
 
 let rays r depth = Int.max 5 (int_of_float (float_of_int r.count *. Float.pow 0.5 (float_of_int depth)))
@@ -76,3 +101,113 @@ let depth () = !(Scratch.get depth_key)
 let descend () = incr (Scratch.get depth_key)
 let ascend () = decr (Scratch.get depth_key)
 let reset_depth () = Scratch.get depth_key := 0
+
+let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2 r.nearest_count | _ -> 1
+
+let clear c =
+  c.filling <- false;
+  Array.iter (fun st -> Hashtbl.reset st.cells; Array.fill st.used 0 levels false; st.n <- 0) c.stores
+
+let records c depth = c.stores.(depth).n
+
+let[@inline] cell_key l ix iy iz =
+  (((((l * 1_000_003) + ix) * 1_000_033) + iy) * 998_244_353) + iz
+
+(* the level whose cells are at least twice [reach] *)
+let level_of reach =
+  let l = int_of_float (Float.ceil (Float.log2 (2. *. reach))) in
+  Int.max (-64) (Int.min 63 l)
+
+let add c depth rc reach =
+  let st = c.stores.(depth) in
+  let l = level_of reach in
+  let s = Float.ldexp 1. l in
+  let key = cell_key l (int_of_float (Float.floor (rc.px /. s))) (int_of_float (Float.floor (rc.py /. s))) (int_of_float (Float.floor (rc.pz /. s))) in
+  let old = match Hashtbl.find_opt st.cells key with Some l -> l | None -> [] in
+  Hashtbl.replace st.cells key (rc :: old);
+  st.used.(l + 64) <- true;
+  st.n <- st.n + 1
+
+(* POV-Ray's test of one record for the point [q] of normal [n]
+   (AverageNearBlock): the weight it gets, 0 when it does not serve *)
+let weigh rc (q : Vec3.m) (n : Vec3.m) eb final0 =
+  let dx = q.mx -. rc.px and dy = q.my -. rc.py and dz = q.mz -. rc.pz in
+  let d2 = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
+  let quick = rc.hmd *. eb in
+  if d2 >= quick *. quick then 0.
+  else begin
+    let dist = Float.sqrt d2 in
+    let far = dist > 1e-6 in
+    let ux = if far then dx /. dist else 0. and uy = if far then dy /. dist else 0. and uz = if far then dz /. dist else 0. in
+    (* a smaller reach toward the nearest surface the gather met *)
+    let cn = if far then (rc.tx *. ux) +. (rc.ty *. uy) +. (rc.tz *. uz) else 0. in
+    let ri = if cn > 0. then (cn *. rc.near) +. ((1. -. cn) *. rc.hmd) else rc.hmd in
+    if dist >= ri *. eb then 0.
+    else begin
+      let dd = (n.mx *. rc.nx) +. (n.my *. rc.ny) +. (n.mz *. rc.nz) in
+      let e = (dist /. ri) +. (2. *. Float.sqrt (Float.abs (1. -. dd))) in
+      if e >= eb then 0.
+      else begin
+        (* not a record well in front of the point (it may shadow it) *)
+        let front =
+          if far then begin
+            let hx = n.mx +. rc.nx and hy = n.my +. rc.ny and hz = n.mz +. rc.nz in
+            let hl = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
+            if hl > 0. then ((ux *. hx) +. (uy *. hy) +. (uz *. hz)) /. hl else 1.
+          end
+          else 1.
+        in
+        if front <= -0.05 then 0.
+        else begin
+          let t = e /. eb in
+          let w =
+            if final0 then if t < 0.5 then 1. -. (2. *. t *. t) else 2. *. (1. -. t) *. (1. -. t)
+            else 1. -. t
+          in
+          let w = if front <= 0. then w *. (1. -. (front /. -0.05)) else w in
+          if w > 0.001 then w else 0.
+        end
+      end
+    end
+  end
+
+let lookup c depth (q : Vec3.m) (n : Vec3.m) eb (out : Color.acc) =
+  let st = c.stores.(depth) in
+  if st.n = 0 then 0.
+  else begin
+    let final0 = (not c.filling) && depth = 0 in
+    let ws = ref 0. and sr = ref 0. and sg = ref 0. and sb = ref 0. in
+    for li = 0 to levels - 1 do
+      if st.used.(li) then begin
+        let l = li - 64 in
+        let s = Float.ldexp 1. l in
+        let x0 = int_of_float (Float.floor ((q.mx /. s) -. 0.5))
+        and y0 = int_of_float (Float.floor ((q.my /. s) -. 0.5))
+        and z0 = int_of_float (Float.floor ((q.mz /. s) -. 0.5)) in
+        for ix = x0 to x0 + 1 do
+          for iy = y0 to y0 + 1 do
+            for iz = z0 to z0 + 1 do
+              match Hashtbl.find_opt st.cells (cell_key l ix iy iz) with
+              | None -> ()
+              | Some rs ->
+                  List.iter
+                    (fun rc ->
+                      let w = weigh rc q n eb final0 in
+                      if w > 0. then begin
+                        ws := !ws +. w;
+                        sr := !sr +. (w *. rc.ir);
+                        sg := !sg +. (w *. rc.ig);
+                        sb := !sb +. (w *. rc.ib)
+                      end)
+                    rs
+            done
+          done
+        done
+      end
+    done;
+    if !ws > 0. then Color.acc_set out (!sr /. !ws) (!sg /. !ws) (!sb /. !ws);
+    !ws
+  end
+
+let filling c = c.filling
+let set_filling c b = c.filling <- b

@@ -4,6 +4,22 @@
     irradiance cache filled by a pretrace. The gather itself, which
     traces rays, is {!Whitted}'s. *)
 
+type record = {
+  px : float; py : float; pz : float;  (** where the gather was *)
+  nx : float; ny : float; nz : float;  (** its normal *)
+  ir : float; ig : float; ib : float;  (** the mean light found, before gray_threshold and brightness *)
+  hmd : float;  (** the harmonic mean distance of what its rays met, clamped by minimum_reuse and maximum_reuse *)
+  near : float;  (** the nearest distance met *)
+  tx : float; ty : float; tz : float;  (** the unit direction of that nearest ray *)
+}
+(** A gather kept for reuse (Ward's irradiance cache, as POV-Ray keeps it). *)
+
+type cache
+(** The records of a render, by recursion depth: filled by a pretrace
+    (one domain), then only read (by every domain). *)
+
+val new_cache : unit -> cache
+
 type t = {
   count : int;  (** rays of a top-level gather (35); deeper gathers shoot half as many per level, at least 5 *)
   recursion_limit : int;  (** bounces of indirect light (2), 1..20 *)
@@ -25,6 +41,7 @@ type t = {
       (** a scene of #version before 3.7 keeps its finishes' [ambient]
           beside the radiosity (POV-Ray's legacy rule); from 3.7 on,
           radiosity replaces it *)
+  cache : cache;  (** the scene's own (the compiler makes one per scene) *)
 }
 
 val default : t
@@ -64,3 +81,30 @@ val depth : unit -> int
 val descend : unit -> unit
 val ascend : unit -> unit
 val reset_depth : unit -> unit
+
+(** The irradiance cache. *)
+
+val clear : cache -> unit
+val filling : cache -> bool
+(** Whether gathers add records (the pretrace) or only read them. *)
+
+val set_filling : cache -> bool -> unit
+val records : cache -> int -> int
+(** Records kept at a depth. *)
+
+val reuse_count : t -> int -> int
+(** How much weight a lookup must find at a depth to be used without a
+    gather during the pretrace: nearest_count at depth 0, at most 2 at
+    depth 1, then 1 (POV-Ray's; compared with 4 times the weight). *)
+
+val add : cache -> int -> record -> float -> unit
+(** [add c depth r reach]: keep a record whose reach (its harmonic mean
+    distance times the largest error bound at that depth) is [reach]. *)
+
+val lookup : cache -> int -> Vec3.m -> Vec3.m -> float -> Color.acc -> float
+(** [lookup c depth q n eb out]: POV-Ray's reuse test of every record near
+    [q] (of unit normal [n]) against the error bound [eb]: distance over
+    the record's reach plus 2 sqrt (1 - cos) of the normals under [eb],
+    not in front of the point; each weighted 1 - e/eb (a smooth step of
+    it at depth 0 in the final pass); the weighted mean light into [out]
+    when the total weight (returned) is positive. *)

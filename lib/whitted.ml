@@ -16,9 +16,10 @@ type nums = {
   mutable weight : float;
   mutable refl : float;
   mutable child : float;
+  mutable dist : float;  (** how far the ray traced from here last met a surface (infinity: none) *)
 }
 
-let nums () = { eta = 1.; weight = 1.; refl = 1.; child = 1. }
+let nums () = { eta = 1.; weight = 1.; refl = 1.; child = 1.; dist = infinity }
 
 (* the sum of a layer's direct light, per domain: nothing in it traces *)
 let direct_key = Scratch.key (fun () -> Color.acc 0.)
@@ -223,6 +224,7 @@ let irid (s : Scene.t) (f : Finish.t) (p : Vec3.m) ci cr (rc : Color.acc) =
    not written. *)
 let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from : nums) media (out : Color.acc) =
   let weight = from.child in
+  from.dist <- infinity;
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then Color.acc_set out 0. 0. 0.
   else
     (* read at once, before shading traces anything else *)
@@ -241,6 +243,7 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
     end
     else begin
       let t = h.t and obj = f.leaf in
+      from.dist <- t;
       let fr = enter () in
       (* POV-Ray draws no highlights where gather rays meet a surface *)
       (match s.settings.radiosity with
@@ -447,19 +450,48 @@ and radiosity_term s (r : Radiosity.t) level media (fr : frame) (f : Finish.t) (
     in
     if most > s.Scene.settings.adc_bailout then begin
       fr.amb_done <- true;
-      gather s r level media fr (if r.normal then n else fr.n0)
+      ambient s r level media fr (if r.normal then n else fr.n0) (fr.k.weight *. most)
     end
   end
+
+(* POV-Ray's ComputeAmbient: the records of the cache that serve the
+   point (the error bound lowered by low_error_factor in the pretrace,
+   raised for points that weigh little, doubled per depth); enough of
+   them (any in the final pass, unless always_sample), or a gather,
+   blended with what was found; then made grey by gray_threshold and
+   scaled by brightness *)
+and ambient s (r : Radiosity.t) level media (fr : frame) (nrm : Vec3.m) weight =
+  let c = r.cache in
+  let depth = Radiosity.depth () in
+  let filling = Radiosity.filling c in
+  let eb = if filling then r.error_bound *. r.low_error_factor else r.error_bound in
+  let eb = if weight < 0.25 then eb +. (0.25 -. weight) else eb in
+  let eb = Float.ldexp eb depth in
+  let a = fr.amb in
+  let reuse = Radiosity.lookup c depth fr.p nrm eb a in
+  if not (4. *. reuse >= float_of_int (Radiosity.reuse_count r depth) || ((not filling) && (not r.always_sample) && reuse > 0.))
+  then begin
+    let fr_ = a.ar and fg = a.ag and fb = a.ab in
+    gather s r level media fr nrm filling;
+    if reuse > 0. then begin
+      let k = 1. /. (reuse +. 1.) in
+      Color.acc_set a (k *. ((fr_ *. reuse) +. a.ar)) (k *. ((fg *. reuse) +. a.ag)) (k *. ((fb *. reuse) +. a.ab))
+    end
+  end;
+  let gr = r.gray_threshold and b = r.brightness in
+  let grey = gr *. Color.grey a.ar a.ag a.ab and k = 1. -. gr in
+  Color.acc_set a (b *. ((k *. a.ar) +. grey)) (b *. ((k *. a.ag) +. grey)) (b *. ((k *. a.ab) +. grey))
 
 (* The light gathered over the hemisphere about [nrm] at the frame's
    point, into [fr.amb]: the mean of [Radiosity.rays] rays in
    cosine-weighted directions (a stratified set turned by numbers of the
    point's own, so that a render does not depend on the domains), each
-   tracing what radiosity's rays see one recursion deeper; each ray's
-   light limited to max_sample, the mean made grey by gray_threshold
-   and scaled by brightness (POV-Ray's GatherLight and ComputeAmbient,
-   without its cache). *)
-and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) =
+   tracing what radiosity's rays see one recursion deeper, its light
+   limited to max_sample (POV-Ray's GatherLight). With [keep], the
+   gather is kept in the cache, its reach the harmonic mean distance of
+   what the rays met, within minimum_reuse and maximum_reuse of the
+   distance to the camera (doubled per depth). *)
+and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) keep =
   let depth = Radiosity.depth () in
   let count = Radiosity.rays r depth in
   let g = Scene.radiosity s in
@@ -476,21 +508,41 @@ and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) =
   let wt = Radiosity.weight r depth in
   let rd = fr.rd and rc = fr.rc and sum = fr.amb in
   Color.acc_set sum 0. 0. 0.;
+  let inv = ref 0. and near = ref infinity and tx = ref 0. and ty = ref 0. and tz = ref 0. in
   Radiosity.descend ();
   for i = 0 to count - 1 do
     Radiosity.direction_into nrm i count r1 r2 rd;
     fr.k.child <- wt;
     trace_ray g Ray.epsilon infinity p rd lvl fr.k media rc;
+    let dist = fr.k.dist in
+    inv := !inv +. (1. /. dist);
+    if dist < !near then begin
+      near := dist;
+      tx := rd.mx;
+      ty := rd.my;
+      tz := rd.mz
+    end;
     let m = Float.max rc.ar (Float.max rc.ag rc.ab) in
     let k = if r.max_sample > 0. && m > r.max_sample then r.max_sample /. m else 1. in
     Color.acc_set sum (sum.ar +. (k *. rc.ar)) (sum.ag +. (k *. rc.ag)) (sum.ab +. (k *. rc.ab))
   done;
   Radiosity.ascend ();
   let k = 1. /. float_of_int count in
-  let gr = r.gray_threshold in
-  let grey = gr *. Color.grey (k *. sum.ar) (k *. sum.ag) (k *. sum.ab) in
-  let b = r.brightness and c = 1. -. gr in
-  Color.acc_set sum (b *. ((c *. k *. sum.ar) +. grey)) (b *. ((c *. k *. sum.ag) +. grey)) (b *. ((c *. k *. sum.ab) +. grey))
+  Color.acc_set sum (k *. sum.ar) (k *. sum.ag) (k *. sum.ab);
+  if keep then begin
+    let cam = s.Scene.camera.location in
+    let ex = cam.x -. p.mx and ey = cam.y -. p.my and ez = cam.z -. p.mz in
+    let to_eye = Float.sqrt ((ex *. ex) +. (ey *. ey) +. (ez *. ez)) in
+    let lo = Float.ldexp (to_eye *. r.minimum_reuse) depth and hi = Float.ldexp (to_eye *. r.maximum_reuse) depth in
+    (* nearly touching two surfaces: the rays may be unsound, not kept *)
+    if !near > hi *. 0.0001 then begin
+      let hmd = Float.min hi (Float.max lo (float_of_int count /. !inv)) in
+      Radiosity.add r.cache depth
+        { px = p.mx; py = p.my; pz = p.mz; nx = nrm.mx; ny = nrm.my; nz = nrm.mz; ir = sum.ar; ig = sum.ag; ib = sum.ab;
+          hmd; near = !near; tx = !tx; ty = !ty; tz = !tz }
+        (Float.ldexp (hmd *. r.error_bound) depth +. 0.25 *. hmd *. Float.ldexp 1. depth)
+    end
+  end
 
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
    starts at the frame's point along its [rd], weighs [fr.k.refl] times
@@ -720,3 +772,36 @@ let pixel s ~width ~height x y =
   let out = Color.acc 0. in
   pixel_into s ~width ~height x y out;
   Color.of_acc out
+
+(* POV-Ray's radiosity pretrace: camera rays through the centres of
+   blocks of [pretrace_start] of the image's width, then of half that,
+   down to [pretrace_end] (at least a pixel), traced on the calling
+   domain one after the other, their gathers kept in the cache; the
+   final pass then only reads it (gathering, without keeping, where no
+   record serves), so the picture does not depend on the domains. *)
+let prepare (s : Scene.t) ~width ~height =
+  match s.settings.radiosity with
+  | None -> ()
+  | Some r ->
+      let c = r.cache in
+      Radiosity.clear c;
+      Radiosity.set_filling c true;
+      Fun.protect
+        ~finally:(fun () -> Radiosity.set_filling c false)
+        (fun () ->
+          let out = Color.acc 0. in
+          let stop = Float.max 1. (r.pretrace_end *. float_of_int width) in
+          let rec pass size =
+            let size = Float.max 1. size in
+            let nx = int_of_float (Float.ceil (float_of_int width /. size))
+            and ny = int_of_float (Float.ceil (float_of_int height /. size)) in
+            for j = 0 to ny - 1 do
+              for i = 0 to nx - 1 do
+                let px = Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size)
+                and py = Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) in
+                sample_in s ~width ~height px py out
+              done
+            done;
+            if size > stop *. 1.0001 then pass (size /. 2.)
+          in
+          pass (r.pretrace_start *. float_of_int width))

@@ -37,3 +37,11 @@ val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -
 (** {!pixel} written into a sum the caller owns (overwritten): a camera
     ray that crosses nothing transparent allocates nothing but what
     patterns other than a plain checker and sky spheres need. *)
+
+val prepare : Scene.t -> width:int -> height:int -> unit
+(** For a scene with radiosity, POV-Ray's pretrace: fills the scene's
+    irradiance cache from coarse passes of camera rays (on the calling
+    domain), which the render then reads. Call it before rendering the
+    picture of that size; without it, every point gathers anew (the
+    same picture in the mean, noisier and much slower). Nothing for
+    other scenes. *)

@@ -665,7 +665,9 @@ and scene_ (s : Sdl.scene) =
         atmosphere = Scene.atmosphere (List.rev !media);
         settings =
           { !settings with encoding; legacy_alpha = not v37;
-            radiosity = Option.map (fun (r : Radiosity.t) -> { r with keep_ambient = not v37 }) !settings.radiosity };
+            radiosity =
+              Option.map (fun (r : Radiosity.t) -> { r with keep_ambient = not v37; cache = Radiosity.new_cache () })
+                !settings.radiosity };
       }
     in
     Ok (if Array.exists (fun f -> f <> 0) hidden || s.settings.radiosity <> None then Scene.hide s hidden else s)
