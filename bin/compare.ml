@@ -36,11 +36,12 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
 
 (* Scenes whose pictures depend on noise (camlray's noise is its own) or
    on POV-Ray's random sampling (jittered area lights, focal blur's lens
-   samples), so they cannot match pixel for pixel: reported separately. *)
+   samples, radiosity's gathers and where its cache keeps them), so they
+   cannot match pixel for pixel: reported separately. *)
 let noise_words =
   [ "bozo"; "spotted"; "granite"; "agate"; "wrinkles"; "ripples"; "waves"; "bumps"; "dents";
     "turbulence"; "crackle"; "textures.inc"; "stones"; "stones.inc"; "woods.inc"; "skies.inc"; "stars.inc";
-    "jitter"; "aperture" ]
+    "jitter"; "aperture"; "radiosity" ]
 
 let has_noise_word text =
   let words =

@@ -34,6 +34,7 @@ let () =
       Test_printer.tests;
       Test_lang.tests;
       Test_sampler.tests;
+      Test_radiosity.tests;
       Test_bsdf.tests;
       Test_finish.tests;
       Test_fog.tests;
