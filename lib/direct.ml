@@ -42,7 +42,9 @@ type lightlet = {
   mutable lb : float;
   mutable nl : float;
   mutable icos : float;
-  mutable hl : bool;  (** highlights drawn (not for radiosity's gather rays) *)
+  mutable hl : float;
+      (** 1: highlights drawn; 0: not (radiosity's gather rays); a float,
+          so that the record stays one of floats, stored flat *)
 }
 
 (* Diffuse and highlights of the lightlet [c] coming along [l] (the unit
@@ -66,7 +68,7 @@ let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Ve
       cg := !cg +. (k *. (pc.g *. lg));
       cb := !cb +. (k *. (pc.b *. lb))
     end;
-    if c.hl && not light.shadowless then begin
+    if c.hl > 0. && not light.shadowless then begin
       let m = f.metallic in
       let mk = if m = 0. then 0. else Finish.metallic_k m nl in
       let mr = lr *. Finish.tint m mk pc.r and mg = lg *. Finish.tint m mk pc.g and mb = lb *. Finish.tint m mk pc.b in
@@ -159,7 +161,7 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
 (* Per domain: the lightlet handed to [shade] and a sample's position *)
 type scratch = { ll : lightlet; q : Vec3.m }
 
-let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; hl = true }; q = Vec3.m () })
+let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; hl = 1. }; q = Vec3.m () })
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
@@ -217,7 +219,7 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     cache.col <- Array.make (3 * nl) 0.
   end;
   let sc = Scratch.get scratch_key in
-  sc.ll.hl <- cache.highlights;
+  sc.ll.hl <- (if cache.highlights then 1. else 0.);
   for j = 0 to nl - 1 do
     let light = Array.unsafe_get ls j in
     match light.area with
