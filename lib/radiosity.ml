@@ -19,10 +19,10 @@ type store = { cells : (int, record list) Hashtbl.t; used : bool array; mutable 
 
 let levels = 128 (* L from -64 to 63 *)
 
-type cache = { mutable filling : bool; stores : store array }
+type cache = { mutable filling : bool; mutable final : bool; stores : store array }
 
 let new_cache () =
-  { filling = false; stores = Array.init 21 (fun _ -> { cells = Hashtbl.create 256; used = Array.make levels false; n = 0 }) }
+  { filling = false; final = true; stores = Array.init 21 (fun _ -> { cells = Hashtbl.create 256; used = Array.make levels false; n = 0 }) }
 
 type t = {
   count : int;
@@ -106,6 +106,7 @@ let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2
 
 let clear c =
   c.filling <- false;
+  c.final <- true;
   Array.iter (fun st -> Hashtbl.reset st.cells; Array.fill st.used 0 levels false; st.n <- 0) c.stores
 
 let records c depth = c.stores.(depth).n
@@ -175,7 +176,7 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) eb (out : Color.acc) =
   let st = c.stores.(depth) in
   if st.n = 0 then 0.
   else begin
-    let final0 = (not c.filling) && depth = 0 in
+    let final0 = c.final && depth = 0 in
     let ws = ref 0. and sr = ref 0. and sg = ref 0. and sb = ref 0. in
     for li = 0 to levels - 1 do
       if st.used.(li) then begin
@@ -211,3 +212,5 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) eb (out : Color.acc) =
 
 let filling c = c.filling
 let set_filling c b = c.filling <- b
+let final c = c.final
+let set_final c b = c.final <- b

@@ -89,6 +89,13 @@ val filling : cache -> bool
 (** Whether gathers add records (the pretrace) or only read them. *)
 
 val set_filling : cache -> bool -> unit
+
+val final : cache -> bool
+(** Whether lookups follow the final pass's rules (the full error bound,
+    any weight found serves, smooth weights at depth 0) rather than the
+    pretrace's. *)
+
+val set_final : cache -> bool -> unit
 val records : cache -> int -> int
 (** Records kept at a depth. *)
 

@@ -463,13 +463,13 @@ and radiosity_term s (r : Radiosity.t) level media (fr : frame) (f : Finish.t) (
 and ambient s (r : Radiosity.t) level media (fr : frame) (nrm : Vec3.m) weight =
   let c = r.cache in
   let depth = Radiosity.depth () in
-  let filling = Radiosity.filling c in
-  let eb = if filling then r.error_bound *. r.low_error_factor else r.error_bound in
+  let filling = Radiosity.filling c and final = Radiosity.final c in
+  let eb = if final then r.error_bound else r.error_bound *. r.low_error_factor in
   let eb = if weight < 0.25 then eb +. (0.25 -. weight) else eb in
   let eb = Float.ldexp eb depth in
   let a = fr.amb in
   let reuse = Radiosity.lookup c depth fr.p nrm eb a in
-  if not (4. *. reuse >= float_of_int (Radiosity.reuse_count r depth) || ((not filling) && (not r.always_sample) && reuse > 0.))
+  if not (4. *. reuse >= float_of_int (Radiosity.reuse_count r depth) || (final && (not r.always_sample) && reuse > 0.))
   then begin
     let fr_ = a.ar and fg = a.ag and fb = a.ab in
     gather s r level media fr nrm filling;
@@ -786,8 +786,11 @@ let prepare (s : Scene.t) ~width ~height =
       let c = r.cache in
       Radiosity.clear c;
       Radiosity.set_filling c true;
+      Radiosity.set_final c false;
       Fun.protect
-        ~finally:(fun () -> Radiosity.set_filling c false)
+        ~finally:(fun () ->
+          Radiosity.set_filling c false;
+          Radiosity.set_final c true)
         (fun () ->
           let out = Color.acc 0. in
           let stop = Float.max 1. (r.pretrace_end *. float_of_int width) in
@@ -804,4 +807,14 @@ let prepare (s : Scene.t) ~width ~height =
             done;
             if size > stop *. 1.0001 then pass (size /. 2.)
           in
-          pass (r.pretrace_start *. float_of_int width))
+          pass (r.pretrace_start *. float_of_int width);
+          (* then POV-Ray's final pass, as far as its gathers go: every
+             pixel's centre looked up by the final rules, a record kept
+             where none serves (POV-Ray keeps those its final pass
+             makes, so that the pixels after reuse them) *)
+          Radiosity.set_final c true;
+          for y = 0 to height - 1 do
+            for x = 0 to width - 1 do
+              sample_in s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
+            done
+          done)

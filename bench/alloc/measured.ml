@@ -11,7 +11,12 @@ let load file =
       | Error d -> Error (Camlray_lang.Diag.to_string d)
       | Ok s -> Ok s)
 
-(* as [camlray render] runs it: written into the tile's sum *)
+(* as [camlray render] runs it: written into the tile's sum (with
+   radiosity, after its pretrace) *)
 let pixel (s : Scene.t) ~width ~height ~mc =
   if mc > 0 then Path.pixel_into (Path.prepare s) ~width ~height ~seed:0 ~spp:mc ~max_depth:16
-  else Whitted.pixel_into s ~width ~height
+  else begin
+    (* radiosity's pretrace first, as [camlray render] runs it *)
+    Whitted.prepare s ~width ~height;
+    Whitted.pixel_into s ~width ~height
+  end
