@@ -89,6 +89,19 @@ let apply fogs (o : Vec3.m) (d : Vec3.m) t (c : Color.acc) =
     (Float.Array.get s 4 +. (Float.Array.get s 1 *. c.ag))
     (Float.Array.get s 5 +. (Float.Array.get s 2 *. c.ab))
 
+(* the fogs' attenuation and added colour over [width] units (infinity:
+   a ray that met nothing) from [o] along the unit vector [d] *)
+let blend_into fogs (o : Vec3.m) (d : Vec3.m) width (att : Color.acc) (add : Color.acc) =
+  let w = Scratch.get work_key in
+  Vec3.set w.u d.mx d.my d.mz;
+  let s = w.sums in
+  Float.Array.fill s 0 3 1.;
+  Float.Array.fill s 3 3 0.;
+  Float.Array.set s 6 (if width = infinity then missed else width);
+  through fogs o w;
+  Color.acc_set att (Float.Array.get s 0) (Float.Array.get s 1) (Float.Array.get s 2);
+  Color.acc_set add (Float.Array.get s 3) (Float.Array.get s 4) (Float.Array.get s 5)
+
 let[@inline] dim fogs (o : Vec3.m) (d : Vec3.m) width (c : Color.acc) =
   let w = Scratch.get work_key in
   Vec3.set w.u d.mx d.my d.mz;

@@ -43,3 +43,11 @@ val dim : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> unit
     crosses [width] units of the fogs from [origin] along the unit vector
     [dir] (POV-Ray does this for lights with [media_attenuation on]):
     attenuated and tinted as in {!apply}, with no fog colour added. *)
+
+val blend_into : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> Color.acc -> unit
+(** [blend_into fogs origin dir width att add]: what {!apply} does to a
+    colour seen [width] units away ([infinity]: a ray that met nothing)
+    from [origin] along the unit vector [dir], as the two parts of
+    [att * c + add]: the attenuation [att] (floor and filter tint
+    included) and the fogs' colour [add] (Monte Carlo mode applies it to
+    every path segment in the open). *)

@@ -17,12 +17,13 @@ type t = {
   confidence : float;
   variance : float;
   ratio : float;
+  mutable bound : float;
 }
 
 let default =
   { emission = Color.black; absorption = Color.black; scattering = None; density = []; meth = 3;
     intervals = 1; samples = 10; samples_max = 10; aa_threshold = 0.1; aa_level = 3; jitter = 0.;
-    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9 }
+    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9; bound = Float.nan }
 
 let scattering kind color = { kind; color; eccentricity = 0.; extinction = 1. }
 let transform t m = if m.density = [] then m else { m with density = List.map (Pigment.transform t) m.density }
@@ -139,3 +140,15 @@ let transmittance_into ms (r : Ray.scratch) (sp : span) (out : Color.acc) =
           done
       end;
       Color.acc_set out (out.ar *. Float.exp (-.od.ar)) (out.ag *. Float.exp (-.od.ag)) (out.ab *. Float.exp (-.od.ab))
+
+(* the majorant, worked out once: the extinction's largest channel (by
+   [add_extinction]'s formula) times the densities' bounds *)
+let[@inline never] fill_bound m =
+  let e = Color.acc 0. in
+  add_extinction { m with density = [] } (Vec3.m ()) (Pigment.out ()) (Color.acc 0.) e;
+  let top = Float.max (Float.abs e.ar) (Float.max (Float.abs e.ag) (Float.abs e.ab)) in
+  m.bound <- List.fold_left (fun a d -> a *. Pigment.bound d) top m.density
+
+let[@inline] majorant m =
+  if Float.is_nan m.bound then fill_bound m;
+  m.bound

@@ -25,6 +25,10 @@ type t = {
   confidence : float;  (** read; used by method 1 only *)
   variance : float;
   ratio : float;
+  mutable bound : float;
+      (** {!majorant}'s cache: [nan] until it is first asked for (kept
+          by [{ m with ... }] copies, which cannot change it once the
+          scene is made: transformations move the densities only) *)
 }
 
 val default : t
@@ -40,8 +44,10 @@ val constant : t -> bool
 
 val phase : scattering -> float -> float
 (** [phase sc c]: POV-Ray's phase function for the cosine [c] between the
-    light's direction of travel and the direction toward the eye; each
-    averages 1 over the sphere (isotropic: 1), measured on POV-Ray 3.7. *)
+    light's direction of travel and the direction toward the eye, with
+    POV-Ray 3.7's constants (media.cpp, and measured on its pictures):
+    isotropic and Henyey-Greenstein average 1 over the sphere, Mie hazy
+    1.1533, Mie murky 1.2468 and Rayleigh 1.0658. *)
 
 val density_into : t -> Vec3.m -> Pigment.out -> Color.acc -> unit
 (** [density_into m p scratch out]: the product of [m]'s densities at [p]
@@ -68,3 +74,9 @@ val transmittance_into : t list -> Ray.scratch -> span -> Color.acc -> unit
 (** [transmittance_into ms r sp out]: [out] times what crosses the
     media [ms] from [sp.lo] to [sp.hi] along [r] (unit direction): exact
     for constant media, sampled as {!pieces} says otherwise. *)
+
+val majorant : t -> float
+(** An upper bound of the medium's extinction over all space, in every
+    channel: the largest channel of [absorption + extinction x
+    scattering] times each density's {!Pigment.bound}. Worked out on the
+    first call and kept (Monte Carlo mode's tracking). *)

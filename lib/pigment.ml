@@ -198,6 +198,18 @@ let rec opaque = function
 and entries_opaque a i = i >= Array.length a || (opaque (snd (Array.unsafe_get a i)) && entries_opaque a (i + 1))
 and cells_opaque a i = i >= Array.length a || (opaque (Array.unsafe_get a i) && cells_opaque a (i + 1))
 
+(* the largest |channel| anywhere: a map's or a block pattern's entries
+   bound it (a map interpolates between neighbours and holds its ends
+   past them), an image its pixels, an average its weighted entries *)
+let rec bound = function
+  | Solid c -> Float.max (Float.abs c.c.r) (Float.max (Float.abs c.c.g) (Float.abs c.c.b))
+  | Map { entries; _ } -> Array.fold_left (fun m (_, p) -> Float.max m (bound p)) 0. entries
+  | Blocks { cells; _ } -> Array.fold_left (fun m p -> Float.max m (bound p)) 0. cells
+  | Image_map { image; _ } ->
+      Array.fold_left (fun m (c : Color.rgbft) -> Float.max m (bound (Solid c))) 0. image.px
+  | Average { entries; _ } -> Array.fold_left (fun m (w, p) -> m +. (Float.abs w *. bound p)) 0. entries
+  | Uv p -> bound p
+
 (* Per domain: the point in an image's space, the pattern's work, per
    nesting depth a colour for the second of two entries blended, and the
    first depth no running evaluation holds (a pigment function in a

@@ -69,6 +69,12 @@ val uses_uv : t -> bool
 val opaque : t -> bool
 (** Filter and transmit are 0 everywhere. *)
 
+val bound : t -> float
+(** The largest absolute value any of the pigment's rgb channels takes
+    anywhere (a colour map's or block pattern's entries, an image's
+    pixels, an average's weighted entries): what the Monte Carlo mode's
+    tracking through a medium's density takes as its majorant. *)
+
 val eval : t -> Vec3.t -> Color.rgbft
 (** The colour at a point in world space. *)
 
