@@ -45,3 +45,9 @@ val prepare : Scene.t -> width:int -> height:int -> unit
     picture of that size; without it, every point gathers anew (the
     same picture in the mean, noisier and much slower). Nothing for
     other scenes. *)
+
+val start_media : Scene.t -> Vec3.m -> Interior.t list
+(** The interiors of every object holding a point (a camera ray's
+    origin), innermost first as POV-Ray starts its camera rays (the last
+    object in the scene first). Cached per domain, scene and origin; a
+    new origin held by the same objects gives the same list. *)
