@@ -209,13 +209,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
         | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
         | _ -> scene
       in
-      if o.mode = Monte_carlo && scene.fog <> [] && not o.quiet then
-        prerr_endline "camlray: warning: fog is drawn in whitted mode only; mc mode renders without it";
       if o.mode = Monte_carlo && scene.rainbows <> [] && not o.quiet then
         prerr_endline "camlray: warning: rainbows are drawn in whitted mode only; mc mode renders without them";
-      if o.mode = Monte_carlo && (not o.quiet)
-         && Array.exists (fun (ob : Camlray.Object.t) -> ob.interior.media <> []) scene.objects
-      then prerr_endline "camlray: warning: media are drawn in whitted mode only; mc mode ignores them";
       let max_depth = match o.depth with Some d -> d | None -> 16 in
       let spp = Option.value o.spp ~default:64 in
       let width = o.width and height = o.height in

@@ -41,6 +41,7 @@ let () =
       Test_text.tests;
       Test_interior.tests;
       Test_path.tests;
+      Test_mcmedia.tests;
       Test_whitted.tests;
       Test_light.tests;
       Test_lit.tests;
