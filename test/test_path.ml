@@ -81,6 +81,31 @@ let glass_furnace () =
   Alcotest.(check (float 0.01)) "mean" 1. (mean img);
   all_within "glass" img 1. 0.1
 
+(* A white diffuse sphere inside a clear hollow shell (ior 1) under a sky
+   of radiance 1: every pixel 1. A path passing straight through the
+   shell keeps the diffuse vertex's MIS weight; counted as a specular
+   bounce, the sky behind the shell was counted by light sampling and by
+   the path both (1.5 on the sphere). The same with an emissive sphere
+   seen through the shell: light sampling through it, the path's weight
+   kept, NEE+MIS = BSDF sampling alone. *)
+let clear_shell () =
+  let text =
+    header ^ "camera { location <0,0,-4> look_at 0 angle 50 }\nbackground { rgb 1 }\n"
+    ^ "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n"
+    ^ "sphere { 0, 1.5 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow }\n"
+  in
+  all_within "inside a clear shell" (render ~w:12 ~h:12 ~spp:16 ~depth:16 text) 1. 0.02;
+  let text =
+    header ^ "camera { location <0,0,-5> look_at 0 angle 50 }\n"
+    ^ "sphere { 0, 1 pigment { rgb 0.8 } finish { ambient 0 diffuse 1 } }\n"
+    ^ "sphere { 0, 1.5 pigment { rgbt 1 } finish { ambient 0 diffuse 0 } hollow }\n"
+    ^ "sphere { <1.2, 2.5, -1>, 0.4 pigment { rgb 1 } finish { ambient 0 diffuse 0 emission 5 } }\n"
+  in
+  let a = render ~w:16 ~h:16 ~spp:256 ~depth:8 text in
+  let b = render ~nee:false ~seed:2 ~w:16 ~h:16 ~spp:1024 ~depth:8 text in
+  let ma = mean a and mb = mean b in
+  if Float.abs (ma -. mb) > 0.02 *. ma then Alcotest.failf "NEE+MIS %g vs BSDF only %g" ma mb
+
 (* Inside a closed diffuse sphere of albedo a emitting Le, L = Le / (1 - a)
    (all bounces: depth 256, Russian roulette). *)
 let enclosure a le expected tol () =
@@ -645,6 +670,7 @@ let tests =
       Alcotest.test_case "white furnace: albedo 1 -> 1, 0.5 -> 0.5, diffuse+mirror mix" `Quick
         white_furnace;
       Alcotest.test_case "glass furnace: a clear dielectric keeps radiance 1" `Quick glass_furnace;
+      Alcotest.test_case "a clear (ior 1) shell: the sky and a sphere light counted once" `Quick clear_shell;
       Alcotest.test_case "enclosure a=0.5 Le=0.5 -> 1" `Quick (enclosure 0.5 0.5 1. 0.02);
       Alcotest.test_case "enclosure a=0.9 Le=0.5 -> 5" `Quick (enclosure 0.9 0.5 5. 0.15);
       Alcotest.test_case "one light, one diffuse sphere: mc = whitted" `Quick vs_whitted;
