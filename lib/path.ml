@@ -441,12 +441,15 @@ let direct_medium t (st : state) sampler ~depth base =
       if ph > 0. then
         match e with
         | Delta l | Area { light = l; _ } ->
-            light_seen t st sampler ~depth ~which:i l;
-            let tr = st.tr and v = ls.value in
-            Color.acc_set dl
-              (dl.ar +. (ph *. (tr.ar *. v.ar)))
-              (dl.ag +. (ph *. (tr.ag *. v.ag)))
-              (dl.ab +. (ph *. (tr.ab *. v.ab)))
+            (* a spotlight's samples outside its cone bring nothing *)
+            if not (Color.acc_is_black ls.value) then begin
+              light_seen t st sampler ~depth ~which:i l;
+              let tr = st.tr and v = ls.value in
+              Color.acc_set dl
+                (dl.ar +. (ph *. (tr.ar *. v.ar)))
+                (dl.ag +. (ph *. (tr.ag *. v.ag)))
+                (dl.ab +. (ph *. (tr.ab *. v.ab)))
+            end
         | Sphere { obj; _ } ->
             let pb = md.n.pdf in
             if sphere_seen t st sampler ~depth ~which:i obj ls.wi then begin
