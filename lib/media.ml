@@ -23,7 +23,7 @@ type t = {
 let default =
   { emission = Color.black; absorption = Color.black; scattering = None; density = []; meth = 3;
     intervals = 1; samples = 10; samples_max = 10; aa_threshold = 0.1; aa_level = 3; jitter = 0.;
-    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9; bound = Float.nan }
+    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9; bound = -1. }
 
 let scattering kind color = { kind; color; eccentricity = 0.; extinction = 1. }
 let transform t m = if m.density = [] then m else { m with density = List.map (Pigment.transform t) m.density }
@@ -150,5 +150,5 @@ let[@inline never] fill_bound m =
   m.bound <- List.fold_left (fun a d -> a *. Pigment.bound d) top m.density
 
 let[@inline] majorant m =
-  if Float.is_nan m.bound then fill_bound m;
+  if m.bound < 0. then fill_bound m;
   m.bound

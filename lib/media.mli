@@ -26,7 +26,7 @@ type t = {
   variance : float;
   ratio : float;
   mutable bound : float;
-      (** {!majorant}'s cache: [nan] until it is first asked for (kept
+      (** {!majorant}'s cache: -1 until it is first asked for (kept
           by [{ m with ... }] copies, which cannot change it once the
           scene is made: transformations move the densities only) *)
 }

@@ -671,7 +671,7 @@ let li_into t sampler ~max_depth (st : state) =
                beyond is weighed as if the surface were not there, by the
                last vertex that sampled light *)
             if bs.delta then begin
-              if dot bs.wi d < 1. -. 1e-9 then st.prev <- specular_v
+              if obj.interior.ior <> 1. || dot bs.wi d < 1. -. 1e-9 then st.prev <- specular_v
             end
             else begin
               st.prev <- smooth_v;
