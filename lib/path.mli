@@ -6,7 +6,16 @@
     (emissive objects, the background), light sampling and BSDF sampling
     are combined by multiple importance sampling with the power heuristic.
     Russian roulette after three bounces; [max_depth] caps the number of
-    bounces. [ambient] is ignored. *)
+    bounces. [ambient] is ignored.
+
+    Fog and media: a path keeps the interiors it runs in; each of its
+    stretches is seen through the fogs (POV-Ray's blend, {!Fog.blend_into})
+    and the media there ({!Medium}: emission, absorption, and scattering
+    as a participating medium, a vertex in the medium lit by next-event
+    estimation and continued by the phase function). Shadow rays are
+    dimmed by the media and fogs they cross (by POV-Ray's light flags
+    toward its lights). A path passing straight through a clear surface
+    (ior 1) keeps the light-sampling weight of the vertex before it. *)
 
 type t
 (** A scene prepared for path tracing (its emitters listed once). *)
