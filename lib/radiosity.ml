@@ -131,7 +131,7 @@ let add c depth rc reach =
 
 (* POV-Ray's test of one record for the point [q] of normal [n]
    (AverageNearBlock): the weight it gets, 0 when it does not serve *)
-let weigh rc (q : Vec3.m) (n : Vec3.m) eb final0 =
+let[@inline] weigh rc (q : Vec3.m) (n : Vec3.m) eb final0 =
   let dx = q.mx -. rc.px and dy = q.my -. rc.py and dz = q.mz -. rc.pz in
   let d2 = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
   let quick = rc.hmd *. eb in
@@ -172,12 +172,33 @@ let weigh rc (q : Vec3.m) (n : Vec3.m) eb final0 =
     end
   end
 
-let lookup c depth (q : Vec3.m) (n : Vec3.m) eb (out : Color.acc) =
+type sums = { mutable eb : float; mutable ws : float; mutable sr : float; mutable sg : float; mutable sb : float }
+
+let sums_key = Scratch.key (fun () -> { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. })
+let sums () = Scratch.get sums_key
+
+(* a loop, not List.iter and a closure over float refs: nothing boxed *)
+let rec weigh_all (sm : sums) rs (q : Vec3.m) (n : Vec3.m) final0 =
+  match rs with
+  | [] -> ()
+  | rc :: rest ->
+      let w = weigh rc q n sm.eb final0 in
+      if w > 0. then begin
+        sm.ws <- sm.ws +. w;
+        sm.sr <- sm.sr +. (w *. rc.ir);
+        sm.sg <- sm.sg +. (w *. rc.ig);
+        sm.sb <- sm.sb +. (w *. rc.ib)
+      end;
+      weigh_all sm rest q n final0
+
+let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   let st = c.stores.(depth) in
-  if st.n = 0 then 0.
-  else begin
+  sm.ws <- 0.;
+  sm.sr <- 0.;
+  sm.sg <- 0.;
+  sm.sb <- 0.;
+  if st.n > 0 then begin
     let final0 = c.final && depth = 0 in
-    let ws = ref 0. and sr = ref 0. and sg = ref 0. and sb = ref 0. in
     for li = 0 to levels - 1 do
       if st.used.(li) then begin
         let l = li - 64 in
@@ -188,26 +209,15 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) eb (out : Color.acc) =
         for ix = x0 to x0 + 1 do
           for iy = y0 to y0 + 1 do
             for iz = z0 to z0 + 1 do
-              match Hashtbl.find_opt st.cells (cell_key l ix iy iz) with
-              | None -> ()
-              | Some rs ->
-                  List.iter
-                    (fun rc ->
-                      let w = weigh rc q n eb final0 in
-                      if w > 0. then begin
-                        ws := !ws +. w;
-                        sr := !sr +. (w *. rc.ir);
-                        sg := !sg +. (w *. rc.ig);
-                        sb := !sb +. (w *. rc.ib)
-                      end)
-                    rs
+              (* mem, then find: find_opt's Some would be allocated *)
+              let k = cell_key l ix iy iz in
+              if Hashtbl.mem st.cells k then weigh_all sm (Hashtbl.find st.cells k) q n final0
             done
           done
         done
       end
     done;
-    if !ws > 0. then Color.acc_set out (!sr /. !ws) (!sg /. !ws) (!sb /. !ws);
-    !ws
+    if sm.ws > 0. then Color.acc_set out (sm.sr /. sm.ws) (sm.sg /. sm.ws) (sm.sb /. sm.ws)
   end
 
 let filling c = c.filling

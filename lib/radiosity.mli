@@ -108,10 +108,19 @@ val add : cache -> int -> record -> float -> unit
 (** [add c depth r reach]: keep a record whose reach (its harmonic mean
     distance times the largest error bound at that depth) is [reach]. *)
 
-val lookup : cache -> int -> Vec3.m -> Vec3.m -> float -> Color.acc -> float
-(** [lookup c depth q n eb out]: POV-Ray's reuse test of every record near
-    [q] (of unit normal [n]) against the error bound [eb]: distance over
-    the record's reach plus 2 sqrt (1 - cos) of the normals under [eb],
-    not in front of the point; each weighted 1 - e/eb (a smooth step of
-    it at depth 0 in the final pass); the weighted mean light into [out]
-    when the total weight (returned) is positive. *)
+type sums = { mutable eb : float; mutable ws : float; mutable sr : float; mutable sg : float; mutable sb : float }
+(** A lookup's error bound (set by the caller), total weight and
+    weighted light. *)
+
+val sums : unit -> sums
+(** This domain's. *)
+
+val lookup : cache -> int -> Vec3.m -> Vec3.m -> sums -> Color.acc -> unit
+(** [lookup c depth q n sm out]: POV-Ray's reuse test of every record
+    near [q] (of unit normal [n]) against the error bound [sm.eb]:
+    distance over the record's reach plus 2 sqrt (1 - cos) of the normals
+    under it, not in front of the point; each weighted 1 - e/eb (a smooth
+    step of it at depth 0 in the final pass); the total weight into
+    [sm.ws], the weighted mean light into [out] when it is positive.
+    Allocates nothing (floats passed in and out through [sm]: as
+    arguments or results they would be boxed). *)

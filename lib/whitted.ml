@@ -450,7 +450,14 @@ and radiosity_term s (r : Radiosity.t) level media (fr : frame) (f : Finish.t) (
     in
     if most > s.Scene.settings.adc_bailout then begin
       fr.amb_done <- true;
-      ambient s r level media fr (if r.normal then n else fr.n0) (fr.k.weight *. most)
+      (* the error bound: lowered by low_error_factor in the pretrace,
+         raised for points that weigh little, doubled per depth (passed
+         in the domain's sums: as an argument it would be boxed) *)
+      let weight = fr.k.weight *. most in
+      let eb = r.error_bound *. if Radiosity.final r.cache then 1. else r.low_error_factor in
+      let eb = if weight < 0.25 then eb +. (0.25 -. weight) else eb in
+      (Radiosity.sums ()).eb <- Float.ldexp eb (Radiosity.depth ());
+      ambient s r level media fr (if r.normal then n else fr.n0)
     end
   end
 
@@ -460,15 +467,14 @@ and radiosity_term s (r : Radiosity.t) level media (fr : frame) (f : Finish.t) (
    them (any in the final pass, unless always_sample), or a gather,
    blended with what was found; then made grey by gray_threshold and
    scaled by brightness *)
-and ambient s (r : Radiosity.t) level media (fr : frame) (nrm : Vec3.m) weight =
+and ambient s (r : Radiosity.t) level media (fr : frame) (nrm : Vec3.m) =
   let c = r.cache in
   let depth = Radiosity.depth () in
   let filling = Radiosity.filling c and final = Radiosity.final c in
-  let eb = if final then r.error_bound else r.error_bound *. r.low_error_factor in
-  let eb = if weight < 0.25 then eb +. (0.25 -. weight) else eb in
-  let eb = Float.ldexp eb depth in
   let a = fr.amb in
-  let reuse = Radiosity.lookup c depth fr.p nrm eb a in
+  let sm = Radiosity.sums () in
+  Radiosity.lookup c depth fr.p nrm sm a;
+  let reuse = sm.ws in
   if not (4. *. reuse >= float_of_int (Radiosity.reuse_count r depth) || (final && (not r.always_sample) && reuse > 0.))
   then begin
     let fr_ = a.ar and fg = a.ag and fb = a.ab in

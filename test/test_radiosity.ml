@@ -162,6 +162,22 @@ let domains () =
   let c = Render.image ~domains:2 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h) in
   Alcotest.(check bool) "a second pretrace: the same image" true (same_image a c)
 
+(* The picture's pass reads the cache allocating nothing: minor words a
+   camera ray of the second of two one-domain renders after the pretrace
+   (18.0 words, then 240.9 with the pretrace, before the lookup's floats
+   went through the domain's sums instead of a closure, float refs and
+   float arguments) *)
+let allocation () =
+  let w = 64 and h = 48 in
+  let s = Helpers.compile_string room in
+  Whitted.prepare s ~width:w ~height:h;
+  let pixel = Whitted.pixel_into s ~width:w ~height:h in
+  ignore (Render.image_into ~domains:1 ~width:w ~height:h pixel);
+  let before = Gc.minor_words () in
+  ignore (Render.image_into ~domains:1 ~width:w ~height:h pixel);
+  let words = (Gc.minor_words () -. before) /. float_of_int (w * h) in
+  if words > 0.1 then Alcotest.failf "%.2f minor words a camera ray" words
+
 let tests =
   ( "radiosity",
     [
@@ -172,4 +188,5 @@ let tests =
       Alcotest.test_case "furnace: e (1 + bd + ... + (bd)^n)" `Quick furnace;
       QCheck_alcotest.to_alcotest directions;
       Alcotest.test_case "cache: 1 and 2 domains identical" `Quick domains;
+      Alcotest.test_case "the picture's pass allocates nothing" `Quick allocation;
     ] )
