@@ -40,26 +40,45 @@ let gx = Float.Array.init 16 (fun h -> edge h 1. 0. 0.)
 let gy = Float.Array.init 16 (fun h -> edge h 0. 1. 0.)
 let gz = Float.Array.init 16 (fun h -> edge h 0. 0. 1.)
 
-let[@inline] grad h x y z =
-  let h = h land 15 in
-  (Float.Array.unsafe_get gx h *. x) +. (Float.Array.unsafe_get gy h *. y) +. (Float.Array.unsafe_get gz h *. z)
+(* The same coefficients by a corner's index [i] in [0, 511], the
+   permutation read that gives its hash folded into the table: [g1] holds
+   at [3 i] the gradient of hash [perm.(i)]'s low four bits (the scalar
+   noise's, and the vector noise's first component); [g23] at [6 i] and
+   [6 i + 3] those of its high four bits and of [perm.(perm.(i))]'s low
+   four (the vector noise's second and third). One index per corner, read
+   at fixed offsets, where the hash, its bits and a second permutation
+   read were taken for each gradient. *)
+let g1 =
+  Float.Array.init (512 * 3) (fun k ->
+      let h = perm.(k / 3) land 15 in
+      Float.Array.get (match k mod 3 with 0 -> gx | 1 -> gy | _ -> gz) h)
+
+let g9 =
+  Float.Array.init (512 * 9) (fun k ->
+      let h = perm.(k / 9) in
+      let h = match k mod 9 / 3 with 0 -> h land 15 | 1 -> h lsr 4 | _ -> perm.(h) land 15 in
+      Float.Array.get (match k mod 3 with 0 -> gx | 1 -> gy | _ -> gz) h)
+
+(* the gradient at offset [k] of table [t] dotted with (x, y, z) *)
+let[@inline] dot t k x y z =
+  (Float.Array.unsafe_get t k *. x) +. (Float.Array.unsafe_get t (k + 1) *. y) +. (Float.Array.unsafe_get t (k + 2) *. z)
+
+(* every index is below 512: a cell's corner is at most 255, a table
+   entry at most 255, and the sums at most 255 + 255 + 1 *)
+let[@inline] p i = Array.unsafe_get perm i
+
+(* one component over the cell: the eight corners' gradients, at offsets
+   [k0] to [k7] of table [t], blended by the fades [u], [v], [w] *)
+let[@inline] cell_noise t u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
+  lerp w
+    (lerp v (lerp u (dot t k0 x y z) (dot t k1 x1 y z)) (lerp u (dot t k2 x y1 z) (dot t k3 x1 y1 z)))
+    (lerp v (lerp u (dot t k4 x y z1) (dot t k5 x1 y z1)) (lerp u (dot t k6 x y1 z1) (dot t k7 x1 y1 z1)))
 
 (* floor as an int, without the C call Float.floor is (exact while |x|
    < 2^52, far beyond any coordinate a pattern reads) *)
 let[@inline] ifloor x =
   let i = int_of_float x in
   if float_of_int i > x then i - 1 else i
-
-(* every index is below 512: a cell's corner is at most 255, a table
-   entry at most 255, and the sums at most 255 + 255 + 1 *)
-let[@inline] p i = Array.unsafe_get perm i
-
-(* one component over the cell: the eight corners' gradients [k0] to
-   [k7] (hashes), blended by the fades [u], [v], [w] *)
-let[@inline] cell_noise u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
-  lerp w
-    (lerp v (lerp u (grad k0 x y z) (grad k1 x1 y z)) (lerp u (grad k2 x y1 z) (grad k3 x1 y1 z)))
-    (lerp v (lerp u (grad k4 x y z1) (grad k5 x1 y z1)) (lerp u (grad k6 x y1 z1) (grad k7 x1 y1 z1)))
 
 (* inlined where it is used: a call would box its arguments and result *)
 let[@inline] snoise3 x y z =
@@ -68,13 +87,18 @@ let[@inline] snoise3 x y z =
   let x = x -. float_of_int ix and y = y -. float_of_int iy and z = z -. float_of_int iz in
   let u = fade x and v = fade y and w = fade z in
   let a = p xi + yi and b = p (xi + 1) + yi in
-  let aa = p a + zi and ab = p (a + 1) + zi in
-  let ba = p b + zi and bb = p (b + 1) + zi in
+  let aa = 3 * (p a + zi) and ab = 3 * (p (a + 1) + zi) in
+  let ba = 3 * (p b + zi) and bb = 3 * (p (b + 1) + zi) in
   let x1 = x -. 1. and y1 = y -. 1. and z1 = z -. 1. in
-  cell_noise u v w x y z x1 y1 z1 (p aa) (p ba) (p ab) (p bb) (p (aa + 1)) (p (ba + 1)) (p (ab + 1)) (p (bb + 1))
+  cell_noise g1 u v w x y z x1 y1 z1 aa ba ab bb (aa + 3) (ba + 3) (ab + 3) (bb + 3)
 
 let snoise (p : Vec3.t) = snoise3 p.x p.y p.z
-let[@inline] noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
+
+(* in [0, 1] (comparisons, not Float.min and max, whose sign tests are C
+   calls; the same values: 0.5 + 0.5 s is never -0 or nan) *)
+let[@inline] noise3 x y z =
+  let n = 0.5 +. (0.5 *. snoise3 x y z) in
+  if n < 0. then 0. else if n > 1. then 1. else n
 
 (* Three signed noises from one pass over the lattice cell of (x, y, z)
    (the displacement of one octave of [turbulence_m]): the first is
@@ -91,15 +115,13 @@ let[@inline] dnoise3 x y z (out : Vec3.m) =
   let aa = p a + zi and ab = p (a + 1) + zi in
   let ba = p b + zi and bb = p (b + 1) + zi in
   let x1 = x -. 1. and y1 = y -. 1. and z1 = z -. 1. in
-  let h0 = p aa and h1 = p ba and h2 = p ab and h3 = p bb in
-  let h4 = p (aa + 1) and h5 = p (ba + 1) and h6 = p (ab + 1) and h7 = p (bb + 1) in
+  let a9 = 9 * aa and b9 = 9 * ba and c9 = 9 * ab and d9 = 9 * bb in
   (* the first gradient by a corner hash's low four bits (as [snoise3]),
      the second by its high four, the third by the table's entry at it *)
   Vec3.set out
-    (cell_noise u v w x y z x1 y1 z1 h0 h1 h2 h3 h4 h5 h6 h7)
-    (cell_noise u v w x y z x1 y1 z1 (h0 lsr 4) (h1 lsr 4) (h2 lsr 4) (h3 lsr 4) (h4 lsr 4) (h5 lsr 4)
-       (h6 lsr 4) (h7 lsr 4))
-    (cell_noise u v w x y z x1 y1 z1 (p h0) (p h1) (p h2) (p h3) (p h4) (p h5) (p h6) (p h7))
+    (cell_noise g9 u v w x y z x1 y1 z1 a9 b9 c9 d9 (a9 + 9) (b9 + 9) (c9 + 9) (d9 + 9))
+    (cell_noise g9 u v w x y z x1 y1 z1 (a9 + 3) (b9 + 3) (c9 + 3) (d9 + 3) (a9 + 12) (b9 + 12) (c9 + 12) (d9 + 12))
+    (cell_noise g9 u v w x y z x1 y1 z1 (a9 + 6) (b9 + 6) (c9 + 6) (d9 + 6) (a9 + 15) (b9 + 15) (c9 + 15) (d9 + 15))
 
 let turbulence_m ~octaves ~omega ~lambda (p : Vec3.m) (out : Vec3.m) =
   let px = p.mx and py = p.my and pz = p.mz in

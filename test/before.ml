@@ -140,3 +140,103 @@ let first_hit order coef ox oy oz dx dy dz tmin =
       let t = (r +. t0) /. dl in
       if t > tmin then t else infinity
   | None -> infinity
+
+(* Noise as it was before the gradient tables were indexed by the corner
+   (kept as the reference the noise must match to the bit, test_noise):
+   the permutation by the fixed shuffle, the gradient picked per corner by
+   the hash's low four bits (the vector noise's second and third by its
+   high four and by the permutation's entry at it), each read from three
+   16-entry tables of Perlin's 12 edge gradients. *)
+module Noise = struct
+  let perm =
+    let p = Array.init 256 Fun.id in
+    let s = ref 0x2545F491 in
+    let next () =
+      let x = !s in
+      let x = x lxor ((x lsl 13) land 0xFFFFFFFF) in
+      let x = x lxor (x lsr 17) in
+      let x = x lxor ((x lsl 5) land 0xFFFFFFFF) in
+      s := x;
+      x
+    in
+    for i = 255 downto 1 do
+      let j = next () mod (i + 1) in
+      let t = p.(i) in
+      p.(i) <- p.(j);
+      p.(j) <- t
+    done;
+    Array.init 512 (fun i -> p.(i land 255))
+
+  let fade t = t *. t *. t *. ((t *. ((t *. 6.) -. 15.)) +. 10.)
+  let lerp t a b = a +. (t *. (b -. a))
+
+  let edge h x y z =
+    let u = if h < 8 then x else y in
+    let v = if h < 4 then y else if h = 12 || h = 14 then x else z in
+    (if h land 1 = 0 then u else -.u) +. if h land 2 = 0 then v else -.v
+
+  let gx = Float.Array.init 16 (fun h -> edge h 1. 0. 0.)
+  let gy = Float.Array.init 16 (fun h -> edge h 0. 1. 0.)
+  let gz = Float.Array.init 16 (fun h -> edge h 0. 0. 1.)
+
+  let grad h x y z =
+    let h = h land 15 in
+    (Float.Array.get gx h *. x) +. (Float.Array.get gy h *. y) +. (Float.Array.get gz h *. z)
+
+  let ifloor x =
+    let i = int_of_float x in
+    if float_of_int i > x then i - 1 else i
+
+  let p i = perm.(i)
+
+  let cell_noise u v w x y z x1 y1 z1 k0 k1 k2 k3 k4 k5 k6 k7 =
+    lerp w
+      (lerp v (lerp u (grad k0 x y z) (grad k1 x1 y z)) (lerp u (grad k2 x y1 z) (grad k3 x1 y1 z)))
+      (lerp v (lerp u (grad k4 x y z1) (grad k5 x1 y z1)) (lerp u (grad k6 x y1 z1) (grad k7 x1 y1 z1)))
+
+  (* the cell of (x, y, z): its offsets, fades and the eight corner hashes *)
+  let cell x y z =
+    let ix = ifloor x and iy = ifloor y and iz = ifloor z in
+    let xi = ix land 255 and yi = iy land 255 and zi = iz land 255 in
+    let x = x -. float_of_int ix and y = y -. float_of_int iy and z = z -. float_of_int iz in
+    let a = p xi + yi and b = p (xi + 1) + yi in
+    let aa = p a + zi and ab = p (a + 1) + zi in
+    let ba = p b + zi and bb = p (b + 1) + zi in
+    ((x, y, z), [| p aa; p ba; p ab; p bb; p (aa + 1); p (ba + 1); p (ab + 1); p (bb + 1) |])
+
+  let over (x, y, z) h f =
+    cell_noise (fade x) (fade y) (fade z) x y z (x -. 1.) (y -. 1.) (z -. 1.) (f h.(0)) (f h.(1)) (f h.(2))
+      (f h.(3)) (f h.(4)) (f h.(5)) (f h.(6)) (f h.(7))
+
+  let snoise3 x y z =
+    let q, h = cell x y z in
+    over q h Fun.id
+
+  let noise3 x y z = Float.min 1. (Float.max 0. (0.5 +. (0.5 *. snoise3 x y z)))
+
+  let dnoise3 x y z =
+    let q, h = cell x y z in
+    (over q h Fun.id, over q h (fun h -> h lsr 4), over q h p)
+
+  let turbulence ~octaves ~omega ~lambda (px, py, pz) =
+    let ax = ref 0. and ay = ref 0. and az = ref 0. and amp = ref 1. and freq = ref 1. in
+    for _ = 1 to Int.max 1 octaves do
+      let f = !freq and a = !amp in
+      let dx, dy, dz = dnoise3 (f *. px) (f *. py) (f *. pz) in
+      ax := !ax +. (a *. dx);
+      ay := !ay +. (a *. dy);
+      az := !az +. (a *. dz);
+      amp := !amp *. omega;
+      freq := !freq *. lambda
+    done;
+    (!ax, !ay, !az)
+
+  let fractal3 octaves x y z =
+    let acc = ref 0. and f = ref 1. in
+    for _ = 1 to Int.max 1 octaves do
+      let k = !f in
+      acc := !acc +. (Float.abs (snoise3 (k *. x) (k *. y) (k *. z)) /. k);
+      f := k *. 2.
+    done;
+    !acc
+end

@@ -47,6 +47,7 @@ let () =
       Test_lit.tests;
       Test_pattern.tests;
       Test_tiling.tests;
+      Test_noise.tests;
       Test_uv.tests;
       Test_bump_map.tests;
       Test_facets.tests;

@@ -1,0 +1,78 @@
+(* camlray's noise against the code it replaced (Before.Noise, kept
+   whole: its own permutation, the gradient picked per corner from the
+   hash's bits): the same bits for the scalar noise, the [0, 1] noise, the
+   vector noise, turbulence and the fractal sum, at random points, lattice
+   points and their neighbours, negative zeros, and coordinates from 1e-9
+   to 1e9 (where the lattice wraps and turbulence's high octaves go). *)
+open Camlray
+
+let same_bits a b = Int64.equal (Int64.bits_of_float a) (Int64.bits_of_float b)
+let show a = Printf.sprintf "%h (%.17g)" a a
+
+let coordinate =
+  let open QCheck.Gen in
+  oneof_weighted
+    [
+      (6, float_range (-4.) 4.);
+      (4, float_range (-300.) 300.);
+      (2, map float_of_int (int_range (-600) 600));
+      (* a lattice plane's neighbours, both sides *)
+      (2, map2 (fun n up -> if up then Float.succ (float_of_int n) else Float.pred (float_of_int n))
+            (int_range (-600) 600) bool);
+      (1, oneof_list [ 0.; -0.; 1e-9; -1e-9; 255.5; 256.; -256.; 511.999 ]);
+      (2, map2 (fun m e -> m *. (10. ** float_of_int e)) (float_range (-1.) 1.) (int_range 3 9));
+    ]
+
+let point = QCheck.Gen.triple coordinate coordinate coordinate
+let print_point (x, y, z) = Printf.sprintf "(%h, %h, %h)" x y z
+let arb_point = QCheck.make ~print:print_point point
+
+let scalar name f g =
+  QCheck.Test.make ~name ~count:20000 arb_point (fun (x, y, z) ->
+      let got = f x y z and want = g x y z in
+      same_bits got want || QCheck.Test.fail_reportf "got %s, want %s" (show got) (show want))
+
+let snoise_prop = scalar "Noise.snoise3: the noise before, to the bit" Noise.snoise3 Before.Noise.snoise3
+let noise_prop = scalar "Noise.noise3: the [0, 1] noise before, to the bit" Noise.noise3 Before.Noise.noise3
+
+let vector name f g =
+  QCheck.Test.make ~name ~count:20000 arb_point (fun p ->
+      let gx, gy, gz = f p and wx, wy, wz = g p in
+      (same_bits gx wx && same_bits gy wy && same_bits gz wz)
+      || QCheck.Test.fail_reportf "got %s %s %s, want %s %s %s" (show gx) (show gy) (show gz) (show wx) (show wy)
+           (show wz))
+
+let dnoise_prop =
+  vector "Noise.dnoise3: the vector noise before, to the bit"
+    (fun (x, y, z) ->
+      let m = Vec3.m () in
+      Noise.dnoise3 x y z m;
+      (m.mx, m.my, m.mz))
+    (fun (x, y, z) -> Before.Noise.dnoise3 x y z)
+
+let turbulence_prop =
+  QCheck.Test.make ~name:"Noise.turbulence_m: the turbulence before, to the bit" ~count:5000
+    QCheck.(
+      make
+        ~print:(fun ((o, om, l), p) -> Printf.sprintf "octaves %d omega %h lambda %h at %s" o om l (print_point p))
+        Gen.(pair (triple (int_range (-1) 10) (float_range 0.2 0.8) (float_range 1.5 3.)) point))
+    (fun ((octaves, omega, lambda), (x, y, z)) ->
+      let p = Vec3.m () and out = Vec3.m () in
+      Vec3.set p x y z;
+      Noise.turbulence_m ~octaves ~omega ~lambda p out;
+      let wx, wy, wz = Before.Noise.turbulence ~octaves ~omega ~lambda (x, y, z) in
+      (same_bits out.mx wx && same_bits out.my wy && same_bits out.mz wz)
+      || QCheck.Test.fail_reportf "got %s %s %s, want %s %s %s" (show out.mx) (show out.my) (show out.mz) (show wx)
+           (show wy) (show wz))
+
+let fractal_prop =
+  QCheck.Test.make ~name:"Noise.fractal3: the fractal sum before, to the bit" ~count:5000
+    QCheck.(make ~print:(fun (o, p) -> Printf.sprintf "octaves %d at %s" o (print_point p))
+              Gen.(pair (int_range (-1) 10) point))
+    (fun (octaves, (x, y, z)) ->
+      let got = Noise.fractal3 octaves x y z and want = Before.Noise.fractal3 octaves x y z in
+      same_bits got want || QCheck.Test.fail_reportf "got %s, want %s" (show got) (show want))
+
+let tests =
+  ( "noise",
+    List.map QCheck_alcotest.to_alcotest [ snoise_prop; noise_prop; dnoise_prop; turbulence_prop; fractal_prop ] )
