@@ -46,13 +46,18 @@ let phase sc c =
       (1. -. (g *. g)) /. (k *. Float.sqrt k)
   | _ -> 1.
 
+(* The product of the densities at [p] (POV-Ray's product, in the order
+   written), up to the first that leaves it zero: further factors
+   (finite colours) leave it zero, but for the sign of a zero, and the
+   rest of the list is not evaluated (advanced/benchmark's clouds: a
+   7-octave turbulence skipped wherever the wrinkles before it are 0) *)
 let rec densities l p (pig : Pigment.out) (out : Color.acc) =
   match l with
   | [] -> ()
   | d :: r ->
       Pigment.into d p pig;
       Color.acc_set out (out.ar *. pig.r) (out.ag *. pig.g) (out.ab *. pig.b);
-      densities r p pig out
+      if out.ar <> 0. || out.ag <> 0. || out.ab <> 0. then densities r p pig out
 
 let density_into m p pig (out : Color.acc) =
   Color.acc_set out 1. 1. 1.;

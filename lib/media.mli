@@ -51,7 +51,8 @@ val phase : scattering -> float -> float
 
 val density_into : t -> Vec3.m -> Pigment.out -> Color.acc -> unit
 (** [density_into m p scratch out]: the product of [m]'s densities at [p]
-    (rgb), into [out]. *)
+    (rgb), into [out]. Once the product is 0 the densities after it are
+    not evaluated (their colours are finite: the product stays 0). *)
 
 val pieces : t -> int
 (** How many stretches an interval is sampled in: method 3 (POV-Ray 3.7,

@@ -73,6 +73,63 @@ let fractal_prop =
       let got = Noise.fractal3 octaves x y z and want = Before.Noise.fractal3 octaves x y z in
       same_bits got want || QCheck.Test.fail_reportf "got %s, want %s" (show got) (show want))
 
+(* A media's densities multiply; where the product is already 0 the
+   densities after it are not evaluated (a function pattern counting its
+   calls), and elsewhere the product is the one taken by hand *)
+let densities =
+  Alcotest.test_case "Media.density_into: the product, later densities skipped where it is 0" `Quick (fun () ->
+      let v x y z = Vec3.make x y z in
+      let solid r g b = Pigment.solid (Color.rgbft r g b 0. 0.) in
+      let map pattern entries = Pigment.Map { pattern; entries; xform = Transform.identity } in
+      (* black up to x = 0.5, then to <1, 2, 3> at x = 1; or green only *)
+      let first = map (Pattern.make (Pattern.Gradient (v 1. 0. 0.))) [| (0., solid 0. 0. 0.); (0.5, solid 0. 0. 0.); (1., solid 1. 2. 3.) |] in
+      let green = solid 0. 1. 0. in
+      let calls = ref 0 in
+      let counted =
+        Pattern.make
+          (Pattern.Function
+             (Pattern.fn ~slots:4 ~result:3 (fun s ->
+                  incr calls;
+                  s.(3) <- 0.25 +. (0.5 *. Float.abs (Float.sin (s.(1) +. s.(2)))))))
+      in
+      let second = map counted [| (0., solid 0.2 0.4 0.8); (1., solid 1. 1. 0.5) |] in
+      let pig = Pigment.out () and out = Color.acc 0. and q = Vec3.m () in
+      let at ds x y z =
+        Vec3.set q x y z;
+        Media.density_into { Media.default with density = ds } q pig out;
+        (out.ar, out.ag, out.ab)
+      in
+      let by_hand ds x y z =
+        Vec3.set q x y z;
+        List.fold_left
+          (fun (r, g, b) d ->
+            Pigment.into d q pig;
+            (r *. pig.r, g *. pig.g, b *. pig.b))
+          (1., 1., 1.) ds
+      in
+      let same msg (a, b, c) (d, e, f) =
+        if not (Float.equal a d && Float.equal b e && Float.equal c f) then
+          Alcotest.failf "%s: %h %h %h, want %h %h %h" msg a b c d e f
+      in
+      for i = 0 to 99 do
+        let x = float_of_int i /. 100. and y = float_of_int (i * 7 mod 13) and z = 0.3 in
+        calls := 0;
+        let want = by_hand [ first; second ] x y z in
+        let hand_calls = !calls in
+        calls := 0;
+        same (Printf.sprintf "x = %g" x) want (at [ first; second ] x y z);
+        if x <= 0.5 then begin
+          same "zero" (0., 0., 0.) want;
+          if !calls <> 0 then Alcotest.failf "x = %g: the density after a zero evaluated %d times" x !calls
+        end
+        else if !calls <> hand_calls || !calls = 0 then Alcotest.failf "x = %g: %d calls, %d by hand" x !calls hand_calls;
+        (* one channel left: the rest is evaluated *)
+        calls := 0;
+        same "green" (by_hand [ green; second ] x y z) (at [ green; second ] x y z);
+        if !calls = 0 then Alcotest.fail "a density after green skipped"
+      done)
+
 let tests =
   ( "noise",
-    List.map QCheck_alcotest.to_alcotest [ snoise_prop; noise_prop; dnoise_prop; turbulence_prop; fractal_prop ] )
+    List.map QCheck_alcotest.to_alcotest [ snoise_prop; noise_prop; dnoise_prop; turbulence_prop; fractal_prop ]
+    @ [ densities ] )
