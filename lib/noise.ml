@@ -47,7 +47,9 @@ let gz = Float.Array.init 16 (fun h -> edge h 0. 0. 1.)
    of its high four bits and at [9 i + 6] that of [perm.(perm.(i))]'s low
    four (the vector noise's three components). One index per corner, read
    at fixed offsets, where the hash, its bits and a second permutation
-   read were taken for each gradient. *)
+   read were taken for each gradient. (60 KB with the scaled permutations
+   below; tables by the hash, 256 entries, would take 36 KB and 3 to 19
+   more instructions a noise: docs/performance-notes.md, "Noise".) *)
 let g1 =
   Float.Array.init (512 * 3) (fun k ->
       let h = perm.(k / 3) land 15 in
