@@ -209,8 +209,6 @@ let render_frame o ~clock ~frame ~out ~t0 =
         | Whitted, Some d -> { scene with settings = { scene.settings with max_trace_level = d } }
         | _ -> scene
       in
-      if o.mode = Monte_carlo && scene.rainbows <> [] && not o.quiet then
-        prerr_endline "camlray: warning: rainbows are drawn in whitted mode only; mc mode renders without them";
       let max_depth = match o.depth with Some d -> d | None -> 16 in
       let spp = Option.value o.spp ~default:64 in
       let width = o.width and height = o.height in

@@ -12,17 +12,19 @@ type t = {
   volumes : bool;  (** fog, atmospheric or interior media: paths track the interiors they run in *)
   fogs : Fog.t list;
   air : Media.t list;  (** the atmosphere's media *)
+  rainbows : Rainbow.t list;  (** those drawn *)
 }
 
 let prepare ?(nee = true) ?(extra = []) (scene : Scene.t) =
   let air = match scene.atmosphere with [] -> [] | (i : Interior.t) :: _ -> i.media in
   let fogs = List.filter (fun (f : Fog.t) -> Float.abs f.distance > 1e-10) scene.fog in
+  let rainbows = List.filter Rainbow.drawn scene.rainbows in
   { scene; emitters = Array.append (Emitter.of_scene scene) (Array.of_list extra); nee;
     has_env = not (Sky.is_empty scene.sky && is_black scene.background);
     volumes =
-      fogs <> [] || air <> []
+      fogs <> [] || air <> [] || rainbows <> []
       || Array.exists (fun (o : Object.t) -> o.interior.media <> []) scene.objects;
-    fogs; air }
+    fogs; air; rainbows }
 
 let[@inline] power a b =
   let a2 = a *. a and b2 = b *. b in
@@ -510,6 +512,14 @@ let volume_stretch t (st : state) sampler ~depth base =
   if mediated then begin
     let w = md.w in
     Color.acc_set thr (thr.ar *. w.ar) (thr.ag *. w.ag) (thr.ab *. w.ab)
+  end;
+  (* the rainbows, laid over what comes from the stretch's end before
+     the atmosphere and the fogs, as in whitted mode *)
+  if op && t.rainbows <> [] then begin
+    Rainbow.layer t.rainbows d (if md.scattered then md.n.t else md.n.len) st.fat st.fadd;
+    let a = st.fat and b = st.fadd in
+    Color.acc_set acc (acc.ar +. (thr.ar *. b.ar)) (acc.ag +. (thr.ag *. b.ag)) (acc.ab +. (thr.ab *. b.ab));
+    Color.acc_set thr (thr.ar *. a.ar) (thr.ag *. a.ag) (thr.ab *. a.ab)
   end;
   md.scattered
 

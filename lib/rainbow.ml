@@ -98,3 +98,12 @@ let apply rainbows (d : Vec3.m) t (c : Color.acc) =
     let k = 1. /. float_of_int n in
     Color.acc_set c (k *. sum.ar) (k *. sum.ag) (k *. sum.ab)
   end
+
+(* [apply] is affine in the light: [a] and [b] such that the light [c]
+   becomes a c + b, for a path tracer's throughput *)
+let layer rainbows (d : Vec3.m) t (a : Color.acc) (b : Color.acc) =
+  Color.acc_set b 0. 0. 0.;
+  apply rainbows d t b;
+  Color.acc_set a 1. 1. 1.;
+  apply rainbows d t a;
+  Color.acc_set a (a.ar -. b.ar) (a.ag -. b.ag) (a.ab -. b.ab)

@@ -43,3 +43,7 @@ val apply : t list -> Vec3.m -> float -> Color.acc -> unit
 (** [apply rainbows dir t c]: the light [c] arriving from distance [t]
     along the unit direction [dir], with the rainbows laid over it.
     Allocates nothing. *)
+
+val layer : t list -> Vec3.m -> float -> Color.acc -> Color.acc -> unit
+(** [layer rainbows dir t a b]: {!apply} as the affine map it is, the
+    light [c] becoming [a c + b] (per channel). Allocates nothing. *)

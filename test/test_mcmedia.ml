@@ -350,6 +350,24 @@ let allocation () =
   Alcotest.(check bool) "lit" true (mean img > 0.05);
   if words > 0.05 then Alcotest.failf "%.2f minor words per sample" words
 
+(* A rainbow over an emitting wall seen by an orthographic camera (every
+   ray along +z, so every pixel sees the same band of it): mc mode lays it
+   over the light as whitted mode does, to 1e-12 *)
+let rainbow () =
+  let text =
+    header
+    ^ "camera { orthographic location <0,0,-1> look_at 0 right 2*x up 2*y }\n\
+       plane { -z, -9 pigment { rgb <0.2, 0.5, 0.9> } finish { ambient 0 diffuse 0 emission 1 } }\n\
+       rainbow { angle 35 width 10 distance 20 direction <0, -0.5735764, 0.8191520>\n\
+         color_map { [0 rgbf <1, 0.3, 0.3, 0.4>] [1 rgbf <0.3, 0.3, 1, 0.4>] } }\n"
+  in
+  let wh = Helpers.render_whitted ~width:6 ~height:6 text in
+  let r, g, b = Helpers.pixel wh 0 0 in
+  (* the rainbow is there: the wall's light is changed *)
+  if Float.abs (r -. 0.2) < 1e-3 && Float.abs (b -. 0.9) < 1e-3 then Alcotest.fail "whitted draws no rainbow here";
+  every "whitted: one colour" wh (r, g, b) 1e-12;
+  every "mc = whitted" (render ~w:6 ~h:6 ~spp:4 ~depth:4 text) (r, g, b) 1e-12
+
 let tests =
   ( "mcmedia",
     [
@@ -358,6 +376,7 @@ let tests =
       Alcotest.test_case "white furnace: albedo 1 media of every phase function give 1" `Slow scattering_furnace;
       Alcotest.test_case "light sampling + MIS = phase sampling alone" `Slow nee_vs_phase;
       Alcotest.test_case "fog: T L + (1 - T) C, filter, transmit, ground fog = whitted" `Quick fog;
+      Alcotest.test_case "a rainbow over a wall: mc = whitted" `Quick rainbow;
       Alcotest.test_case "absorption and emission: mc = whitted" `Quick vs_whitted;
       Alcotest.test_case "single scattering: a quarter of whitted's" `Quick single_scattering;
       Alcotest.test_case "absorbing media in glass = exponential fade" `Quick glass;
