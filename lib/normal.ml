@@ -267,12 +267,7 @@ and into_space nm point n l =
 (* POV-Ray 3.7 warps the point of a bump map and of an average: the
    warps and turbulence [nm.pattern] carries (its kind unused), the
    normal as it is in this space *)
-and warp_point w nm l =
-  let pt = nm.pattern in
-  if Array.length pt.warps > 0 || pt.turbulence <> None then begin
-    Pattern.warped_m pt l.lq w.pw;
-    Vec3.set l.lq w.pw.p.mx w.pw.p.my w.pw.p.mz
-  end
+and warp_point w nm l = Pattern.warp_in_place nm.pattern l.lq w.pw
 
 and into_frame nm n l =
   Vec3.set l.ln n.mx n.my n.mz;

@@ -764,6 +764,12 @@ let warped_m t (q : Vec3.m) (w : work) =
       if own_turbulence t then Vec3.set w.e w.p.mx w.p.my w.p.mz;
       add_turbulence tb w.p w.d
 
+let warp_in_place t (q : Vec3.m) (w : work) =
+  if Array.length t.warps > 0 || t.turbulence <> None then begin
+    warped_m t q w;
+    Vec3.set q w.p.mx w.p.my w.p.mz
+  end
+
 let eval_warped t (w : work) =
   (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
      (on top of the warp): read by [raw_m] from [w.r.v] *)

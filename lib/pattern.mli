@@ -275,6 +275,11 @@ val warped_m : t -> Vec3.m -> work -> unit
     warps and turbulence applied, into [w.p] (what {!eval_m} evaluates
     the raw pattern at). *)
 
+val warp_in_place : t -> Vec3.m -> work -> unit
+(** [warp_in_place t q w]: [q] moved by the pattern's warps and
+    turbulence (nothing done when it has none), for what carries only
+    warps (an image map, a bump map, an average); [w.p] is overwritten. *)
+
 val eval_warped : t -> work -> unit
 (** [eval_warped t w], after [warped_m t q w]: the rest of {!eval_m} (the
     raw pattern at [w.p], then the value's shaping), into [w.r.v]. A

@@ -297,11 +297,7 @@ let rec into_d w p (point : Vec3.m) (o : out) d =
       let t = Scratch.level w.tmp d and e = Scratch.level w.pts d in
       if w.used <= d then w.used <- d + 1;
       Transform.inv_point_m xform point e;
-      (match warp with
-      | None -> ()
-      | Some pattern ->
-          Pattern.warped_m pattern e w.pw;
-          Vec3.set e w.pw.p.mx w.pw.p.my w.pw.p.mz);
+      (match warp with Some pattern -> Pattern.warp_in_place pattern e w.pw | None -> ());
       o.r <- 0.;
       o.g <- 0.;
       o.b <- 0.;

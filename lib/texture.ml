@@ -103,11 +103,7 @@ let blend_m m (point : Vec3.m) pk =
       Transform.inv_point_m m.xform point pk.tp;
       (* POV-Ray 3.7 warps an average's point: the warps and turbulence
          its pattern carries (its kind unused) *)
-      if Array.length m.pattern.warps > 0 || m.pattern.turbulence <> None then begin
-        let w = Scratch.get work_key in
-        Pattern.warped_m m.pattern pk.tp w;
-        Vec3.set pk.tp w.p.mx w.p.my w.p.mz
-      end;
+      Pattern.warp_in_place m.pattern pk.tp (Scratch.get work_key);
       pk.n <- Array.length m.entries
   | Field { blob; cut } ->
       Vec3.set pk.tp point.mx point.my point.mz;
