@@ -9,3 +9,15 @@ let sort_prefix a n =
     done;
     Float.Array.unsafe_set a (!j + 1) x
   done
+
+let order_prefix a n (ord : int array) =
+  if n < 0 || n > Float.Array.length a || n > Array.length ord then invalid_arg "Floats.order_prefix";
+  for j = 0 to n - 1 do
+    let x = Float.Array.unsafe_get a j in
+    let i = ref j in
+    while !i > 0 && Float.Array.unsafe_get a (Array.unsafe_get ord (!i - 1)) > x do
+      Array.unsafe_set ord !i (Array.unsafe_get ord (!i - 1));
+      decr i
+    done;
+    Array.unsafe_set ord !i j
+  done

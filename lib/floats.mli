@@ -6,3 +6,11 @@ val sort_prefix : Float.Array.t -> int -> unit
     stretches in a blob, its crossings of a superellipsoid's planes, the
     ends of light cylinders). Allocates nothing. Raises [Invalid_argument]
     when [n] is negative or past the end of [a]. *)
+
+val order_prefix : Float.Array.t -> int -> int array -> unit
+(** [order_prefix a n ord]: [ord.(0 .. n-1)] the indices [0 .. n-1] of
+    [a] in ascending order of their values, by insertion, equal values in
+    index order; [a] is left as it is (a ray's recorded crossings, whose
+    other records are kept beside them by index). Allocates nothing.
+    Raises [Invalid_argument] when [n] is negative or past the end of [a]
+    or [ord]. *)

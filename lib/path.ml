@@ -175,15 +175,7 @@ let[@inline] in_open inside = List.for_all (fun (i : Interior.t) -> i.hollow) in
    ([air]) and the fogs' attenuation ([fog]): [st.tr] multiplied *)
 let stretches t st sampler ~depth ~which ~air ~fog (dir : Vec3.m) =
   let n = st.ncross and ts = st.cross_t and ord = st.order in
-  for j = 0 to n - 1 do
-    let x = Float.Array.get ts j in
-    let i = ref j in
-    while !i > 0 && Float.Array.get ts ord.(!i - 1) > x do
-      ord.(!i) <- ord.(!i - 1);
-      decr i
-    done;
-    ord.(!i) <- j
-  done;
+  Floats.order_prefix ts n ord;
   let far = if st.shadow.far = infinity then Fog.missed else st.shadow.far in
   let lo = ref 0. and inside = ref st.sstart in
   let p = st.p and tr = st.tr and md = st.md in

@@ -244,15 +244,7 @@ let stretch (w : walk) =
 let stretches (w : walk) =
   let dist = w.seg.len in
   let n = w.nf and ts = w.fts and ord = w.order in
-  for j = 0 to n - 1 do
-    let t = Float.Array.get ts j in
-    let i = ref j in
-    while !i > 0 && Float.Array.get ts ord.(!i - 1) > t do
-      ord.(!i) <- ord.(!i - 1);
-      decr i
-    done;
-    ord.(!i) <- j
-  done;
+  Floats.order_prefix ts n ord;
   w.ni <- 0;
   for a = 0 to n - 1 do
     let k = ord.(a) in

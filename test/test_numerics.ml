@@ -98,7 +98,31 @@ let sort_prefix_bounds () =
   Floats.sort_prefix a 0;
   Alcotest.(check (list (float 0.))) "n = 0 leaves the array" [ 3.; 1.; 2. ] (Float.Array.to_list a)
 
+(* Floats.order_prefix against a stable List.sort of (value, index): the
+   indices of the first [n] in order of value, ties in index order, the
+   values untouched (the crossings of a shadow ray are ordered so) *)
+let order_prefix_prop =
+  let open QCheck in
+  let value = Gen.(oneof [ float_range (-1e3) 1e3; oneof_list [ 0.; 1.; 2.; infinity ] ]) in
+  Test.make ~name:"Floats.order_prefix orders the first n indices by value, stably" ~count:500
+    (make
+       ~print:Print.(pair (list float) int)
+       Gen.(list_size (int_range 0 40) value >>= fun l -> map (fun n -> (l, n)) (int_range 0 (List.length l))))
+    (fun (l, n) ->
+      let a = Float.Array.of_list l in
+      let ord = Array.make (List.length l + 3) (-1) in
+      Floats.order_prefix a n ord;
+      let expect =
+        List.filteri (fun i _ -> i < n) l
+        |> List.mapi (fun i x -> (x, i))
+        |> List.stable_sort (fun (x, _) (y, _) -> Float.compare x y)
+        |> List.map snd
+      in
+      Array.to_list (Array.sub ord 0 n) = expect && Float.Array.to_list a = l
+      && Array.for_all (fun i -> i = -1) (Array.sub ord n (Array.length ord - n)))
+
 let tests =
   ( "numerics",
     [ QCheck_alcotest.to_alcotest prop; QCheck_alcotest.to_alcotest sort_prefix_prop;
+      QCheck_alcotest.to_alcotest order_prefix_prop;
       Alcotest.test_case "Floats.sort_prefix bounds" `Quick sort_prefix_bounds ] )
