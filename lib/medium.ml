@@ -165,6 +165,26 @@ let[@inline] step u rate = -.Float.log1p (-.u) /. rate
 (* (1 - exp (-s l)) / s, the integral of the transmittance *)
 let[@inline] through s l = if s = 0. then l else -.Float.expm1 (-.s *. l) /. s
 
+(* After a tracking step: Russian roulette on a weight grown small (all
+   channels under 0.1 in magnitude: kept with probability its size, by
+   the sampler's number at [dim], and scaled up to 0.1), then the cap of
+   [steps_max] steps a stretch; false when the walk ends here, its
+   weight zeroed *)
+let goes_on (w : Color.acc) sampler dim steps =
+  let m = Float.max (Float.abs w.ar) (Float.max (Float.abs w.ag) (Float.abs w.ab)) in
+  let alive =
+    (not (m < 0.1))
+    || Sampler.get sampler dim *. 0.1 < m
+       && begin
+         let f = 0.1 /. m in
+         Color.acc_set w (f *. w.ar) (f *. w.ag) (f *. w.ab);
+         true
+       end
+  in
+  let alive = alive && steps < steps_max in
+  if not alive then Color.acc_set w 0. 0. 0.;
+  alive
+
 let homogeneous md sampler dim inside air (o : Vec3.m) (thr : Color.acc) =
   let n = md.n in
   let l = n.len in
@@ -255,21 +275,8 @@ let tracking md sampler dim inside air (o : Vec3.m) (d : Vec3.m) =
           else begin
             let f = 1. /. (maj *. (1. -. ps)) in
             Color.acc_set w (f *. w.ar *. nr) (f *. w.ag *. ng) (f *. w.ab *. nb);
-            let m = Float.max (Float.abs w.ar) (Float.max (Float.abs w.ag) (Float.abs w.ab)) in
-            if m < 0.1 then
-              if Sampler.get sampler (b + 2) *. 0.1 >= m then begin
-                Color.acc_set w 0. 0. 0.;
-                go := false
-              end
-              else begin
-                let f = 0.1 /. m in
-                Color.acc_set w (f *. w.ar) (f *. w.ag) (f *. w.ab)
-              end;
             incr k;
-            if !k >= steps_max then begin
-              Color.acc_set w 0. 0. 0.;
-              go := false
-            end
+            if not (goes_on w sampler (b + 2) !k) then go := false
           end
         end
       end
@@ -309,21 +316,8 @@ let transmittance md sampler dim inside air (o : Vec3.m) (d : Vec3.m) (out : Col
           extinction md inside air md.q;
           let xt = md.ext and f = 1. /. maj in
           Color.acc_set w (w.ar *. (1. -. (f *. xt.ar))) (w.ag *. (1. -. (f *. xt.ag))) (w.ab *. (1. -. (f *. xt.ab)));
-          let m = Float.max (Float.abs w.ar) (Float.max (Float.abs w.ag) (Float.abs w.ab)) in
-          if m < 0.1 then
-            if Sampler.get sampler (b + 1) *. 0.1 >= m then begin
-              Color.acc_set w 0. 0. 0.;
-              go := false
-            end
-            else begin
-              let f = 0.1 /. m in
-              Color.acc_set w (f *. w.ar) (f *. w.ag) (f *. w.ab)
-            end;
           incr k;
-          if !k >= steps_max then begin
-            Color.acc_set w 0. 0. 0.;
-            go := false
-          end
+          if not (goes_on w sampler (b + 1) !k) then go := false
         end
       done;
       Color.acc_set out (out.ar *. w.ar) (out.ag *. w.ag) (out.ab *. w.ab)
