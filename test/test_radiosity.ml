@@ -168,14 +168,10 @@ let domains () =
    went through the domain's sums instead of a closure, float refs and
    float arguments) *)
 let allocation () =
-  let w = 64 and h = 48 in
   let s = Helpers.compile_string room in
-  Whitted.prepare s ~width:w ~height:h;
-  let pixel = Whitted.pixel_into s ~width:w ~height:h in
-  ignore (Render.image_into ~domains:1 ~width:w ~height:h pixel);
-  let before = Gc.minor_words () in
-  ignore (Render.image_into ~domains:1 ~width:w ~height:h pixel);
-  let words = (Gc.minor_words () -. before) /. float_of_int (w * h) in
+  (* the size Test_whitted.words_per_ray renders at *)
+  Whitted.prepare s ~width:64 ~height:48;
+  let words = Test_whitted.words_per_ray s in
   if words > 0.1 then Alcotest.failf "%.2f minor words a camera ray" words
 
 let tests =
