@@ -254,25 +254,22 @@ let phrase t ~paren ~(close : Parser.token -> bool) =
           Some (eval e, x)
         end
 
+(* a phrase read here, or the grammar's [entry] reading it *)
+let or_parse t ~paren ~close entry =
+  match phrase t ~paren ~close with Some (v, _) -> v | None -> Cursor.parse t entry
+
 let paren_expr t =
-  match phrase t ~paren:true ~close:(function Parser.RPAREN -> true | _ -> false) with
-  | Some (v, _) -> v
-  | None -> Cursor.parse t Parser.Incremental.paren_expr
+  or_parse t ~paren:true ~close:(function Parser.RPAREN -> true | _ -> false) Parser.Incremental.paren_expr
 
 let expr_then_comma t =
-  match phrase t ~paren:false ~close:(function Parser.COMMA -> true | _ -> false) with
-  | Some (v, _) -> v
-  | None -> Cursor.parse t Parser.Incremental.expr_then_comma
+  or_parse t ~paren:false ~close:(function Parser.COMMA -> true | _ -> false) Parser.Incremental.expr_then_comma
 
 let expr_then_rparen t =
-  match phrase t ~paren:false ~close:(function Parser.RPAREN -> true | _ -> false) with
-  | Some (v, _) -> v
-  | None -> Cursor.parse t Parser.Incremental.expr_then_rparen
+  or_parse t ~paren:false ~close:(function Parser.RPAREN -> true | _ -> false) Parser.Incremental.expr_then_rparen
 
 let expr_then_rbracket t =
-  match phrase t ~paren:false ~close:(function Parser.RBRACKET -> true | _ -> false) with
-  | Some (v, _) -> v
-  | None -> Cursor.parse t Parser.Incremental.expr_then_rbracket
+  or_parse t ~paren:false ~close:(function Parser.RBRACKET -> true | _ -> false)
+    Parser.Incremental.expr_then_rbracket
 
 let expr_then_sep t =
   match phrase t ~paren:false ~close:(function Parser.COMMA | RPAREN -> true | _ -> false) with
