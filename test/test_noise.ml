@@ -129,7 +129,83 @@ let densities =
         if !calls = 0 then Alcotest.fail "a density after green skipped"
       done)
 
+(* POV-Ray 3.7's noise against POV-Ray itself: the files in noise_pov/
+   were written by POV-Ray 3.7 running the .pov files beside them
+   (points to 17 decimals, then the value): f_noise3d for each
+   generator (1, 2, 3: 40 lattice points and 360 random ones in
+   [-20, 20]^3), and pattern functions of gradient x, y, z under a
+   turbulence warp of amplitude 0.001 (one octave: DNoise; six with omega
+   0.6 and lambda 2.3: DTurbulence) *)
+let pov_dir = if Sys.file_exists "../../../test/noise_pov" then "../../../test/noise_pov" else "noise_pov"
+
+let read_rows name =
+  let ic = open_in (Filename.concat pov_dir name) in
+  let rec go acc =
+    match input_line ic with
+    | l -> go (List.map float_of_string (String.split_on_char ' ' (String.trim l)) :: acc)
+    | exception End_of_file ->
+        close_in ic;
+        List.rev acc
+  in
+  go []
+
+let pov_noise gen =
+  Alcotest.test_case (Printf.sprintf "Noise.noise %d: POV-Ray's f_noise3d at 400 points" gen) `Quick (fun () ->
+      let rows = read_rows (Printf.sprintf "n%d.txt" gen) in
+      if List.length rows <> 400 then Alcotest.failf "%d rows" (List.length rows);
+      List.iter
+        (function
+          | [ x; y; z; v ] ->
+              let got = Noise.noise gen x y z in
+              (* POV-Ray prints 17 decimals *)
+              if Float.abs (got -. v) > 2e-16 then Alcotest.failf "(%.17g, %.17g, %.17g): %.17g, POV-Ray %.17g" x y z got v
+          | _ -> Alcotest.fail "bad row")
+        rows)
+
+(* POV-Ray keeps a turbulence's omega and lambda in single precision *)
+let single v = Int32.float_of_bits (Int32.bits_of_float v)
+
+let pov_dnoise =
+  Alcotest.test_case "Noise.dnoise, dturbulence: POV-Ray's turbulence warp at 300 points" `Quick (fun () ->
+      let rows = read_rows "dt.txt" in
+      if List.length rows <> 300 then Alcotest.failf "%d rows" (List.length rows);
+      let p = Vec3.m () and o = Vec3.m () in
+      let frac v = v -. Float.floor v in
+      let check what x y z vx vy vz =
+        let near a b = Float.abs (a -. b) < 1e-15 in
+        if not (near (frac (x +. (0.001 *. o.mx))) vx && near (frac (y +. (0.001 *. o.my))) vy && near (frac (z +. (0.001 *. o.mz))) vz)
+        then Alcotest.failf "%s at (%.17g, %.17g, %.17g): %.17g %.17g %.17g, POV-Ray's pattern %.17g %.17g %.17g" what x y z
+            (frac (x +. (0.001 *. o.mx))) (frac (y +. (0.001 *. o.my))) (frac (z +. (0.001 *. o.mz))) vx vy vz
+      in
+      List.iter
+        (function
+          | [ x; y; z; x1; y1; z1; x6; y6; z6 ] ->
+              Noise.dnoise x y z o;
+              check "dnoise" x y z x1 y1 z1;
+              Vec3.set p x y z;
+              Noise.dturbulence ~octaves:6 ~omega:(single 0.6) ~lambda:(single 2.3) p o;
+              check "dturbulence" x y z x6 y6 z6
+          | _ -> Alcotest.fail "bad row")
+        rows)
+
+(* the tables' make-up: the hash a permutation of 0 .. 4095, doubled;
+   the numbers in [-1, 1], each with its half beside it *)
+let pov_tables =
+  Alcotest.test_case "POV-Ray's noise tables: a doubled permutation, numbers in [-1, 1]" `Quick (fun () ->
+      let seen = Array.make 4096 false in
+      for i = 0 to 4095 do
+        let h = Noise.hash_table.(i) in
+        if seen.(h) then Alcotest.failf "%d twice" h;
+        seen.(h) <- true;
+        if Noise.hash_table.(i + 4096) <> h then Alcotest.failf "entry %d not doubled" i
+      done;
+      for i = 0 to 266 do
+        let v = Float.Array.get Noise.r_table (2 * i) in
+        if v < -1. || v > 1. then Alcotest.failf "entry %d: %g" i v;
+        if Float.Array.get Noise.r_table ((2 * i) + 1) <> v *. 0.5 then Alcotest.failf "entry %d: half" i
+      done)
+
 let tests =
   ( "noise",
     List.map QCheck_alcotest.to_alcotest [ snoise_prop; noise_prop; dnoise_prop; turbulence_prop; fractal_prop ]
-    @ [ densities ] )
+    @ [ densities; pov_noise 1; pov_noise 2; pov_noise 3; pov_dnoise; pov_tables ] )
