@@ -143,19 +143,28 @@ type t = {
   phase : float;
   wave : wave option;
   warps : warp array;
+  noise_gen : int;
 }
 
 (* quilted and image_pattern start at frequency 0 (POV-Ray's parser
    sets it), their values left unwrapped *)
 let make kind =
   let frequency = match kind with Quilted _ | Image _ -> 0. | _ -> 1. in
-  { kind; turbulence = None; frequency; phase = 0.; wave = None; warps = [||] }
+  { kind; turbulence = None; frequency; phase = 0.; wave = None; warps = [||]; noise_gen = 0 }
 
 let mandel iterations = { iterations; exponent = 2; exterior = 1; efactor = 1.; interior = 0; ifactor = 1. }
 
 let gradient v =
   let l = Vec3.length v in
   Gradient (if l = 0. then Vec3.unit_x else Vec3.scale (1. /. l) v)
+
+(* the scene's noise generator ([global_settings { noise_generator }], 2
+   when not given), for the patterns that name none: set by the compiler
+   for the scene it compiles, read (never written) while it renders, as
+   POV-Ray reads its scene's setting where a pattern has none *)
+let scene_noise_generator = ref 2
+
+let[@inline] generator t = if t.noise_gen = 0 then !scene_noise_generator else t.noise_gen
 
 let default_turbulence amount = { amount; octaves = 6; omega = 0.5; lambda = 2. }
 let is_block = function Checker | Hexagon | Brick _ | Object _ | Material _ -> true | _ -> false

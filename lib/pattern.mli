@@ -200,11 +200,22 @@ type t = {
   warps : warp array;
       (** in written order; applied last first to the point in pattern
           space, before the (classic) turbulence and the pattern *)
+  noise_gen : int;
+      (** the pattern's [noise_generator]: 1, 2 or 3; 0 when it names none
+          (then the scene's, {!scene_noise_generator}) *)
 }
 
 val quilt_cubic : float -> float -> float -> float
 (** [quilt_cubic t c0 c1]: quilted's scale of an offset of length [t] from
     its cell's centre (a cubic Bezier with inner controls [c0], [c1]). *)
+
+val scene_noise_generator : int ref
+(** The scene's [noise_generator] (2, POV-Ray 3.7's default, unless its
+    [global_settings] name another), for patterns naming none: set by the
+    compiler for the scene it compiles, only read while rendering. *)
+
+val generator : t -> Noise.generator
+(** The generator the pattern's noise uses. *)
 
 val make : kind -> t
 (** No turbulence, frequency 1 (quilted and image: 0), phase 0, default

@@ -607,6 +607,14 @@ and scene_ (s : Sdl.scene) =
               List.fold_left (fun b -> function Sdl.Adc_bailout a -> a | _ -> b) b gs
           | _ -> b)
         Scene.default_settings.adc_bailout s.items;
+    (* the last noise_generator of the scene's global_settings, wherever it
+       is, serves every pattern naming none (POV-Ray's scene setting) *)
+    Pattern.scene_noise_generator :=
+      List.fold_left
+        (fun g -> function
+          | Sdl.Global_settings (_, gs) -> List.fold_left (fun g -> function Sdl.Noise_generator n -> n | _ -> g) g gs
+          | _ -> g)
+        2 s.items;
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter

@@ -190,7 +190,9 @@
   | SKY_SPHERE LBRACE k = sky_body RBRACE { Decl.Sky_sphere k }
 
 %public global_item:
-  | NOISE_GENERATOR e = param { Sdl.Noise_generator (Value.to_int (loc $loc(e)) e) }
+  | NOISE_GENERATOR e = param { let n = Value.to_int (loc $loc(e)) e in
+      if n < 1 || n > 3 then Diag.error (loc $loc(e)) "noise_generator in global_settings is 1, 2 or 3, found %d" n;
+      Sdl.Noise_generator n }
   | NUMBER_OF_WAVES e = param { Sdl.Number_of_waves (Value.to_int (loc $loc(e)) e) }
 
 %public sky_body:
@@ -512,7 +514,10 @@ image_file_kind:
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
   | WARP LBRACE k = warp_body RBRACE { Texdesc.warp (loc $loc) k }
   | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
-  | NOISE_GENERATOR e = param { ignore e; fun p -> p }  (* camlray has one noise *)
+  | NOISE_GENERATOR e = param { let n = Value.to_int (loc $loc(e)) e in
+      (* 0: the scene's *)
+      if n < 0 || n > 3 then Diag.error (loc $loc(e)) "noise_generator is 0, 1, 2 or 3, found %d" n;
+      Texdesc.pattern_mod (fun p -> { p with noise_gen = n }) }
   (* quilted's controls are single-precision floats in POV-Ray *)
   | CONTROL0 e = param { let x = Int32.float_of_bits (Int32.bits_of_float (fl $loc(e) e)) in
       Texdesc.kind_mod (function

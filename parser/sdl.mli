@@ -197,7 +197,7 @@ type global =
   | Adc_bailout of float
   | Ambient_light of Color.t
   | Radiosity of Radiosity.t  (** [radiosity { ... }]; [keep_ambient] is set by the compiler *)
-  | Noise_generator of int  (** parsed; camlray has one noise *)
+  | Noise_generator of int  (** the scene's, for patterns naming none *)
   | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
 
 type item =
