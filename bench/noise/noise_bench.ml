@@ -1,5 +1,6 @@
 (* noise_bench MODE N: N evaluations of MODE (snoise, noise3, dnoise,
-   turb7, turb9, fractal6, fractal10) at N pseudo-random points in
+   turb7, turb9, fractal6, fractal10; POV-Ray's: pov1, pov2, pov3,
+   povd, povturb7, povdturb7) at N pseudo-random points in
    [-40, 40]^3; prints a checksum so the work is not dropped. Instructions
    per evaluation: callgrind's count for N minus its count for 0, over N. *)
 open Camlray
@@ -49,6 +50,30 @@ let () =
       for i = 0 to n - 1 do
         let k = 3 * (i land 4095) in
         acc := !acc +. Noise.fractal3 10 (g k) (g (k + 1)) (g (k + 2))
+      done
+  | "pov1" | "pov2" | "pov3" ->
+      let gen = Char.code mode.[3] - Char.code '0' in
+      for i = 0 to n - 1 do
+        let k = 3 * (i land 4095) in
+        acc := !acc +. Noise.noise gen (g k) (g (k + 1)) (g (k + 2))
+      done
+  | "povd" ->
+      for i = 0 to n - 1 do
+        let k = 3 * (i land 4095) in
+        Noise.dnoise (g k) (g (k + 1)) (g (k + 2)) out;
+        acc := !acc +. out.mx +. out.my +. out.mz
+      done
+  | "povturb7" ->
+      for i = 0 to n - 1 do
+        let k = 3 * (i land 4095) in
+        acc := !acc +. Noise.turbulence 2 ~octaves:7 ~omega:0.5 ~lambda:2. (g k) (g (k + 1)) (g (k + 2))
+      done
+  | "povdturb7" ->
+      for i = 0 to n - 1 do
+        let k = 3 * (i land 4095) in
+        Vec3.set p (g k) (g (k + 1)) (g (k + 2));
+        Noise.dturbulence ~octaves:7 ~omega:0.5 ~lambda:2. p out;
+        acc := !acc +. out.mx +. out.my +. out.mz
       done
   | _ -> failwith "mode");
   Printf.printf "%s %d %.17g\n" mode n !acc
