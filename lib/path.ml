@@ -315,7 +315,8 @@ let light_seen t st sampler ~depth ~which (l : Light.t) =
   | None ->
       if l.shadowless then Color.acc_set tr 1. 1. 1.
       else begin
-        st.shadow.far <- ls.n.dist;
+        (* POV-Ray's shadow tolerance, as in whitted mode (Shadow.shadow_into) *)
+        st.shadow.far <- ls.n.dist -. Ray.shadow_epsilon;
         light_transmittance t st sampler ~depth ~which l ls.wi
       end
   | Some o ->

@@ -298,7 +298,10 @@ let shadow_into (s : Scene.t) (w : walk) =
   let dist = w.seg.len in
   Color.acc_set w.acc 1. 1. 1.;
   w.nf <- 0;
-  w.ray.far <- dist;
+  (* what lies within POV-Ray's shadow tolerance (1e-3) of the light casts
+     no shadow: a light in a surface's plane (a Cornell box's ceiling
+     lights) is not hidden by that surface, by rounding, at random *)
+  w.ray.far <- dist -. Ray.shadow_epsilon;
   (* [w.seg.len], not [dist], to [projected]: a float passed is boxed *)
   let seen = match w.through with None -> true | Some o -> projected w o in
   if not seen then Color.acc_set w.acc 0. 0. 0.

@@ -384,10 +384,30 @@ let projected () =
   check "not moved by the translate before" 0. c.x;
   check "moved by the translate after" 1. c.y
 
+(* POV-Ray's shadow tolerance: what a shadow ray meets within 1e-3 of
+   the light casts no shadow (trace.cpp, SHADOW_TOLERANCE). The light 5
+   above and 5 before a lit wall point, head-on cosine 1/sqrt 2; a ceiling
+   plane crossed 0.0004 sqrt 2 (inside the tolerance) or 0.002 sqrt 2
+   (outside) short of the light. A light in a ceiling's own plane (the
+   Cornell box's) was hidden by rounding, at random. *)
+let shadow_tolerance () =
+  let at ceiling =
+    Scn.pixel
+      (Printf.sprintf
+         "light_source { <0,5,-4>, rgb 1 }\n\
+          plane { y, %s pigment { rgb 1 } }\n\
+          plane { z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }"
+         ceiling)
+  in
+  Scn.gray "no ceiling" (1. /. Float.sqrt 2.) (at "100");
+  Scn.gray "a ceiling 0.0004 under the light" (1. /. Float.sqrt 2.) (at "4.9996");
+  Scn.gray "a ceiling 0.002 under the light" 0. (at "4.998")
+
 let tests =
   ( "light",
     [
       Alcotest.test_case "recursive averaging" `Quick averaging;
+      Alcotest.test_case "shadow tolerance: nothing within 1e-3 of the light hides it" `Quick shadow_tolerance;
       Alcotest.test_case "adaptive" `Quick adaptive;
       Alcotest.test_case "sample positions" `Quick positions;
       Alcotest.test_case "orient and circular: POV-Ray's axes and disc" `Quick orient_rules;

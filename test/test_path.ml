@@ -664,9 +664,32 @@ let cylinder_projected () =
   if lit 23 < 0.7 then Alcotest.failf "through the window, behind the near blocker: %g" (lit 23);
   if lit 26 > 1e-9 then Alcotest.failf "in the far blocker's shadow: %g" (lit 26)
 
+(* POV-Ray's shadow tolerance in mc mode too (test_light has whitted
+   mode's): a ceiling crossed within 1e-3 of the point light hides
+   nothing, one crossed 0.002 sqrt 2 short of it hides the light; direct
+   light only *)
+let shadow_tolerance () =
+  let at ceiling =
+    let img =
+      render ~w:1 ~h:1 ~spp:4 ~depth:1
+        (Printf.sprintf
+           "camera { location 0 look_at z }\n\
+            light_source { <0,5,-4>, rgb 1 }\n\
+            plane { y, %s pigment { rgb 1 } }\n\
+            plane { z, 1 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }"
+           ceiling)
+    in
+    Image.get_r img 0 0
+  in
+  let open_sky = at "100" in
+  if not (open_sky > 0.01) then Alcotest.failf "no ceiling: %g" open_sky;
+  Scn.close ~eps:1e-12 "a ceiling 0.0004 under the light" open_sky (at "4.9996");
+  Scn.close ~eps:1e-12 "a ceiling 0.002 under the light" 0. (at "4.998")
+
 let tests =
   ( "path",
     [
+      Alcotest.test_case "shadow tolerance: nothing within 1e-3 of the light hides it" `Quick shadow_tolerance;
       Alcotest.test_case "white furnace: albedo 1 -> 1, 0.5 -> 0.5, diffuse+mirror mix" `Quick
         white_furnace;
       Alcotest.test_case "glass furnace: a clear dielectric keeps radiance 1" `Quick glass_furnace;
