@@ -292,15 +292,18 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   let tex = if entering then obj.texture else obj.back in
   layers s d level media fr (not guess) c tr fr.p tex;
   let n = if fr.top_set then fr.top else n0 in
-  if guess <> (Color.acc_luminance tr > bailout && total_internal eta (-.dot d n)) then begin
+  (* what the texture lets through, by its size: POV-Ray takes absolute
+     values (a negative transmit, as in transmitfx.pov, lets the picture
+     behind through with its sign turned) *)
+  if guess <> (Float.abs (Color.acc_luminance tr) > bailout && total_internal eta (-.dot d n)) then begin
     fr.top_set <- false;
     Color.acc_set c 0. 0. 0.;
     Color.acc_set tr 1. 1. 1.;
     layers s d level media fr guess c tr fr.p tex
   end;
-  if Color.acc_luminance tr <= bailout then Color.acc_set out c.ar c.ag c.ab
+  if Float.abs (Color.acc_luminance tr) <= bailout then Color.acc_set out c.ar c.ag c.ab
   else
-    let w = weight *. Color.acc_max tr in
+    let w = weight *. Float.max (Float.abs tr.ar) (Float.max (Float.abs tr.ag) (Float.abs tr.ab)) in
     let rc = fr.rc in
     if eta = 1. then begin
       (* same index on both sides: straight through, no trace level used *)

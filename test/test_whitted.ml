@@ -1056,10 +1056,24 @@ let light_group () =
   gray "an outside object shadows a group's light" 0. (at (shadow true) 16 36);
   gray "a group's object shadows a global light" 0. (at (shadow true) 48 36)
 
+(* A negative transmit (POV-Ray's transmitfx.pov): the surface lets the
+   picture behind through with its sign turned, (1 - t) c + t behind;
+   POV-Ray traces on while the transmitted colour is large in absolute
+   value. rgb 0.5 transmit -1 with ambient 1 over a wall of ambient 1:
+   2 x 0.5 - wall. *)
+let negative_transmit () =
+  let c =
+    Scn.pixel
+      "plane { z, 1 pigment { rgb 0.5 transmit -1 } finish { ambient 1 diffuse 0 } }\n\
+       plane { z, 2 pigment { rgb <0.2, 0.4, 0.6> } finish { ambient 1 diffuse 0 } }"
+  in
+  Scn.color "1 - the wall" (0.8, 0.6, 0.4) c
+
 let tests =
   ( "whitted",
     [
       Alcotest.test_case "finishes" `Quick finishes;
+      Alcotest.test_case "negative transmit: the picture behind, its sign turned" `Quick negative_transmit;
       Alcotest.test_case "lights" `Quick lights;
       Alcotest.test_case "shadows" `Quick shadows;
       Alcotest.test_case "light_group" `Quick light_group;
