@@ -248,8 +248,12 @@ let[@inline] lattice x = if x >= 0. then int_of_float x else int_of_float (x -. 
    range stretched to [0, 1] (3.7's default), 3 Perlin's solid noise *)
 type generator = int
 
-(* the sum over the eight corners, before the generator's scaling *)
-let[@inline] lattice_sum x y z =
+(* The lattice cell of (x, y, z), set up once for both noises: with
+   [vector] false the sum over its eight corners (Noise's, before the
+   generator's scaling), with [vector] true DNoise's three sums into [out]
+   (0 returned), each in POV-Ray's order of the corners. Inlined where it
+   is used, [vector] a constant there: a call would box its floats. *)
+let[@inline] lattice_cell vector x y z (out : Vec3.m) =
   let tmp = lattice x in
   let ix = (tmp + 10000) land 0xFFF and x_ix = x -. float_of_int tmp in
   let tmp = lattice y in
@@ -263,14 +267,50 @@ let[@inline] lattice_sum x y z =
   let h00 = hash2 ix iy and h10 = hash2 (ix + 1) iy in
   let h01 = hash2 ix (iy + 1) and h11 = hash2 (ix + 1) (iy + 1) in
   let iz1 = iz + 1 in
-  let sum = incrsum (r_index h00 iz) (txty *. tz) x_ix y_iy z_iz in
-  let sum = sum +. incrsum (r_index h10 iz) (sxty *. tz) x_jx y_iy z_iz in
-  let sum = sum +. incrsum (r_index h01 iz) (txsy *. tz) x_ix y_jy z_iz in
-  let sum = sum +. incrsum (r_index h11 iz) (sxsy *. tz) x_jx y_jy z_iz in
-  let sum = sum +. incrsum (r_index h00 iz1) (txty *. sz) x_ix y_iy z_jz in
-  let sum = sum +. incrsum (r_index h10 iz1) (sxty *. sz) x_jx y_iy z_jz in
-  let sum = sum +. incrsum (r_index h01 iz1) (txsy *. sz) x_ix y_jy z_jz in
-  sum +. incrsum (r_index h11 iz1) (sxsy *. sz) x_jx y_jy z_jz
+  if vector then begin
+    (* POV-Ray's order of the corners, the components from the table's
+       entries 4 and 8 further on *)
+    let k = r_index h00 iz and s = txty *. tz in
+    let rx = incrsum k s x_ix y_iy z_iz and ry = incrsum (k + 4) s x_ix y_iy z_iz and rz = incrsum (k + 8) s x_ix y_iy z_iz in
+    let k = r_index h10 iz and s = sxty *. tz in
+    let rx = rx +. incrsum k s x_jx y_iy z_iz and ry = ry +. incrsum (k + 4) s x_jx y_iy z_iz
+    and rz = rz +. incrsum (k + 8) s x_jx y_iy z_iz in
+    let k = r_index h11 iz and s = sxsy *. tz in
+    let rx = rx +. incrsum k s x_jx y_jy z_iz and ry = ry +. incrsum (k + 4) s x_jx y_jy z_iz
+    and rz = rz +. incrsum (k + 8) s x_jx y_jy z_iz in
+    let k = r_index h01 iz and s = txsy *. tz in
+    let rx = rx +. incrsum k s x_ix y_jy z_iz and ry = ry +. incrsum (k + 4) s x_ix y_jy z_iz
+    and rz = rz +. incrsum (k + 8) s x_ix y_jy z_iz in
+    let k = r_index h01 iz1 and s = txsy *. sz in
+    let rx = rx +. incrsum k s x_ix y_jy z_jz and ry = ry +. incrsum (k + 4) s x_ix y_jy z_jz
+    and rz = rz +. incrsum (k + 8) s x_ix y_jy z_jz in
+    let k = r_index h11 iz1 and s = sxsy *. sz in
+    let rx = rx +. incrsum k s x_jx y_jy z_jz and ry = ry +. incrsum (k + 4) s x_jx y_jy z_jz
+    and rz = rz +. incrsum (k + 8) s x_jx y_jy z_jz in
+    let k = r_index h10 iz1 and s = sxty *. sz in
+    let rx = rx +. incrsum k s x_jx y_iy z_jz and ry = ry +. incrsum (k + 4) s x_jx y_iy z_jz
+    and rz = rz +. incrsum (k + 8) s x_jx y_iy z_jz in
+    let k = r_index h00 iz1 and s = txty *. sz in
+    out.mx <- rx +. incrsum k s x_ix y_iy z_jz;
+    out.my <- ry +. incrsum (k + 4) s x_ix y_iy z_jz;
+    out.mz <- rz +. incrsum (k + 8) s x_ix y_iy z_jz;
+    0.
+  end
+  else
+    let sum = incrsum (r_index h00 iz) (txty *. tz) x_ix y_iy z_iz in
+    let sum = sum +. incrsum (r_index h10 iz) (sxty *. tz) x_jx y_iy z_iz in
+    let sum = sum +. incrsum (r_index h01 iz) (txsy *. tz) x_ix y_jy z_iz in
+    let sum = sum +. incrsum (r_index h11 iz) (sxsy *. tz) x_jx y_jy z_iz in
+    let sum = sum +. incrsum (r_index h00 iz1) (txty *. sz) x_ix y_iy z_jz in
+    let sum = sum +. incrsum (r_index h10 iz1) (sxty *. sz) x_jx y_iy z_jz in
+    let sum = sum +. incrsum (r_index h01 iz1) (txsy *. sz) x_ix y_jy z_jz in
+    sum +. incrsum (r_index h11 iz1) (sxsy *. sz) x_jx y_jy z_jz
+
+(* where the scalar sum's cell writes nothing *)
+let unused = Vec3.m ()
+
+(* the sum over the eight corners, before the generator's scaling *)
+let[@inline] lattice_sum x y z = lattice_cell false x y z unused
 
 (* ---- Perlin's solid noise (generator 3), its tables made as POV-Ray
    makes them: 2048 gradients drawn in the cube [-1, 1) (steps of 1/2048)
@@ -364,47 +404,8 @@ let[@inline] noise (gen : generator) x y z =
   in
   if v < 0. then 0. else if v > 1. then 1. else v
 
-(* [dnoise x y z out]: POV-Ray's DNoise (the same for every generator):
-   three lattice noises from the table's entries 4 and 8 further on *)
-let[@inline] dnoise x y z (out : Vec3.m) =
-  let tmp = lattice x in
-  let ix = (tmp + 10000) land 0xFFF and x_ix = x -. float_of_int tmp in
-  let tmp = lattice y in
-  let iy = (tmp + 10000) land 0xFFF and y_iy = y -. float_of_int tmp in
-  let tmp = lattice z in
-  let iz = (tmp + 10000) land 0xFFF and z_iz = z -. float_of_int tmp in
-  let x_jx = x_ix -. 1. and y_jy = y_iy -. 1. and z_jz = z_iz -. 1. in
-  let sx = scurve x_ix and sy = scurve y_iy and sz = scurve z_iz in
-  let tx = 1. -. sx and ty = 1. -. sy and tz = 1. -. sz in
-  let txty = tx *. ty and sxty = sx *. ty and txsy = tx *. sy and sxsy = sx *. sy in
-  let h00 = hash2 ix iy and h10 = hash2 (ix + 1) iy in
-  let h01 = hash2 ix (iy + 1) and h11 = hash2 (ix + 1) (iy + 1) in
-  let iz1 = iz + 1 in
-  (* POV-Ray's order of the corners *)
-  let k = r_index h00 iz and s = txty *. tz in
-  let rx = incrsum k s x_ix y_iy z_iz and ry = incrsum (k + 4) s x_ix y_iy z_iz and rz = incrsum (k + 8) s x_ix y_iy z_iz in
-  let k = r_index h10 iz and s = sxty *. tz in
-  let rx = rx +. incrsum k s x_jx y_iy z_iz and ry = ry +. incrsum (k + 4) s x_jx y_iy z_iz
-  and rz = rz +. incrsum (k + 8) s x_jx y_iy z_iz in
-  let k = r_index h11 iz and s = sxsy *. tz in
-  let rx = rx +. incrsum k s x_jx y_jy z_iz and ry = ry +. incrsum (k + 4) s x_jx y_jy z_iz
-  and rz = rz +. incrsum (k + 8) s x_jx y_jy z_iz in
-  let k = r_index h01 iz and s = txsy *. tz in
-  let rx = rx +. incrsum k s x_ix y_jy z_iz and ry = ry +. incrsum (k + 4) s x_ix y_jy z_iz
-  and rz = rz +. incrsum (k + 8) s x_ix y_jy z_iz in
-  let k = r_index h01 iz1 and s = txsy *. sz in
-  let rx = rx +. incrsum k s x_ix y_jy z_jz and ry = ry +. incrsum (k + 4) s x_ix y_jy z_jz
-  and rz = rz +. incrsum (k + 8) s x_ix y_jy z_jz in
-  let k = r_index h11 iz1 and s = sxsy *. sz in
-  let rx = rx +. incrsum k s x_jx y_jy z_jz and ry = ry +. incrsum (k + 4) s x_jx y_jy z_jz
-  and rz = rz +. incrsum (k + 8) s x_jx y_jy z_jz in
-  let k = r_index h10 iz1 and s = sxty *. sz in
-  let rx = rx +. incrsum k s x_jx y_iy z_jz and ry = ry +. incrsum (k + 4) s x_jx y_iy z_jz
-  and rz = rz +. incrsum (k + 8) s x_jx y_iy z_jz in
-  let k = r_index h00 iz1 and s = txty *. sz in
-  out.mx <- rx +. incrsum k s x_ix y_iy z_jz;
-  out.my <- ry +. incrsum (k + 4) s x_ix y_iy z_jz;
-  out.mz <- rz +. incrsum (k + 8) s x_ix y_iy z_jz
+(* [dnoise x y z out]: POV-Ray's DNoise (the same for every generator) *)
+let[@inline] dnoise x y z (out : Vec3.m) = ignore (lattice_cell true x y z out)
 
 (* one octave of POV-Ray's Turbulence: the original generator's noise as
    it is, the others' stretched to 2 n - 0.5 *)
