@@ -10,7 +10,8 @@ val index : int -> int -> int -> int
     (coordinates taken mod 4096, negatives included). *)
 
 val values : Float.Array.t
-(** The 4096 values, by slot. *)
+(** The values by slot (4098 of them: POV-Ray's crackle and facets
+    points take the three from a cube's slot on, {!Pattern.feature_point}). *)
 
 val value : float -> float -> float -> float
 (** The pattern at a point: the value of the cube [floor (c + 1e-10)]

@@ -6,28 +6,26 @@ type t = { kind : kind; distance : float; color : Color.rgbft; turbulence : turb
 
 let missed = 2e10
 
-(* POV-Ray's scalar turbulence: noise in [0, 1] summed over octaves, each
-   read lambda times farther out and weighted omega times less *)
-let[@inline] noise_sum (u : turbulence) x y z =
-  let v = ref (Noise.noise3 x y z) and l = ref u.lambda and o = ref u.omega in
-  for _ = 2 to u.octaves do
-    v := !v +. (!o *. Noise.noise3 (!l *. x) (!l *. y) (!l *. z));
-    l := !l *. u.lambda;
-    o := !o *. u.omega
-  done;
-  !v
-
-(* [width] thinned by the turbulence at the point [at] along the ray
-   (scaled by the turbulence's amount): the farther, the less *)
-let[@inline] thinned f (o : Vec3.m) (d : Vec3.m) width at =
+(* [width] thinned by the turbulence (POV-Ray 3.7's ComputeConstantFog
+   and ComputeGroundFog, in their order of operations): the Turbulence
+   (the scene's noise generator) at the point halfway along the ray
+   ([o] + width/2 [d] for a constant fog, the mean of the two ends for a
+   ground fog), scaled per axis by the amount, times turb_depth, at most
+   1, weighs the fog's own transmittance over [width] *)
+let[@inline] thinned f ground (o : Vec3.m) (d : Vec3.m) width =
   match f.turbulence with
   | None -> width
   | Some u ->
-      let a = u.amount in
-      let x = (o.mx +. (at *. d.mx)) *. a.x and y = (o.my +. (at *. d.my)) *. a.y
-      and z = (o.mz +. (at *. d.mz)) *. a.z in
+      let a = u.amount and h = width /. 2. in
+      let x = if ground then (o.mx +. (o.mx +. (d.mx *. width))) *. 0.5 else o.mx +. (h *. d.mx) in
+      let y = if ground then (o.my +. (o.my +. (d.my *. width))) *. 0.5 else o.my +. (h *. d.my) in
+      let z = if ground then (o.mz +. (o.mz +. (d.mz *. width))) *. 0.5 else o.mz +. (h *. d.mz) in
       let k = Float.exp (-.width /. f.distance) in
-      width *. (1. -. (k *. Float.min 1. (noise_sum u x y z *. u.depth)))
+      let t =
+        Noise.turbulence !Pattern.scene_noise_generator ~octaves:u.octaves ~omega:u.omega ~lambda:u.lambda (x *. a.x)
+          (y *. a.y) (z *. a.z)
+      in
+      width *. (1. -. (k *. Float.min 1. (t *. u.depth)))
 
 (* the mean density of a ground fog between the altitudes [s] and [e]
    (in units of [alt] above [offset]): 1 below 0, 1 / (1 + h^2) above,
@@ -42,13 +40,13 @@ let[@inline] mean_density s e =
 let[@inline] transmittance f (o : Vec3.m) (d : Vec3.m) width =
   match f.kind with
   | Constant ->
-      let w = thinned f o d width (width /. 2.) in
+      let w = thinned f false o d width in
       Float.exp (-.w /. f.distance)
   | Ground { offset; alt; up } ->
       let y1 = (o.mx *. up.x) +. (o.my *. up.y) +. (o.mz *. up.z) in
       let y2 = y1 +. (width *. ((d.mx *. up.x) +. (d.my *. up.y) +. (d.mz *. up.z))) in
       let density = mean_density ((y1 -. offset) /. alt) ((y2 -. offset) /. alt) in
-      let w = thinned f o d width (width /. 2.) in
+      let w = thinned f true o d width in
       Float.exp (-.w *. density /. f.distance)
 
 (* per domain: the ray's unit direction, and the fogs' running product

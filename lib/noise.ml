@@ -413,7 +413,7 @@ let[@inline] octave gen x y z = if gen <= 1 then noise gen x y z else (2.0 *. no
 
 (* [turbulence gen ~octaves ~omega ~lambda x y z]: POV-Ray's Turbulence
    (its first octave clamped to [0, 1] for generators 2 and 3) *)
-let turbulence gen ~octaves ~omega ~lambda x y z =
+let[@inline] turbulence gen ~octaves ~omega ~lambda x y z =
   let v = octave gen x y z in
   let v = if gen <= 1 then v else if v < 0. then 0. else if v > 1. then 1. else v in
   let value = ref v and l = ref lambda and o = ref omega in

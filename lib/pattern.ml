@@ -167,6 +167,16 @@ let scene_noise_generator = ref 2
 let[@inline] generator t = if t.noise_gen = 0 then !scene_noise_generator else t.noise_gen
 
 let default_turbulence amount = { amount; octaves = 6; omega = 0.5; lambda = 2. }
+
+(* POV-Ray keeps a turbulence's omega and lambda (and agate_turb, a
+   fog's turb_depth) in single precision (SNGL): the value it computes
+   with, which the parser stores *)
+let single x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* the turbulence agate reads its octaves, omega and lambda from: its
+   classic turbulence, else POV-Ray's default one (agate always has one,
+   of amount 0) *)
+let agate_turbulence = default_turbulence Vec3.zero
 let is_block = function Checker | Hexagon | Brick _ | Object _ | Material _ -> true | _ -> false
 let block_count = function Hexagon -> 3 | Material { count; _ } -> count | _ -> 2
 let eps = 1e-10
@@ -230,63 +240,141 @@ let sources =
       let f k = Noise.snoise (Vec3.make (float_of_int i +. 0.37) (float_of_int k +. 0.71) 0.53) in
       Vec3.scale 2. (Vec3.make (f 1) (f 2) (f 3)))
 
-let clamp01 x = Float.min 1. (Float.max 0. x)
-
-(* One feature point per unit cell, placed by hashing the cell with the
-   noise (camlray's own cellular noise: POV-Ray's points differ):
-   coordinate [k] of the point for cell (cx, cy, cz), as floats. *)
-let[@inline] feature_h cx cy cz k = 0.5 +. (0.5 *. Noise.snoise3 (cx +. 0.31 +. k) (cy +. 0.47) (cz +. 0.73 -. k))
+(* POV-Ray's crackle and facets points (IntPickInCube, PickInCube): one
+   per unit cube, at the cube's corner plus three of POV-Ray's pattern
+   random numbers (its RandomDoubleSequence, the same table as cells':
+   {!Cells.values}), taken from the slot the cube hashes to and the two
+   after it *)
+let[@inline] pick_rand k = Float.Array.unsafe_get Cells.values k
 
 (* the whole point, for the facets normal (inlined: a call would box the
-   floats) *)
+   floats): the cube's corner (cx, cy, cz) are whole numbers *)
 let[@inline] feature_point cx cy cz (out : Vec3.m) =
-  Vec3.set out (cx +. feature_h cx cy cz 0.) (cy +. feature_h cx cy cz 17.3) (cz +. feature_h cx cy cz 41.9)
+  let seed = Cells.index (int_of_float cx) (int_of_float cy) (int_of_float cz) in
+  Vec3.set out (cx +. pick_rand seed) (cy +. pick_rand (seed + 1)) (cz +. pick_rand (seed + 2))
 
 (* the value in a record of its own, flat: a float field of a record with
    other fields is boxed, and each store would allocate *)
 type result = Tiling.result = { mutable v : float }
 
-(* crackle: by default the distance to the second nearest feature point
-   minus the nearest (POV-Ray's form <-1, 1, 0>); else form . (F1, F2,
-   F3) + offset with distances in the metric's norm, or with [solid] the
-   nearest point's own value (camlray's noise at it); into [r.v]: floats
-   passed in or returned would be boxed (a crackle normal samples it four
-   times a point) *)
-let crackle_into (c : crackle) (p : Vec3.m) (r : result) =
-  let x = p.mx and y = p.my and z = p.mz in
-  let fx = int_of_float (Float.floor x) and fy = int_of_float (Float.floor y) and fz = int_of_float (Float.floor z) in
-  let d1 = ref infinity and d2 = ref infinity and d3 = ref infinity in
-  let n1x = ref 0. and n1y = ref 0. and n1z = ref 0. in
-  let m = c.metric in
-  for i = -1 to 1 do
-    for j = -1 to 1 do
-      for k = -1 to 1 do
-        let cx = float_of_int (fx + i) and cy = float_of_int (fy + j) and cz = float_of_int (fz + k) in
-        let dx = x -. (cx +. feature_h cx cy cz 0.)
-        and dy = y -. (cy +. feature_h cx cy cz 17.3)
-        and dz = z -. (cz +. feature_h cx cy cz 41.9) in
-        let d =
-          if m = 2. then Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))
-          else
-            Float.pow
-              (Float.pow (Float.abs dx) m +. Float.pow (Float.abs dy) m +. Float.pow (Float.abs dz) m)
-              (1. /. m)
-        in
-        if d < !d1 then begin
-          d3 := !d2;
-          d2 := !d1;
-          d1 := d;
-          n1x := cx; n1y := cy; n1z := cz
-        end
-        else if d < !d2 then (d3 := !d2; d2 := d)
-        else if d < !d3 then d3 := d
+(* The 81 cubes crackle looks in, as offsets from the point's own (x, y,
+   z three apiece), in POV-Ray's order: every cube within two in each
+   axis, at most one axis two away *)
+let crackle_cubes =
+  let l = ref [] in
+  for ax = -2 to 2 do
+    for ay = -2 to 2 do
+      for az = -2 to 2 do
+        let two a = if abs a = 2 then 1 else 0 in
+        if two ax + two ay + two az <= 1 then l := az :: ay :: ax :: !l
       done
     done
   done;
-  r.v <-
-    (if c.solid then 0.5 +. (0.5 *. Noise.snoise3 (!n1x +. 0.13) (!n1y +. 0.57) (!n1z +. 0.91))
-     else if c == crackle_default || c = crackle_default then clamp01 (!d2 -. !d1)
-     else clamp01 ((c.form.x *. !d1) +. (c.form.y *. !d2) +. (c.form.z *. !d3) +. c.offset))
+  Array.of_list (List.rev !l)
+
+(* one cube's point and its "distance" to (x, y, z) (POV-Ray's sum:
+   squared for metric 2, |dx| + |dy| + |dz| for 1, else the sum of
+   |d|^metric), its cube's corner in [cx] [cy] [cz] *)
+let[@inline] crackle_sum square unity m cx cy cz x y z =
+  let seed = Cells.index cx cy cz in
+  let dx = float_of_int cx +. pick_rand seed -. x
+  and dy = float_of_int cy +. pick_rand (seed + 1) -. y
+  and dz = float_of_int cz +. pick_rand (seed + 2) -. z in
+  if square then (dx *. dx) +. (dy *. dy) +. (dz *. dz)
+  else if unity then Float.abs dx +. Float.abs dy +. Float.abs dz
+  else Float.pow (Float.abs dx) m +. Float.pow (Float.abs dy) m +. Float.pow (Float.abs dz) m
+
+(* the sum of the [i]th of the 81 cubes around the cube ([fx], [fy], [fz]) *)
+let[@inline] crackle_cube square unity m fx fy fz i x y z =
+  let k = 3 * i in
+  crackle_sum square unity m
+    (fx + Array.unsafe_get crackle_cubes k)
+    (fy + Array.unsafe_get crackle_cubes (k + 1))
+    (fz + Array.unsafe_get crackle_cubes (k + 2))
+    x y z
+
+(* POV-Ray 3.7's crackle (pattern.cpp), into [r.v]: the three least sums
+   over the 81 cubes' points (sorted as POV-Ray sorts them, so that ties
+   go its way), the offset added to each in the metric's power, then
+   form . (F1, F2, F3) with F the sums taken back to distances, or with
+   [solid] the noise at the nearest point; clipped to [0, 1]. Floats
+   passed in or returned would be boxed (a crackle normal samples it four
+   times a point) *)
+let crackle_into (c : crackle) gen (p : Vec3.m) (r : result) =
+  let x = p.mx and y = p.my and z = p.mz in
+  let fx = int_of_float (Float.floor (x -. 1e-10))
+  and fy = int_of_float (Float.floor (y -. 1e-10))
+  and fz = int_of_float (Float.floor (z -. 1e-10)) in
+  let m = c.metric in
+  let square = m = 2. and unity = m = 1. in
+  let m1 = ref (crackle_cube square unity m fx fy fz 0 x y z)
+  and m2 = ref (crackle_cube square unity m fx fy fz 1 x y z)
+  and m3 = ref (crackle_cube square unity m fx fy fz 2 x y z)
+  and best = ref 0 in
+  if !m2 < !m1 then begin
+    let t = !m1 in
+    m1 := !m2;
+    m2 := t;
+    best := 1
+  end;
+  if !m3 < !m1 then begin
+    let t = !m1 in
+    m1 := !m3;
+    m3 := t;
+    best := 2
+  end;
+  if !m3 < !m2 then begin
+    let t = !m2 in
+    m2 := !m3;
+    m3 := t
+  end;
+  for i = 3 to 80 do
+    let s = crackle_cube square unity m fx fy fz i x y z in
+    if s < !m1 then begin
+      m3 := !m2;
+      m2 := !m1;
+      m1 := s;
+      best := i
+    end
+    else if s < !m2 then begin
+      m3 := !m2;
+      m2 := s
+    end
+    else if s < !m3 then m3 := s
+  done;
+  let o = c.offset in
+  if o <> 0. then begin
+    let k = if square then o *. o else if unity then o else Float.pow o m in
+    m1 := !m1 +. k;
+    m2 := !m2 +. k;
+    m3 := !m3 +. k
+  end;
+  let f = c.form in
+  let v =
+    if c.solid then begin
+      let b = 3 * !best in
+      let cx = fx + Array.unsafe_get crackle_cubes b
+      and cy = fy + Array.unsafe_get crackle_cubes (b + 1)
+      and cz = fz + Array.unsafe_get crackle_cubes (b + 2) in
+      let seed = Cells.index cx cy cz in
+      Noise.noise gen
+        (float_of_int cx +. pick_rand seed)
+        (float_of_int cy +. pick_rand (seed + 1))
+        (float_of_int cz +. pick_rand (seed + 2))
+    end
+    else if square then (f.x *. Float.sqrt !m1) +. (f.y *. Float.sqrt !m2) +. (f.z *. Float.sqrt !m3)
+    else if unity then (f.x *. !m1) +. (f.y *. !m2) +. (f.z *. !m3)
+    else
+      let e = 1. /. m in
+      (f.x *. Float.pow !m1 e) +. (f.y *. Float.pow !m2 e) +. (f.z *. Float.pow !m3 e)
+  in
+  r.v <- Float.max (Float.min v 1.) 0.
+
+(* POV-Ray's cycloidal: the sine of [v] in turns, its fraction taken
+   times 50000 and back as POV-Ray writes it (texture.cpp) *)
+let[@inline] cycloidal v =
+  if v >= 0. then Float.sin ((v -. Float.floor v) *. 50000. /. 50000. *. two_pi)
+  else 0. -. Float.sin ((0. -. (v +. Float.floor (0. -. v))) *. 50000. /. 50000. *. two_pi)
 
 (* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
 let[@inline] tri v =
@@ -506,7 +594,8 @@ let[@inline never] magnet_into f formula ~julia ~cr ~ci (w : work) =
 
 (* The raw pattern at [w.p] into [w.r.v]: each case stores its value
    itself (a value joined from the cases would be boxed). *)
-let raw_m kind (w : work) =
+let raw_m t (w : work) =
+  let kind = t.kind in
   let x = w.p.mx and y = w.p.my and z = w.p.mz in
   match kind with
   | Checker -> w.r.v <- checker3 x y z
@@ -537,22 +626,55 @@ let raw_m kind (w : work) =
   | Cylindrical ->
       let r = Float.sqrt ((x *. x) +. (z *. z)) in
       w.r.v <- (if r > 1. then 0. else 1. -. r)
-  | Wood -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y))
-  | Marble -> w.r.v <- x
+  | Wood -> (
+      (* POV-Ray's: with a classic turbulence, x and y each moved by the
+         cycloidal of (the coordinate plus DTurbulence's) times the
+         amount's component *)
+      match t.turbulence with
+      | None -> w.r.v <- Float.sqrt ((x *. x) +. (y *. y) +. 0.)
+      | Some tb ->
+          Noise.dturbulence ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda w.p w.d;
+          let px = cycloidal ((x +. w.d.mx) *. tb.amount.x) +. x
+          and py = cycloidal ((y +. w.d.my) *. tb.amount.y) +. y in
+          w.r.v <- Float.sqrt ((px *. px) +. (py *. py) +. 0.))
+  | Marble -> (
+      (* POV-Ray's: x plus the amount's x times the scalar Turbulence *)
+      match t.turbulence with
+      | None -> w.r.v <- x
+      | Some tb ->
+          w.r.v <-
+            x
+            +. tb.amount.x
+               *. Noise.turbulence (generator t) ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda x y z)
   | Leopard ->
       let s = (Float.sin x +. Float.sin y +. Float.sin z) /. 3. in
       w.r.v <- s *. s
-  | Bozo | Spotted | Bumps -> w.r.v <- Noise.noise3 x y z
+  | Bozo | Spotted | Bumps -> w.r.v <- Noise.noise (generator t) x y z
   | Dents ->
-      let n = Noise.noise3 x y z in
+      let n = Noise.noise (generator t) x y z in
       w.r.v <- n *. n *. n
   | Granite ->
-      (* affine-matched to the mean and spread of POV-Ray's granite values *)
-      w.r.v <- clamp01 (0.015 +. (1.726 *. 0.5 *. Noise.fractal3 6 (4. *. x) (4. *. y) (4. *. z)))
+      (* POV-Ray's: six octaves of |0.5 - noise| at 4 p (the original
+         generator), of |1 - 2 noise| clipped to 0.5 (the others), each
+         over its frequency *)
+      let gen = generator t in
+      let acc = ref 0. and freq = ref 1. in
+      for _ = 0 to 5 do
+        let f = !freq in
+        let n = Noise.noise gen (x *. 4. *. f) (y *. 4. *. f) (z *. 4. *. f) in
+        let v = if gen <= 1 then Float.abs (0.5 -. n) else Float.min 0.5 (Float.abs (1. -. (2. *. n))) in
+        acc := !acc +. (v /. f);
+        freq := f *. 2.
+      done;
+      w.r.v <- !acc
   | Agate turb ->
-      let t = Noise.fractal3 7 x y z in
-      let v = 0.5 +. (0.5 *. Float.sin (two_pi *. (z +. (turb *. t)))) in
-      w.r.v <- Float.pow v 0.77
+      (* POV-Ray's: agate_turb (single precision) times the Turbulence of
+         its classic turbulence's octaves, omega and lambda, in the
+         cycloidal of 1.3 turb + 1.1 z, to the power 0.77 *)
+      let tb = match t.turbulence with Some tb -> tb | None -> agate_turbulence in
+      let tv = turb *. Noise.turbulence (generator t) ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda x y z in
+      let v = 0.5 *. (cycloidal ((1.3 *. tv) +. (1.1 *. z)) +. 1.) in
+      w.r.v <- (if v < 0. then 0. else Float.pow (Float.min 1. v) 0.77)
   | Ripples | Waves ->
       let ripples = kind = Ripples in
       let acc = ref 0. in
@@ -564,8 +686,23 @@ let raw_m kind (w : work) =
         acc := !acc +. (0.5 +. (0.5 *. wave))
       done;
       w.r.v <- !acc /. float_of_int (Array.length sources)
-  | Crackle c -> crackle_into c w.p w.r
-  | Wrinkles -> w.r.v <- clamp01 (0.165 +. (1.584 *. 0.5 *. Noise.fractal3 10 x y z))
+  | Crackle c -> crackle_into c (generator t) w.p w.r
+  | Wrinkles ->
+      (* POV-Ray's: ten octaves of noise (the original generator's as it
+         is, the others' 2 n - 0.5 clipped to [0, 1]), halved *)
+      let gen = generator t in
+      let n = Noise.noise gen x y z in
+      let acc = ref (if gen <= 1 then n else Float.min (Float.max ((n *. 2.) -. 0.5) 0.) 1.) in
+      let l = ref 2. and o = ref 0.5 in
+      for _ = 1 to 9 do
+        let li = !l in
+        let n = Noise.noise gen (x *. li) (y *. li) (z *. li) in
+        let n = if gen <= 1 then n else Float.min (Float.max ((n *. 2.) -. 0.5) 0.) 1. in
+        acc := !acc +. (!o *. n);
+        l := li *. 2.;
+        o := !o *. 0.5
+      done;
+      w.r.v <- !acc /. 2.
   | Spiral1 arms -> w.r.v <- spiral3 arms w.r.v x y z
   | Spiral2 arms -> w.r.v <- tri (spiral3 arms w.r.v x y z) +. tri (Float.sqrt ((x *. x) +. (y *. y)))
   | Quilted { c0; c1 } -> w.r.v <- quilted3 c0 c1 x y z
@@ -626,16 +763,10 @@ let shape_into (w : work) wave v =
   | Cubic -> w.r.v <- v *. v *. (3. -. (2. *. v))
   | Poly e -> w.r.v <- Float.pow v e
 
-(* POV-Ray's scalar turbulence, in camlray's noise: sum over the octaves
-   of omega^i noise(lambda^i p), in [0, ~2] *)
-let[@inline] scalar_turbulence tb (p : Vec3.m) =
-  let acc = ref 0. and o = ref 1. and l = ref 1. in
-  for _ = 1 to tb.octaves do
-    acc := !acc +. (!o *. Noise.noise3 (!l *. p.mx) (!l *. p.my) (!l *. p.mz));
-    o := !o *. tb.omega;
-    l := !l *. tb.lambda
-  done;
-  !acc
+(* POV-Ray's scalar Turbulence of a classic turbulence at [p], in the
+   pattern's noise generator *)
+let[@inline] scalar_turbulence t tb (p : Vec3.m) =
+  Noise.turbulence (generator t) ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda p.mx p.my p.mz
 
 (* The pattern at [q] into [w.r.v], allocating nothing: turbulence warp,
    raw pattern, then frequency, phase and wave *)
@@ -645,22 +776,12 @@ let[@inline] component (p : Vec3.m) axis = if axis = 0 then p.mx else if axis = 
 
 let set_component (p : Vec3.m) axis v = if axis = 0 then p.mx <- v else if axis = 1 then p.my <- v else p.mz <- v
 
+(* POV-Ray's turbulence warp: the point moved by DTurbulence times the
+   amount, per axis *)
 let add_turbulence tb (p : Vec3.m) (d : Vec3.m) =
-  Noise.turbulence_m ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda p d;
+  Noise.dturbulence ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda p d;
   let a = tb.amount in
   Vec3.set p (p.mx +. (d.mx *. a.x)) (p.my +. (d.my *. a.y)) (p.mz +. (d.mz *. a.z))
-
-(* A black hole's centre, one axis: in a repeated axis, [radius] from
-   the corner of the point's cell (moved by the jitter), and the point
-   taken into that cell *)
-let hole_axis (p : Vec3.m) (c : Vec3.m) axis centre repeat radius jitter =
-  let x = component p axis in
-  if repeat > 0. then begin
-    let cell = Float.floor (x /. repeat) in
-    set_component p axis (x -. (cell *. repeat));
-    set_component c axis (radius +. jitter)
-  end
-  else set_component c axis centre
 
 (* The mapping warps' angle about y from +x, towards +z, in turns [0, 1)
    (acos as POV-Ray does: its values agree to the last bit) *)
@@ -729,32 +850,34 @@ let apply_warp (wp : warp) (p : Vec3.m) (d : Vec3.m) =
       end;
       Vec3.set p (p.mx +. (cell *. offset.x)) (p.my +. (cell *. offset.y)) (p.mz +. (cell *. offset.z))
   | Black_hole { center; radius; strength; falloff; inverse; repeat; jitter } ->
-      (* [d] holds the point in its cell, then the offset from the hole *)
-      let ox = p.mx and oy = p.my and oz = p.mz in
-      Vec3.set d ox oy oz;
-      let c = p in
-      (* the cell's jitter: camlray's noise at the cell's corner *)
-      let jx, jy, jz =
-        if jitter.x = 0. && jitter.y = 0. && jitter.z = 0. then (0., 0., 0.)
-        else
-          let cell r x = if r > 0. then Float.floor (x /. r) else 0. in
-          let kx = cell repeat.x ox and ky = cell repeat.y oy and kz = cell repeat.z oz in
-          ( jitter.x *. (Noise.noise3 (kx +. 0.5) (ky +. 0.5) (kz +. 0.5) -. 0.5),
-            jitter.y *. (Noise.noise3 (kx +. 10.5) (ky +. 0.5) (kz +. 0.5) -. 0.5),
-            jitter.z *. (Noise.noise3 (kx +. 0.5) (ky +. 10.5) (kz +. 0.5) -. 0.5) )
-      in
-      hole_axis d c 0 center.x repeat.x radius jx;
-      hole_axis d c 1 center.y repeat.y radius jy;
-      hole_axis d c 2 center.z repeat.z radius jz;
-      let dx = d.mx -. c.mx and dy = d.my -. c.my and dz = d.mz -. c.mz in
+      (* POV-Ray's (warps.cpp), in its order of operations: a repeated
+         hole's centre moved into the point's cell (the cell's numbers
+         by floor), first by its turbulence: POV-Ray's warp random
+         numbers (the pattern table, {!Cells.values}) from the slot the
+         cell hashes to, times the turbulence; the point pushed from the
+         centre (pulled when inverse) by strength ((radius - l) /
+         radius)^falloff of its offset, at most all of it *)
+      let x = p.mx and y = p.my and z = p.mz in
+      let rep = repeat.x > 0. || repeat.y > 0. || repeat.z > 0. in
+      let bx = if rep && repeat.x >= 1e-10 then int_of_float (Float.floor (x /. repeat.x)) else 0
+      and by = if rep && repeat.y >= 1e-10 then int_of_float (Float.floor (y /. repeat.y)) else 0
+      and bz = if rep && repeat.z >= 1e-10 then int_of_float (Float.floor (z /. repeat.z)) else 0 in
+      let uncertain = rep && not (jitter.x = 0. && jitter.y = 0. && jitter.z = 0.) in
+      let seed = if uncertain then Cells.index bx by bz else 0 in
+      let cx = if uncertain then center.x +. (pick_rand seed *. jitter.x) else center.x
+      and cy = if uncertain then center.y +. (pick_rand (seed + 1) *. jitter.y) else center.y
+      and cz = if uncertain then center.z +. (pick_rand (seed + 2) *. jitter.z) else center.z in
+      let cx = if rep then cx +. (repeat.x *. float_of_int bx) else cx
+      and cy = if rep then cy +. (repeat.y *. float_of_int by) else cy
+      and cz = if rep then cz +. (repeat.z *. float_of_int bz) else cz in
+      let dx = x -. cx and dy = y -. cy and dz = z -. cz in
       let l = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
       if l < radius then begin
-        (* clipped at 1, as POV-Ray 3.7 (warp.cpp): a point moves at most to the hole *)
-        let k = Float.min 1. (strength *. Float.pow (1. -. (l /. radius)) falloff) in
+        let k = Float.pow ((radius -. l) /. radius) falloff *. strength in
+        let k = if k > 1. then 1. else k in
         let k = if inverse then -.k else k in
-        Vec3.set p (ox +. (k *. dx)) (oy +. (k *. dy)) (oz +. (k *. dz))
+        Vec3.set p (x +. (dx *. k)) (y +. (dy *. k)) (z +. (dz *. k))
       end
-      else Vec3.set p ox oy oz
 
 let warped_m t (q : Vec3.m) (w : work) =
   Vec3.set w.p q.mx q.my q.mz;
@@ -770,8 +893,9 @@ let warped_m t (q : Vec3.m) (w : work) =
   match t.turbulence with
   | None -> ()
   | Some tb ->
-      if own_turbulence t then Vec3.set w.e w.p.mx w.p.my w.p.mz;
-      add_turbulence tb w.p w.d
+      (* marble and wood read their turbulence themselves (POV-Ray's
+         Warp_EPoint skips their classic turbulence) *)
+      if own_turbulence t then Vec3.set w.e w.p.mx w.p.my w.p.mz else add_turbulence tb w.p w.d
 
 let warp_in_place t (q : Vec3.m) (w : work) =
   if Array.length t.warps > 0 || t.turbulence <> None then begin
@@ -783,9 +907,9 @@ let eval_warped t (w : work) =
   (* the spirals also add turbulence to their value, as POV-Ray 3.7 does
      (on top of the warp): read by [raw_m] from [w.r.v] *)
   (match (t.kind, t.turbulence) with
-  | (Spiral1 _ | Spiral2 _), Some tb -> w.r.v <- tb.amount.x *. scalar_turbulence tb w.p
+  | (Spiral1 _ | Spiral2 _), Some tb -> w.r.v <- tb.amount.x *. scalar_turbulence t tb w.p
   | _ -> w.r.v <- 0.);
-  raw_m t.kind w;
+  raw_m t w;
   if not (is_block t.kind) then begin
     if t.frequency <> 0. then begin
       let r = Float.rem ((w.r.v *. t.frequency) +. t.phase) 1.00001 in

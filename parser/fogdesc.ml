@@ -37,14 +37,15 @@ let offset x d = { d with offset = x }
 let alt x d = { d with alt = x }
 let up v d = { d with up = v }
 let turbulence v d = { d with turb = Some v }
-let turb_depth x d = { d with depth = x }
+(* POV-Ray keeps turb_depth, omega and lambda in single precision *)
+let turb_depth x d = { d with depth = Pattern.single x }
 
 let octaves loc n d =
   if n < 1 then Diag.error loc "octaves must be at least 1, found %d" n;
   { d with octaves = n }
 
-let omega x d = { d with omega = x }
-let lambda x d = { d with lambda = x }
+let omega x d = { d with omega = Pattern.single x }
+let lambda x d = { d with lambda = Pattern.single x }
 let transform t d = { d with xf = Transform.then_ d.xf t }
 
 let fog loc d : Fog.t =

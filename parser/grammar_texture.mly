@@ -467,15 +467,12 @@ image_file_kind:
 
 %public pattern_mod:
   | TURBULENCE e = param { Texdesc.turbulence (v3 $loc(e) e) }
+  (* as POV-Ray's Check_Turb: octaves, omega or lambda before any
+     turbulence make one of amount 0 (agate reads its parameters) *)
   | OCTAVES e = param { let n = Value.to_int (loc $loc(e)) e in
-      Texdesc.pattern_mod (fun p -> match p.turbulence with
-        | Some tb -> { p with turbulence = Some { tb with octaves = max 1 (min 10 n) } } | None -> p) }
-  | OMEGA e = param { let x = fl $loc(e) e in
-      Texdesc.pattern_mod (fun p -> match p.turbulence with
-        | Some tb -> { p with turbulence = Some { tb with omega = x } } | None -> p) }
-  | LAMBDA e = param { let x = fl $loc(e) e in
-      Texdesc.pattern_mod (fun p -> match p.turbulence with
-        | Some tb -> { p with turbulence = Some { tb with lambda = x } } | None -> p) }
+      Texdesc.turb_mod (fun tb -> { tb with octaves = max 1 (min 10 n) }) }
+  | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with omega = x }) }
+  | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with lambda = x }) }
   | FREQUENCY e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
   | PHASE e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
   | RAMP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Ramp }) }
@@ -510,7 +507,7 @@ image_file_kind:
   | SOLID { Texdesc.kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with solid = true } | k -> k) }
   | MORTAR e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
-  | AGATE_TURB e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
+  | AGATE_TURB e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.kind_mod (function
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
   | WARP LBRACE k = warp_body RBRACE { Texdesc.warp (loc $loc) k }
   | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
@@ -919,16 +916,18 @@ hole_item:
   | STRENGTH e = param { let x = fl $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with strength = x } | k -> k }
   | FALLOFF e = param { let x = fl $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with falloff = x } | k -> k }
   | INVERSE { function Pattern.Black_hole h -> Pattern.Black_hole { h with inverse = not h.inverse } | k -> k }
-  | REPEAT e = param { let v = v3 $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with repeat = v } | k -> k }
-  | TURBULENCE e = param { let v = v3 $loc(e) e in function Pattern.Black_hole h -> Pattern.Black_hole { h with jitter = v } | k -> k }
+  | REPEAT e = param { let v = v3 $loc(e) e in let l = loc $loc in
+      function Pattern.Black_hole h -> Texdesc.check_black_hole l (Pattern.Black_hole { h with repeat = v }) | k -> k }
+  | TURBULENCE e = param { let v = v3 $loc(e) e in let l = loc $loc in
+      function Pattern.Black_hole h -> Texdesc.check_black_hole l (Pattern.Black_hole { h with jitter = v }) | k -> k }
 
 warp_turb_item:
   | OCTAVES e = param
       { let n = Value.to_int (loc $loc(e)) e in
         if n < 1 || n > 10 then Diag.error (loc $loc(e)) "octaves go from 1 to 10, found %d" n;
         fun (t : Pattern.turbulence) -> { t with octaves = n } }
-  | OMEGA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with omega = x } }
-  | LAMBDA e = param { let x = fl $loc(e) e in fun (t : Pattern.turbulence) -> { t with lambda = x } }
+  | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with omega = x } }
+  | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with lambda = x } }
 
 slope_range: COMMA lo = param COMMA hi = param { (fl $loc(lo) lo, fl $loc(hi) hi) }
 

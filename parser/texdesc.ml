@@ -94,6 +94,41 @@ let turbulence v =
       in
       { pt with turbulence = Some tb })
 
+(* a change to the pattern's classic turbulence, made (of amount 0) if
+   it has none *)
+let turb_mod f =
+  pattern_mod (fun pt ->
+      let tb = match pt.turbulence with Some tb -> tb | None -> Pattern.default_turbulence Vec3.zero in
+      { pt with turbulence = Some (f tb) })
+
+(* POV-Ray's Check_BH_Parameters, run when a black hole's repeat or
+   turbulence is read (once it repeats): on each repeated axis (its
+   component positive) the centre at least the radius from the cell's
+   corner, and the cell at least centre + radius + turbulence wide
+   (widened with POV-Ray's warning) *)
+let check_black_hole loc (k : Pattern.warp_kind) =
+  match k with
+  | Pattern.Black_hole ({ center = c; radius; repeat = r; jitter = u; _ } as h)
+    when r.x > 0. || r.y > 0. || r.z > 0. ->
+      let axis name c r u =
+        if r > 0. then begin
+          let c = if c < radius then radius else c in
+          let need = c +. radius +. u in
+          let r =
+            if r < need then begin
+              Diag.warning loc (Printf.sprintf "black hole repeat vector %s too small: increased to %g" name need);
+              need
+            end
+            else r
+          in
+          (c, r)
+        end
+        else (c, r)
+      in
+      let cx, rx = axis "x" c.x r.x u.x and cy, ry = axis "y" c.y r.y u.y and cz, rz = axis "z" c.z r.z u.z in
+      Pattern.Black_hole { h with center = Vec3.make cx cy cz; repeat = Vec3.make rx ry rz }
+  | k -> k
+
 let map es p = { p with entries = Some (Array.of_list es) }
 let kind_mod f = pattern_mod (fun pt -> { pt with kind = f pt.kind })
 

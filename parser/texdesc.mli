@@ -67,6 +67,17 @@ val normal_map : Loc.t -> (float * Normal.t) list -> modifier
 val transform : Transform.t -> modifier
 val pattern_mod : (Pattern.t -> Pattern.t) -> modifier
 val turbulence : Vec3.t -> modifier
+
+val turb_mod : (Pattern.turbulence -> Pattern.turbulence) -> modifier
+(** A change to the classic turbulence (octaves, omega, lambda), made of
+    amount 0 when there is none yet, as POV-Ray's Check_Turb. *)
+
+val check_black_hole : Loc.t -> Pattern.warp_kind -> Pattern.warp_kind
+(** POV-Ray's check of a black hole once its repeat or turbulence is
+    read: on each repeated axis the centre raised to the radius if below
+    it, the repeat widened (with a warning) to centre + radius +
+    turbulence if narrower. *)
+
 val map : (float * Pigment.t) list -> modifier
 val kind_mod : (Pattern.kind -> Pattern.kind) -> modifier
 
