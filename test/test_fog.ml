@@ -139,4 +139,30 @@ let rainbow =
       let blue = Color.rgbft 0. 0. 1. 0. 0. in
       close "two bows averaged" (0.5, 0., 0.5) (through [ bow red; bow blue ] (ray 30. 0.) Fog.missed (0.2, 0.4, 0.6)))
 
-let tests = ("fog", units @ [ parsed; rainbow ])
+(* POV-Ray 3.7's fog turbulence: noise_pov/fogturb.txt holds POV-Ray's
+   render of fogturb.pov (a constant and a ground fog with turbulence,
+   octaves, omega, lambda and turb_depth, over surfaces of ambient colour
+   only), 32x24 without anti-aliasing, in 16-bit linear values
+   (fogturb.sh); camlray's render of the same scene, pixel by pixel,
+   within the 16-bit rounding (the turbulence moves pixels by up to
+   5876 steps) *)
+let pov_turbulence =
+  Alcotest.test_case "fog turbulence: POV-Ray's render of fogturb.pov, pixel by pixel" `Quick (fun () ->
+      let dir = if Sys.file_exists "../../../test/noise_pov" then "../../../test/noise_pov" else "noise_pov" in
+      let text = In_channel.with_open_text (Filename.concat dir "fogturb.pov") In_channel.input_all in
+      let img = Helpers.render_whitted ~width:32 ~height:24 text in
+      let rows = In_channel.with_open_text (Filename.concat dir "fogturb.txt") In_channel.input_lines in
+      if List.length rows <> 32 * 24 then Alcotest.failf "%d pixels" (List.length rows);
+      List.iter
+        (fun l ->
+          match List.map int_of_string (String.split_on_char ' ' (String.trim l)) with
+          | [ x; y; r; g; b ] ->
+              let gr, gg, gb = Helpers.pixel img x y in
+              let off want got = Float.abs ((got *. 65535.) -. float_of_int want) > 0.75 in
+              if off r gr || off g gg || off b gb then
+                Alcotest.failf "pixel (%d, %d): %.1f %.1f %.1f, POV-Ray %d %d %d" x y (gr *. 65535.) (gg *. 65535.)
+                  (gb *. 65535.) r g b
+          | _ -> Alcotest.fail "bad row")
+        rows)
+
+let tests = ("fog", units @ [ parsed; rainbow; pov_turbulence ])
