@@ -34,6 +34,14 @@
 #declare F27 = function { pattern { crackle solid } };
 #declare F28 = function { pattern { crackle solid noise_generator 1 } };
 #declare F29 = function { pattern { gradient x warp { black_hole <0.3, 0.2, 0.1>, 0.8 repeat <2, 3, 2.5> turbulence <0.5, 0.3, 0.4> } } };
+#declare F30 = function { pattern { gradient y warp { black_hole <0.2, 0.1, -0.3>, 6 strength 0.7 falloff 1.5 inverse } } };
+#declare F31 = function { pattern { gradient z warp { black_hole <1.5, 0.5, 0.8>, 0.6 turbulence <0.2, 0.2, 0.2> repeat <4, 3, 3> } } };
+#declare F32 = function { pattern { bozo warp { turbulence <0.3, 0.5, 0.2> octaves 3 omega 0.7 lambda 1.7 } } };
+#declare F33 = function { pattern { crackle metric 1 offset 0.2 } };
+#declare F34 = function { pattern { crackle metric 2.5 offset 0.1 form <0.3, 0.6, -0.2> } };
+#declare F35 = function { pattern { agate octaves 3 lambda 3 } };
+#declare F36 = function { pattern { spiral1 4 turbulence 0.3 noise_generator 1 } };
+#declare F37 = function { pattern { marble warp { turbulence 0.5 } } };
 #for (i, 0, 299)
   #declare P = <rand(S)*40-20, rand(S)*40-20, rand(S)*40-20>;
   #write (F, str(P.x,0,17), " ", str(P.y,0,17), " ", str(P.z,0,17))
@@ -67,6 +75,14 @@
   #write (F, " ", str(F27(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F28(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F29(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F30(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F31(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F32(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F33(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F34(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F35(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F36(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F37(P.x,P.y,P.z),0,17))
   #write (F, "\n")
 #end
 #fclose F
