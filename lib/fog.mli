@@ -11,7 +11,7 @@ type kind =
 
 type turbulence = {
   amount : Vec3.t;  (** scales the point where the noise is read *)
-  depth : float;  (** [turb_depth] (0.5) *)
+  depth : float;  (** [turb_depth] (0.5); it, omega and lambda in single precision, as POV-Ray keeps them *)
   octaves : int;  (** 6 *)
   omega : float;  (** 0.5 *)
   lambda : float;  (** 2 *)
@@ -27,8 +27,9 @@ val missed : float
 val transmittance : t -> Vec3.m -> Vec3.m -> float -> float
 (** [transmittance f origin dir width]: the fraction of the light that
     crosses [width] units of [f] from [origin] along the unit vector
-    [dir], before the fog's transmit floor (with turbulence, camlray's
-    own noise thins it, as POV-Ray's does with its noise). *)
+    [dir], before the fog's transmit floor (with turbulence, POV-Ray's
+    Turbulence of the scene's noise generator halfway along thins it,
+    as POV-Ray 3.7 computes it). *)
 
 val apply : t list -> Vec3.m -> Vec3.m -> float -> Color.acc -> unit
 (** [apply fogs origin dir t c]: the colour [c] seen at distance [t] (in

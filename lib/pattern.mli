@@ -2,9 +2,11 @@
     [[0, 1]] (or a cell index for the block patterns checker, hexagon,
     brick) for a point in pattern space. The exact patterns (checker,
     gradient, radial, onion, wood, marble, leopard, hexagon, brick) agree
-    with POV-Ray 3.7's [function { pattern { ... } }] values; the noise
-    patterns use {!Noise}, camlray's own noise, and only resemble
-    POV-Ray's. spiral1, spiral2, quilted and mandel follow POV-Ray's
+    with POV-Ray 3.7's [function { pattern { ... } }] values; so do the
+    noise patterns (bozo, spotted, bumps, dents, granite, wrinkles,
+    agate, crackle, marble and wood with turbulence), in POV-Ray's noise
+    ({!Noise}) and formulas (pattern.cpp), to 1e-15 (test_noise's
+    pov_patterns). spiral1, spiral2, quilted and mandel follow POV-Ray's
     formulas (core/material/pattern.cpp); a function pattern's value is
     its function's, taken mod 1 above 1 as POV-Ray does. *)
 
@@ -56,8 +58,9 @@ val crackle_default : crackle
 val feature_point : float -> float -> float -> Vec3.m -> unit
 (** [feature_point cx cy cz out]: crackle's feature point of the unit
     cube whose lowest corner is [(cx, cy, cz)] (whole numbers), into
-    [out]: one point per cube, inside it (camlray's own, placed by its
-    noise; POV-Ray's points differ). *)
+    [out]: POV-Ray's (PickInCube): the corner plus three of POV-Ray's
+    pattern random numbers ({!Cells.values}) from the slot the cube
+    hashes to ({!Cells.index}) on. *)
 
 type kind =
   | Checker
@@ -82,7 +85,7 @@ type kind =
   | Ripples
   | Waves
   | Wrinkles
-  | Crackle of crackle  (** F2 - F1 cellular noise by default (camlray's own feature points) *)
+  | Crackle of crackle  (** F2 - F1 cellular noise by default (POV-Ray's feature points and formulas) *)
   | Spiral1 of int
       (** arms: z + r + arms phi / 2 pi around the z axis (triangle wave) *)
   | Spiral2 of int  (** arms: tri(spiral1's value) + tri(r) (triangle wave) *)
@@ -141,6 +144,11 @@ val read_df3 : string -> density
     byte values), interpolation 0. Raises [Failure] on a damaged file. *)
 
 type turbulence = { amount : Vec3.t; octaves : int; omega : float; lambda : float }
+(** A turbulence (classic or warp): [omega] and [lambda] as POV-Ray
+    keeps them, in single precision ({!single}; the parser rounds them).
+    Classic: marble takes x + amount.x Turbulence, wood the cycloidal of
+    DTurbulence, agate and the spirals add the scalar Turbulence, the
+    others are moved by DTurbulence times the amount (POV-Ray's). *)
 
 (** POV-Ray's [warp { }]s, each acting on the point in the space of the
     transformations written before it. *)
@@ -159,9 +167,11 @@ type warp_kind =
       inverse : bool;
       repeat : Vec3.t;
           (** positive components: a hole in every cell of that size,
-              [radius] from the cell's corner (POV-Ray ignores [center]
-              on those axes) *)
-      jitter : Vec3.t;  (** [turbulence]: cells' holes moved by up to this (camlray's noise) *)
+              [center] from the cell's corner (the parser raises it to
+              the radius and widens the cells as POV-Ray does) *)
+      jitter : Vec3.t;
+          (** [turbulence] of a repeated hole: each cell's centre moved by
+              POV-Ray's warp random numbers (in [0, 1)) times this *)
     }
       (** points within [radius] of the hole pushed out of it (pulled in
           when [inverse]) by [strength (1 - d / radius)^falloff] of their
