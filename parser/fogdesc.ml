@@ -40,9 +40,8 @@ let turbulence v d = { d with turb = Some v }
 (* POV-Ray keeps turb_depth, omega and lambda in single precision *)
 let turb_depth x d = { d with depth = Pattern.single x }
 
-let octaves loc n d =
-  if n < 1 then Diag.error loc "octaves must be at least 1, found %d" n;
-  { d with octaves = n }
+(* POV-Ray keeps octaves within 1 to 10 *)
+let octaves _loc n d = { d with octaves = max 1 (min 10 n) }
 
 let omega x d = { d with omega = Pattern.single x }
 let lambda x d = { d with lambda = Pattern.single x }

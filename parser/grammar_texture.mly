@@ -922,9 +922,9 @@ hole_item:
       function Pattern.Black_hole h -> Texdesc.check_black_hole l (Pattern.Black_hole { h with jitter = v }) | k -> k }
 
 warp_turb_item:
+  (* POV-Ray keeps octaves within 1 to 10 *)
   | OCTAVES e = param
-      { let n = Value.to_int (loc $loc(e)) e in
-        if n < 1 || n > 10 then Diag.error (loc $loc(e)) "octaves go from 1 to 10, found %d" n;
+      { let n = max 1 (min 10 (Value.to_int (loc $loc(e)) e)) in
         fun (t : Pattern.turbulence) -> { t with octaves = n } }
   | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with omega = x } }
   | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with lambda = x } }

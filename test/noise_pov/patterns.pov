@@ -42,6 +42,8 @@
 #declare F35 = function { pattern { agate octaves 3 lambda 3 } };
 #declare F36 = function { pattern { spiral1 4 turbulence 0.3 noise_generator 1 } };
 #declare F37 = function { pattern { marble warp { turbulence 0.5 } } };
+#declare F38 = function { pattern { bozo warp { turbulence 0.5 octaves 12 } } };
+#declare F39 = function { pattern { marble turbulence 0.5 octaves 0 } };
 #for (i, 0, 299)
   #declare P = <rand(S)*40-20, rand(S)*40-20, rand(S)*40-20>;
   #write (F, str(P.x,0,17), " ", str(P.y,0,17), " ", str(P.z,0,17))
@@ -83,6 +85,8 @@
   #write (F, " ", str(F35(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F36(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F37(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F38(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F39(P.x,P.y,P.z),0,17))
   #write (F, "\n")
 #end
 #fclose F
