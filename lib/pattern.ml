@@ -753,14 +753,15 @@ let raw_m t (w : work) =
 
 let default_wave = function Wood | Marble | Spiral1 _ | Spiral2 _ -> Triangle | _ -> Ramp
 
-(* the wave shaping of [v] into [w.r.v] (each case storing it) *)
+(* the wave shaping of [v] into [w.r.v] (each case storing it), as
+   POV-Ray writes them (its cycloidal for the sines) *)
 let shape_into (w : work) wave v =
   match wave with
   | Ramp -> w.r.v <- v
   | Triangle -> w.r.v <- tri v
-  | Sine -> w.r.v <- 0.5 +. (0.5 *. Float.sin (two_pi *. v))
-  | Scallop -> w.r.v <- Float.abs (Float.sin (Float.pi *. v))
-  | Cubic -> w.r.v <- v *. v *. (3. -. (2. *. v))
+  | Sine -> w.r.v <- (1. +. cycloidal v) *. 0.5
+  | Scallop -> w.r.v <- Float.abs (cycloidal (v *. 0.5))
+  | Cubic -> w.r.v <- v *. v *. ((-2. *. v) +. 3.)
   | Poly e -> w.r.v <- Float.pow v e
 
 (* POV-Ray's scalar Turbulence of a classic turbulence at [p], in the
@@ -912,9 +913,10 @@ let eval_warped t (w : work) =
   raw_m t w;
   if not (is_block t.kind) then begin
     if t.frequency <> 0. then begin
+      (* POV-Ray's: mod 1.00001 (a value up to it is kept), a negative
+         one less its floor *)
       let r = Float.rem ((w.r.v *. t.frequency) +. t.phase) 1.00001 in
-      let v = if r < 0. then r +. 1. else r *. 1. in
-      let v = if v > 1. then 1. else v *. 1. in
+      let v = if r < 0. then r -. Float.floor r else r *. 1. in
       shape_into w (match t.wave with Some wv -> wv | None -> default_wave t.kind) v
     end
     else begin

@@ -473,15 +473,17 @@ image_file_kind:
       Texdesc.turb_mod (fun tb -> { tb with octaves = max 1 (min 10 n) }) }
   | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with omega = x }) }
   | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with lambda = x }) }
-  | FREQUENCY e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
-  | PHASE e = param { let x = fl $loc(e) e in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
+  (* POV-Ray keeps frequency, phase and poly_wave's exponent in single
+     precision *)
+  | FREQUENCY e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
+  | PHASE e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
   | RAMP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Ramp }) }
   | TRIANGLE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Triangle }) }
   | SINE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Sine }) }
   | SCALLOP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Scallop }) }
   | CUBIC_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Cubic }) }
   | POLY_WAVE e = ioption(param)
-      { let x = match e with Some e -> fl $loc(e) e | None -> 1. in
+      { let x = match e with Some e -> Pattern.single (fl $loc(e) e) | None -> 1. in
         Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
   (* density_file's interpolation: 0 none, 1 trilinear (2, tricubic,
      read as 1 with a warning) *)

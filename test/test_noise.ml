@@ -207,14 +207,16 @@ let pov_tables =
 
 (* POV-Ray 3.7's noise patterns against POV-Ray itself: patterns.txt was
    written by POV-Ray 3.7 running patterns.pov beside it (300 random
-   points in [-20, 20]^3 to 17 decimals, then the value of each of its 40
+   points in [-20, 20]^3 to 17 decimals, then the value of each of its 47
    pattern functions there: bozo, spotted, bumps, dents, granite,
    wrinkles in each generator, agate (agate_turb, octaves without
    turbulence), marble, wood, the spirals and bozo with classic
    turbulence, marble and bozo under a turbulence warp, crackle's forms,
    metrics, offsets and solid, black holes: repeated with turbulence
    (repeat widened, centre raised to the radius), plain with strength,
-   falloff and inverse; octaves out of 1 to 10, kept within them). The
+   falloff and inverse; octaves out of 1 to 10, kept within them; the
+   waves (frequency, phase, poly_wave's exponent in single precision,
+   sine, scallop and cubic as POV-Ray writes them)). The
    same functions, declared in camlray's language from that file's
    lines, are evaluated at the same points (one sphere's centre each) *)
 let pov_patterns =
@@ -224,7 +226,7 @@ let pov_patterns =
         List.filter (fun l -> String.length l > 10 && String.sub l 0 10 = "#declare F") (String.split_on_char '\n' text)
       in
       let n = List.length decls in
-      if n <> 40 then Alcotest.failf "%d functions in patterns.pov" n;
+      if n <> 47 then Alcotest.failf "%d functions in patterns.pov" n;
       let rows = read_rows "patterns.txt" in
       if List.length rows <> 300 then Alcotest.failf "%d rows" (List.length rows);
       let b = Buffer.create 400_000 in

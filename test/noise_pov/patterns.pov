@@ -44,6 +44,13 @@
 #declare F37 = function { pattern { marble warp { turbulence 0.5 } } };
 #declare F38 = function { pattern { bozo warp { turbulence 0.5 octaves 12 } } };
 #declare F39 = function { pattern { marble turbulence 0.5 octaves 0 } };
+#declare F40 = function { pattern { gradient x frequency 1.3 phase 0.1 } };
+#declare F41 = function { pattern { gradient y poly_wave 1.7 } };
+#declare F42 = function { pattern { bozo sine_wave frequency 2 } };
+#declare F43 = function { pattern { granite scallop_wave } };
+#declare F44 = function { pattern { wrinkles cubic_wave phase 0.35 } };
+#declare F45 = function { pattern { gradient z frequency -1.7 } };
+#declare F46 = function { pattern { marble ramp_wave frequency 2.3 phase 0.2 } };
 #for (i, 0, 299)
   #declare P = <rand(S)*40-20, rand(S)*40-20, rand(S)*40-20>;
   #write (F, str(P.x,0,17), " ", str(P.y,0,17), " ", str(P.z,0,17))
@@ -87,6 +94,13 @@
   #write (F, " ", str(F37(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F38(P.x,P.y,P.z),0,17))
   #write (F, " ", str(F39(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F40(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F41(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F42(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F43(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F44(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F45(P.x,P.y,P.z),0,17))
+  #write (F, " ", str(F46(P.x,P.y,P.z),0,17))
   #write (F, "\n")
 #end
 #fclose F
