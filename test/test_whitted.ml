@@ -278,7 +278,8 @@ let ripples_normal () =
       check "ripples 0.6" (expect Float.sin 0.6 p) (at "ripples 0.6" p);
       check "waves 0.8" (expect Float.cos 0.8 p) (at "waves 0.8" p);
       check "ripples, scale 0.3" (expect ~scale:0.3 Float.sin 0.5 p) (at "ripples 0.5 scale 0.3" p);
-      check "ripples, frequency 2 phase 0.3" (expect ~freq:2. ~phase:0.3 Float.sin 1. p)
+      (* the phase in single precision, as POV-Ray keeps it *)
+      check "ripples, frequency 2 phase 0.3" (expect ~freq:2. ~phase:(Pattern.single 0.3) Float.sin 1. p)
         (at "ripples 1 frequency 2 phase 0.3" p))
     [ (0.3, 0., 0.7); (-2.1, 0.5, 1.3); (5., 0., -4.) ]
 
