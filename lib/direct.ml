@@ -15,20 +15,49 @@ let shadows () = { gen = 1; stamp = [||]; col = [||]; highlights = true }
 let set_highlights c h = c.highlights <- h
 let forget c = c.gen <- c.gen + 1
 
+(* POV-Ray's film thickness at [p] (trace.cpp's ComputeIridColour): the
+   finish's thickness, times 1 + (2 T - 1) turbulence with T POV-Ray's
+   Turbulence of the point with 5 octaves, omega 0.5 and lambda 2 in the
+   scene's noise generator (written out here, as {!Noise.turbulence}
+   computes it: the first octave clamped to [0, 1] for generators 2 and
+   3, each octave of theirs 2 noise - 0.5); the thickness and the
+   turbulence in single precision, as POV-Ray keeps them. Inlined: the
+   float it returns is not boxed. *)
+let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)
+
+let[@inline] irid_thickness (f : Finish.t) (p : Vec3.m) =
+  let th = single f.irid_thickness in
+  if f.irid_turb = 0. then th
+  else begin
+    let gen = !Pattern.scene_noise_generator in
+    let x = p.mx and y = p.my and z = p.mz in
+    let t = ref 0. and l = ref 1. and o = ref 0.5 in
+    for i = 1 to 5 do
+      let li = !l in
+      let nz = Noise.noise gen (x *. li) (y *. li) (z *. li) in
+      let v = if gen <= 1 then nz else (2.0 *. nz) -. 0.5 in
+      if i = 1 then t := (if gen <= 1 then v else if v < 0. then 0. else if 1. < v then 1. else v)
+      else begin
+        t := !t +. (!o *. v);
+        o := !o *. 0.5
+      end;
+      l := li *. 2.
+    done;
+    th *. (1.0 +. (((2.0 *. !t) -. 1.0) *. single f.irid_turb))
+  end
+
 (* POV-Ray's iridescence of channel [c] (0 red, 1 green, 2 blue): a thin
-   film of the finish's thickness (varied by camlray's noise with
-   [irid_turb]) seen at the cosines [cl] to the light and of the ray [d]
-   to the normal [n] shifts the channel by its wavelength *)
+   film of {!irid_thickness} seen at the cosines [cl] to the light and of
+   the ray [d] to the normal [n] shifts the channel by its wavelength (the
+   amount and the wavelengths in single precision, as POV-Ray keeps
+   them) *)
 let irid_k (s : Scene.t) (f : Finish.t) (p : Vec3.m) cl (d : Vec3.m) (n : Vec3.m) c =
-  let t =
-    if f.irid_turb = 0. then f.irid_thickness
-    else f.irid_thickness *. (1. +. (((Noise.fractal3 5 p.mx p.my p.mz) -. 1.) *. f.irid_turb))
-  in
+  let t = irid_thickness f p in
   let ce = Float.abs ((n.mx *. d.mx) +. (n.my *. d.my) +. (n.mz *. d.mz)) in
   let phase = 2. *. Float.pi *. t *. (Float.abs cl +. ce) in
   let wl = s.settings.irid_wavelength in
-  let w = if c = 0 then wl.r else if c = 1 then wl.g else wl.b in
-  1. +. (f.irid *. Float.cos (phase /. w))
+  let w = single (if c = 0 then wl.r else if c = 1 then wl.g else wl.b) in
+  1. +. (single f.irid *. Float.cos (phase /. w))
 
 (* What one light, or one sample of an area light that shades per
    sample, brings to the point: its colour there (attenuated and

@@ -12,6 +12,16 @@ type opacity = { mutable alpha : float }
     (the factor of its diffuse light), stored flat so that passing it
     boxes nothing. *)
 
+val single : float -> float
+(** The nearest single-precision float (what POV-Ray keeps in its [SNGL]
+    fields). *)
+
+val irid_thickness : Finish.t -> Vec3.m -> float
+(** [irid_thickness f p]: POV-Ray's film thickness of iridescence at the
+    world point [p]: [f]'s thickness times 1 + (2 T - 1) [irid_turb],
+    with T POV-Ray's Turbulence of [p] (5 octaves, omega 0.5, lambda 2,
+    the scene's noise generator); both in single precision. *)
+
 type shadows
 (** The shadows found at one point, light by light, so that the layers of
     a texture and the textures of a texture map trace each shadow ray

@@ -201,21 +201,18 @@ let[@inline never] aired_sky (s : Scene.t) (o : Vec3.m) (d : Vec3.m) media out =
     Volume.apply s o d (Fog.missed /. dl) s.atmosphere out
   end
 
-(* POV-Ray's iridescence, on the reflected light [rc]: a thin film of the
-   finish's thickness (varied by camlray's noise with [irid_turb]) seen at
-   cosines [ci] in and [cr] out shifts each channel's phase by its
-   wavelength *)
+(* POV-Ray's iridescence, on the reflected light [rc]: a thin film of
+   {!Direct.irid_thickness} seen at cosines [ci] in and [cr] out shifts
+   each channel's phase by its wavelength (amount and wavelengths in
+   single precision) *)
 let irid (s : Scene.t) (f : Finish.t) (p : Vec3.m) ci cr (rc : Color.acc) =
-  let t =
-    if f.irid_turb = 0. then f.irid_thickness
-    else f.irid_thickness *. (1. +. (((Noise.fractal3 5 p.mx p.my p.mz) -. 1.) *. f.irid_turb))
-  in
+  let t = Direct.irid_thickness f p in
   let phase = 2. *. Float.pi *. t *. (Float.abs ci +. cr) in
-  let wl = s.settings.irid_wavelength and a = f.irid in
+  let wl = s.settings.irid_wavelength and a = Direct.single f.irid in
   Color.acc_set rc
-    (rc.ar *. (1. +. (a *. Float.cos (phase /. wl.r))))
-    (rc.ag *. (1. +. (a *. Float.cos (phase /. wl.g))))
-    (rc.ab *. (1. +. (a *. Float.cos (phase /. wl.b))))
+    (rc.ar *. (1. +. (a *. Float.cos (phase /. Direct.single wl.r))))
+    (rc.ag *. (1. +. (a *. Float.cos (phase /. Direct.single wl.g))))
+    (rc.ab *. (1. +. (a *. Float.cos (phase /. Direct.single wl.b))))
 
 (* The ray from [o] along [d], hits between [tmin] and [tmax] (infinity
    but for a mesh camera's maximum distance), its radiance into [out];
