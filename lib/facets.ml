@@ -1,5 +1,5 @@
-(* POV-Ray 3.7's facets normal (normal.cpp, [facets]), over camlray's
-   feature points and noise. *)
+(* POV-Ray 3.7's facets normal (normal.cpp, [facets]), over crackle's
+   feature points ({!Pattern.feature_point}) and POV-Ray's DNoise. *)
 
 type t = { size : float; coords : float; metric : float }
 
@@ -40,13 +40,19 @@ let cache_key =
   Scratch.key (fun () ->
       { pts = Float.Array.make (3 * count) 0.; cx = 0; cy = 0; cz = 0; filled = false; v = Vec3.m () })
 
-let fill c ix iy iz =
+(* POV-Ray's PickInCube: the cube holding [t] is the one below [t] less
+   1e-10 (POV-Ray's EPSILON), on each axis *)
+let[@inline] cube t = Float.floor (t -. 1e-10)
+
+(* The points of the cubes around the point (tx, ty, tz), each cube found
+   from the point moved by the offset, as POV-Ray does *)
+let fill c tx ty tz ix iy iz =
   for i = 0 to count - 1 do
     let o = 3 * i in
     Pattern.feature_point
-      (float_of_int (ix + Array.unsafe_get offsets o))
-      (float_of_int (iy + Array.unsafe_get offsets (o + 1)))
-      (float_of_int (iz + Array.unsafe_get offsets (o + 2)))
+      (cube (tx +. float_of_int (Array.unsafe_get offsets o)))
+      (cube (ty +. float_of_int (Array.unsafe_get offsets (o + 1))))
+      (cube (tz +. float_of_int (Array.unsafe_get offsets (o + 2))))
       c.v;
     Float.Array.unsafe_set c.pts o c.v.mx;
     Float.Array.unsafe_set c.pts (o + 1) c.v.my;
@@ -86,15 +92,14 @@ let tilt_m f (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let coords = f.coords <> 0. in
   let from = if coords then q else n in
   let tx = from.mx *. s and ty = from.my *. s and tz = from.mz *. s in
-  let ix = int_of_float (Float.floor tx) and iy = int_of_float (Float.floor ty)
-  and iz = int_of_float (Float.floor tz) in
-  if not (c.filled && c.cx = ix && c.cy = iy && c.cz = iz) then fill c ix iy iz;
+  let ix = int_of_float (cube tx) and iy = int_of_float (cube ty) and iz = int_of_float (cube tz) in
+  if not (c.filled && c.cx = ix && c.cy = iy && c.cz = iz) then fill c tx ty tz ix iy iz;
   let o = 3 * nearest c f.metric tx ty tz in
   let px = Float.Array.unsafe_get c.pts o and py = Float.Array.unsafe_get c.pts (o + 1)
   and pz = Float.Array.unsafe_get c.pts (o + 2) in
   if coords then begin
-    (* the noise at the point, less its part along the normal *)
-    Noise.dnoise3 px py pz c.v;
+    (* POV-Ray's DNoise at the point, less its part along the normal *)
+    Noise.dnoise px py pz c.v;
     let d = (c.v.mx *. n.mx) +. (c.v.my *. n.my) +. (c.v.mz *. n.mz) in
     let k = f.coords in
     Vec3.set out

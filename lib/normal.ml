@@ -66,24 +66,26 @@ let rec uses_uv nm =
   | Blend es | Average es -> Array.exists (fun (_, e) -> uses_uv e) es
   | Cells cs -> Array.exists uses_uv cs
 
-(* Bump strength per unit of amount and of pattern-space slope, calibrated
-   on POV-Ray renders of smooth exact patterns (leopard). *)
-let strength = 2. /. 15.
-
-(* The slope of the pattern is estimated as POV-Ray does (measured with
-   povray 3.7 on normal { gradient x }: the dark bands at each jump of the
-   pattern are 0.02 wide ahead and 0.01 behind, and their shading matches
-   to 5 digits): the pattern sampled at the four corners of a regular
-   tetrahedron of radius [delta] around the point, one corner on +y;
-   g = 3/(4 delta) sum v_i f(q + delta v_i), exact for a linear pattern;
+(* The slope of the pattern is estimated as POV-Ray does (normal.cpp's
+   Perturb_Normal for the patterns without a formula of their own;
+   measured with povray 3.7 on normal { gradient x }: the dark bands at
+   each jump of the pattern are 0.02 wide ahead and 0.01 behind, and
+   their shading matches to 5 digits): the pattern sampled at the four
+   corners v_i of a regular tetrahedron of radius [delta] around the
+   point, one corner on +y, and the unit normal moved by -5 amount (0.02
+   / delta) f(q + delta v_i) v_i, corner by corner (exact for a linear
+   pattern: a tilt of amount/10 per unit of slope, whatever delta);
    delta is the normal's accuracy, 0.02 by default. The corners are
-   POV-Ray's (normal.cpp's Pyramid_Vect, written to 9 digits) and the
-   accuracy is taken in single precision (POV-Ray keeps it in a float:
-   0.02 is 0.0199999995529...): a sample that falls on a pixel's edge of
-   an image pattern then reads the pixel POV-Ray reads (measured: a
-   plane y = 0.37 under normal { image_pattern { png "W x 200" } },
-   whose top corner lands on the row edge at 0.39, went from 20.2 dB of
-   POV-Ray's picture to identical). *)
+   POV-Ray's (normal.cpp's Pyramid_Vect, written to 9 digits), and the
+   accuracy and the amount are taken in single precision (POV-Ray keeps
+   them in floats: 0.02 is 0.0199999995529...): a sample that falls on a
+   pixel's edge of an image pattern then reads the pixel POV-Ray reads
+   (measured: a plane y = 0.37 under normal { image_pattern { png "W x
+   200" } }, whose top corner lands on the row edge at 0.39, went from
+   20.2 dB of POV-Ray's picture to identical). The point is warped once,
+   at the centre, and the pattern taken unwarped at the corners around
+   it, as POV-Ray does (Warp_EPoint, then Evaluate_TPat at each corner):
+   the slope is the pattern's own, not the warped pattern's. *)
 let tetra =
   [| Vec3.make 0.942809041 (-0.333333333) 0.; Vec3.make (-0.471404521) (-0.333333333) 0.816496581;
      Vec3.make (-0.471404521) (-0.333333333) (-0.816496581); Vec3.make 0. 1. 0. |]
@@ -94,101 +96,140 @@ let single x = Int32.float_of_bits (Int32.bits_of_float x)
    pattern's work. *)
 type level = { lq : Vec3.m; ln : Vec3.m; t0 : Vec3.m; t1 : Vec3.m }
 
-type work = { q : Vec3.m; s : Vec3.m; pw : Pattern.work; lv : level Scratch.levels; mutable used : int }
+type work = { q : Vec3.m; s : Vec3.m; c : Vec3.m; pw : Pattern.work; lv : level Scratch.levels; mutable used : int }
 
 let work_key =
   Scratch.key (fun () ->
-      { q = Vec3.m (); s = Vec3.m (); pw = Pattern.work ();
+      { q = Vec3.m (); s = Vec3.m (); c = Vec3.m (); pw = Pattern.work ();
         lv = Scratch.levels (fun () -> { lq = Vec3.m (); ln = Vec3.m (); t0 = Vec3.m (); t1 = Vec3.m () });
         used = 0 })
 
-(* POV-Ray's quilted normal: in pattern space, the offset from the
-   cell's centre scaled by quilted's cubic of its length, times the
-   amount, added to the unit normal *)
-let quilted_m nm c0 c1 (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
-  let vx = q.mx -. Float.floor q.mx -. 0.5 and vy = q.my -. Float.floor q.my -. 0.5
-  and vz = q.mz -. Float.floor q.mz -. 0.5 in
-  let k = nm.amount *. Pattern.quilt_cubic (Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))) c0 c1 in
+(* POV-Ray's FLOOR (texture.h): floor, but a negative whole number
+   goes one lower *)
+let[@inline] pov_floor x = if x >= 0. then Float.floor x else 0. -. Float.floor (0. -. x) -. 1.
+
+(* The unit normal [n] taken to the normal's pattern space (turned by
+   its transformations, made unit), into [out] *)
+let[@inline] into_pattern nm (n : Vec3.m) (out : Vec3.m) =
   Vec3.set out n.mx n.my n.mz;
   Transform.normal_inverse_m nm.xform out;
-  Vec3.normalize_m out;
-  Vec3.set out (out.mx +. (k *. vx)) (out.my +. (k *. vy)) (out.mz +. (k *. vz));
+  Vec3.normalize_m out
+
+(* and back: turned to world space and made unit ([n] itself if nothing
+   is left) *)
+let[@inline] back_from_pattern nm (n : Vec3.m) (out : Vec3.m) =
   Transform.normal_m nm.xform out;
   if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
   else Vec3.normalize_m out
 
-(* POV-Ray's ripples and waves normals: in pattern space (warped), the
-   unit normal plus amount / (number of sources) times, for each source
-   c, the unit vector from c times the wave at the distance d from it,
-   sin (2 pi (d frequency + phase)). waves takes the cosine: camlray's
-   waves pattern is the quarter-wave shift of ripples (POV-Ray's gives
-   each source a frequency of its own, from its noise). *)
-let waves_m w nm ripples (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
+(* POV-Ray 3.7's normals with formulas of their own (normal.cpp: bumps,
+   dents, wrinkles, ripples, waves), at the point [q] of pattern space
+   (warped there): the unit normal in pattern space moved by
+   - bumps: amount DNoise(p);
+   - dents: amount Noise(p)^3 DNoise(p) (the pattern's noise generator);
+   - wrinkles: amount sum_{i < 10} |DNoise(2^i p)| / 2^i (componentwise);
+   - ripples: for each wave source c (see {!Pattern.waves}), at the
+     distance d = |p - c| (1 at c), amount sin(d frequency + phase) / (n
+     d) (p - c), the sine POV-Ray's cycloidal (in turns), n sources;
+   - waves: the same with d frequency f_c + phase and the sine divided by
+     the source's own frequency f_c;
+   - quilted: amount v c(|v|), v the offset from the cell's centre (cells
+     by POV-Ray's FLOOR), c quilted's cubic;
+   then brought back. The amount, frequency and phase in single
+   precision, as POV-Ray keeps them. A slope_map is unused, as in
+   POV-Ray. *)
+let own_m w nm (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let t = nm.pattern in
   Pattern.warped_m t q w.pw;
-  let p = w.pw.p in
-  let sources = Pattern.sources in
-  let k = nm.amount /. float_of_int (Array.length sources) in
-  let two_pi = 2. *. Float.pi in
-  Vec3.set out n.mx n.my n.mz;
-  Transform.normal_inverse_m nm.xform out;
-  Vec3.normalize_m out;
-  for i = 0 to Array.length sources - 1 do
-    let (c : Vec3.t) = Array.unsafe_get sources i in
-    let vx = p.mx -. c.x and vy = p.my -. c.y and vz = p.mz -. c.z in
-    let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-    let d = if d = 0. then 1. else d in
-    let a = two_pi *. ((d *. t.frequency) +. t.phase) in
-    let s = k *. (if ripples then Float.sin a else Float.cos a) /. d in
-    Vec3.set out (out.mx +. (s *. vx)) (out.my +. (s *. vy)) (out.mz +. (s *. vz))
-  done;
-  Transform.normal_m nm.xform out;
-  if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
-  else Vec3.normalize_m out
+  let p = w.pw.p and d = w.s in
+  let a = single nm.amount in
+  into_pattern nm n out;
+  (match t.kind with
+  | Pattern.Bumps ->
+      Noise.dnoise p.mx p.my p.mz d;
+      Vec3.set out (out.mx +. (a *. d.mx)) (out.my +. (a *. d.my)) (out.mz +. (a *. d.mz))
+  | Pattern.Dents ->
+      let v = Noise.noise (Pattern.generator t) p.mx p.my p.mz in
+      let k = v *. v *. v *. a in
+      Noise.dnoise p.mx p.my p.mz d;
+      Vec3.set out (out.mx +. (k *. d.mx)) (out.my +. (k *. d.my)) (out.mz +. (k *. d.mz))
+  | Pattern.Wrinkles ->
+      let rx = ref 0. and ry = ref 0. and rz = ref 0. and sc = ref 1. in
+      for _ = 0 to 9 do
+        let s = !sc in
+        Noise.dnoise (p.mx *. s) (p.my *. s) (p.mz *. s) d;
+        rx := !rx +. Float.abs (d.mx /. s);
+        ry := !ry +. Float.abs (d.my /. s);
+        rz := !rz +. Float.abs (d.mz /. s);
+        sc := s *. 2.
+      done;
+      Vec3.set out (out.mx +. (a *. !rx)) (out.my +. (a *. !ry)) (out.mz +. (a *. !rz))
+  | Pattern.Quilted { c0; c1 } ->
+      let vx = p.mx -. pov_floor p.mx -. 0.5 and vy = p.my -. pov_floor p.my -. 0.5
+      and vz = p.mz -. pov_floor p.mz -. 0.5 in
+      let c = Pattern.quilt_cubic (Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))) c0 c1 in
+      Vec3.set out (out.mx +. (a *. (vx *. c))) (out.my +. (a *. (vy *. c))) (out.mz +. (a *. (vz *. c)))
+  | _ ->
+      (* ripples, waves *)
+      let wv = Pattern.waves () in
+      let ripples = match t.kind with Pattern.Ripples -> true | _ -> false in
+      let freq = single t.frequency and phase = single t.phase in
+      let nf = float_of_int wv.count in
+      for i = 0 to wv.count - 1 do
+        let vx = p.mx -. Float.Array.unsafe_get wv.src (3 * i)
+        and vy = p.my -. Float.Array.unsafe_get wv.src ((3 * i) + 1)
+        and vz = p.mz -. Float.Array.unsafe_get wv.src ((3 * i) + 2) in
+        let l = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+        let l = if l = 0. then 1. else l in
+        let scalar =
+          if ripples then Pattern.cycloidal ((l *. freq) +. phase) *. a
+          else begin
+            let f = Float.Array.unsafe_get wv.freq i in
+            Pattern.cycloidal ((l *. freq *. f) +. phase) *. a /. f
+          end
+        in
+        let k = scalar /. (l *. nf) in
+        Vec3.set out (out.mx +. (k *. vx)) (out.my +. (k *. vy)) (out.mz +. (k *. vz))
+      done);
+  back_from_pattern nm n out
+
+(* marble and wood take their turbulence themselves in POV-Ray (at each
+   corner of the slope's tetrahedron, not at its centre) *)
+let[@inline] own_turbulence (t : Pattern.t) =
+  match (t.kind, t.turbulence) with (Pattern.Marble | Pattern.Wood), Some _ -> true | _ -> false
 
 let leaf_m w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
   let q = w.q in
   Transform.inv_point_m nm.xform point q;
-  match nm.pattern.kind with
-  | Pattern.Quilted { c0; c1 } -> quilted_m nm c0 c1 q n out
-  | (Pattern.Ripples | Pattern.Waves) as kind when Float.Array.length nm.slope = 0 ->
-      waves_m w nm (kind = Pattern.Ripples) q n out
+  let t = nm.pattern in
+  match t.kind with
+  | Pattern.Bumps | Pattern.Dents | Pattern.Wrinkles | Pattern.Ripples | Pattern.Waves | Pattern.Quilted _ ->
+      own_m w nm q n out
   | _ ->
-  (* g = 3/(4 delta) sum v_i f(q + delta v_i), summed in order; delta the
-     normal's accuracy *)
-  let delta = single nm.accuracy in
-  let gx = ref 0. and gy = ref 0. and gz = ref 0. in
-  for i = 0 to Array.length tetra - 1 do
-    let (v : Vec3.t) = Array.unsafe_get tetra i in
-    Vec3.set w.s (q.mx +. (delta *. v.x)) (q.my +. (delta *. v.y)) (q.mz +. (delta *. v.z));
-    Pattern.eval_m nm.pattern w.s w.pw;
-    let f = if Float.Array.length nm.slope = 0 then w.pw.r.v else slope_height nm.slope w.pw.r.v in
-    gx := !gx +. (f *. v.x);
-    gy := !gy +. (f *. v.y);
-    gz := !gz +. (f *. v.z)
-  done;
-  let c = 3. /. (4. *. delta) in
-  let gx = c *. !gx and gy = c *. !gy and gz = c *. !gz in
-  (* as POV-Ray: tilt a unit normal in pattern space, then bring it back *)
-  Vec3.set out n.mx n.my n.mz;
-  Transform.normal_inverse_m nm.xform out;
-  Vec3.normalize_m out;
-  (* POV-Ray computes bumps, dents, ripples, waves and wrinkles with
-     formulas of their own, much stronger than the generic slope; these
-     gains make camlray's look alike (set by eye: the noise differs) *)
-  let gain =
-    match nm.pattern.kind with
-    | Pattern.Bozo | Pattern.Bumps | Pattern.Spotted | Pattern.Ripples | Pattern.Waves -> 12.
-    | Pattern.Dents -> 1.5
-    | Pattern.Wrinkles | Pattern.Granite -> 0.6
-    | _ -> 1.
-  in
-  (* the full slope, normal component included *)
-  let k = -.nm.amount *. strength *. gain in
-  Vec3.set out (out.mx +. (k *. gx)) (out.my +. (k *. gy)) (out.mz +. (k *. gz));
-  Transform.normal_m nm.xform out;
-  if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
-  else Vec3.normalize_m out
+      let delta = single nm.accuracy in
+      let k = single nm.amount *. -5. *. (0.02 /. delta) in
+      let per_corner = own_turbulence t in
+      (* the centre, warped *)
+      let c = w.c in
+      if per_corner then Vec3.set c q.mx q.my q.mz
+      else begin
+        Pattern.warped_m t q w.pw;
+        Vec3.set c w.pw.p.mx w.pw.p.my w.pw.p.mz
+      end;
+      into_pattern nm n out;
+      for i = 0 to Array.length tetra - 1 do
+        let (v : Vec3.t) = Array.unsafe_get tetra i in
+        Vec3.set w.s (c.mx +. (delta *. v.x)) (c.my +. (delta *. v.y)) (c.mz +. (delta *. v.z));
+        if per_corner then Pattern.eval_m t w.s w.pw
+        else begin
+          Vec3.set w.pw.p w.s.mx w.s.my w.s.mz;
+          Pattern.eval_warped t w.pw
+        end;
+        let f = if Float.Array.length nm.slope = 0 then w.pw.r.v else slope_height nm.slope w.pw.r.v in
+        let fk = f *. k in
+        Vec3.set out (out.mx +. (fk *. v.x)) (out.my +. (fk *. v.y)) (out.mz +. (fk *. v.z))
+      done;
+      back_from_pattern nm n out
 
 (* POV-Ray's normal_map, average and block lists (measured with povray
    3.7, see docs/language.md): the point and the unit normal are taken to

@@ -234,11 +234,47 @@ let[@inline] brick3 (size : Vec3.t) mortar x y z =
   let z = if odd then z else z +. (size.z /. 2.) in
   if in_mortar x size.x mortar || in_mortar y size.y mortar || in_mortar z size.z mortar then 0. else 1.
 
-(* Wave sources of ripples and waves: fixed pseudo-random points. *)
-let sources =
-  Array.init 10 (fun i ->
-      let f k = Noise.snoise (Vec3.make (float_of_int i +. 0.37) (float_of_int k +. 0.71) 0.53) in
-      Vec3.scale 2. (Vec3.make (f 1) (f 2) (f 3)))
+(* POV-Ray's sine of a value in turns (texture.cpp's cycloidal): the
+   fraction of [v] (for a negative [v] the fraction of -v, the sine
+   negated) scaled up and down by 50000 before it is turned into radians,
+   as POV-Ray does (the round trip changes the last bits) *)
+let[@inline] cycloidal v =
+  if v >= 0. then Float.sin ((v -. Float.floor v) *. 50000. /. 50000. *. two_pi)
+  else 0. -. Float.sin ((0. -. (v +. Float.floor (0. -. v))) *. 50000. /. 50000. *. two_pi)
+
+(* The wave sources and frequencies of ripples and waves, as POV-Ray 3.7
+   makes them (texture.cpp's Initialize_Waves): source i is DNoise at
+   (i, 0, 0), normalised (each component divided by the length); its
+   frequency is 0.01 + 0.000030518509476 times the 15 bits the C
+   library's congruence (x <- 1812433253 x + 12345 on 32 bits) draws, in
+   turn from the seed -560851967. [src]: x, y, z per source. *)
+type waves = { count : int; src : Float.Array.t; freq : Float.Array.t }
+
+let make_waves n =
+  let src = Float.Array.make (3 * n) 0. and freq = Float.Array.make n 0. in
+  let v = Vec3.m () in
+  let s = ref (-560851967 land 0xFFFF_FFFF) in
+  for i = 0 to n - 1 do
+    Noise.dnoise (float_of_int i) 0. 0. v;
+    let l = Float.sqrt ((v.mx *. v.mx) +. (v.my *. v.my) +. (v.mz *. v.mz)) in
+    let l = if l = 0. then 1. else l in
+    Float.Array.set src (3 * i) (v.mx /. l);
+    Float.Array.set src ((3 * i) + 1) (v.my /. l);
+    Float.Array.set src ((3 * i) + 2) (v.mz /. l);
+    s := ((!s * 1812433253) + 12345) land 0xFFFF_FFFF;
+    Float.Array.set freq i ((float_of_int ((!s lsr 16) land 0x7FFF) *. 0.000030518509476) +. 0.01)
+  done;
+  { count = n; src; freq }
+
+(* the scene's waves ([global_settings { number_of_waves }], 10 when not
+   given): set by the compiler, only read while rendering *)
+let scene_waves = ref (make_waves 10)
+
+let set_number_of_waves n =
+  let n = Int.max 1 n in
+  if n <> !scene_waves.count then scene_waves := make_waves n
+
+let[@inline] waves () = !scene_waves
 
 (* POV-Ray's crackle and facets points (IntPickInCube, PickInCube): one
    per unit cube, at the cube's corner plus three of POV-Ray's pattern
@@ -592,6 +628,36 @@ let[@inline never] magnet_into f formula ~julia ~cr ~ci (w : work) =
   done;
   if !escaped >= 0 then w.r.v <- exterior_shade f !escaped !zr !zi else w.r.v <- interior_shade f !zr !zi !m2
 
+(* POV-Ray keeps a pattern's frequency and phase in single precision *)
+let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)
+
+(* POV-Ray's ripples and waves patterns (pattern.cpp): the mean, over the
+   sources, of the sine (cycloidal) of the distance d to the source
+   (taken as 1 at the source) times the pattern's frequency plus its
+   phase, 0.5 (1 + mean) for ripples; waves scales each d also by its
+   source's frequency f and divides its sine by f, 0.2 (2.5 + mean). The
+   frequency and phase apply again, as to any pattern, to the value. *)
+let waves_into t (w : work) =
+  let wv = waves () in
+  let freq = single t.frequency and phase = single t.phase in
+  let x = w.p.mx and y = w.p.my and z = w.p.mz in
+  let ripples = match t.kind with Ripples -> true | _ -> false in
+  let acc = ref 0. in
+  for i = 0 to wv.count - 1 do
+    let dx = x -. Float.Array.unsafe_get wv.src (3 * i)
+    and dy = y -. Float.Array.unsafe_get wv.src ((3 * i) + 1)
+    and dz = z -. Float.Array.unsafe_get wv.src ((3 * i) + 2) in
+    let d = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
+    let d = if d = 0. then 1. else d in
+    if ripples then acc := !acc +. cycloidal ((d *. freq) +. phase)
+    else begin
+      let f = Float.Array.unsafe_get wv.freq i in
+      acc := !acc +. (cycloidal ((d *. freq *. f) +. phase) /. f)
+    end
+  done;
+  let n = float_of_int wv.count in
+  w.r.v <- (if ripples then 0.5 *. (1. +. (!acc /. n)) else 0.2 *. (2.5 +. (!acc /. n)))
+
 (* The raw pattern at [w.p] into [w.r.v]: each case stores its value
    itself (a value joined from the cases would be boxed). *)
 let raw_m t (w : work) =
@@ -675,17 +741,7 @@ let raw_m t (w : work) =
       let tv = turb *. Noise.turbulence (generator t) ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda x y z in
       let v = 0.5 *. (cycloidal ((1.3 *. tv) +. (1.1 *. z)) +. 1.) in
       w.r.v <- (if v < 0. then 0. else Float.pow (Float.min 1. v) 0.77)
-  | Ripples | Waves ->
-      let ripples = kind = Ripples in
-      let acc = ref 0. in
-      for i = 0 to Array.length sources - 1 do
-        let (c : Vec3.t) = Array.unsafe_get sources i in
-        let dx = x -. c.x and dy = y -. c.y and dz = z -. c.z in
-        let d = Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz)) in
-        let wave = if ripples then Float.sin (two_pi *. d) else Float.cos (two_pi *. d) in
-        acc := !acc +. (0.5 +. (0.5 *. wave))
-      done;
-      w.r.v <- !acc /. float_of_int (Array.length sources)
+  | Ripples | Waves -> (* [waves_into]: they need the frequency and phase *) ()
   | Crackle c -> crackle_into c (generator t) w.p w.r
   | Wrinkles ->
       (* POV-Ray's: ten octaves of noise (the original generator's as it
@@ -910,7 +966,7 @@ let eval_warped t (w : work) =
   (match (t.kind, t.turbulence) with
   | (Spiral1 _ | Spiral2 _), Some tb -> w.r.v <- tb.amount.x *. scalar_turbulence t tb w.p
   | _ -> w.r.v <- 0.);
-  raw_m t w;
+  (match t.kind with Ripples | Waves -> waves_into t w | _ -> raw_m t w);
   if not (is_block t.kind) then begin
     if t.frequency <> 0. then begin
       (* POV-Ray's: mod 1.00001 (a value up to it is kept), a negative

@@ -293,9 +293,27 @@ val uv_point : unit -> Vec3.m
 (** The point [<u, v, 0>] last set by {!set_uv} on this domain (the
     domain's own vector: read it, never write it). *)
 
-val sources : Vec3.t array
-(** The wave sources of ripples and waves (camlray's own fixed points,
-    not POV-Ray's). *)
+val cycloidal : float -> float
+(** POV-Ray's [cycloidal] (texture.cpp): the sine of a value in turns,
+    with POV-Ray's rounding (the fraction scaled by 50000 and back). *)
+
+type waves = { count : int; src : Float.Array.t; freq : Float.Array.t }
+(** The wave sources and frequencies of ripples and waves, POV-Ray 3.7's
+    (texture.cpp's Initialize_Waves): [src] holds source [i]'s x, y, z
+    at [3i .. 3i+2], DNoise at (i, 0, 0) normalised; [freq] its
+    frequency, 0.01 + 0.000030518509476 times 15 bits of the C library's
+    congruence from the seed -560851967. *)
+
+val make_waves : int -> waves
+(** [make_waves n]: the first [n] sources (n >= 1). *)
+
+val set_number_of_waves : int -> unit
+(** The scene's [number_of_waves] (10 unless its [global_settings] name
+    another; below 1 taken as 1, as POV-Ray says it does): set by the
+    compiler for the scene it compiles, only read while rendering. *)
+
+val waves : unit -> waves
+(** The scene's waves. *)
 
 val warped_m : t -> Vec3.m -> work -> unit
 (** [warped_m t q w]: the point [q] of pattern space with the pattern's

@@ -615,6 +615,14 @@ and scene_ (s : Sdl.scene) =
           | Sdl.Global_settings (_, gs) -> List.fold_left (fun g -> function Sdl.Noise_generator n -> n | _ -> g) g gs
           | _ -> g)
         2 s.items;
+    (* and the last number_of_waves, the number of wave sources of every
+       ripples and waves (POV-Ray's scene setting, 10 by default) *)
+    Pattern.set_number_of_waves
+      (List.fold_left
+         (fun k -> function
+           | Sdl.Global_settings (_, gs) -> List.fold_left (fun k -> function Sdl.Number_of_waves n -> n | _ -> k) k gs
+           | _ -> k)
+         10 s.items);
     let settings = ref Scene.default_settings in
     let gamma = ref None in
     List.iter

@@ -193,7 +193,11 @@
   | NOISE_GENERATOR e = param { let n = Value.to_int (loc $loc(e)) e in
       if n < 1 || n > 3 then Diag.error (loc $loc(e)) "noise_generator in global_settings is 1, 2 or 3, found %d" n;
       Sdl.Noise_generator n }
-  | NUMBER_OF_WAVES e = param { Sdl.Number_of_waves (Value.to_int (loc $loc(e)) e) }
+  | NUMBER_OF_WAVES e = param { let n = Value.to_int (loc $loc(e)) e in
+      (* POV-Ray: "Illegal Value: number_of_waves must be greater than 0.
+         Changed to 1." (a warning) *)
+      if n < 1 then Diag.warning (loc $loc(e)) (Printf.sprintf "number_of_waves must be greater than 0 (found %d): 1 is used" n);
+      Sdl.Number_of_waves (Int.max 1 n) }
 
 %public sky_body:
   | k = ioption(SKY_SPHERE_ID) ms = list(sky_item)
@@ -512,7 +516,7 @@ image_file_kind:
   | AGATE_TURB e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.kind_mod (function
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
   | WARP LBRACE k = warp_body RBRACE { Texdesc.warp (loc $loc) k }
-  | NUMBER_OF_WAVES e = param { ignore e; fun p -> p }  (* camlray's wave sources are fixed *)
+  | NUMBER_OF_WAVES param { Diag.error (loc $loc) "number_of_waves is a global_settings item (POV-Ray 3.7 takes it nowhere else)" }
   | NOISE_GENERATOR e = param { let n = Value.to_int (loc $loc(e)) e in
       (* 0: the scene's *)
       if n < 0 || n > 3 then Diag.error (loc $loc(e)) "noise_generator is 0, 1, 2 or 3, found %d" n;

@@ -198,7 +198,7 @@ type global =
   | Ambient_light of Color.t
   | Radiosity of Radiosity.t  (** [radiosity { ... }]; [keep_ambient] is set by the compiler *)
   | Noise_generator of int  (** the scene's, for patterns naming none *)
-  | Number_of_waves of int  (** parsed; camlray's wave sources are fixed *)
+  | Number_of_waves of int  (** the number of wave sources of ripples and waves (at least 1) *)
 
 type item =
   | Object of obj

@@ -54,4 +54,5 @@ let () =
       Test_aa.tests;
       Test_gamma.tests;
       Test_compare.tests;
+      Test_waves.tests;
     ]

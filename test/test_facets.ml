@@ -1,7 +1,7 @@
 (* The facets normal: POV-Ray's formula (normal.cpp) checked against a
-   search of its own over camlray's feature points and noise (POV-Ray's
-   points and noise differ, so its values cannot be compared), through
-   the scene language; its properties; its errors. *)
+   search of its own over crackle's feature points (Pattern.feature_point)
+   and POV-Ray's DNoise, through the scene language; its properties; its
+   errors. *)
 open Camlray
 
 (* The facets normal a camera's normal { } makes, at a world point with
@@ -98,8 +98,8 @@ let metrics () =
         normals)
     [ ("facets size 0.2 metric 1", sum); ("facets size 0.2 metric 3", cube) ]
 
-(* with coords: the normal tilted by coords times the part of the noise
-   at the nearest feature point (to the point / size) perpendicular to
+(* with coords: the normal tilted by coords times the part of POV-Ray's
+   DNoise at the nearest feature point (to the point / size) perpendicular to
    it *)
 let tilted () =
   List.iter
@@ -110,7 +110,7 @@ let tilted () =
           let ((nx, ny, nz) as n) = List.nth normals i in
           let fx, fy, fz = nearest (block 3) euclid (px /. size, py /. size, pz /. size) in
           let d = Vec3.m () in
-          Noise.dnoise3 fx fy fz d;
+          Noise.dnoise fx fy fz d;
           let k = (d.mx *. nx) +. (d.my *. ny) +. (d.mz *. nz) in
           let e =
             unit

@@ -242,9 +242,10 @@ let normal_slope () =
   gray "after the jump" 0.17383 (at 1.005)
 
 (* POV-Ray's ripples and waves normals (normal.cpp): in pattern space,
-   the unit normal plus amount / 10 times, over the ten sources c, the
-   unit vector from c times sin (2 pi (d frequency + phase)) at the
-   distance d (waves: the cosine), normalised back in world space *)
+   the unit normal plus, over the wave sources c (Pattern.waves),
+   amount sin(d frequency f + phase) / (f n d) (p - c) at the distance d
+   (ripples: f = 1; waves: the source's frequency), the sine in turns
+   (cycloidal), normalised back in world space *)
 let ripples_normal () =
   let at text (px, py, pz) =
     let nm = Option.get (Scn.compile ("camera { normal { " ^ text ^ " } }")).camera.normal in
@@ -254,33 +255,37 @@ let ripples_normal () =
     Normal.perturb_m nm p n out;
     (out.mx, out.my, out.mz)
   in
-  let expect ?(scale = 1.) ?(freq = 1.) ?(phase = 0.) wave amount (px, py, pz) =
+  let single x = Int32.float_of_bits (Int32.bits_of_float x) in
+  let expect ?(scale = 1.) ?(freq = 1.) ?(phase = 0.) ripples amount (px, py, pz) =
     (* pattern space: the point divided by the scale; the normal too, made unit *)
     let qx = px /. scale and qy = py /. scale and qz = pz /. scale in
     let x = ref 0. and y = ref 1. and z = ref 0. in
-    Array.iter
-      (fun (c : Vec3.t) ->
-        let vx = qx -. c.x and vy = qy -. c.y and vz = qz -. c.z in
-        let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
-        let k = amount /. 10. *. wave (2. *. Float.pi *. ((d *. freq) +. phase)) /. d in
-        x := !x +. (k *. vx);
-        y := !y +. (k *. vy);
-        z := !z +. (k *. vz))
-      Pattern.sources;
+    let wv = Pattern.waves () in
+    for i = 0 to wv.count - 1 do
+      let c k = Float.Array.get wv.src ((3 * i) + k) in
+      let f = if ripples then 1. else Float.Array.get wv.freq i in
+      let vx = qx -. c 0 and vy = qy -. c 1 and vz = qz -. c 2 in
+      let d = Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz)) in
+      let k = single amount *. Pattern.cycloidal ((d *. single freq *. f) +. single phase) /. f /. (d *. float_of_int wv.count) in
+      x := !x +. (k *. vx);
+      y := !y +. (k *. vy);
+      z := !z +. (k *. vz)
+    done;
     (* back to world space: a normal scales by 1 / scale, uniformly here *)
     let l = Float.sqrt ((!x *. !x) +. (!y *. !y) +. (!z *. !z)) in
     (!x /. l, !y /. l, !z /. l)
   in
   let check msg (ex, ey, ez) (x, y, z) = Scn.check_floats ~eps:1e-12 msg [ ex; ey; ez ] [ x; y; z ] in
-  Alcotest.(check int) "ten sources" 10 (Array.length Pattern.sources);
+  Alcotest.(check int) "ten sources" 10 (Pattern.waves ()).count;
   List.iter
     (fun p ->
-      check "ripples 0.6" (expect Float.sin 0.6 p) (at "ripples 0.6" p);
-      check "waves 0.8" (expect Float.cos 0.8 p) (at "waves 0.8" p);
-      check "ripples, scale 0.3" (expect ~scale:0.3 Float.sin 0.5 p) (at "ripples 0.5 scale 0.3" p);
-      (* the phase in single precision, as POV-Ray keeps it *)
-      check "ripples, frequency 2 phase 0.3" (expect ~freq:2. ~phase:(Pattern.single 0.3) Float.sin 1. p)
-        (at "ripples 1 frequency 2 phase 0.3" p))
+      check "ripples 0.6" (expect true 0.6 p) (at "ripples 0.6" p);
+      check "waves 0.8" (expect false 0.8 p) (at "waves 0.8" p);
+      check "ripples, scale 0.3" (expect ~scale:0.3 true 0.5 p) (at "ripples 0.5 scale 0.3" p);
+      check "ripples, frequency 2 phase 0.3" (expect ~freq:2. ~phase:0.3 true 1. p)
+        (at "ripples 1 frequency 2 phase 0.3" p);
+      check "waves, frequency 1.7 phase 0.2" (expect ~freq:1.7 ~phase:0.2 false 0.7 p)
+        (at "waves 0.7 frequency 1.7 phase 0.2" p))
     [ (0.3, 0., 0.7); (-2.1, 0.5, 1.3); (5., 0., -4.) ]
 
 (* normal_map, average and block lists of normals, as povray 3.7 shades
