@@ -120,24 +120,65 @@ let same_picture ?(eps = 0.75) name =
       (pov x y c)
 
 (* The normal probes of make-normals.sh: a plane under the normal, lit
-   by a red light from -x, a green one from -y and a blue one head-on *)
+   by a red light from -x, a green one from -y and a blue one head-on.
+   Its probes bozo, spotted, granite, bumps-map, facets and
+   facets-coords wait for Pattern's bozo, granite and bumps values and
+   crackle's feature points to be POV-Ray's (bozo, spotted and bumps-map
+   matched within 0.5 step with bozo's value Noise.noise 2) *)
 let probes =
   [
     "bumps"; "bumps-slope"; "bumps-warp"; "dents"; "dents-gen1"; "dents-gen3"; "wrinkles"; "ripples"; "ripples-3";
-    "waves"; "waves-25"; "quilted"; "leopard-hole"; "gradient-warp";
+    "waves"; "waves-25"; "quilted"; "leopard-hole"; "gradient-warp"; "ripples-map";
   ]
 
 let pov_normals =
-  Alcotest.test_case "normals: POV-Ray's 16-bit pictures of 14 probes, pixel for pixel" `Slow (fun () ->
+  Alcotest.test_case "normals: POV-Ray's 16-bit pictures of 15 probes, pixel for pixel" `Quick (fun () ->
       List.iter (fun p -> same_picture ("n-" ^ p)) probes)
 
 (* The scene probes of make-renders.sh: ripples and waves pigments (the
    scene's number_of_waves) and iridescence's turbulence (the scene's
    noise generator), a plane lit head-on *)
 let pov_scenes =
-  Alcotest.test_case "ripples, waves, irid: POV-Ray's 16-bit pictures of 8 probes, pixel for pixel" `Slow (fun () ->
+  Alcotest.test_case "ripples, waves, irid: POV-Ray's 16-bit pictures of 8 probes, pixel for pixel" `Quick (fun () ->
       List.iter
         (fun p -> same_picture ("s-" ^ p))
         [ "ripples"; "ripples-5"; "waves"; "waves-1"; "irid"; "irid-gen1"; "irid-gen3"; "irid-bumps" ])
 
-let tests = ("waves", [ pov_patterns; pov_normals; pov_scenes ])
+(* number_of_waves: a global_settings item (POV-Ray 3.7 rejects it in a
+   pattern); below 1 it is 1, with POV-Ray's warning; the compiler sets
+   the scene's *)
+let number_of_waves () =
+  Scn.check_message "sphere { 0, 1 pigment { ripples number_of_waves 3 } }"
+    "number_of_waves is a global_settings item";
+  Scn.check_message "sphere { 0, 1 normal { waves 0.5 number_of_waves 3 } }"
+    "number_of_waves is a global_settings item";
+  let warned =
+    Camlray_lang.Diag.collect_warnings (fun () ->
+        ignore (Scn.compile "global_settings { number_of_waves 0 }\nsphere { 0, 1 pigment { ripples } }"))
+  in
+  if not (Scn.contains (snd warned) "number_of_waves must be greater than 0") then
+    Alcotest.failf "no warning: %S" (snd warned);
+  Alcotest.(check int) "0 taken as 1" 1 (Pattern.waves ()).count;
+  ignore (Scn.compile "global_settings { number_of_waves 7.9 }");
+  Alcotest.(check int) "7.9 taken as 7" 7 (Pattern.waves ()).count;
+  ignore (Scn.compile "sphere { 0, 1 }");
+  Alcotest.(check int) "10 by default" 10 (Pattern.waves ()).count;
+  (* the sources are a prefix: the first 7 of 25 are the 7 *)
+  let a = Pattern.make_waves 7 and b = Pattern.make_waves 25 in
+  for i = 0 to 20 do
+    if Float.Array.get a.src i <> Float.Array.get b.src i then Alcotest.failf "source coordinate %d" i
+  done;
+  for i = 0 to 6 do
+    if Float.Array.get a.freq i <> Float.Array.get b.freq i then Alcotest.failf "frequency %d" i;
+    let f = Float.Array.get a.freq i in
+    if not (f >= 0.01 && f <= 1.01) then Alcotest.failf "frequency %d: %g" i f
+  done
+
+let tests =
+  ( "waves",
+    [
+      pov_patterns;
+      pov_normals;
+      pov_scenes;
+      Alcotest.test_case "number_of_waves: where, how many, errors" `Quick number_of_waves;
+    ] )

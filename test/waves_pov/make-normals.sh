@@ -4,6 +4,9 @@
 # head-on, so that the three channels give the perturbed normal), then
 # POV-Ray 3.7 renders each to a 16-bit linear PPM (48 x 36, no
 # anti-aliasing). Run from this folder: sh make-normals.sh
+# (bozo, spotted, granite, bumps-map, facets, facets-coords depend on
+# POV-Ray's bozo, granite and bumps values and crackle's feature points
+# in Pattern.)
 set -e
 n=0
 while IFS='|' read -r name globals normal; do
@@ -34,5 +37,12 @@ waves-25|number_of_waves 25|waves 0.8 scale 0.4 phase 0.35
 quilted||quilted 0.7 scale 0.4 control0 0.3 control1 0.8
 leopard-hole||leopard 3 scale 0.2 warp { black_hole <0, 0, 0>, 2.5 strength 1.5 }
 gradient-warp||gradient x 2 scale 0.7 warp { spherical orientation y dist_exp 1 } rotate <0, 0, 30>
+ripples-map||ripples scale 0.6 normal_map { [0 gradient x, 1 scale 0.3] [1 gradient y, -1 scale 0.4] }
+bozo||bozo 1.2 scale 0.3
+spotted||spotted 1.2 scale 0.3 slope_map { [0 <0, 0>] [0.5 <1, 0>] [1 <0, -1>] }
+granite||granite 0.8 scale 2
+bumps-map||bumps scale 0.4 normal_map { [0.3 gradient x, 1 scale 0.3] [0.7 wrinkles 1 scale 0.5] }
+facets||facets size 0.6
+facets-coords||facets coords 0.7 size 0.5
 LIST
 echo "$n probes"
