@@ -1,9 +1,9 @@
 (** POV-Ray's [facets] normal ([normal { facets [coords C] [size S]
     [metric M] }]), a normal of its own (it has no value as a pattern).
-    POV-Ray's formula (normal.cpp) over camlray's crackle feature points
-    ({!Pattern.feature_point}) and vector noise ({!Noise.dnoise3}):
-    POV-Ray's points and noise differ, so the facets look alike but lie
-    elsewhere.
+    POV-Ray's formula (normal.cpp) over crackle's feature points
+    ({!Pattern.feature_point}, for the cube below each point less 1e-10,
+    as POV-Ray's PickInCube) and POV-Ray's DNoise ({!Noise.dnoise}): the
+    facets lie where POV-Ray's do when crackle's points are POV-Ray's.
 
     Without [coords] (or with [coords 0]): the unit normal, scaled by
     1/[size], picks the nearest feature point, and that point (a position,

@@ -1,10 +1,14 @@
-(** Normal perturbation ([normal { bumps 0.5 scale 0.2 }]): the surface
-    normal is taken to pattern space, tilted there by amount x 2/15 x the
-    pattern's slope (central differences), and brought back, as POV-Ray
-    does for ordinary patterns (checked on leopard: 59 to 69 dB against
-    POV-Ray, scaled, rotated, non-uniform). POV-Ray's own formulas for
-    bumps, dents, ripples, waves and wrinkles are approximated by gains
-    (and camlray's noise differs), so those only look alike. *)
+(** Normal perturbation ([normal { bumps 0.5 scale 0.2 }]), as POV-Ray
+    3.7's Perturb_Normal (normal.cpp): the surface normal is taken to
+    pattern space, moved there and brought back. bumps, dents,
+    wrinkles, ripples, waves and quilted move it by POV-Ray's formulas of
+    their own (over POV-Ray's noise, {!Noise.dnoise} and {!Noise.noise};
+    ripples' and waves' sources {!Pattern.waves}); every other pattern by
+    its slope, sampled on POV-Ray's tetrahedron around the point (warped
+    once, at the centre) with POV-Ray's arithmetic (a tilt of amount/10
+    per unit of slope). The amount, accuracy, frequency and phase in
+    single precision, as POV-Ray keeps them: POV-Ray's pictures to the
+    16-bit step (test suite waves). *)
 
 type t = {
   pattern : Pattern.t;
@@ -13,7 +17,8 @@ type t = {
   slope : Float.Array.t;
       (** POV-Ray's [slope_map]: (value, height, slope) triples by rising
           value, the pattern's value taken to a height by Hermite cubics
-          between them; empty: none (the height is the value) *)
+          between them; empty: none (the height is the value). Unused by
+          the patterns with formulas of their own, as in POV-Ray. *)
   accuracy : float;  (** the distance of the samples the slope is taken from (0.02) *)
   map : map;
 }
