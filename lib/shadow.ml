@@ -121,7 +121,8 @@ let add_fader w (o : Object.t) (h : Hit.t) =
   w.nf <- k + 1
 
 (* POV-Ray's faked caustics: per layer, more light where the ray meets the
-   surface (its normal perturbed by the layer's) square on; the light
+   surface (its normal, turned against the ray, perturbed by the layer's)
+   square on; the light
    carried, [w.acc], scaled in place *)
 (* a loop, not List.iter: its closure over a float ref allocated both per
    shadow ray (3 words a camera ray on caustics.pov); the factor not
@@ -130,6 +131,10 @@ let add_fader w (o : Object.t) (h : Hit.t) =
 let caustics w (o : Object.t) q h c =
   let r = w.ray and n = w.cn and pn = w.pn in
   Object.normal_into o q h n;
+  (* POV-Ray (ComputeShadowColour) turns the normal against the shadow
+     ray before perturbing it: the perturbation adds to it, so its side
+     matters *)
+  if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then Vec3.set n (-.n.mx) (-.n.my) (-.n.mz);
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
   let k = ref 1. and rest = ref o.texture in
   while (match !rest with [] -> false | _ -> true) do

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Writes the scene probes: one s-NAME.pov per line below (a plane facing
 # the camera, lit head-on by a white parallel light, with the pigment
-# and finish given), then POV-Ray 3.7 renders each to a 16-bit linear
+# and finish given; caustics: a bumpy glass plane in front of it (its
+# normal towards the floor: POV-Ray turns it), its
+# faked caustics on the plane), then POV-Ray 3.7 renders each to a 16-bit linear
 # PPM (48 x 36, no anti-aliasing). Run from this folder: sh make-renders.sh
 set -e
 n=0
@@ -25,5 +27,6 @@ irid||pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.6 thickness 0.4
 irid-gen1|noise_generator 1|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.3 turbulence 0.9 } }
 irid-gen3|noise_generator 3|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.3 turbulence 0.9 } }
 irid-bumps||pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.7 thickness 0.25 turbulence 0.3 } } normal { bumps 0.5 scale 0.3 }
+caustics||pigment { rgb 0.3 } finish { ambient 0 diffuse 1 } } plane { -z, 2 hollow pigment { rgbf <1, 1, 1, 0.9> } finish { ambient 0 diffuse 0 } interior { caustics 1.2 } normal { bumps 0.6 scale 0.5 }
 LIST
 echo "$n probes"
