@@ -27,6 +27,7 @@ irid||pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.6 thickness 0.4
 irid-gen1|noise_generator 1|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.3 turbulence 0.9 } }
 irid-gen3|noise_generator 3|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.3 turbulence 0.9 } }
 irid-bumps||pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.7 thickness 0.25 turbulence 0.3 } } normal { bumps 0.5 scale 0.3 }
+irid-reflect|} background { rgb <0.3, 0.5, 0.7>|pigment { rgb 0.2 } finish { ambient 0 diffuse 0.5 reflection 0.6 irid { 0.5 thickness 0.6 turbulence 0.8 } }
 caustics||pigment { rgb 0.3 } finish { ambient 0 diffuse 1 } } plane { -z, 2 hollow pigment { rgbf <1, 1, 1, 0.9> } finish { ambient 0 diffuse 0 } interior { caustics 1.2 } normal { bumps 0.6 scale 0.5 }
 LIST
 echo "$n probes"
