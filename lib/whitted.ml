@@ -313,10 +313,17 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
       let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
       let rd = fr.rd in
       if k < 0. then begin
-        (* total internal reflection: not filtered by the surface colour *)
+        (* total internal reflection: not filtered by the surface colour;
+           iridescent by the top layer's finish, as POV-Ray's
+           ComputeReflection makes it (its TIR passes the texture's
+           finish) *)
         mirror d n n0 rd;
         fr.k.child <- weight;
         trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
+        (match tex with
+        | ({ tmap = None; finish = f; _ } : Texture.layer) :: _ when f.irid > 0. ->
+            irid s f fr.p cos_i (Float.abs (dot rd n)) rc
+        | _ -> ());
         Color.acc_set out (c.ar +. (fade.ar *. rc.ar)) (c.ag +. (fade.ag *. rc.ag)) (c.ab +. (fade.ab *. rc.ab))
       end
       else begin

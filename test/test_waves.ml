@@ -139,10 +139,10 @@ let pov_normals =
    scene's number_of_waves) and iridescence's turbulence (the scene's
    noise generator), a plane lit head-on *)
 let pov_scenes =
-  Alcotest.test_case "ripples, waves, irid, caustics: POV-Ray's 16-bit pictures of 10 probes, pixel for pixel" `Quick (fun () ->
+  Alcotest.test_case "ripples, waves, irid, caustics: POV-Ray's 16-bit pictures of 11 probes, pixel for pixel" `Quick (fun () ->
       List.iter
         (fun p -> same_picture ("s-" ^ p))
-        [ "ripples"; "ripples-5"; "waves"; "waves-1"; "irid"; "irid-gen1"; "irid-gen3"; "irid-bumps"; "irid-reflect"; "caustics" ])
+        [ "ripples"; "ripples-5"; "waves"; "waves-1"; "irid"; "irid-gen1"; "irid-gen3"; "irid-bumps"; "irid-reflect"; "irid-tir"; "caustics" ])
 
 (* number_of_waves: a global_settings item (POV-Ray 3.7 rejects it in a
    pattern); below 1 it is 1, with POV-Ray's warning; the compiler sets

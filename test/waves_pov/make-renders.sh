@@ -3,7 +3,8 @@
 # the camera, lit head-on by a white parallel light, with the pigment
 # and finish given; caustics: a bumpy glass plane in front of it (its
 # normal towards the floor: POV-Ray turns it), its
-# faked caustics on the plane), then POV-Ray 3.7 renders each to a 16-bit linear
+# faked caustics on the plane; irid-tir: a glass box on its edge in
+# front of it, the light totally reflected inside it iridescent), then POV-Ray 3.7 renders each to a 16-bit linear
 # PPM (48 x 36, no anti-aliasing). Run from this folder: sh make-renders.sh
 set -e
 n=0
@@ -28,6 +29,7 @@ irid-gen1|noise_generator 1|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 ir
 irid-gen3|noise_generator 3|pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.5 thickness 0.3 turbulence 0.9 } }
 irid-bumps||pigment { rgb 0.45 } finish { ambient 0 diffuse 1 irid { 0.7 thickness 0.25 turbulence 0.3 } } normal { bumps 0.5 scale 0.3 }
 irid-reflect|} background { rgb <0.3, 0.5, 0.7>|pigment { rgb 0.2 } finish { ambient 0 diffuse 0.5 reflection 0.6 irid { 0.5 thickness 0.6 turbulence 0.8 } }
+irid-tir||pigment { checker rgb 0.15 rgb 0.5 scale 0.5 } finish { ambient 1 diffuse 0 } } box { <-3, -1.2, -1.2>, <3, 1.2, 1.2> rotate x*35 translate -3*z pigment { rgbf 1 } finish { ambient 0 diffuse 0 irid { 0.8 thickness 0.5 turbulence 0.5 } } interior { ior 1.5 }
 caustics||pigment { rgb 0.3 } finish { ambient 0 diffuse 1 } } plane { -z, 2 hollow pigment { rgbf <1, 1, 1, 0.9> } finish { ambient 0 diffuse 0 } interior { caustics 1.2 } normal { bumps 0.6 scale 0.5 }
 LIST
 echo "$n probes"
