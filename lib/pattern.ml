@@ -406,12 +406,6 @@ let crackle_into (c : crackle) gen (p : Vec3.m) (r : result) =
   in
   r.v <- Float.max (Float.min v 1.) 0.
 
-(* POV-Ray's cycloidal: the sine of [v] in turns, its fraction taken
-   times 50000 and back as POV-Ray writes it (texture.cpp) *)
-let[@inline] cycloidal v =
-  if v >= 0. then Float.sin ((v -. Float.floor v) *. 50000. /. 50000. *. two_pi)
-  else 0. -. Float.sin ((0. -. (v +. Float.floor (0. -. v))) *. 50000. /. 50000. *. two_pi)
-
 (* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
 let[@inline] tri v =
   let f = if v >= 0. then v -. Float.floor v else v +. 1. +. Float.floor (Float.abs v) in
@@ -628,8 +622,6 @@ let[@inline never] magnet_into f formula ~julia ~cr ~ci (w : work) =
   done;
   if !escaped >= 0 then w.r.v <- exterior_shade f !escaped !zr !zi else w.r.v <- interior_shade f !zr !zi !m2
 
-(* POV-Ray keeps a pattern's frequency and phase in single precision *)
-let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)
 
 (* POV-Ray's ripples and waves patterns (pattern.cpp): the mean, over the
    sources, of the sine (cycloidal) of the distance d to the source
@@ -639,7 +631,7 @@ let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)
    frequency and phase apply again, as to any pattern, to the value. *)
 let waves_into t (w : work) =
   let wv = waves () in
-  let freq = single t.frequency and phase = single t.phase in
+  let freq = t.frequency and phase = t.phase in
   let x = w.p.mx and y = w.p.my and z = w.p.mz in
   let ripples = match t.kind with Ripples -> true | _ -> false in
   let acc = ref 0. in

@@ -120,19 +120,20 @@ let same_picture ?(eps = 0.75) name =
       (pov x y c)
 
 (* The normal probes of make-normals.sh: a plane under the normal, lit
-   by a red light from -x, a green one from -y and a blue one head-on.
-   Its probes bozo, spotted, granite, bumps-map, facets and
-   facets-coords wait for Pattern's bozo, granite and bumps values and
-   crackle's feature points to be POV-Ray's (bozo, spotted and bumps-map
-   matched within 0.5 step with bozo's value Noise.noise 2) *)
+   by a red light from -x, a green one from -y and a blue one head-on:
+   the normal patterns' own formulas, and the generic slope of bozo,
+   spotted (with a slope_map), granite, bumps under a normal_map, and
+   facets (also with coords) over POV-Ray's pattern values and crackle's
+   points *)
 let probes =
   [
     "bumps"; "bumps-slope"; "bumps-warp"; "dents"; "dents-gen1"; "dents-gen3"; "wrinkles"; "ripples"; "ripples-3";
-    "waves"; "waves-25"; "quilted"; "leopard-hole"; "gradient-warp"; "ripples-map";
+    "waves"; "waves-25"; "quilted"; "leopard-hole"; "gradient-warp"; "ripples-map"; "bozo"; "spotted"; "granite";
+    "bumps-map"; "facets"; "facets-coords";
   ]
 
 let pov_normals =
-  Alcotest.test_case "normals: POV-Ray's 16-bit pictures of 15 probes, pixel for pixel" `Quick (fun () ->
+  Alcotest.test_case "normals: POV-Ray's 16-bit pictures of 21 probes, pixel for pixel" `Quick (fun () ->
       List.iter (fun p -> same_picture ("n-" ^ p)) probes)
 
 (* The scene probes of make-renders.sh: ripples and waves pigments (the
