@@ -335,12 +335,14 @@ let solid_grad, solid_perm =
       let y = comp () in
       let z = comp () in
       let l = (x *. x) +. (y *. y) +. (z *. z) in
-      if l > 1.0 || l < 1.0e-5 then pick () else (x, y, z, sqrt l)
+      if l > 1.0 || l < 1.0e-5 then pick () else (x, y, z, 1.0 /. sqrt l)
     in
-    let x, y, z, l = pick () in
-    Float.Array.set g (3 * i) (x /. l);
-    Float.Array.set g ((3 * i) + 1) (y /. l);
-    Float.Array.set g ((3 * i) + 2) (z /. l)
+    (* scaled by the reciprocal of the length, as POV-Ray 3.7.0 does (a
+       division instead is one unit in the last place off at times) *)
+    let x, y, z, r = pick () in
+    Float.Array.set g (3 * i) (x *. r);
+    Float.Array.set g ((3 * i) + 1) (y *. r);
+    Float.Array.set g ((3 * i) + 2) (z *. r)
   done;
   for i = 0 to entries - 1 do
     p.(i) <- i
