@@ -142,9 +142,29 @@ let un st op a =
       let o = fresh st in
       V { slot = o; code = Some (fun s b -> ra s b; set s (b + o) (apply1 op (get s (b + ia)))) }
 
+(* pow(a, n) for a constant n of 0, 2, 3, ..., 8, as POV-Ray's function
+   compiler writes it (fncode.cpp): 1 for 0, else a chain of products,
+   which rounds otherwise than the C library's pow (x^3 is (x x) x, x^6
+   is ((x x)(x x))(x x), ...) *)
+let[@inline] ipow n x =
+  match n with
+  | 2 -> x *. x
+  | 3 -> x *. x *. x
+  | 4 -> let y = x *. x in y *. y
+  | 5 -> let y = x *. x in (y *. y) *. x
+  | 6 -> let y = x *. x in (y *. y) *. y
+  | 7 -> let y = x *. x in ((y *. y) *. x) *. y
+  | _ -> let y = x *. x in let y = y *. y in y *. y
+
 let bin st op a b =
   match (a, b) with
   | K x, K y -> K (apply2 op x y)
+  | _, K 0. when op = Pow -> K 1.
+  | _, K y when op = Pow && Float.is_integer y && y >= 2. && y <= 8. ->
+      let n = int_of_float y in
+      let ia, ra = operand st a in
+      let o = fresh st in
+      V { slot = o; code = Some (fun s k -> ra s k; set s (k + o) (ipow n (get s (k + ia)))) }
   | _ ->
       let ia, ra = operand st a and ib, rb = operand st b in
       let o = fresh st in
@@ -515,10 +535,12 @@ let source st =
   Buffer.contents b
 
 (* POV-Ray's internal functions camlray has (functions.inc's f_sphere,
-   f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph, f_helix1; f_noise3d
-   and f_ridged_mf with camlray's noise), by the values POV-Ray's own
-   give (checked at 30 random points to 1e-12): the parameters after x, y,
-   z, and the code from slot [b] *)
+   f_torus, f_rounded_box, f_superellipsoid, f_r, f_th, f_ph, f_helix1,
+   by the values POV-Ray's own give, checked at 30 random points to
+   1e-12; and the noise functions f_noise3d, f_noise_generator, f_ridge,
+   f_ridged_mf, f_hetero_mf, POV-Ray's formulas over POV-Ray's noise,
+   checked against values POV-Ray wrote, test/fn_pov/): the parameters
+   after x, y, z, and the code from slot [b] *)
 (* the [i]th argument of a frame at [b]; the helpers below are top-level
    and inlined, not local closures: a float a closure returns is boxed,
    and these run at every step of an isosurface's root search *)
@@ -527,11 +549,49 @@ let[@inline] g s b i = get s (b + i)
 (* f_rounded_box's per-axis distance *)
 let[@inline] box_axis v h r = Float.max (Float.abs v -. h +. r) 0.
 
-(* f_ridged_mf's ridge of the signed noise *)
-let[@inline] ridge offset x y z =
-  let n = Float.abs ((2. *. Camlray.Noise.noise3 x y z) -. 1.) in
+(* the noise generator an internal function's argument names, as POV-Ray
+   reads it: truncated to an integer, its two low bits (4 is 0, the
+   original noise as 1 is; -1 is 3) *)
+let[@inline] gen_of v = int_of_float v land 3
+
+(* POV-Ray's noise stretched to [-1, 1] (n * 2 - 1), as the fractal
+   functions take it *)
+let[@inline] snoise gen x y z = (Camlray.Noise.noise gen x y z *. 2.0) -. 1.0
+
+(* f_ridged_mf's octave: (offset - |n|)^2 of the stretched noise *)
+let[@inline] ridged gen offset x y z =
+  let n = Float.abs (snoise gen x y z) in
   let r = offset -. n in
   r *. r
+
+(* f_ridge's octave: |noise - ridge| scaled by 1 / max(ridge, 1 - ridge) *)
+let[@inline] ridge_octave gen ridge rscale x y z = Float.abs (Camlray.Noise.noise gen x y z -. ridge) *. rscale
+
+(* f_hetero_mf's increment before its weights: the stretched noise plus
+   the offset *)
+let[@inline] hetero gen offset x y z = snoise gen x y z +. offset
+
+(* C's max of doubles as POV-Ray writes it: [b] when [a < b] *)
+let[@inline] cmax (a : float) b = if a < b then b else a
+
+(* f_ridged_mf's exponents lacunarity^(-H i), octave i's weight. POV-Ray
+   makes them at the function's first call, from that call's H and
+   lacunarity (one table per [function { internal(59) }]), and keeps them
+   for every later call whatever its parameters (so two calls with other
+   H or lacunarity share the first's weights; its octaves still scale the
+   point by their own lacunarity): the same here, the table made once per
+   compiled function. POV-Ray's table has octaves + 1 entries (the
+   frequency multiplied up, then raised to -H); past them it reads what
+   lies beyond, where this one goes on with the same rule, up to 4096 *)
+let ridged_exponents h lac octaves =
+  let n = if Float.is_nan octaves || octaves < 63. then 64 else if octaves > 4095. then 4096 else int_of_float octaves + 1 in
+  let ea = Float.Array.make n 0. in
+  let freq = ref 1.0 in
+  for i = 0 to n - 1 do
+    Float.Array.unsafe_set ea i (Float.pow !freq (-.h));
+    freq := !freq *. lac
+  done;
+  ea
 
 let internal_fn n : (int * Fn.code) option =
   match n with
@@ -613,26 +673,110 @@ let internal_fn n : (int * Fn.code) option =
         in
         set s (b + 10) (Float.min (major +. r) d -. minor))
   | 76 ->
-      (* f_noise3d: camlray's own noise, in [0, 1] like POV-Ray's (whose
-         noise camlray does not rebuild: the values differ) *)
-      Some (0, fun s b -> set s (b + 3) (Camlray.Noise.noise3 (g s b 0) (g s b 1) (g s b 2)))
-  | 59 ->
-      (* f_ridged_mf: Musgrave's ridged multifractal (H, lacunarity,
-         octaves, offset, gain, noise generator), over camlray's signed
-         noise (POV-Ray's noise is its own, so its values differ) *)
+      (* f_noise3d: POV-Ray's noise of the scene's generator
+         (global_settings' noise_generator, 2 when none; at parse time the
+         last one read so far, as POV-Ray's) *)
+      Some (0, fun s b ->
+        set s (b + 3) (Camlray.Noise.noise !Camlray.Pattern.scene_noise_generator (g s b 0) (g s b 1) (g s b 2)))
+  | 78 ->
+      (* f_noise_generator: POV-Ray's noise of the generator given *)
+      Some (1, fun s b -> set s (b + 4) (Camlray.Noise.noise (gen_of (g s b 3)) (g s b 0) (g s b 1) (g s b 2)))
+  | 58 ->
+      (* f_ridge: lambda, octaves, omega, offset, ridge, generator.
+         Octave i (from 0, at the point times lambda^i, weight omega^i)
+         is |noise - ridge| / max(ridge, 1 - ridge) less the offset; the
+         fraction of the octaves one more octave so weighted; the sum over
+         the weights' sum, divided by max(offset, 1 - offset) *)
       Some (6, fun s b ->
         let x = g s b 0 and y = g s b 1 and z = g s b 2 in
+        let lambda = g s b 3 and oct = g s b 4 and omega = g s b 5 and off = g s b 6 and ridge = g s b 7 in
+        let gen = gen_of (g s b 8) in
+        let octaves = int_of_float oct in
+        let rscale = 1.0 /. cmax ridge (1.0 -. ridge) and scale = 1.0 /. cmax off (1.0 -. off) in
+        let resid = oct -. float_of_int octaves in
+        let value = ref (ridge_octave gen ridge rscale x y z -. off) in
+        let tot = ref 1.0 and l = ref lambda and o = ref omega in
+        for _ = 2 to octaves do
+          let li = !l in
+          let v = ridge_octave gen ridge rscale (x *. li) (y *. li) (z *. li) in
+          value := !value +. (!o *. (v -. off));
+          tot := !tot +. !o;
+          l := li *. lambda;
+          o := !o *. omega
+        done;
+        if resid <> 0.0 then begin
+          let li = !l in
+          let v = ridge_octave gen ridge rscale (x *. li) (y *. li) (z *. li) in
+          value := !value +. (!o *. (v -. off) *. resid);
+          tot := !tot +. (!o *. resid)
+        end;
+        set s (b + 9) (!value *. scale /. !tot))
+  | 59 ->
+      (* f_ridged_mf: Musgrave's ridged multifractal, H, lacunarity,
+         octaves, offset, gain, generator: octave 0 the ridge (offset -
+         |n|)^2, each further one (the point times the lacunarity again)
+         that ridge weighted by the previous one times the gain (clamped
+         to [0, 1]) and by the exponent table's entry *)
+      let table = Atomic.make None in
+      Some (6, fun s b ->
         let h = g s b 3 and lac = g s b 4 and octaves = g s b 5 and offset = g s b 6 and gain = g s b 7 in
-        let signal = ref (ridge offset x y z) in
-        let result = ref !signal and freq = ref 1. and i = ref 1 in
+        let gen = gen_of (g s b 8) in
+        let ea =
+          match Atomic.get table with
+          | Some ea -> ea
+          | None ->
+              let ea = ridged_exponents h lac octaves in
+              if Atomic.compare_and_set table None (Some ea) then ea
+              else Option.get (Atomic.get table)
+        in
+        let last = Float.Array.length ea - 1 in
+        let x = ref (g s b 0) and y = ref (g s b 1) and z = ref (g s b 2) in
+        let signal = ref (ridged gen offset !x !y !z) in
+        let result = ref !signal and i = ref 1 in
         while float_of_int !i < octaves do
-          freq := !freq *. lac;
-          let weight = Float.min 1. (Float.max 0. (!signal *. gain)) in
-          signal := weight *. ridge offset (x *. !freq) (y *. !freq) (z *. !freq);
-          result := !result +. (!signal *. Float.pow !freq (-.h));
+          x := !x *. lac;
+          y := !y *. lac;
+          z := !z *. lac;
+          let w = !signal *. gain in
+          let w = if w > 1.0 then 1.0 else if w < 0.0 then 0.0 else w in
+          signal := ridged gen offset !x !y !z *. w;
+          result := !result +. (!signal *. Float.Array.unsafe_get ea (if !i < last then !i else last));
           incr i
         done;
         set s (b + 9) !result)
+  | 29 ->
+      (* f_hetero_mf: Musgrave's heterogeneous multifractal, H,
+         lacunarity, octaves, offset, T, generator: the first octave's
+         stretched noise plus the offset; each further one (the point
+         times the lacunarity again) adds its own, weighted by
+         lacunarity^(-H i) and by the sum so far raised to the integer
+         part of T; the octaves' fraction one more such increment, times
+         the fraction and the sum *)
+      Some (6, fun s b ->
+        let h = g s b 3 and lac = g s b 4 and octaves = g s b 5 and offset = g s b 6 and t = g s b 7 in
+        let gen = gen_of (g s b 8) in
+        let signal = ref (hetero gen offset (g s b 0) (g s b 1) (g s b 2)) in
+        let x = ref (g s b 0 *. lac) and y = ref (g s b 1 *. lac) and z = ref (g s b 2 *. lac) in
+        let step = Float.pow lac (-.h) in
+        let ea = ref step and i = ref 1 and times = int_of_float t in
+        while float_of_int !i < octaves do
+          let inc = ref (hetero gen offset !x !y !z *. !ea) in
+          for _ = 1 to times do
+            inc := !inc *. !signal
+          done;
+          signal := !signal +. !inc;
+          x := !x *. lac;
+          y := !y *. lac;
+          z := !z *. lac;
+          ea := !ea *. step;
+          incr i
+        done;
+        let rem = octaves -. float_of_int (int_of_float octaves) in
+        if rem <> 0.0 then begin
+          let inc = hetero gen offset !x !y !z *. !ea in
+          signal := !signal +. (rem *. inc *. !signal)
+        end;
+        set s (b + 9) !signal)
   | _ -> None
 
 let compile ~resolve ~params toks =

@@ -945,7 +945,7 @@ let function_errors () =
   Scn.check_message "sphere { 0, 1 pigment { function (a, b) { a + b } } }" "takes 3 parameters";
   Scn.check_message "#declare T = function { transform { scale 2 } }\nsphere { 0, 1 pigment { function { T(x, y, z) } } }"
     "take a component";
-  Scn.check_message "#include \"functions.inc\"\nsphere { 0, 1 normal { function { f_hetero_mf(x, y, z, 1, 2, 3, 4, 5, 6) } } }"
+  Scn.check_message "#include \"functions.inc\"\nsphere { 0, 1 normal { function { f_mesh1(x, y, z, 1, 2, 3, 4, 5) } } }"
     "internal function"
 
 let tests =
