@@ -245,15 +245,17 @@ let call loc name args =
       arity 3; vec3_value (Transform.vector (Transform.axis_rotate (v 1) (f 2)) (v 0))
   | "vturbulence" ->
       (* vturbulence(lambda, omega, octaves, V): POV-Ray's DTurbulence,
-         sum over i < octaves of omega^i dnoise(lambda^i V), the octaves
-         truncated and kept within 1 .. 10 as POV-Ray does; camlray's
-         noise, not POV-Ray's *)
+         sum over i < octaves of omega^i DNoise(lambda^i V), the octaves
+         truncated and kept within 1 .. 10, lambda and omega rounded to
+         single precision (POV-Ray keeps them in its turbulence's
+         single-precision fields), as POV-Ray does *)
       arity 4;
       let octaves = Float.trunc (f 2) in
       let octaves = if octaves < 1. then 1 else if octaves > 10. then 10 else int_of_float octaves in
+      let single x = Int32.float_of_bits (Int32.bits_of_float x) in
       let p = Vec3.m () and out = Vec3.m () in
       Vec3.load p (v 3);
-      Noise.turbulence_m ~octaves ~omega:(f 1) ~lambda:(f 0) p out;
+      Noise.dturbulence ~octaves ~omega:(single (f 1)) ~lambda:(single (f 0)) p out;
       vec3_value (Vec3.of_m out)
   | "concat" -> String (String.concat "" (List.map (to_string_value loc) args))
   | "str" -> arity 3; String (format_float (small 1) (small 2) (f 0))

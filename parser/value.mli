@@ -38,7 +38,7 @@ val call : Loc.t -> string -> t list -> t
 (** Built-in functions: [sin cos tan asin acos atan atan2 sqrt pow exp log
     (base 10) ln abs min max mod int floor ceil div radians degrees select
     vlength vnormalize vcross vdot vrotate vaxis_rotate vturbulence]
-    (vturbulence with camlray's noise)...
+    (vturbulence POV-Ray's DTurbulence, with its noise)...
     Unknown names raise an error naming the function. *)
 
 val functions : string list
