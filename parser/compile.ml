@@ -608,13 +608,16 @@ and scene_ (s : Sdl.scene) =
           | _ -> b)
         Scene.default_settings.adc_bailout s.items;
     (* the last noise_generator of the scene's global_settings, wherever it
-       is, serves every pattern naming none (POV-Ray's scene setting) *)
+       is, serves every pattern naming none (POV-Ray's scene setting);
+       without one, the scene's language version's: 1 below 3.5 (a
+       #version 3.1 scene renders with the original noise), else 2 *)
     Pattern.scene_noise_generator :=
       List.fold_left
         (fun g -> function
           | Sdl.Global_settings (_, gs) -> List.fold_left (fun g -> function Sdl.Noise_generator n -> n | _ -> g) g gs
           | _ -> g)
-        2 s.items;
+        (match s.version with Some v -> Defaults.noise_for_version v | None -> 2)
+        s.items;
     (* and the last number_of_waves, the number of wave sources of every
        ripples and waves (POV-Ray's scene setting, 10 by default) *)
     Pattern.set_number_of_waves

@@ -7,6 +7,7 @@ let items_seen = ref false
 let tex = ref (Texture.layer Pigment.black Finish.default)
 let tex_set = ref false
 let charset_ = ref `Ascii
+let noise_explicit = ref false
 let warned : (string, unit) Hashtbl.t = Hashtbl.create 4
 
 let reset () =
@@ -17,16 +18,27 @@ let reset () =
   tex := Texture.layer Pigment.black Finish.default;
   tex_set := false;
   charset_ := `Ascii;
+  noise_explicit := false;
+  Pattern.scene_noise_generator := 2;
   Hashtbl.reset warned
 
 let version () = !version_
 let charset () = !charset_
 let set_charset c = charset_ := c
 
+(* POV-Ray's scene noise generator follows each #version until
+   global_settings name one: 1 (the original noise) below 3.5, else 2 *)
+let noise_for_version v = if v < 3.5 then 1 else 2
+
 let set_version v =
   version_ := v;
   given := true;
+  if not !noise_explicit then Pattern.scene_noise_generator := noise_for_version v;
   if (not !items_seen) && !first = None then first := Some v
+
+let set_noise_generator n =
+  noise_explicit := true;
+  Pattern.scene_noise_generator := n
 
 let restore_version v = version_ := v
 let version_given () = !given

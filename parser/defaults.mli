@@ -12,6 +12,17 @@ val charset : unit -> [ `Ascii | `Utf8 | `Sys ]
 
 val set_charset : [ `Ascii | `Utf8 | `Sys ] -> unit
 val set_version : float -> unit
+val set_noise_generator : int -> unit
+(** global_settings' [noise_generator]: the scene's generator
+    ([Camlray.Pattern.scene_noise_generator]) from here on, which no later
+    [#version] changes. Until one is given, each [#version] sets it as
+    POV-Ray does, 1 (the original noise) below 3.5, else 2; {!reset} sets
+    2 (f_noise3d evaluated while parsing reads it). *)
+
+val noise_for_version : float -> int
+(** The generator a scene naming none gets under a language version: 1
+    below 3.5, else 2. *)
+
 val restore_version : float -> unit
 (** Put back the version an included file started with, at its end
     (POV-Ray's rule); not a new [#version]. *)

@@ -194,7 +194,7 @@
       if n < 1 || n > 3 then Diag.error (loc $loc(e)) "noise_generator in global_settings is 1, 2 or 3, found %d" n;
       (* from here on the scene's generator, for f_noise3d evaluated
          while parsing (POV-Ray's sets its scene's as it reads it) *)
-      Camlray.Pattern.scene_noise_generator := n;
+      Defaults.set_noise_generator n;
       Sdl.Noise_generator n }
   | NUMBER_OF_WAVES e = param { let n = Value.to_int (loc $loc(e)) e in
       (* POV-Ray: "Illegal Value: number_of_waves must be greater than 0.

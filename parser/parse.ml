@@ -27,8 +27,6 @@ let run options ~name text =
   Budget.reset options.limits.max_objects;
   Value.reset_streams ();
   Probe.reset ();
-  (* the scene's noise generator until its global_settings name one *)
-  Camlray.Pattern.scene_noise_generator := 2;
   let last_loc = ref Loc.none in
   try
     let toks = Toks.of_text ~file:name text in

@@ -150,7 +150,7 @@ let pov_noise_functions () =
   if !bad <> [] then Alcotest.failf "%d values differ:\n%s" (List.length !bad) (String.concat "\n" (List.rev !bad))
 
 (* f_noise3d while parsing takes the generator the global_settings read
-   so far gave, 2 before any (POV-Ray 3.7 writes 0.68958521726421096
+   so far gave (else the #version's), 2 before any (POV-Ray 3.7 writes 0.68958521726421096
    before a noise_generator 3, 0.57330235388277662 after it and
    0.85531098758775803 after a noise_generator 1), and a
    scene parsed next starts again from 2 *)
@@ -163,7 +163,39 @@ let noise3d_generator () =
     sphere { 0, f_noise3d(0.3, 0.7, 1.1) }" in
   Scn.check_floats ~eps:0. "before, after 3, after 1"
     [ 0.68958521726421096; 0.57330235388277662; 0.85531098758775803 ] v;
-  Scn.check_float ~eps:0. "the next scene" 0.68958521726421096 (f ~prelude:"#include \"functions.inc\"" "f_noise3d(0.3, 0.7, 1.1)")
+  Scn.check_float ~eps:0. "the next scene" 0.68958521726421096 (f ~prelude:"#include \"functions.inc\"" "f_noise3d(0.3, 0.7, 1.1)");
+  (* until global_settings name one, each #version sets it: 1 below 3.5
+     (functions.inc's closing #version puts back 3.1 there), 2 from 3.5;
+     one named stays (POV-Ray 3.7 writes these three values) *)
+  let v = Scn.floats "#version 3.1;\n#include \"functions.inc\"\n\
+    sphere { 0, f_noise3d(0.3, 0.7, 1.1) }\n\
+    #version 3.7;\n\
+    sphere { 0, f_noise3d(0.3, 0.7, 1.1) }\n\
+    global_settings { noise_generator 3 }\n\
+    #version 3.1;\n\
+    sphere { 0, f_noise3d(0.3, 0.7, 1.1) }" in
+  Scn.check_floats ~eps:0. "3.1, 3.7, 3 then 3.1" [ 0.85531098758775803; 0.68958521726421096; 0.57330235388277662 ] v;
+  (* while rendering, the scene's: the last global_settings', else its
+     version's (a #version 3.1 scene renders with the original noise, as
+     POV-Ray 3.7 does: its picture of a bozo plane is that of
+     noise_generator 1) *)
+  let shade version setting =
+    let s =
+      Scn.compile ~raw:true
+        (Printf.sprintf
+           "#version %s;\nglobal_settings { assumed_gamma 1.0 %s }\n#include \"functions.inc\"\n\
+            camera { location -z look_at 0 }\n\
+            plane { z, 1 pigment { function { f_noise3d(0.3, 0.7, 1.1) } } finish { ambient 1 diffuse 0 } }"
+           version setting)
+    in
+    (Camlray.Whitted.pixel s ~width:1 ~height:1 0 0).r
+  in
+  let g1 = shade "3.7" "noise_generator 1" and g2 = shade "3.7" "noise_generator 2" in
+  if g1 = g2 then Alcotest.fail "generators 1 and 2 shade alike";
+  Scn.check_float ~eps:0. "3.1, none: 1" g1 (shade "3.1" "");
+  Scn.check_float ~eps:0. "3.7, none: 2" g2 (shade "3.7" "");
+  Scn.check_float ~eps:0. "3.1, 2 named" g2 (shade "3.1" "noise_generator 2");
+  Scn.check_float ~eps:1e-6 "the value" (Camlray.Noise.noise 1 0.3 0.7 1.1) g1
 
 let tests =
   ( "fn",
