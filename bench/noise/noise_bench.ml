@@ -1,6 +1,6 @@
-(* noise_bench MODE N: N evaluations of MODE (snoise, noise3, dnoise,
-   turb7, turb9, fractal6, fractal10; POV-Ray's: pov1, pov2, pov3,
-   povd, povturb7, povdturb7) at N pseudo-random points in
+(* noise_bench MODE N: N evaluations of MODE (POV-Ray's noise: pov1,
+   pov2, pov3 for the generators, povd for DNoise, povturb7 and povdturb7
+   for 7-octave Turbulence and DTurbulence) at N pseudo-random points in
    [-40, 40]^3; prints a checksum so the work is not dropped. Instructions
    per evaluation: callgrind's count for N minus its count for 0, over N. *)
 open Camlray
@@ -17,40 +17,6 @@ let () =
   let p = Vec3.m () and out = Vec3.m () in
   let g i = Float.Array.unsafe_get pts i in
   (match mode with
-  | "snoise" ->
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        acc := !acc +. Noise.snoise3 (g k) (g (k + 1)) (g (k + 2))
-      done
-  | "noise3" ->
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        acc := !acc +. Noise.noise3 (g k) (g (k + 1)) (g (k + 2))
-      done
-  | "dnoise" ->
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        Noise.dnoise3 (g k) (g (k + 1)) (g (k + 2)) out;
-        acc := !acc +. out.mx +. out.my +. out.mz
-      done
-  | "turb7" | "turb9" ->
-      let octaves = if mode = "turb7" then 7 else 9 in
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        Vec3.set p (g k) (g (k + 1)) (g (k + 2));
-        Noise.turbulence_m ~octaves ~omega:0.5 ~lambda:2. p out;
-        acc := !acc +. out.mx +. out.my +. out.mz
-      done
-  | "fractal6" ->
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        acc := !acc +. Noise.fractal3 6 (g k) (g (k + 1)) (g (k + 2))
-      done
-  | "fractal10" ->
-      for i = 0 to n - 1 do
-        let k = 3 * (i land 4095) in
-        acc := !acc +. Noise.fractal3 10 (g k) (g (k + 1)) (g (k + 2))
-      done
   | "pov1" | "pov2" | "pov3" ->
       let gen = Char.code mode.[3] - Char.code '0' in
       for i = 0 to n - 1 do
