@@ -5,22 +5,10 @@ type t = { size : float; coords : float; metric : float }
 
 let default = { size = 0.1; coords = 0.; metric = 2. }
 
-(* The cubes searched around the one holding the point: offsets -2 .. 2
-   on each axis, at most one of them +-2 (POV-Ray's "knight moves": with
-   one point a cube, the nearest can be two cubes away along one axis,
-   never along two), 81 in all, in POV-Ray's order (x outermost, each
-   axis from -2), as x, y, z triples. *)
-let offsets =
-  let l = ref [] in
-  for i = -2 to 2 do
-    for j = -2 to 2 do
-      for k = -2 to 2 do
-        let far v = if abs v = 2 then 1 else 0 in
-        if far i + far j + far k <= 1 then l := k :: j :: i :: !l
-      done
-    done
-  done;
-  Array.of_list (List.rev !l)
+(* The cubes searched around the one holding the point: crackle's 81
+   (offsets -2 .. 2 on each axis, at most one of them +-2, in POV-Ray's
+   order), as x, y, z triples *)
+let offsets = Pattern.crackle_cubes
 
 let count = Array.length offsets / 3
 

@@ -55,6 +55,11 @@ type crackle = { form : Vec3.t; metric : float; offset : float; solid : bool }
 val crackle_default : crackle
 (** form <-1, 1, 0>, metric 2, offset 0, not solid. *)
 
+val crackle_cubes : int array
+(** The 81 cubes crackle (and facets) look in around the point's own, as
+    x, y, z offsets three apiece in POV-Ray's order: every cube within two
+    on each axis, at most one axis two away. *)
+
 val feature_point : float -> float -> float -> Vec3.m -> unit
 (** [feature_point cx cy cz out]: crackle's feature point of the unit
     cube whose lowest corner is [(cx, cy, cz)] (whole numbers), into
