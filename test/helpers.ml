@@ -54,3 +54,20 @@ let close ?(eps = 1e-9) a b = Float.abs (a -. b) <= eps
 (* The source scenes/ folder. *)
 let scenes_dir () =
   match Sys.getenv_opt "CAMLRAY_SCENES" with Some d -> d | None -> "../scenes"
+
+(* A folder of test data in the source tree's test/ (from the test's
+   build folder, or beside it) *)
+let data_dir name = if Sys.file_exists ("../../../test/" ^ name) then "../../../test/" ^ name else name
+
+(* The rows of numbers of a text file written by POV-Ray (#write of
+   values separated by spaces), each a list of floats *)
+let read_rows dir name =
+  let ic = open_in (Filename.concat dir name) in
+  let rec go acc =
+    match input_line ic with
+    | l -> go (List.map float_of_string (String.split_on_char ' ' (String.trim l)) :: acc)
+    | exception End_of_file ->
+        close_in ic;
+        List.rev acc
+  in
+  go []

@@ -120,18 +120,9 @@ let densities =
    [-20, 20]^3), and pattern functions of gradient x, y, z under a
    turbulence warp of amplitude 0.001 (one octave: DNoise; six with omega
    0.6 and lambda 2.3: DTurbulence) *)
-let pov_dir = if Sys.file_exists "../../../test/noise_pov" then "../../../test/noise_pov" else "noise_pov"
+let pov_dir = Helpers.data_dir "noise_pov"
 
-let read_rows name =
-  let ic = open_in (Filename.concat pov_dir name) in
-  let rec go acc =
-    match input_line ic with
-    | l -> go (List.map float_of_string (String.split_on_char ' ' (String.trim l)) :: acc)
-    | exception End_of_file ->
-        close_in ic;
-        List.rev acc
-  in
-  go []
+let read_rows = Helpers.read_rows pov_dir
 
 let pov_noise gen =
   Alcotest.test_case (Printf.sprintf "Noise.noise %d: POV-Ray's f_noise3d at 400 points" gen) `Quick (fun () ->

@@ -5,18 +5,9 @@
    3.7.0 running the .pov files beside them (see each file's head). *)
 open Camlray
 
-let pov_dir = if Sys.file_exists "../../../test/waves_pov" then "../../../test/waves_pov" else "waves_pov"
+let pov_dir = Helpers.data_dir "waves_pov"
 
-let read_rows name =
-  let ic = open_in (Filename.concat pov_dir name) in
-  let rec go acc =
-    match input_line ic with
-    | l -> go (List.map float_of_string (String.split_on_char ' ' (String.trim l)) :: acc)
-    | exception End_of_file ->
-        close_in ic;
-        List.rev acc
-  in
-  go []
+let read_rows = Helpers.read_rows pov_dir
 
 let single x = Int32.float_of_bits (Int32.bits_of_float x)
 
