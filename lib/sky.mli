@@ -2,7 +2,13 @@
     nothing, layered (the last written on top); where every layer is
     transparent the background shows through. *)
 
-type t = { pigments : Pigment.t list  (** the top (last written) first *) }
+type t = {
+  pigments : Pigment.t list;  (** the top (last written) first *)
+  legacy : bool;
+      (** POV-Ray 3.6's layering (scenes before [#version 3.7]): each
+          layer weighed by the filter and transmit of those above as one
+          number, not by their colour *)
+}
 
 val none : t
 

@@ -678,7 +678,7 @@ and scene_ (s : Sdl.scene) =
                (List.rev_map (fun (g, own) -> Array.of_list ((if g then Array.to_list lights else []) @ own)) !group_sets));
         camera;
         background = !background;
-        sky = !sky;
+        sky = { !sky with legacy = not v37 };
         fog = List.rev !fog;
         rainbows = List.rev !rainbows;
         atmosphere = Scene.atmosphere (List.rev !media);

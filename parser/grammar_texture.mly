@@ -207,7 +207,7 @@
       { List.fold_left (fun k f -> f k) (Option.value ~default:Sky.none k) ms }
 
 %public sky_item:
-  | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { Sky.pigments = p :: k.pigments } }
+  | PIGMENT LBRACE p = pigment_body RBRACE { fun (k : Sky.t) -> { k with Sky.pigments = p :: k.pigments } }
   | t = transformation { Sky.transform t }
 
 (* pigment { ... } as it changes the pigment it is written over: POV-Ray

@@ -65,8 +65,8 @@ let compile ?(raw = false) src =
       | Ok s -> s)
 
 (* The linear colour of pixel (x, y) of a w x h render. *)
-let pixel ?(w = 1) ?(h = 1) ?(x = 0) ?(y = 0) src =
-  Whitted.pixel (compile src) ~width:w ~height:h x y
+let pixel ?(raw = false) ?(w = 1) ?(h = 1) ?(x = 0) ?(y = 0) src =
+  Whitted.pixel (compile ~raw src) ~width:w ~height:h x y
 
 let close ?(eps = 5e-5) msg expected actual =
   if Float.abs (expected -. actual) > eps then

@@ -1075,10 +1075,26 @@ let negative_transmit () =
   in
   Scn.color "1 - the wall" (0.8, 0.6, 0.4) c
 
+(* sky_sphere layers, by POV-Ray's rule of the scene's version: 3.7 weighs
+   a layer by the colour the layers above let through (the top's rgb x
+   filter), 3.6 by their filter and transmit as one number; a top layer
+   rgbf <0.5, 0.5, 0.5, 0.8> over rgb <0.2, 0.4, 0.6>, background black *)
+let sky_layers () =
+  let sky v =
+    Scn.pixel ~raw:true
+      (Printf.sprintf
+         "#version %s;\nglobal_settings { assumed_gamma 1.0 }\n\
+          sky_sphere { pigment { rgb <0.2, 0.4, 0.6> } pigment { rgbf <0.5, 0.5, 0.5, 0.8> } }"
+         v)
+  in
+  Scn.color "3.7: 0.1 + 0.4 x the layer below" (0.18, 0.26, 0.34) (sky "3.7");
+  Scn.color "3.6: 0.1 + 0.8 x the layer below" (0.26, 0.42, 0.58) (sky "3.6")
+
 let tests =
   ( "whitted",
     [
       Alcotest.test_case "finishes" `Quick finishes;
+      Alcotest.test_case "sky_sphere layers: POV-Ray 3.7's rule and 3.6's" `Quick sky_layers;
       Alcotest.test_case "negative transmit: the picture behind, its sign turned" `Quick negative_transmit;
       Alcotest.test_case "lights" `Quick lights;
       Alcotest.test_case "shadows" `Quick shadows;
