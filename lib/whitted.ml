@@ -160,11 +160,16 @@ let[@inline] fogged_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) med
       end
 
 (* What a ray inside solids with media brings back from the point [p] it
-   hit, through them (see {!Volume}) *)
+   hit, through them (see {!Volume}). As POV-Ray 3.7, only a hollow ray
+   (inside hollow solids alone) meets media: inside a solid that is not
+   hollow, its own media and those of the solids around it are not
+   computed (measured: an emitting sphere not hollow shows nothing, one
+   inside a hollow emitting sphere shows the outer's media in the shell
+   only). *)
 let rec has_media = function [] -> false | (i : Interior.t) :: r -> i.media <> [] || has_media r
 
 let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
-  if has_media media then begin
+  if has_media media && in_open media then begin
     let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
     let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
     Volume.apply s o d t media out
@@ -189,8 +194,8 @@ let rainbowed (s : Scene.t) (d : Vec3.m) dist out =
 let[@inline never] aired_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m) media out =
   let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
   let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
-  if media <> [] then Volume.apply s o d t media out;
   if in_open media then begin
+    if media <> [] then Volume.apply s o d t media out;
     if s.rainbows <> [] then rainbowed s d (Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))) out;
     if s.atmosphere <> [] then Volume.apply s o d t s.atmosphere out
   end

@@ -1090,10 +1090,29 @@ let sky_layers () =
   Scn.color "3.7: 0.1 + 0.4 x the layer below" (0.18, 0.26, 0.34) (sky "3.7");
   Scn.color "3.6: 0.1 + 0.8 x the layer below" (0.26, 0.42, 0.58) (sky "3.6")
 
+(* Media only along a hollow ray (POV-Ray 3.7, measured): an emitting
+   sphere that is not hollow shows nothing; a clear solid sphere inside a
+   hollow emitting one leaves its media to the shell (1 unit before and 1
+   after the solid: half of the 4 units straight through) *)
+let media_hollow_rays () =
+  let scene inner hollow =
+    Scn.pixel
+      (Printf.sprintf
+         "sphere { <0,0,5>, 2 pigment { rgbf 1 } %s interior { media { emission 0.1 } } }\n%s"
+         (if hollow then "hollow" else "")
+         (if inner then "sphere { <0,0,5>, 1 pigment { rgbf 1 } }" else ""))
+  in
+  let g (c : Color.t) = c.g in
+  let through = g (scene false true) in
+  if not (through > 0.3) then Alcotest.failf "4 units of emission 0.1: %g" through;
+  Scn.close "not hollow: no media" 0. (g (scene false false));
+  Scn.close ~eps:1e-9 "a solid inside: the shell's half" (through /. 2.) (g (scene true true))
+
 let tests =
   ( "whitted",
     [
       Alcotest.test_case "finishes" `Quick finishes;
+      Alcotest.test_case "media only along hollow rays (POV-Ray 3.7)" `Quick media_hollow_rays;
       Alcotest.test_case "sky_sphere layers: POV-Ray 3.7's rule and 3.6's" `Quick sky_layers;
       Alcotest.test_case "negative transmit: the picture behind, its sign turned" `Quick negative_transmit;
       Alcotest.test_case "lights" `Quick lights;
