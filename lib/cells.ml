@@ -2,14 +2,19 @@
 
 let mask32 = 0xffff_ffff
 
-(* the permutation: identity, then shuffled from the top with POV-Ray's
-   LCG (state * 1812433253 + 12345 mod 2^32, bits 16..30 out), seed 0 *)
+(* POV-Ray's congruence (the C library's rand, on 32 bits): the next
+   state, and the 15 bits 16 to 30 a draw gives *)
+let lcg state = ((state * 1812433253) + 12345) land mask32
+let[@inline] draw15 state = (state lsr 16) land 0x7fff
+
+(* the permutation (POV-Ray's hash table, its noise's and its cells'):
+   identity, then shuffled from the top with the congruence, seed 0 *)
 let perm =
   let p = Array.init 4096 Fun.id in
   let state = ref 0 in
   for i = 4095 downto 0 do
-    state := ((!state * 1812433253) + 12345) land mask32;
-    let j = ((!state lsr 16) land 0x7fff) mod 4096 in
+    state := lcg !state;
+    let j = draw15 !state mod 4096 in
     let t = p.(i) in
     p.(i) <- p.(j);
     p.(j) <- t

@@ -1,17 +1,14 @@
 (* POV-Ray 3.7's noise, the noise of every pattern, function and
-   turbulence. *)
-
-(* ---- POV-Ray 3.7's noise ----
-
-   Perlin's lattice noise as POV-Ray computes it (Skinner's version): a
+   turbulence: Perlin's lattice noise as POV-Ray computes it (Skinner's version): a
    value and a gradient at each lattice corner, read from a table of 267
    pseudo-random numbers by a hash of the corner, blended by the cubic
    s-curve. What makes it POV-Ray's are its tables, rebuilt here from
    how they were made:
    - the hash: 0 .. 4095 shuffled by the C library's linear congruence
      (x <- 1812433253 x + 12345 on 32 bits, bits 16 to 30 drawn), seed 0,
-     from the last entry down; doubled to 8192 so that sums of two
-     12-bit indices need no mask;
+     from the last entry down (Cells.perm: cells and crackle hash by the
+     same table); doubled to 8192 so that sums of two 12-bit indices
+     need no mask;
    - the numbers: entry i is the CRC-16 (polynomial 0xA001, reflected, as
      in ARC) of the 24 bytes of the vector (0.12345 i, 0.12345 i,
      0.12345 i) as big-endian doubles, scaled to [-1, 1] by 2 / 65535 and
@@ -20,21 +17,7 @@
      printed values).
    Values checked against POV-Ray 3.7's f_noise3d in test_noise. *)
 
-let lcg s = ((s * 1812433253) + 12345) land 0xFFFF_FFFF
-let[@inline] draw15 s = (s lsr 16) land 0x7FFF
-
-let hash_table =
-  let h = Array.init 8192 (fun i -> i land 4095) in
-  let s = ref 0 in
-  for i = 4095 downto 0 do
-    s := lcg !s;
-    let j = draw15 !s mod 4096 in
-    let t = h.(i) in
-    h.(i) <- h.(j);
-    h.(j) <- t
-  done;
-  Array.blit h 0 h 4096 4096;
-  h
+let hash_table = Array.append Cells.perm Cells.perm
 
 let crc16 bytes =
   let table =
@@ -173,8 +156,8 @@ let solid_grad, solid_perm =
   let p = Array.make (2 * (entries + 1)) 0 in
   let s = ref 1 in
   let comp () =
-    s := lcg !s;
-    float_of_int ((draw15 !s mod (entries lsl 1)) - entries) /. float_of_int entries
+    s := Cells.lcg !s;
+    float_of_int ((Cells.draw15 !s mod (entries lsl 1)) - entries) /. float_of_int entries
   in
   for i = 0 to entries - 1 do
     let rec pick () =
@@ -197,8 +180,8 @@ let solid_grad, solid_perm =
   let i = ref entries in
   while !i > 0 do
     let k = p.(!i) in
-    s := lcg !s;
-    let j = draw15 !s mod entries in
+    s := Cells.lcg !s;
+    let j = Cells.draw15 !s mod entries in
     p.(!i) <- p.(j);
     p.(j) <- k;
     i := !i - 2

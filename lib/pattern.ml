@@ -261,8 +261,8 @@ let make_waves n =
     Float.Array.set src (3 * i) (v.mx /. l);
     Float.Array.set src ((3 * i) + 1) (v.my /. l);
     Float.Array.set src ((3 * i) + 2) (v.mz /. l);
-    s := ((!s * 1812433253) + 12345) land 0xFFFF_FFFF;
-    Float.Array.set freq i ((float_of_int ((!s lsr 16) land 0x7FFF) *. 0.000030518509476) +. 0.01)
+    s := Cells.lcg !s;
+    Float.Array.set freq i ((float_of_int (Cells.draw15 !s) *. 0.000030518509476) +. 0.01)
   done;
   { count = n; src; freq }
 
