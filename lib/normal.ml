@@ -173,7 +173,8 @@ let own_m w nm (q : Vec3.m) (n : Vec3.m) (out : Vec3.m) =
       (* ripples, waves *)
       let wv = Pattern.waves () in
       let ripples = match t.kind with Pattern.Ripples -> true | _ -> false in
-      let freq = single t.frequency and phase = single t.phase in
+      (* frequency and phase already single, as the parser stores them *)
+      let freq = t.frequency and phase = t.phase in
       let nf = float_of_int wv.count in
       for i = 0 to wv.count - 1 do
         let vx = p.mx -. Float.Array.unsafe_get wv.src (3 * i)
@@ -297,9 +298,7 @@ let rec perturb_d w nm (point : Vec3.m) (n : Vec3.m) (out : Vec3.m) d =
           into_space nm point n l;
           perturb_d w entry (Pattern.uv_point ()) l.ln out (d + 1)
       | Leaf -> ());
-      Transform.normal_m nm.xform out;
-      if (out.mx *. out.mx) +. (out.my *. out.my) +. (out.mz *. out.mz) = 0. then Vec3.set out n.mx n.my n.mz
-      else Vec3.normalize_m out
+      back_from_pattern nm n out
 
 and into_space nm point n l =
   Transform.inv_point_m nm.xform point l.lq;
