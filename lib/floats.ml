@@ -21,3 +21,7 @@ let order_prefix a n (ord : int array) =
     done;
     Array.unsafe_set ord !i j
   done
+
+(* rounded to single precision (POV-Ray's SNGL fields, and floats read
+   from files), kept as a double *)
+let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)

@@ -14,3 +14,7 @@ val order_prefix : Float.Array.t -> int -> int array -> unit
     other records are kept beside them by index). Allocates nothing.
     Raises [Invalid_argument] when [n] is negative or past the end of [a]
     or [ord]. *)
+
+val single : float -> float
+(** [x] rounded to single precision (as POV-Ray keeps its [SNGL] fields),
+    as a double. *)

@@ -2,7 +2,7 @@
    image_height_at (imageutil.cpp) and its Image classes' float and
    16-bit conversions, reproduced in single precision. *)
 
-let f32 x = Int32.float_of_bits (Int32.bits_of_float x)
+let f32 = Floats.single
 
 (* C's (HF_VAL) / (unsigned short) of a float: truncation, then the low
    16 bits (x86's conversion through a 32-bit integer) *)

@@ -19,7 +19,7 @@ let fget = Float.Array.unsafe_get
 let tget (a : f32) i = Bigarray.Array1.unsafe_get a i
 
 (* the nearest single-precision value *)
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
+let single = Floats.single
 
 let[@inline] tri_hit ax ay az bx by bz cx cy cz (r : Ray.scratch) tmin (h : Hit.t) =
   let e1x = bx -. ax and e1y = by -. ay and e1z = bz -. az in

@@ -28,7 +28,7 @@ let fset = Float.Array.unsafe_set
 
 (* the nearest single-precision value (POV-Ray keeps mesh vertices and
    normals in floats) *)
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
+let single = Floats.single
 
 (* the cell of a coordinate, for a grid of [g] cells a side *)
 let[@inline] cell g c =

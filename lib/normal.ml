@@ -90,7 +90,7 @@ let tetra =
   [| Vec3.make 0.942809041 (-0.333333333) 0.; Vec3.make (-0.471404521) (-0.333333333) 0.816496581;
      Vec3.make (-0.471404521) (-0.333333333) (-0.816496581); Vec3.make 0. 1. 0. |]
 
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
+let single = Floats.single
 
 (* Per domain: the point in pattern space, a sample around it, the
    pattern's work. *)

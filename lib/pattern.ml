@@ -168,11 +168,6 @@ let[@inline] generator t = if t.noise_gen = 0 then !scene_noise_generator else t
 
 let default_turbulence amount = { amount; octaves = 6; omega = 0.5; lambda = 2. }
 
-(* POV-Ray keeps a turbulence's omega and lambda (and agate_turb, a
-   fog's turb_depth) in single precision (SNGL): the value it computes
-   with, which the parser stores *)
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
-
 (* the turbulence agate reads its octaves, omega and lambda from: its
    classic turbulence, else POV-Ray's default one (agate always has one,
    of amount 0) *)

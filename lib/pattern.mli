@@ -244,12 +244,6 @@ val gradient : Vec3.t -> kind
 val default_turbulence : Vec3.t -> turbulence
 (** octaves 6, omega 0.5, lambda 2. *)
 
-val single : float -> float
-(** The float in single precision, as POV-Ray stores a turbulence's
-    [omega] and [lambda], [agate_turb] and a fog's [turb_depth] (SNGL
-    fields): the parser stores these so, and the patterns compute with
-    them as given. *)
-
 val is_block : kind -> bool
 (** checker, hexagon, brick, object: the value is a cell index, used with a list
     of colours or pigments rather than a map. *)

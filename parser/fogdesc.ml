@@ -38,13 +38,13 @@ let alt x d = { d with alt = x }
 let up v d = { d with up = v }
 let turbulence v d = { d with turb = Some v }
 (* POV-Ray keeps turb_depth, omega and lambda in single precision *)
-let turb_depth x d = { d with depth = Pattern.single x }
+let turb_depth x d = { d with depth = Floats.single x }
 
 (* POV-Ray keeps octaves within 1 to 10 *)
 let octaves _loc n d = { d with octaves = max 1 (min 10 n) }
 
-let omega x d = { d with omega = Pattern.single x }
-let lambda x d = { d with lambda = Pattern.single x }
+let omega x d = { d with omega = Floats.single x }
+let lambda x d = { d with lambda = Floats.single x }
 let transform t d = { d with xf = Transform.then_ d.xf t }
 
 let fog loc d : Fog.t =

@@ -478,19 +478,19 @@ image_file_kind:
      turbulence make one of amount 0 (agate reads its parameters) *)
   | OCTAVES e = param { let n = Value.to_int (loc $loc(e)) e in
       Texdesc.turb_mod (fun tb -> { tb with octaves = max 1 (min 10 n) }) }
-  | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with omega = x }) }
-  | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with lambda = x }) }
+  | OMEGA e = param { let x = Floats.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with omega = x }) }
+  | LAMBDA e = param { let x = Floats.single (fl $loc(e) e) in Texdesc.turb_mod (fun tb -> { tb with lambda = x }) }
   (* POV-Ray keeps frequency, phase and poly_wave's exponent in single
      precision *)
-  | FREQUENCY e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
-  | PHASE e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
+  | FREQUENCY e = param { let x = Floats.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with frequency = x }) }
+  | PHASE e = param { let x = Floats.single (fl $loc(e) e) in Texdesc.pattern_mod (fun p -> { p with phase = x }) }
   | RAMP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Ramp }) }
   | TRIANGLE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Triangle }) }
   | SINE_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Sine }) }
   | SCALLOP_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Scallop }) }
   | CUBIC_WAVE { Texdesc.pattern_mod (fun p -> { p with wave = Some Pattern.Cubic }) }
   | POLY_WAVE e = ioption(param)
-      { let x = match e with Some e -> Pattern.single (fl $loc(e) e) | None -> 1. in
+      { let x = match e with Some e -> Floats.single (fl $loc(e) e) | None -> 1. in
         Texdesc.pattern_mod (fun p -> { p with wave = Some (Pattern.Poly x) }) }
   (* density_file's interpolation: 0 none, 1 trilinear (2, tricubic,
      read as 1 with a warning) *)
@@ -516,7 +516,7 @@ image_file_kind:
   | SOLID { Texdesc.kind_mod (function Pattern.Crackle c -> Pattern.Crackle { c with solid = true } | k -> k) }
   | MORTAR e = param { let x = fl $loc(e) e in Texdesc.kind_mod (function
       | Pattern.Brick b -> Pattern.Brick { b with mortar = x } | k -> k) }
-  | AGATE_TURB e = param { let x = Pattern.single (fl $loc(e) e) in Texdesc.kind_mod (function
+  | AGATE_TURB e = param { let x = Floats.single (fl $loc(e) e) in Texdesc.kind_mod (function
       | Pattern.Agate _ -> Pattern.Agate x | k -> k) }
   | WARP LBRACE k = warp_body RBRACE { Texdesc.warp (loc $loc) k }
   | NUMBER_OF_WAVES param { Diag.error (loc $loc) "number_of_waves is a global_settings item (POV-Ray 3.7 takes it nowhere else)" }
@@ -525,11 +525,11 @@ image_file_kind:
       if n < 0 || n > 3 then Diag.error (loc $loc(e)) "noise_generator is 0, 1, 2 or 3, found %d" n;
       Texdesc.pattern_mod (fun p -> { p with noise_gen = n }) }
   (* quilted's controls are single-precision floats in POV-Ray *)
-  | CONTROL0 e = param { let x = Int32.float_of_bits (Int32.bits_of_float (fl $loc(e) e)) in
+  | CONTROL0 e = param { let x = Floats.single (fl $loc(e) e) in
       Texdesc.kind_mod (function
         | Pattern.Quilted q -> Pattern.Quilted { q with c0 = x }
         | _ -> Diag.error (loc $loc) "control0 can only be used with quilted") }
-  | CONTROL1 e = param { let x = Int32.float_of_bits (Int32.bits_of_float (fl $loc(e) e)) in
+  | CONTROL1 e = param { let x = Floats.single (fl $loc(e) e) in
       Texdesc.kind_mod (function
         | Pattern.Quilted q -> Pattern.Quilted { q with c1 = x }
         | _ -> Diag.error (loc $loc) "control1 can only be used with quilted") }
@@ -935,8 +935,8 @@ warp_turb_item:
   | OCTAVES e = param
       { let n = max 1 (min 10 (Value.to_int (loc $loc(e)) e)) in
         fun (t : Pattern.turbulence) -> { t with octaves = n } }
-  | OMEGA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with omega = x } }
-  | LAMBDA e = param { let x = Pattern.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with lambda = x } }
+  | OMEGA e = param { let x = Floats.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with omega = x } }
+  | LAMBDA e = param { let x = Floats.single (fl $loc(e) e) in fun (t : Pattern.turbulence) -> { t with lambda = x } }
 
 slope_range: COMMA lo = param COMMA hi = param { (fl $loc(lo) lo, fl $loc(hi) hi) }
 

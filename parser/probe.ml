@@ -32,7 +32,7 @@ let extent _loc o ~max =
       | Some (lo, hi) ->
           (* POV-Ray keeps a box as its lower corner and its size in single
              precision, and gives the upper corner as their sum *)
-          let single x = Int32.float_of_bits (Int32.bits_of_float x) in
+          let single = Camlray.Floats.single in
           let corner lo hi =
             let lo = Float.max (-.huge) (Float.min huge lo) and hi = Float.max (-.huge) (Float.min huge hi) in
             let l = single lo in

@@ -314,7 +314,7 @@ let png_palette file =
       | exception (Sys_error _ | End_of_file) -> false)
 
 (* single precision, as POV-Ray's colours are *)
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
+let single = Camlray.Floats.single
 
 (* How POV-Ray 3.7 keeps a grey PNG of 8 bits or fewer (png.cpp: as a
    table of colours stored into a byte image): the colour [c], decoded,

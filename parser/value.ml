@@ -252,7 +252,7 @@ let call loc name args =
       arity 4;
       let octaves = Float.trunc (f 2) in
       let octaves = if octaves < 1. then 1 else if octaves > 10. then 10 else int_of_float octaves in
-      let single x = Int32.float_of_bits (Int32.bits_of_float x) in
+      let single = Camlray.Floats.single in
       let p = Vec3.m () and out = Vec3.m () in
       Vec3.load p (v 3);
       Noise.dturbulence ~octaves ~omega:(single (f 1)) ~lambda:(single (f 0)) p out;

@@ -138,7 +138,7 @@ let pov_noise gen =
         rows)
 
 (* POV-Ray keeps a turbulence's omega and lambda in single precision *)
-let single v = Int32.float_of_bits (Int32.bits_of_float v)
+let single = Floats.single
 
 let pov_dnoise =
   Alcotest.test_case "Noise.dnoise, dturbulence: POV-Ray's turbulence warp at 300 points" `Quick (fun () ->

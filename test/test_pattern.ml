@@ -362,7 +362,7 @@ let quilted () =
   | { pigment = Pigment.Map { pattern; _ }; _ } :: _ ->
       Scn.close ~eps:0. "quilted: frequency 0 (no wrapping)" 0. pattern.frequency;
       (* POV-Ray keeps the controls in single precision *)
-      if pattern.kind <> Pattern.Quilted { c0 = Int32.float_of_bits (Int32.bits_of_float 0.3); c1 = -2. } then
+      if pattern.kind <> Pattern.Quilted { c0 = Floats.single 0.3; c1 = -2. } then
         Alcotest.fail "quilted controls"
   | _ -> Alcotest.fail "no quilted pigment"
 

@@ -9,7 +9,7 @@ let pov_dir = Helpers.data_dir "waves_pov"
 
 let read_rows = Helpers.read_rows pov_dir
 
-let single x = Int32.float_of_bits (Int32.bits_of_float x)
+let single = Floats.single
 
 (* the patterns of waves.pov, as its pigment functions write them *)
 let pov_patterns =

@@ -255,7 +255,7 @@ let ripples_normal () =
     Normal.perturb_m nm p n out;
     (out.mx, out.my, out.mz)
   in
-  let single x = Int32.float_of_bits (Int32.bits_of_float x) in
+  let single = Floats.single in
   let expect ?(scale = 1.) ?(freq = 1.) ?(phase = 0.) ripples amount (px, py, pz) =
     (* pattern space: the point divided by the scale; the normal too, made unit *)
     let qx = px /. scale and qy = py /. scale and qz = pz /. scale in
