@@ -298,6 +298,10 @@ let render o =
            d cores
      | _ -> ());
     let out = output_path o in
+    (* one pool for every parallel loop of the command, its domains
+       starting while the scene is parsed *)
+    let domains = match o.domains with Some d -> d | None -> Domain.recommended_domain_count () in
+    Render.with_pool ~domains @@ fun () ->
     match o.frames with
     | None ->
         let clock = Option.value o.clock ~default:0. in

@@ -49,7 +49,15 @@ val rgb8_into :
     [Image.to_rgb8 encoding (image_into ...)] holds, without the frame of
     floats (24 bytes a pixel, 3 here). *)
 
+val with_pool : domains:int -> (unit -> 'a) -> 'a
+(** [with_pool ~domains f] runs [f] with one pool of [domains] workers set
+    up for it: the parallel loops [f] starts with the same domain count
+    (tiles, {!parallel}) run on that pool instead of setting up their own,
+    and its workers stay ready between them. The pool is torn down when
+    [f] returns or raises. Inside another [with_pool], or with [domains <=
+    1], it just runs [f]. *)
+
 val parallel : domains:int -> Image.par
 (** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
-    [domains] workers (in turn when [domains <= 1]): the image encoders'
-    parts. *)
+    [domains] workers, the {!with_pool} pool when there is one (in turn
+    when [domains <= 1]): the image encoders' parts, the BVH's subtrees. *)

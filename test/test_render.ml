@@ -56,6 +56,41 @@ let units =
           [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (2, 383); (2, 384);
             (2, 767); (2, 768); (3, 383); (3, 385); (3, 575); (3, 577); (4, 1535); (4, 1537);
             (2, 7500); (4, 1875); (4, 1999) ]);
+    Alcotest.test_case "with_pool: the loops of a command share one pool, torn down after" `Quick (fun () ->
+        (* the domains other than the caller's that ran indices of a loop
+           (the caller's indices wait, up to 5 s, for the worker to take one) *)
+        let workers () =
+          let ids = Array.make 64 (-1) and me = (Domain.self () :> int) and other = Atomic.make false in
+          let t0 = Unix.gettimeofday () in
+          Render.parallel ~domains:2 64 (fun i ->
+              let d = (Domain.self () :> int) in
+              ids.(i) <- d;
+              if d <> me then Atomic.set other true
+              else while not (Atomic.get other) && Unix.gettimeofday () -. t0 < 5. do Domain.cpu_relax () done);
+          List.sort_uniq compare (List.filter (fun d -> d <> me) (Array.to_list ids))
+        in
+        let one d = match d with [ d ] -> d | _ -> Alcotest.failf "expected one worker domain, got %d" (List.length d) in
+        let a, b = Render.with_pool ~domains:2 (fun () -> (one (workers ()), one (workers ()))) in
+        Alcotest.(check int) "the same worker in both loops" a b;
+        (* outside it, each loop sets up (and ends) a pool of its own *)
+        let c = one (workers ()) and d = one (workers ()) in
+        Alcotest.(check bool) "a new worker a loop" true (c <> d && c <> a && d <> a);
+        (* an exception ends the pool; the next command's pool works *)
+        (match Render.with_pool ~domains:2 (fun () -> ignore (workers ()); failwith "stop") with
+         | () -> Alcotest.fail "no exception"
+         | exception Failure _ -> ());
+        let e = Render.with_pool ~domains:2 (fun () -> one (workers ())) in
+        Alcotest.(check bool) "a fresh worker" true (e <> a && e <> c && e <> d));
+    Alcotest.test_case "with_pool: 2 domains give the images of 1" `Quick (fun () ->
+        let text = default_scene () in
+        let a = Helpers.render_whitted ~domains:1 ~width:48 ~height:36 text in
+        let b, c =
+          Render.with_pool ~domains:2 (fun () ->
+              let b = Helpers.render_whitted ~domains:2 ~width:48 ~height:36 text in
+              (b, Helpers.render_whitted ~domains:2 ~width:48 ~height:36 text))
+        in
+        same_images a b;
+        same_images a c);
     Alcotest.test_case "whitted: 1 and 2 domains give identical images" `Quick (fun () ->
         let text = default_scene () in
         let a = Helpers.render_whitted ~domains:1 ~width:48 ~height:36 text in
