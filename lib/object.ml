@@ -48,17 +48,96 @@ let world_box xf = function
         done;
         Some (!l, !h)
 
+(* The plane [n . p < d] (its inside; the other side when [inverted])
+   moved by [xf], as [(n', c)] with the inside [n' . p < c]. *)
+let moved_plane xf (n : Vec3.t) d inverted =
+  let nw = Transform.normal xf n in
+  let c = Vec3.dot nw (Transform.point xf (Vec3.scale (d /. Vec3.length2 n) n)) in
+  if inverted then (Vec3.neg nw, -.c) else (nw, c)
+
+(* The box [b] ([None]: the whole space) cut by the inside of the plane
+   [n . p < c]: on each axis the normal has a part along, the plane
+   bounds that coordinate given the box's range on the others (interval
+   arithmetic). POV-Ray bounds a CSG intersection by its axis-aligned
+   planes (a difference that cuts an object in half keeps the box of the
+   half kept); this does the same, and trims by oblique planes too. Each
+   bound is moved out by 1e-9 of the magnitudes summed, so that rounding
+   never cuts the surface lying on it. *)
+let cut_by_plane (n : Vec3.t) c b =
+  let lo, hi =
+    match b with
+    | Some ((l : Vec3.t), (h : Vec3.t)) -> ([| l.x; l.y; l.z |], [| h.x; h.y; h.z |])
+    | None -> ([| neg_infinity; neg_infinity; neg_infinity |], [| infinity; infinity; infinity |])
+  in
+  for k = 0 to 2 do
+    let nk = Vec3.get n k in
+    if nk <> 0. then begin
+      (* n_k p_k < c - sum_{j <> k} n_j p_j, whose largest value over the
+         box is [rest] *)
+      let rest = ref c and size = ref (Float.abs c) in
+      for j = 0 to 2 do
+        let nj = Vec3.get n j in
+        if j <> k && nj <> 0. then begin
+          rest := !rest +. Float.max (-.nj *. lo.(j)) (-.nj *. hi.(j));
+          size := !size +. Float.abs (nj *. lo.(j)) +. Float.abs (nj *. hi.(j))
+        end
+      done;
+      let v = !rest /. nk in
+      if Float.is_finite v then begin
+        let pad = 1e-9 *. ((!size /. Float.abs nk) +. Float.abs v) in
+        if nk > 0. then hi.(k) <- Float.min hi.(k) (v +. pad) else lo.(k) <- Float.max lo.(k) (v -. pad)
+      end
+    end
+  done;
+  if Array.for_all (fun x -> x = neg_infinity) lo && Array.for_all (fun x -> x = infinity) hi then b
+  else Some (Vec3.make lo.(0) lo.(1) lo.(2), Vec3.make hi.(0) hi.(1) hi.(2))
+
+(* [o]'s inside as a plane's half-space in the frame [xf] takes the
+   world into, if it is one *)
+let half_space xf o =
+  match o.geom with
+  | Prim (Shape.Plane { normal; offset }) when Array.length o.clip = 0 ->
+      Some (moved_plane (Transform.then_ o.xform xf) normal offset o.inverted)
+  | _ -> None
+
+(* The box of where the insides of all of [parts] meet, within [b]:
+   [box part] for all but planes, then cut by the planes (the more the
+   box is bounded, the more an oblique plane cuts). *)
+let meet box xf b parts =
+  let planes, solids = List.partition (fun o -> half_space xf o <> None) (Array.to_list parts) in
+  let b = List.fold_left (fun b o -> box_inter b (box o)) b solids in
+  List.fold_left (fun b o -> match half_space xf o with Some (n, c) -> cut_by_plane n c b | None -> b) b planes
+
 (* Bounds of where [inside] can be true (a disc's inside is a half-space,
    wider than its surface): what intersections and clips may trust. *)
 let rec solid_box o =
   match o.geom with
   | Prim (Shape.Disc _ | Shape.Height_field _) -> None  (* a height field: the column under it too *)
+  | Prim (Shape.Plane _) -> clip_box o.clip (meet solid_box Transform.identity None [| { o with clip = [||] } |])
   | Prim _ | Intersection _ -> o.bounds
   | Union cs | Merge cs ->
       if Array.length cs = 0 then o.bounds
       else Array.fold_left (fun b c -> box_union b (solid_box c)) (solid_box cs.(0)) cs
 
-let clip_box clip b = Array.fold_left (fun b c -> box_inter b (solid_box c)) b clip
+and clip_box clip b = meet solid_box Transform.identity b clip
+
+(* [solid_box] in a frame: [finv] takes the world into it. A CSG's parts
+   carry their transforms to the world; in the frame the CSG was written
+   in, its cutting planes are the ones written (axis-aligned, say) even
+   when the whole was then rotated, and the box found there, carried to
+   the world, is the one POV-Ray gets by transforming the CSG's box. *)
+let rec frame_box finv o =
+  let own =
+    match o.geom with
+    | Prim (Shape.Disc _ | Shape.Height_field _) -> None
+    | Prim (Shape.Plane _) -> meet (frame_box finv) finv None [| { o with clip = [||] } |]
+    | Prim s -> if o.inverted then None else world_box (Transform.then_ o.xform finv) (Shape.bounds s)
+    | Intersection cs -> meet (frame_box finv) finv None cs
+    | Union cs | Merge cs ->
+        if Array.length cs = 0 then None
+        else Array.fold_left (fun b c -> box_union b (frame_box finv c)) (frame_box finv cs.(0)) cs
+  in
+  meet (frame_box finv) finv own o.clip
 
 (* The scale factor of a similarity (rotation, uniform scale, translation),
    or [None]. *)
@@ -150,8 +229,18 @@ let union ?(clip = [||]) cs =
   if Array.length cs >= index_min then { n with index = Some (make_index cs) } else n
 let merge ?(clip = [||]) cs = node (Merge cs) clip (union_box cs)
 
-let intersection ?(clip = [||]) cs =
-  node (Intersection cs) clip (Array.fold_left (fun b c -> box_inter b (solid_box c)) None cs)
+let intersection ?(clip = [||]) ?frame cs =
+  let world = meet solid_box Transform.identity None cs in
+  let box =
+    match frame with
+    | Some f when not (Transform.is_identity f) -> (
+        let finv = Transform.inverse f in
+        match meet (frame_box finv) finv None cs with
+        | Some ((lo, hi) as b) when Vec3.is_finite lo && Vec3.is_finite hi -> box_inter world (world_box f (Some b))
+        | _ -> world)
+    | _ -> world
+  in
+  node (Intersection cs) clip box
 
 let with_clip o clip =
   let clip = Array.append o.clip clip in

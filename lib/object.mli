@@ -53,7 +53,12 @@ val make :
 val union : ?clip:t array -> t array -> t
 (** With 8 children or more, they get their own BVH. *)
 
-val intersection : ?clip:t array -> t array -> t
+val intersection : ?clip:t array -> ?frame:Transform.t -> t array -> t
+(** Its box: the children's boxes intersected, axis-aligned planes
+    bounding the half-space they keep; with [frame] (the transform from
+    the space the intersection was written in to the world), also that
+    box found in the frame, carried to the world. *)
+
 val merge : ?clip:t array -> t array -> t
 
 val with_clip : t -> t array -> t

@@ -478,13 +478,13 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
       | Sdl.Merge -> Some (Object.merge cs)
       | Sdl.Intersection ->
           if Array.length cs = 0 then Diag.error o.loc "an intersection needs at least one object";
-          Some (Object.intersection cs)
+          Some (Object.intersection ~frame:o.xform cs)
       | Sdl.Difference ->
           if Array.length cs = 0 then Diag.error o.loc "a difference needs at least one object";
           Some
             (if Array.length cs = 1 then cs.(0)
              else
-               Object.intersection
+               Object.intersection ~frame:o.xform
                  (Array.mapi (fun i c -> if i = 0 then c else Object.invert c) cs)))
   | Sdl.Light_group (global, l) ->
       let looks, rest, ctx'' = group_ctx ctx' obj global l in

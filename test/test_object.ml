@@ -178,7 +178,98 @@ let bounded_by =
       Alcotest.(check int) "bounds" 1 (Array.length both.bound);
       Alcotest.(check int) "clips" 1 (Array.length both.clip))
 
+(* A CSG intersection's box, which the BVH tests before the CSG: planes
+   bound it (axis-aligned ones in the frame the CSG was written in, as
+   POV-Ray does, then carried to the world), and it never leaves out a
+   point of the inside or a crossing. *)
+let box_of o = match o.Object.bounds with Some b -> b | None -> Alcotest.fail "no box"
+
+let close_box name ((elo : Vec3.t), (ehi : Vec3.t)) o =
+  let (lo : Vec3.t), (hi : Vec3.t) = box_of o in
+  List.iter
+    (fun (what, e, g) -> Alcotest.(check (float 1e-6)) (name ^ " " ^ what) e g)
+    [ ("lo.x", elo.x, lo.x); ("lo.y", elo.y, lo.y); ("lo.z", elo.z, lo.z); ("hi.x", ehi.x, hi.x);
+      ("hi.y", ehi.y, hi.y); ("hi.z", ehi.z, hi.z) ]
+
+let plane_boxes =
+  Alcotest.test_case "CSG boxes: cut by planes, in the CSG's own frame" `Quick (fun () ->
+      let v = Vec3.make in
+      close_box "half sphere" (v (-1.) 0. (-1.), v 1. 1. 1.) (one "difference { sphere { 0, 1 } plane { y, 0 } }");
+      close_box "clipped sphere" (v (-1.) (-1.) (-1.), v 1. 0. 1.) (one "sphere { 0, 1 clipped_by { plane { y, 0 } } }");
+      (* a quarter of a box, then turned 45 degrees about y: the box of
+         the turned quarter, not of the turned whole *)
+      let r = Transform.rotate (v 0. 45. 0.) in
+      let corners =
+        List.concat_map
+          (fun x -> List.concat_map (fun y -> List.map (fun z -> Transform.point r (v x y z)) [ 0.; 1. ]) [ -1.; 1. ])
+          [ 0.; 1. ]
+      in
+      let lo = List.fold_left Vec3.min (List.hd corners) corners
+      and hi = List.fold_left Vec3.max (List.hd corners) corners in
+      close_box "turned quarter" (lo, hi)
+        (one "difference { box { -1, 1 } plane { x, 0 } plane { z, 0 } rotate y*45 }");
+      (* an oblique plane trims the box on the axes it leans along *)
+      let (_ : Vec3.t), (hi : Vec3.t) = box_of (one "intersection { box { -1, 1 } plane { <1, 1, 0>, 0 } }") in
+      Alcotest.(check (float 1e-6)) "oblique: x < -y <= 1" 1. hi.x;
+      let (_ : Vec3.t), (hi : Vec3.t) = box_of (one "intersection { box { -1, 1 } plane { <1, 1, 0>, -1 } }") in
+      Alcotest.(check (float 1e-6)) "oblique: x < -sqrt 2 - y" (1. -. Float.sqrt 2.) hi.x)
+
+(* random intersections and differences of solids with planes, moved
+   as a whole: no point of the inside, no crossing outside the box *)
+let gcsg =
+  let open QCheck.Gen in
+  let num = map (Printf.sprintf "%.3f") (fr (-1.) 1.) in
+  let vec = map3 (Printf.sprintf "<%s, %s, %s>") num num num in
+  let solid =
+    oneof
+      [ map2 (Printf.sprintf "sphere { %s, %s }") vec (map (Printf.sprintf "%.3f") (fr 0.3 1.5));
+        map2 (Printf.sprintf "box { %s, %s }") vec vec;
+        map2 (Printf.sprintf "blob { threshold 0.5 sphere { %s, 1.2, 1 } sphere { %s, 0.8, 2 } scale <1, 2, 0.5> }") vec vec ]
+  in
+  let axis = oneof_list [ "x"; "y"; "z"; "-x"; "-y"; "-z" ] in
+  let plane =
+    map3 (fun n d inv -> Printf.sprintf "plane { %s, %s%s }" n d (if inv then " inverse" else ""))
+      (oneof [ axis; vec ]) num bool
+  in
+  let moves =
+    map3 (Printf.sprintf "scale <%.2f, %.2f, %.2f> rotate %s translate %s")
+      (fr 0.4 2.) (fr 0.4 2.) (fr 0.4 2.)
+    <*> map3 (Printf.sprintf "<%.0f, %.0f, %.0f>") (fr (-180.) 180.) (fr (-180.) 180.) (fr (-180.) 180.)
+    <*> vec
+  in
+  map4
+    (fun op s ps m -> Printf.sprintf "%s { %s %s %s }" op s (String.concat " " ps) m)
+    (oneof_list [ "intersection"; "difference" ]) solid (list_size (int_range 1 3) plane) moves
+
+let box_props =
+  [ QCheck.Test.make ~name:"CSG box holds the inside and the crossings" ~count:300
+      (QCheck.make ~print:Fun.id gcsg) (fun src ->
+        let o = one src in
+        let within (p : Vec3.t) =
+          match o.bounds with
+          | None -> true
+          | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
+              let e = 1e-7 in
+              p.x >= lo.x -. e && p.y >= lo.y -. e && p.z >= lo.z -. e && p.x <= hi.x +. e && p.y <= hi.y +. e
+              && p.z <= hi.z +. e
+        in
+        let st = Random.State.make [| Hashtbl.hash src |] in
+        let g () = Random.State.float st 8. -. 4. in
+        let ok = ref true in
+        for _ = 1 to 2000 do
+          let p = Vec3.make (g ()) (g ()) (g ()) in
+          if Object.inside o p && not (within p) then ok := false
+        done;
+        for _ = 1 to 300 do
+          let org = Vec3.make (2. *. g ()) (2. *. g ()) (2. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
+          let r = Ray.make org (Vec3.sub target org) in
+          let h = Hit.create infinity and f = Object.found o in
+          (* the CSG's own query does not read its box (its parents do) *)
+          if Object.hit o r 1e-9 h f && not (within (Ray.at r h.t)) then ok := false
+        done;
+        !ok) ]
+
 let tests =
   ( "object",
-    [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by ] @ errors
-    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props) )
+    [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by; plane_boxes ] @ errors
+    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props) )
