@@ -75,6 +75,26 @@ let make ?(inside_below = 1e-4) order coef =
 
 let order s = s.order
 
+let quadric s =
+  if s.order <> 2 then None
+  else begin
+    (* a x^2 + b y^2 + c z^2 + d x + e y + f z + g, no mixed terms *)
+    let q = Array.make 7 0. and ok = ref true in
+    for i = 0 to Float.Array.length s.coef - 1 do
+      let k = Float.Array.get s.coef i in
+      match (s.ex.(i), s.ey.(i), s.ez.(i)) with
+      | 2, 0, 0 -> q.(0) <- k
+      | 0, 2, 0 -> q.(1) <- k
+      | 0, 0, 2 -> q.(2) <- k
+      | 1, 0, 0 -> q.(3) <- k
+      | 0, 1, 0 -> q.(4) <- k
+      | 0, 0, 1 -> q.(5) <- k
+      | 0, 0, 0 -> q.(6) <- k -. s.below
+      | _ -> if k <> 0. then ok := false
+    done;
+    if !ok then Some q else None
+  end
+
 let[@inline] pow x n =
   let r = ref 1. in
   for _ = 1 to n do

@@ -20,6 +20,11 @@ val make : ?inside_below:float -> int -> float array -> t
 
 val order : t -> int
 
+val quadric : t -> float array option
+(** For a surface of order 2 without mixed terms, [[|a; b; c; d; e; f;
+    g|]]: the inside is [a x^2 + b y^2 + c z^2 + d x + e y + f z + g < 0]
+    (the inside's threshold taken into [g]). *)
+
 val eval : t -> float -> float -> float -> float
 (** The polynomial's value at a point. *)
 

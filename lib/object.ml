@@ -100,13 +100,108 @@ let half_space xf o =
       Some (moved_plane (Transform.then_ o.xform xf) normal offset o.inverted)
   | _ -> None
 
+(* The box [b] cut by the inside of a quadric without mixed terms
+   ([Algebraic.quadric]) moved by [xf], when [xf] keeps the axes (scales
+   and translations): POV-Ray bounds a quadric in a CSG intersection by
+   the box the other parts leave, and so does this. With the squares
+   completed, the inside is [sum_k a_k (x_k - c_k)^2 + g < 0] (a term
+   [d_k x_k] where [a_k = 0]); on an axis with [a_k > 0] it lies within
+   [c_k -+ sqrt (r / a_k)], [r] the largest value of [-g] less the other
+   terms over the box (interval arithmetic), twice over the axes. *)
+let cut_by_quadric xf (q : float array) inverted b =
+  let vx = Transform.vector xf Vec3.unit_x and vy = Transform.vector xf Vec3.unit_y
+  and vz = Transform.vector xf Vec3.unit_z and t = Transform.point xf Vec3.zero in
+  if not (vx.y = 0. && vx.z = 0. && vy.x = 0. && vy.z = 0. && vz.x = 0. && vz.y = 0.) then b
+  else begin
+    let sc = [| vx.x; vy.y; vz.z |] and tr = [| t.x; t.y; t.z |] in
+    let q = if inverted then Array.map Float.neg q else q in
+    let wlo, whi =
+      match b with
+      | Some ((l : Vec3.t), (h : Vec3.t)) -> ([| l.x; l.y; l.z |], [| h.x; h.y; h.z |])
+      | None -> ([| neg_infinity; neg_infinity; neg_infinity |], [| infinity; infinity; infinity |])
+    in
+    (* the box in the quadric's own space *)
+    let ends k = ((wlo.(k) -. tr.(k)) /. sc.(k), (whi.(k) -. tr.(k)) /. sc.(k)) in
+    let l = Array.init 3 (fun k -> let u, v = ends k in Float.min u v)
+    and h = Array.init 3 (fun k -> let u, v = ends k in Float.max u v) in
+    let a = [| q.(0); q.(1); q.(2) |] and d = [| q.(3); q.(4); q.(5) |] in
+    let c = Array.init 3 (fun k -> if a.(k) <> 0. then -.d.(k) /. (2. *. a.(k)) else 0.) in
+    let g = ref q.(6) in
+    for k = 0 to 2 do
+      if a.(k) <> 0. then g := !g -. (d.(k) *. d.(k) /. (4. *. a.(k)))
+    done;
+    (* the largest value of minus axis j's term over the box *)
+    let neg_max j =
+      if a.(j) > 0. then
+        let m = if c.(j) < l.(j) then l.(j) -. c.(j) else if c.(j) > h.(j) then c.(j) -. h.(j) else 0. in
+        -.a.(j) *. m *. m
+      else if a.(j) < 0. then
+        let m = Float.max (Float.abs (l.(j) -. c.(j))) (Float.abs (h.(j) -. c.(j))) in
+        -.a.(j) *. m *. m
+      else if d.(j) = 0. then 0.
+      else Float.max (-.d.(j) *. l.(j)) (-.d.(j) *. h.(j))
+    in
+    let cut = Array.make 3 false in
+    for _ = 1 to 2 do
+      for k = 0 to 2 do
+        let r = ref (-. !g) in
+        for j = 0 to 2 do
+          if j <> k then r := !r +. neg_max j
+        done;
+        let r = !r in
+        let pad x = 1e-9 *. (Float.abs x +. Float.abs c.(k) +. Float.abs r) in
+        if Float.is_finite r && r >= 0. then
+          if a.(k) > 0. then begin
+            let w = Float.sqrt (r /. a.(k)) in
+            let lo = c.(k) -. w and hi = c.(k) +. w in
+            let lo = lo -. pad lo and hi = hi +. pad hi in
+            if lo > l.(k) then (l.(k) <- lo; cut.(k) <- true);
+            if hi < h.(k) then (h.(k) <- hi; cut.(k) <- true)
+          end
+          else if a.(k) = 0. && d.(k) <> 0. then begin
+            let v = r /. d.(k) in
+            if d.(k) > 0. then (let v = v +. pad v in if v < h.(k) then (h.(k) <- v; cut.(k) <- true))
+            else (let v = v -. pad v in if v > l.(k) then (l.(k) <- v; cut.(k) <- true))
+          end
+      done
+    done;
+    if not (cut.(0) || cut.(1) || cut.(2)) then b
+    else begin
+      (* back to the world, on the axes cut *)
+      for k = 0 to 2 do
+        if cut.(k) then begin
+          let u = (sc.(k) *. l.(k)) +. tr.(k) and v = (sc.(k) *. h.(k)) +. tr.(k) in
+          let u, v = (Float.min u v, Float.max u v) in
+          let p = 1e-9 *. (Float.abs u +. Float.abs v +. Float.abs tr.(k)) in
+          wlo.(k) <- Float.max wlo.(k) (u -. p);
+          whi.(k) <- Float.min whi.(k) (v +. p)
+        end
+      done;
+      Some (Vec3.make wlo.(0) wlo.(1) wlo.(2), Vec3.make whi.(0) whi.(1) whi.(2))
+    end
+  end
+
+(* [o]'s inside as a quadric without mixed terms, if it is one, with its
+   transform into [xf]'s frame *)
+let quadric_part xf o =
+  match o.geom with
+  | Prim (Shape.Algebraic s) when Array.length o.clip = 0 ->
+      Option.map (fun q -> (Transform.then_ o.xform xf, q, o.inverted)) (Algebraic.quadric s)
+  | _ -> None
+
 (* The box of where the insides of all of [parts] meet, within [b]:
-   [box part] for all but planes, then cut by the planes (the more the
-   box is bounded, the more an oblique plane cuts). *)
+   [box part] for all but planes and quadrics, then cut by the planes
+   (the more the box is bounded, the more an oblique plane cuts), then by
+   the quadrics. *)
 let meet box xf b parts =
-  let planes, solids = List.partition (fun o -> half_space xf o <> None) (Array.to_list parts) in
+  let parts = Array.to_list parts in
+  let planes, rest = List.partition (fun o -> half_space xf o <> None) parts in
+  let quadrics, solids = List.partition (fun o -> quadric_part xf o <> None) rest in
   let b = List.fold_left (fun b o -> box_inter b (box o)) b solids in
-  List.fold_left (fun b o -> match half_space xf o with Some (n, c) -> cut_by_plane n c b | None -> b) b planes
+  let b = List.fold_left (fun b o -> match half_space xf o with Some (n, c) -> cut_by_plane n c b | None -> b) b planes in
+  List.fold_left
+    (fun b o -> match quadric_part xf o with Some (x, q, inv) -> cut_by_quadric x q inv b | None -> b)
+    b quadrics
 
 (* Bounds of where [inside] can be true (a disc's inside is a half-space,
    wider than its surface): what intersections and clips may trust. *)

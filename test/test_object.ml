@@ -192,7 +192,7 @@ let close_box name ((elo : Vec3.t), (ehi : Vec3.t)) o =
       ("hi.y", ehi.y, hi.y); ("hi.z", ehi.z, hi.z) ]
 
 let plane_boxes =
-  Alcotest.test_case "CSG boxes: cut by planes, in the CSG's own frame" `Quick (fun () ->
+  Alcotest.test_case "CSG boxes: cut by planes and quadrics, in the CSG's own frame" `Quick (fun () ->
       let v = Vec3.make in
       close_box "half sphere" (v (-1.) 0. (-1.), v 1. 1. 1.) (one "difference { sphere { 0, 1 } plane { y, 0 } }");
       close_box "clipped sphere" (v (-1.) (-1.) (-1.), v 1. 0. 1.) (one "sphere { 0, 1 clipped_by { plane { y, 0 } } }");
@@ -212,7 +212,18 @@ let plane_boxes =
       let (_ : Vec3.t), (hi : Vec3.t) = box_of (one "intersection { box { -1, 1 } plane { <1, 1, 0>, 0 } }") in
       Alcotest.(check (float 1e-6)) "oblique: x < -y <= 1" 1. hi.x;
       let (_ : Vec3.t), (hi : Vec3.t) = box_of (one "intersection { box { -1, 1 } plane { <1, 1, 0>, -1 } }") in
-      Alcotest.(check (float 1e-6)) "oblique: x < -sqrt 2 - y" (1. -. Float.sqrt 2.) hi.x)
+      Alcotest.(check (float 1e-6)) "oblique: x < -sqrt 2 - y" (1. -. Float.sqrt 2.) hi.x;
+      (* a quadric bounded by what the planes leave: x^2 + z^2 < 1 + y^2
+         with |y| < 1, moved; as POV-Ray bounds it *)
+      let r2 = Float.sqrt 2. in
+      close_box "hyperboloid" (v (-.r2) (-1.) (-.r2), v r2 1. r2)
+        (one "intersection { quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, -1 } plane { y, 1 } plane { -y, 1 } }");
+      close_box "hyperboloid moved" (v ((0.5 *. -.r2) +. 3.) (-2.) (2. *. -.r2), v ((0.5 *. r2) +. 3.) 2. (2. *. r2))
+        (one "intersection { quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, -1 } plane { y, 1 } plane { -y, 1 } scale <0.5, 2, 2> translate 3*x }");
+      (* x^2 + z^2 - 0.5 y < 0 below y = 1: |x|, |z| < sqrt 0.5, y > 0 *)
+      let h = Float.sqrt 0.5 in
+      close_box "paraboloid" (v (-.h) 0. (-.h), v h 1. h)
+        (one "intersection { quadric { <1, 0, 1>, <0, 0, 0>, <0, -0.5, 0>, 0 } plane { y, 1 } }"))
 
 (* random intersections and differences of solids with planes, moved
    as a whole: no point of the inside, no crossing outside the box *)
@@ -231,15 +242,25 @@ let gcsg =
     map3 (fun n d inv -> Printf.sprintf "plane { %s, %s%s }" n d (if inv then " inverse" else ""))
       (oneof [ axis; vec ]) num bool
   in
+  (* quadrics without mixed terms: ellipsoids, hyperboloids, cylinders, paraboloids *)
+  let quadric =
+    map3
+      (fun (a, b, c) (d, e, f) g -> Printf.sprintf "quadric { <%s, %s, %s>, <0, 0, 0>, <%s, %s, %s>, %s }" a b c d e f g)
+      (triple num num num) (triple num num num) num
+  in
+  let angle = map (Printf.sprintf "%.0f") (fr (-180.) 180.) in
   let moves =
     map3 (Printf.sprintf "scale <%.2f, %.2f, %.2f> rotate %s translate %s")
       (fr 0.4 2.) (fr 0.4 2.) (fr 0.4 2.)
-    <*> map3 (Printf.sprintf "<%.0f, %.0f, %.0f>") (fr (-180.) 180.) (fr (-180.) 180.) (fr (-180.) 180.)
+    (* no rotation half the time: quadrics are bounded in axis-kept frames *)
+    <*> oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") angle angle angle ]
     <*> vec
   in
   map4
-    (fun op s ps m -> Printf.sprintf "%s { %s %s %s }" op s (String.concat " " ps) m)
-    (oneof_list [ "intersection"; "difference" ]) solid (list_size (int_range 1 3) plane) moves
+    (fun op (s, q) ps m -> Printf.sprintf "%s { %s %s %s %s }" op s q (String.concat " " ps) m)
+    (oneof_list [ "intersection"; "difference" ])
+    (pair solid (oneof [ return ""; quadric ]))
+    (list_size (int_range 1 3) plane) moves
 
 let box_props =
   [ QCheck.Test.make ~name:"CSG box holds the inside and the crossings" ~count:300
