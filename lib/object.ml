@@ -55,6 +55,14 @@ let moved_plane xf (n : Vec3.t) d inverted =
   let c = Vec3.dot nw (Transform.point xf (Vec3.scale (d /. Vec3.length2 n) n)) in
   if inverted then (Vec3.neg nw, -.c) else (nw, c)
 
+(* A box ([None]: the whole space) as its low and high ends per axis,
+   to cut one axis at a time, and back *)
+let box_arrays = function
+  | Some ((l : Vec3.t), (h : Vec3.t)) -> ([| l.x; l.y; l.z |], [| h.x; h.y; h.z |])
+  | None -> ([| neg_infinity; neg_infinity; neg_infinity |], [| infinity; infinity; infinity |])
+
+let box_of_arrays lo hi = Some (Vec3.make lo.(0) lo.(1) lo.(2), Vec3.make hi.(0) hi.(1) hi.(2))
+
 (* The box [b] ([None]: the whole space) cut by the inside of the plane
    [n . p < c]: on each axis the normal has a part along, the plane
    bounds that coordinate given the box's range on the others (interval
@@ -64,11 +72,7 @@ let moved_plane xf (n : Vec3.t) d inverted =
    bound is moved out by 1e-9 of the magnitudes summed, so that rounding
    never cuts the surface lying on it. *)
 let cut_by_plane (n : Vec3.t) c b =
-  let lo, hi =
-    match b with
-    | Some ((l : Vec3.t), (h : Vec3.t)) -> ([| l.x; l.y; l.z |], [| h.x; h.y; h.z |])
-    | None -> ([| neg_infinity; neg_infinity; neg_infinity |], [| infinity; infinity; infinity |])
-  in
+  let lo, hi = box_arrays b in
   for k = 0 to 2 do
     let nk = Vec3.get n k in
     if nk <> 0. then begin
@@ -90,7 +94,7 @@ let cut_by_plane (n : Vec3.t) c b =
     end
   done;
   if Array.for_all (fun x -> x = neg_infinity) lo && Array.for_all (fun x -> x = infinity) hi then b
-  else Some (Vec3.make lo.(0) lo.(1) lo.(2), Vec3.make hi.(0) hi.(1) hi.(2))
+  else box_of_arrays lo hi
 
 (* [o]'s inside as a plane's half-space in the frame [xf] takes the
    world into, if it is one *)
@@ -115,11 +119,7 @@ let cut_by_quadric xf (q : float array) inverted b =
   else begin
     let sc = [| vx.x; vy.y; vz.z |] and tr = [| t.x; t.y; t.z |] in
     let q = if inverted then Array.map Float.neg q else q in
-    let wlo, whi =
-      match b with
-      | Some ((l : Vec3.t), (h : Vec3.t)) -> ([| l.x; l.y; l.z |], [| h.x; h.y; h.z |])
-      | None -> ([| neg_infinity; neg_infinity; neg_infinity |], [| infinity; infinity; infinity |])
-    in
+    let wlo, whi = box_arrays b in
     (* the box in the quadric's own space *)
     let ends k = ((wlo.(k) -. tr.(k)) /. sc.(k), (whi.(k) -. tr.(k)) /. sc.(k)) in
     let l = Array.init 3 (fun k -> let u, v = ends k in Float.min u v)
@@ -177,7 +177,7 @@ let cut_by_quadric xf (q : float array) inverted b =
           whi.(k) <- Float.min whi.(k) (v +. p)
         end
       done;
-      Some (Vec3.make wlo.(0) wlo.(1) wlo.(2), Vec3.make whi.(0) whi.(1) whi.(2))
+      box_of_arrays wlo whi
     end
   end
 
@@ -194,14 +194,18 @@ let quadric_part xf o =
    (the more the box is bounded, the more an oblique plane cuts), then by
    the quadrics. *)
 let meet box xf b parts =
-  let parts = Array.to_list parts in
-  let planes, rest = List.partition (fun o -> half_space xf o <> None) parts in
-  let quadrics, solids = List.partition (fun o -> quadric_part xf o <> None) rest in
+  let solids, cutters =
+    List.partition_map
+      (fun o ->
+        match half_space xf o with
+        | Some p -> Right (Either.Left p)
+        | None -> ( match quadric_part xf o with Some q -> Right (Either.Right q) | None -> Left o))
+      (Array.to_list parts)
+  in
+  let planes, quadrics = List.partition_map Fun.id cutters in
   let b = List.fold_left (fun b o -> box_inter b (box o)) b solids in
-  let b = List.fold_left (fun b o -> match half_space xf o with Some (n, c) -> cut_by_plane n c b | None -> b) b planes in
-  List.fold_left
-    (fun b o -> match quadric_part xf o with Some (x, q, inv) -> cut_by_quadric x q inv b | None -> b)
-    b quadrics
+  let b = List.fold_left (fun b (n, c) -> cut_by_plane n c b) b planes in
+  List.fold_left (fun b (x, q, inv) -> cut_by_quadric x q inv b) b quadrics
 
 (* Bounds of where [inside] can be true (a disc's inside is a half-space,
    wider than its surface): what intersections and clips may trust. *)
