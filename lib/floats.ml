@@ -25,3 +25,6 @@ let order_prefix a n (ord : int array) =
 (* rounded to single precision (POV-Ray's SNGL fields, and floats read
    from files), kept as a double *)
 let[@inline] single x = Int32.float_of_bits (Int32.bits_of_float x)
+
+let[@inline] fmin (a : float) b = if a <= b then a else b
+let[@inline] fmax (a : float) b = if a >= b then a else b

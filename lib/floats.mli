@@ -18,3 +18,11 @@ val order_prefix : Float.Array.t -> int -> int array -> unit
 val single : float -> float
 (** [x] rounded to single precision (as POV-Ray keeps its [SNGL] fields),
     as a double. *)
+
+val fmin : float -> float -> float
+(** The lesser of two numbers by one comparison, inlined: [Float.min] is
+    a call that orders NaN and -0 by the C library's [signbit], which a
+    hot loop over numbers that are neither need not pay. *)
+
+val fmax : float -> float -> float
+(** The greater, likewise. *)

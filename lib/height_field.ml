@@ -191,12 +191,15 @@ let hit_s f (r : Ray.scratch) tmin (h : Hit.t) =
     in
     let tc = ref lo and go = ref true in
     while !go do
-      let tn = Float.min te (Float.min !tmx !tmz) in
+      (* by one comparison each (Floats.fmin): no NaN here, and a zero's
+         sign is read only by comparisons *)
+      let tn = Floats.fmin te (Floats.fmin !tmx !tmz) in
       let ya = oy +. (!tc *. dy) and yb = oy +. (tn *. dy) in
-      let ymin = Float.min ya yb -. 1e-3 and ymax = Float.max ya yb +. 1e-3 in
+      let ymin = Floats.fmin ya yb -. 1e-3 and ymax = Floats.fmax ya yb +. 1e-3 in
       let x = !cx and z = !cz in
       let y1 = hg f x z and y2 = hg f (x + 1) z and y3 = hg f x (z + 1) and y4 = hg f (x + 1) (z + 1) in
-      let cmin = Float.min (Float.min y1 y2) (Float.min y3 y4) and cmax = Float.max (Float.max y1 y2) (Float.max y3 y4) in
+      let cmin = Floats.fmin (Floats.fmin y1 y2) (Floats.fmin y3 y4)
+      and cmax = Floats.fmax (Floats.fmax y1 y2) (Floats.fmax y3 y4) in
       if cmax >= ymin && cmin <= ymax then cell f x z ox oy oz dx dy dz lo hi h;
       if h.t < t_in || tn >= te then go := false
       else if !tmx < !tmz then begin
