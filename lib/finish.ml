@@ -61,8 +61,8 @@ let has_reflection f =
 
 (* comparisons as OCaml compiles them, no call: the same as Float.min
    and Float.max for the values here (NaN passes through both) *)
-let[@inline] fmin (a : float) b = if a <= b then a else b
-let[@inline] fmax (a : float) b = if a >= b then a else b
+let fmin = Floats.fmin
+let fmax = Floats.fmax
 
 (* POV-Ray's approximate metallic Fresnel term, x = angle / 90 degrees:
    [m] > 0, the tint is 1 + k (c - 1) per channel c of the pigment, k as

@@ -434,8 +434,8 @@ let inside_pattern o =
 (* if-based: Float.min/max are calls with boxed arguments (and order NaN
    and -0, which the comparison below does not need: no slab distance is
    NaN, the zero directions being set apart) *)
-let[@inline] fmin (a : float) b = if a <= b then a else b
-let[@inline] fmax (a : float) b = if a >= b then a else b
+let fmin = Floats.fmin
+let fmax = Floats.fmax
 
 (* Whether the ray misses the object's box within (tmin, tmax); inlined,
    so that a [tmax] read from a hit record is not boxed to be passed. *)

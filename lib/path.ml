@@ -1,8 +1,8 @@
 open Color
 
 (* if-based min/max: Float.min/max order NaN and -0 through a C call *)
-let[@inline] fmax (a : float) b = if a >= b then a else b
-let[@inline] fmin (a : float) b = if a <= b then a else b
+let fmin = Floats.fmin
+let fmax = Floats.fmax
 
 type t = {
   scene : Scene.t;
