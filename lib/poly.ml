@@ -231,12 +231,11 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
       bound := mag_max !bound (Float.abs (g eqn m /. lead))
     done;
     (* [Float.min] and [Float.max] as comparisons (they call C for the
-       sign of a zero: [cap] is at least 1, and [lo] ties [-.hi] only
-       where both are zeros, and then no root is looked for) *)
+       sign of a zero: [cap] is at least 1) *)
     let cap = 1. +. !bound in
     let cap = if cap < reach || cap <> cap then cap else reach in
     let hi = if hi < cap || hi <> hi then hi else cap in
-    let lo = if lo > -.hi || lo <> lo then lo else -.hi in
+    let lo = if lo > -.cap || lo <> lo then lo else -.cap in
     if not (lo < hi) then false
     else if
       (* a miss ruled out more cheaply, with the search's answer *)
@@ -323,7 +322,7 @@ let[@inline] cubic_roots_in (found : Float.Array.t) c3 c2 c1 c0 lo hi =
     let cap = if reach < cap then reach else cap in
     let top = if cap < hi || cap <> cap then cap else hi in
     let from = lo -. 1e-12 in
-    let start = if -.top > from then -.top else from in
+    let start = if -.cap > from then -.cap else from in
     if not (start < top) then 0
     else if not n2 then begin
       (* a line: its root, strictly inside, as there *)

@@ -49,8 +49,11 @@ let first_root_in (eqn : Float.Array.t) degree lo hi =
     for m = 0 to n - 1 do
       bound := Float.max !bound (Float.abs (g eqn m /. lead))
     done;
-    let hi = Float.min hi (Float.min reach (1. +. !bound)) in
-    let lo = Float.max lo (-.hi) in
+    (* every root within Cauchy's bound: the window clipped to it (not
+       to minus its top, which dropped roots below -hi when hi < cap) *)
+    let cap = Float.min reach (1. +. !bound) in
+    let hi = Float.min hi cap in
+    let lo = Float.max lo (-.cap) in
     if not (lo < hi) then None
     else begin
       let w = n + 1 in

@@ -75,4 +75,24 @@ let first_root_prop =
       | None, Some b -> QCheck.Test.fail_reportf "found none, before %s" (show b)
       | Some a, Some b -> QCheck.Test.fail_reportf "found %s, before %s" (show a) (show b))
 
-let tests = ("poly", List.map QCheck_alcotest.to_alcotest [ first_root_prop ])
+(* A window that ends before the roots' bound: roots below minus its end
+   are still in it (the window was once clipped to [-hi, hi]) *)
+let windows =
+  Alcotest.test_case "first_root_in: a window below minus its end" `Quick (fun () ->
+      let sc = Poly.scratch 8 in
+      List.iter
+        (fun (name, c, lo, hi, want) ->
+          let eqn = Float.Array.of_list c in
+          let got = if Poly.first_root_in sc eqn (List.length c - 1) lo hi then Poly.root sc else nan in
+          Alcotest.(check (float 1e-12)) name want got)
+        [ ("line t + 3 in (-5, 1)", [ 3.; 1. ], -5., 1., -3.);
+          ("(t + 3)(t - 2) in (-5, 1)", [ -6.; 1.; 1. ], -5., 1., -3.);
+          ("(t + 3)(t + 2)(t - 1) in (-4, 0.5)", [ -6.; 1.; 4.; 1. ], -4., 0.5, -3.);
+          ("(t + 4)(t + 1)(t - 1)(t - 2) in (-5, 0.2)", [ 8.; -2.; -9.; 2.; 1. ], -5., 0.2, -4.) ];
+      let found = Float.Array.make 3 0. in
+      let n = Poly.cubic_roots_in found 1. 4. 1. (-6.) (-4.) 0.5 in
+      Alcotest.(check int) "cubic_roots_in: both roots below" 2 n;
+      Alcotest.(check (float 1e-12)) "the first" (-3.) (Float.Array.get found 0);
+      Alcotest.(check (float 1e-12)) "the second" (-2.) (Float.Array.get found 1))
+
+let tests = ("poly", windows :: List.map QCheck_alcotest.to_alcotest [ first_root_prop ])
