@@ -115,7 +115,11 @@ let half_space xf o =
 let cut_by_quadric xf (q : float array) inverted b =
   let vx = Transform.vector xf Vec3.unit_x and vy = Transform.vector xf Vec3.unit_y
   and vz = Transform.vector xf Vec3.unit_z and t = Transform.point xf Vec3.zero in
-  if not (vx.y = 0. && vx.z = 0. && vy.x = 0. && vy.z = 0. && vz.x = 0. && vz.y = 0.) then b
+  (* off the diagonal, what a rotation and its inverse leave by
+     rounding (1e-16 of the scale) counts as zero: far inside the bounds'
+     1e-9 margins *)
+  let off u v = Float.abs u <= 1e-12 *. Float.abs v in
+  if not (off vx.y vx.x && off vx.z vx.x && off vy.x vy.y && off vy.z vy.y && off vz.x vz.z && off vz.y vz.z) then b
   else begin
     let sc = [| vx.x; vy.y; vz.z |] and tr = [| t.x; t.y; t.z |] in
     let q = if inverted then Array.map Float.neg q else q in
@@ -205,7 +209,13 @@ let meet box xf b parts =
   let planes, quadrics = List.partition_map Fun.id cutters in
   let b = List.fold_left (fun b o -> box_inter b (box o)) b solids in
   let b = List.fold_left (fun b (n, c) -> cut_by_plane n c b) b planes in
-  List.fold_left (fun b (x, q, inv) -> cut_by_quadric x q inv b) b quadrics
+  if quadrics = [] then b
+  else
+    (* and by the planes again: a plane's normal off an axis by rounding
+       (a rotation undone in the frame) cuts only once the quadrics have
+       bounded the other axes *)
+    let b = List.fold_left (fun b (x, q, inv) -> cut_by_quadric x q inv b) b quadrics in
+    List.fold_left (fun b (n, c) -> cut_by_plane n c b) b planes
 
 (* Bounds of where [inside] can be true (a disc's inside is a half-space,
    wider than its surface): what intersections and clips may trust. *)
@@ -328,22 +338,25 @@ let union ?(clip = [||]) cs =
   if Array.length cs >= index_min then { n with index = Some (make_index cs) } else n
 let merge ?(clip = [||]) cs = node (Merge cs) clip (union_box cs)
 
+(* [world], the box found in the world, trimmed by the box [in_frame]
+   finds in the frame [frame] takes to the world, when that one is
+   finite *)
+let framed world frame in_frame =
+  match frame with
+  | Some f when not (Transform.is_identity f) -> (
+      let finv = Transform.inverse f in
+      match in_frame finv with
+      | Some ((lo, hi) as b) when Vec3.is_finite lo && Vec3.is_finite hi -> box_inter world (world_box f (Some b))
+      | _ -> world)
+  | _ -> world
+
 let intersection ?(clip = [||]) ?frame cs =
   let world = meet solid_box Transform.identity None cs in
-  let box =
-    match frame with
-    | Some f when not (Transform.is_identity f) -> (
-        let finv = Transform.inverse f in
-        match meet (frame_box finv) finv None cs with
-        | Some ((lo, hi) as b) when Vec3.is_finite lo && Vec3.is_finite hi -> box_inter world (world_box f (Some b))
-        | _ -> world)
-    | _ -> world
-  in
-  node (Intersection cs) clip box
+  node (Intersection cs) clip (framed world frame (fun finv -> meet (frame_box finv) finv None cs))
 
-let with_clip o clip =
-  let clip = Array.append o.clip clip in
-  { o with clip; bounds = clip_box clip o.bounds }
+let with_clip ?frame o clip =
+  let o = { o with clip = Array.append o.clip clip } in
+  { o with bounds = framed (clip_box clip o.bounds) frame (fun finv -> frame_box finv o) }
 
 (* A ray-level test (see [in_bound]): the object's box stays its own,
    since its crossings need not lie inside the bound. *)

@@ -61,8 +61,10 @@ val intersection : ?clip:t array -> ?frame:Transform.t -> t array -> t
 
 val merge : ?clip:t array -> t array -> t
 
-val with_clip : t -> t array -> t
-(** Add [clipped_by] objects (world space). *)
+val with_clip : ?frame:Transform.t -> t -> t array -> t
+(** Add [clipped_by] objects (world space). [frame]: the transform the
+    clipped object was then moved by; its box is found in that frame too,
+    as for {!intersection}. *)
 
 val with_bound : t -> t array -> t
 (** Add [bounded_by] objects (world space). The object's box is not

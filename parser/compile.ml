@@ -493,7 +493,7 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   | Sdl.Inverse inner -> Option.map Object.invert (obj ctx' inner)
   | Sdl.Clipped (inner, clips) ->
       let clips = children clips in
-      Option.map (fun i -> Object.with_clip i clips) (obj ctx' inner)
+      Option.map (fun i -> Object.with_clip ~frame:o.xform i clips) (obj ctx' inner)
   | Sdl.Bounded (inner, bounds) ->
       let bounds = children bounds in
       Option.map (fun i -> Object.with_bound i bounds) (obj ctx' inner)

@@ -191,6 +191,11 @@ let close_box name ((elo : Vec3.t), (ehi : Vec3.t)) o =
     [ ("lo.x", elo.x, lo.x); ("lo.y", elo.y, lo.y); ("lo.z", elo.z, lo.z); ("hi.x", ehi.x, hi.x);
       ("hi.y", ehi.y, hi.y); ("hi.z", ehi.z, hi.z) ]
 
+let helix =
+  "quartic { <0, 0, 0, 0, 0, 0, 0, 0, 0, 0,  0, 0, 0, 0, 0, 0, -0.1666, 0, 1, 0, \
+   0, 0, 0, 0, 0, 0, 0, 0.5, 0, -1,  0, 0, 0, 0, 0> \
+   clipped_by { quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 scale 2 } plane { z, 1.4142 } plane { -z, 0 } }"
+
 let plane_boxes =
   Alcotest.test_case "CSG boxes: cut by planes and quadrics, in the CSG's own frame" `Quick (fun () ->
       let v = Vec3.make in
@@ -223,7 +228,20 @@ let plane_boxes =
       (* x^2 + z^2 - 0.5 y < 0 below y = 1: |x|, |z| < sqrt 0.5, y > 0 *)
       let h = Float.sqrt 0.5 in
       close_box "paraboloid" (v (-.h) 0. (-.h), v h 1. h)
-        (one "intersection { quadric { <1, 0, 1>, <0, 0, 0>, <0, -0.5, 0>, 0 } plane { y, 1 } }"))
+        (one "intersection { quadric { <1, 0, 1>, <0, 0, 0>, <0, -0.5, 0>, 0 } plane { y, 1 } }");
+      (* shapesq.inc's helix: an unbounded quartic clipped by a cylinder
+         and two planes, then turned: the box of the turned clip, though
+         the turn undone in the frame leaves the planes' normals off
+         their axes by rounding *)
+      let turn = Transform.then_ (Transform.rotate (v 0. 0. 160.)) (Transform.rotate (v (-90.) 0. 0.)) in
+      let corners =
+        List.concat_map
+          (fun x -> List.concat_map (fun y -> List.map (fun z -> Transform.point turn (v x y z)) [ 0.; 1.4142 ]) [ -2.; 2. ])
+          [ -2.; 2. ]
+      in
+      close_box "turned helix"
+        (List.fold_left Vec3.min (List.hd corners) corners, List.fold_left Vec3.max (List.hd corners) corners)
+        (one (helix ^ " rotate 160*z rotate -90*x }")))
 
 (* random intersections and differences of solids with planes, moved
    as a whole: no point of the inside, no crossing outside the box *)
@@ -293,4 +311,4 @@ let box_props =
 let tests =
   ( "object",
     [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by; plane_boxes ] @ errors
-    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props) )
+    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props ) )
