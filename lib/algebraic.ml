@@ -235,7 +235,10 @@ let hit_s a (r : Ray.scratch) tmin (h : Hit.t) =
      tolerance is positive), and keeps a nan *)
   let lo = tmin *. dl in
   let lo = (if lo > depth_tolerance || lo <> lo then lo else depth_tolerance) -. t0 in
-  Poly.first_root sc.roots sc.eqn a.order lo
+  (* roots past the query's upper bound are not wanted: the search stops
+     there (a clipped or bounded surface's bound is its box's far side) *)
+  let hi = (h.t *. dl) -. t0 in
+  Poly.first_root_in sc.roots sc.eqn a.order lo hi
   &&
   let t = (Poly.root sc.roots +. t0) /. dl in
   t > tmin && t < h.t

@@ -498,10 +498,36 @@ let[@inline] local o (r : Ray.scratch) (f : found) =
     l
   end
 
+(* Where the ray leaves the object's box (infinity without one), a
+   little past it: no crossing kept lies beyond. *)
+let[@inline] box_far o (r : Ray.scratch) =
+  match o.bounds with
+  | None -> infinity +. 0.  (* unboxed, as in [box_missed] *)
+  | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
+      let ax = (lo.x -. r.ox) /. r.dx and bx = (hi.x -. r.ox) /. r.dx in
+      let ay = (lo.y -. r.oy) /. r.dy and by = (hi.y -. r.oy) /. r.dy in
+      let az = (lo.z -. r.oz) /. r.dz and bz = (hi.z -. r.oz) /. r.dz in
+      let t1 =
+        fmin
+          (if r.dx = 0. then infinity +. 0. else fmax ax bx)
+          (fmin (if r.dy = 0. then infinity +. 0. else fmax ay by)
+             (if r.dz = 0. then infinity +. 0. else fmax az bz))
+      in
+      t1 +. (1e-9 *. (1. +. Float.abs t1))
+
 let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
   if Array.length o.bound > 0 && not (in_bound o.bound r tmin 0) then false
   else if Array.length o.clip = 0 then raw_hit o r tmin h f
-  else first_accepted true o r tmin h f by_clip [||] 0
+  else begin
+    (* the unclipped surface's crossings past the box are all clipped
+       away: the queries need not look for them *)
+    let t = h.t in
+    let far = box_far o r in
+    if far < t then h.t <- far;
+    let got = first_accepted true o r tmin h f by_clip [||] 0 in
+    if not got then h.t <- t;
+    got
+  end
 
 (* POV-Ray's [bounded_by]: the object is looked at only by rays that
    meet every bounding object, or start inside it; its crossings are then

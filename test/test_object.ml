@@ -308,7 +308,69 @@ let box_props =
         done;
         !ok) ]
 
+(* random surfaces clipped by planes and a quadric, moved as a whole
+   (turned half the time): (surface, clip, moves) *)
+let gclipped =
+  let open QCheck.Gen in
+  let num = map (Printf.sprintf "%.3f") (fr (-1.) 1.) in
+  let vec = map3 (Printf.sprintf "<%s, %s, %s>") num num num in
+  let surface =
+    oneof
+      [ map2 (Printf.sprintf "sphere { %s, %s }") vec (map (Printf.sprintf "%.3f") (fr 0.3 1.5));
+        map3
+          (fun (a, b, c) (d, e, f) (g, h, i) -> Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, -0.2 }" a b c d e f g h i)
+          (triple num num num) (triple num num num) (triple num num num);
+        map (Printf.sprintf "torus { 1.2, 0.4 rotate %s }") vec;
+        return
+          "quartic { <0, 0, 0, 0, 0, 0, 0, 0, 0, 0,  0, 0, 0, 0, 0, 0, -0.1666, 0, 1, 0, \
+           0, 0, 0, 0, 0, 0, 0, 0.5, 0, -1,  0, 0, 0, 0, 0> }" ]
+  in
+  let axis = oneof_list [ "x"; "y"; "z"; "-x"; "-y"; "-z" ] in
+  let plane = map2 (Printf.sprintf "plane { %s, %s }") (oneof [ axis; vec ]) num in
+  let cylinder =
+    map2 (Printf.sprintf "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 scale <%.2f, %.2f, 1> }") (fr 0.5 2.) (fr 0.5 2.)
+  in
+  let angle = map (Printf.sprintf "%.0f") (fr (-180.) 180.) in
+  let moves =
+    map2 (Printf.sprintf "rotate %s translate %s")
+      (oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") angle angle angle ])
+      vec
+  in
+  triple surface
+    (map2 (fun ps c -> String.concat " " (c :: ps)) (list_size (int_range 1 3) plane) (oneof [ return ""; cylinder ]))
+    moves
+
+(* A clipped object's crossing is its surface's first crossing inside
+   the clip: the surface's crossings walked one by one, each tested
+   against the clip, give the same (the object's own query stops at its
+   box and hands the root search that bound). *)
+let clip_props =
+  [ QCheck.Test.make ~name:"clipped crossing: the surface's first inside the clip" ~count:200
+      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ b ^ " / " ^ c) gclipped) (fun (surf, clip, moves) ->
+        let o = one (Printf.sprintf "object { %s clipped_by { %s } %s }" surf clip moves) in
+        let raw = one (Printf.sprintf "object { %s %s }" surf moves) in
+        let cl = one (Printf.sprintf "intersection { %s %s }" clip moves) in
+        let st = Random.State.make [| Hashtbl.hash (surf, clip, moves) |] in
+        let g () = Random.State.float st 4. -. 2. in
+        let ok = ref true in
+        for _ = 1 to 200 do
+          let org = Vec3.make (4. *. g ()) (4. *. g ()) (4. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
+          let r = Ray.make org (Vec3.sub target org) in
+          let h = Hit.create infinity in
+          let got = if Object.hit o r 1e-9 h (Object.found o) then h.t else infinity in
+          let rec walk tm n =
+            let h = Hit.create infinity in
+            if n = 0 || not (Object.hit raw r tm h (Object.found raw)) then infinity
+            else if Object.inside cl (Ray.at r h.t) then h.t
+            else walk (Object.next_tmin r h.t) (n - 1)
+          in
+          let want = walk 1e-9 50 in
+          if !ok && not (got = want || Float.abs (got -. want) <= 1e-6 *. (1. +. Float.abs want)) then
+            ok := QCheck.Test.fail_reportf "from %s: crossing at %.17g, the walk's at %.17g" (Vec3.to_string org) got want
+        done;
+        !ok) ]
+
 let tests =
   ( "object",
     [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by; plane_boxes ] @ errors
-    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props ) )
+    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props @ clip_props) )
