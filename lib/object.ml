@@ -297,7 +297,12 @@ let node geom clip b =
     texture = Texture.default;
     back = Texture.default;
     interior = Interior.default;
-    no_shadow = false;
+    (* a node casts no shadow when none of its leaves does: shadow rays
+       pass it by without walking its crossings *)
+    no_shadow =
+      (match geom with
+      | Union cs | Intersection cs | Merge cs -> Array.length cs > 0 && Array.for_all (fun c -> c.no_shadow) cs
+      | Prim _ -> false);
     inverted = false;
     clip;
     bound = [||];
@@ -654,8 +659,9 @@ let any_mesh o m (r : Ray.scratch) tmin (h : Hit.t) (f : found) =
    [g] reads the crossing's distance in [h] (passed, it would be boxed). *)
 let crossings_s o (r : Ray.scratch) tmin (h : Hit.t) fd shadow opaque g =
   match o.geom with
-  | Prim _ when shadow && o.no_shadow ->
-      (* every crossing would be passed over (a light's looks_like) *)
+  | _ when shadow && o.no_shadow ->
+      (* every crossing would be passed over (a light's looks_like, a
+         CSG of no_shadow parts) *)
       true
   | Prim (Shape.Mesh m) when shadow && Array.length o.clip = 0 && Array.length o.bound = 0 && opaque o ->
       not (any_mesh o m r tmin h fd)

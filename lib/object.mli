@@ -16,7 +16,7 @@ type t = private {
       (** POV-Ray's [interior_texture]: what the inner side of the surface
           shows (seen from inside the solid); [texture] itself when none *)
   interior : Interior.t;
-  no_shadow : bool;
+  no_shadow : bool;  (** casts no shadow (a node: none of its leaves does) *)
   inverted : bool;  (** leaf: inside and outside swapped, normal flipped *)
   clip : t array;  (** [clipped_by]: surfaces outside any of these are removed *)
   bound : t array;

@@ -80,7 +80,16 @@ let texturing =
 let no_shadow =
   Alcotest.test_case "no_shadow on a CSG reaches its children" `Quick (fun () ->
       let s = scene_of_string (header ^ "union { sphere { 0, 1 } box { 2, 3 } no_shadow }") in
-      Alcotest.(check bool) "not occluded" false (Scene.occluded s (Ray.make (Vec3.make 0. 0. (-5.)) Vec3.unit_z) 0. 10.))
+      Alcotest.(check bool) "not occluded" false (Scene.occluded s (Ray.make (Vec3.make 0. 0. (-5.)) Vec3.unit_z) 0. 10.);
+      (* a node marks itself when all its leaves are marked: shadow rays
+         then pass it by whole; one leaf that casts a shadow keeps it *)
+      let ray = Ray.make (Vec3.make 0. 0. (-5.)) Vec3.unit_z in
+      let all = "difference { sphere { 0, 1 } box { <-0.5, -0.5, -2>, <0.5, 0.5, 0> } no_shadow }" in
+      Alcotest.(check bool) "all leaves: the node casts none" true (one all).no_shadow;
+      Alcotest.(check bool) "all leaves: not occluded" false (Scene.occluded (scene_of_string (header ^ all)) ray 0. 10.);
+      let some = "merge { sphere { 0, 1 no_shadow } box { <-1, -1, 2>, <1, 1, 3> } }" in
+      Alcotest.(check bool) "one leaf casts: the node too" false (one some).no_shadow;
+      Alcotest.(check bool) "one leaf casts: occluded" true (Scene.occluded (scene_of_string (header ^ some)) ray 0. 10.))
 
 let mesh_inside =
   Alcotest.test_case "mesh2 inside_vector" `Quick (fun () ->
