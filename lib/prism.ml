@@ -259,7 +259,10 @@ let[@inline] stretch_misses t i (r : Ray.scratch) t0 t1 =
    within [near2]. *)
 let[@inline] slab_misses (r : Ray.scratch) ylo yhi near2 far2 tmin tmax =
   let ta = (ylo -. r.oy) /. r.dy and tb = (yhi -. r.oy) /. r.dy in
-  let t0 = Float.max tmin (Float.min ta tb) and t1 = Float.min tmax (Float.max ta tb) in
+  (* [Floats.fmin]/[fmax], not [Float.min]/[max] (calls to C for the
+     sign of a zero): no nan here (the ray is not level), and a zero's
+     sign changes no comparison below *)
+  let t0 = Floats.fmax tmin (Floats.fmin ta tb) and t1 = Floats.fmin tmax (Floats.fmax ta tb) in
   t0 > t1
   ||
   let qa = (r.dx *. r.dx) +. (r.dz *. r.dz) and qb = 2. *. ((r.ox *. r.dx) +. (r.oz *. r.dz))
@@ -268,8 +271,8 @@ let[@inline] slab_misses (r : Ray.scratch) ylo yhi near2 far2 tmin tmax =
      its floats would be boxed *)
   let a0 = (((qa *. t0) +. qb) *. t0) +. qc and a1 = (((qa *. t1) +. qb) *. t1) +. qc in
   let tv = if qa > 0. then -.qb /. (2. *. qa) else t0 in
-  let bottom = if tv > t0 && tv < t1 then (((qa *. tv) +. qb) *. tv) +. qc else Float.min a0 a1 in
-  bottom > far2 || Float.max a0 a1 < near2
+  let bottom = if tv > t0 && tv < t1 then (((qa *. tv) +. qb) *. tv) +. qc else Floats.fmin a0 a1 in
+  bottom > far2 || Floats.fmax a0 a1 < near2
 
 (* crossings of the half-line from (u, v) towards +x with the curves:
    odd inside; a segment owns its start, not its end *)

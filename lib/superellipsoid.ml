@@ -71,8 +71,10 @@ let[@inline] at s w t =
 let[@inline] slab w p d =
   if Float.abs d > epsilon then begin
     let a = (min_value -. p) /. d and b = (max_value -. p) /. d in
-    set w s_lo (Float.max (get w s_lo) (Float.min a b));
-    set w s_hi (Float.min (get w s_hi) (Float.max a b));
+    (* one comparison each ([Float.min] calls C for the sign of a
+       zero): [d] is not zero, so neither end is a nan *)
+    set w s_lo (Floats.fmax (get w s_lo) (Floats.fmin a b));
+    set w s_hi (Floats.fmin (get w s_hi) (Floats.fmax a b));
     true
   end
   else not (p < min_value || p > max_value)
