@@ -13,16 +13,68 @@ type record = {
   tx : float; ty : float; tz : float;
 }
 
-(* the records of one recursion depth, in cells of side 2^L (L by each
-   record's reach), keyed by (L, cell) mixed into one int *)
-type store = { cells : (int, record list) Hashtbl.t; used : bool array; mutable n : int }
-
 let levels = 128 (* L from -64 to 63 *)
+
+(* the records of one recursion depth, in cells of side 2^L (L by each
+   record's reach), keyed by (L, cell) mixed into one int: a table of
+   its own, open addressing over two arrays (a slot is free while its
+   list is empty), so that a lookup is a few integer operations with no
+   call (the standard table, polymorphic, calls C to hash each key and
+   [compare_val] to compare: a fifth of radiosity2.pov's time; made for
+   ints by its functor, it calls [hash] and [equal] as closures) *)
+type store = {
+  mutable keys : int array;
+  mutable lists : record list array;
+  mutable filled : int;  (* slots in use *)
+  used : bool array;
+  mutable n : int;
+}
+
+let new_store () = { keys = Array.make 256 0; lists = Array.make 256 []; filled = 0; used = Array.make levels false; n = 0 }
+
+let[@inline] mix k = (k lxor (k lsr 29)) * 0x2545F491
+
+(* the slot of key [k]: its own, or the free one where it would go *)
+let slot keys lists k =
+  let mask = Array.length keys - 1 in
+  let i = ref (mix k land mask) in
+  while
+    (match Array.unsafe_get lists !i with [] -> false | _ :: _ -> true) && Array.unsafe_get keys !i <> k
+  do
+    i := (!i + 1) land mask
+  done;
+  !i
+
+(* the records of cell [k] ([] for none) *)
+let[@inline] cell st k = Array.unsafe_get st.lists (slot st.keys st.lists k)
+
+let rec put st k rc =
+  if 2 * (st.filled + 1) > Array.length st.keys then begin
+    (* grown to twice the size, the cells moved over as they are *)
+    let keys = st.keys and lists = st.lists in
+    let size = 2 * Array.length keys in
+    st.keys <- Array.make size 0;
+    st.lists <- Array.make size [];
+    Array.iteri
+      (fun i l ->
+        match l with
+        | [] -> ()
+        | _ :: _ ->
+            let j = slot st.keys st.lists keys.(i) in
+            st.keys.(j) <- keys.(i);
+            st.lists.(j) <- l)
+      lists;
+    put st k rc
+  end
+  else begin
+    let i = slot st.keys st.lists k in
+    (match st.lists.(i) with [] -> st.filled <- st.filled + 1; st.keys.(i) <- k | _ :: _ -> ());
+    st.lists.(i) <- rc :: st.lists.(i)
+  end
 
 type cache = { mutable filling : bool; mutable final : bool; stores : store array }
 
-let new_cache () =
-  { filling = false; final = true; stores = Array.init 21 (fun _ -> { cells = Hashtbl.create 256; used = Array.make levels false; n = 0 }) }
+let new_cache () = { filling = false; final = true; stores = Array.init 21 (fun _ -> new_store ()) }
 
 type t = {
   count : int;
@@ -107,7 +159,14 @@ let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2
 let clear c =
   c.filling <- false;
   c.final <- true;
-  Array.iter (fun st -> Hashtbl.reset st.cells; Array.fill st.used 0 levels false; st.n <- 0) c.stores
+  Array.iter
+    (fun st ->
+      st.keys <- Array.make 256 0;
+      st.lists <- Array.make 256 [];
+      st.filled <- 0;
+      Array.fill st.used 0 levels false;
+      st.n <- 0)
+    c.stores
 
 let records c depth = c.stores.(depth).n
 
@@ -124,8 +183,7 @@ let add c depth rc reach =
   let l = level_of reach in
   let s = Float.ldexp 1. l in
   let key = cell_key l (int_of_float (Float.floor (rc.px /. s))) (int_of_float (Float.floor (rc.py /. s))) (int_of_float (Float.floor (rc.pz /. s))) in
-  let old = match Hashtbl.find_opt st.cells key with Some l -> l | None -> [] in
-  Hashtbl.replace st.cells key (rc :: old);
+  put st key rc;
   st.used.(l + 64) <- true;
   st.n <- st.n + 1
 
@@ -209,9 +267,7 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
         for ix = x0 to x0 + 1 do
           for iy = y0 to y0 + 1 do
             for iz = z0 to z0 + 1 do
-              (* mem, then find: find_opt's Some would be allocated *)
-              let k = cell_key l ix iy iz in
-              if Hashtbl.mem st.cells k then weigh_all sm (Hashtbl.find st.cells k) q n final0
+              weigh_all sm (cell st (cell_key l ix iy iz)) q n final0
             done
           done
         done

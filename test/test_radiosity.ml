@@ -174,6 +174,66 @@ let allocation () =
   let words = Test_whitted.words_per_ray s in
   if words > 0.1 then Alcotest.failf "%.2f minor words a camera ray" words
 
+(* The cache keeps every record it is given, however many share a table
+   slot and as it grows: a lookup over thousands of records (clustered
+   and spread, reaches from 1e-3 to 10) weighs the same as the sum of
+   lookups over each record alone. *)
+let cache_keeps =
+  QCheck.Test.make ~count:10 ~name:"cache: a lookup weighs every record as one cache each"
+    (QCheck.make ~print:QCheck.Print.(pair int int) QCheck.Gen.(pair nat (int_range 300 1500)))
+    (fun (seed, count) ->
+      let st = Random.State.make [| seed |] in
+      let f a = Random.State.float st a in
+      let unit () =
+        let x = f 2. -. 1. and y = f 2. -. 1. and z = f 2. -. 1. in
+        let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
+        if l < 1e-3 then (0., 1., 0.) else (x /. l, y /. l, z /. l)
+      in
+      (* normals near one another: a record serves only points whose
+         normals are close to its own *)
+      let up () =
+        let x = 0.2 *. (f 2. -. 1.) and z = 0.2 *. (f 2. -. 1.) in
+        let l = Float.sqrt ((x *. x) +. 1. +. (z *. z)) in
+        (x /. l, 1. /. l, z /. l)
+      in
+      let record () =
+        (* half in a small cluster, half spread out *)
+        let spread = if Random.State.bool st then 0.05 else 20. in
+        let nx, ny, nz = up () and tx, ty, tz = unit () in
+        let hmd = Float.exp (f 9. -. 7.) in
+        { Radiosity.px = f spread; py = f spread; pz = f spread; nx; ny; nz; ir = f 1.; ig = f 1.; ib = f 1.; hmd;
+          near = hmd *. f 1.; tx; ty; tz }
+      in
+      let eb = 0.5 in
+      let rs = List.init count (fun _ -> record ()) in
+      let whole = Radiosity.new_cache () in
+      List.iter (fun r -> Radiosity.add whole 0 r (r.Radiosity.hmd *. eb)) rs;
+      let sm = Radiosity.sums () and out = Color.acc 0. in
+      let ok = ref (Radiosity.records whole 0 = count) and served = ref 0 in
+      for _ = 1 to 8 do
+        let q = { Vec3.mx = f 0.05; my = f 0.05; mz = f 0.05 } in
+        let nx, ny, nz = up () in
+        let n = { Vec3.mx = nx; my = ny; mz = nz } in
+        (* each record alone *)
+        let ws = ref 0. and sr = ref 0. in
+        List.iter
+          (fun r ->
+            let one = Radiosity.new_cache () in
+            Radiosity.add one 0 r (r.Radiosity.hmd *. eb);
+            sm.eb <- eb;
+            Radiosity.lookup one 0 q n sm out;
+            ws := !ws +. sm.ws;
+            sr := !sr +. sm.sr)
+          rs;
+        if !ws > 0. then incr served;
+        sm.eb <- eb;
+        Radiosity.lookup whole 0 q n sm out;
+        if Float.abs (sm.ws -. !ws) > 1e-9 *. (1. +. !ws) || Float.abs (sm.sr -. !sr) > 1e-9 *. (1. +. !sr) then
+          ok := false
+      done;
+      (* most points are served by some record *)
+      !ok && !served >= 4)
+
 let tests =
   ( "radiosity",
     [
@@ -183,6 +243,7 @@ let tests =
       Alcotest.test_case "no_radiosity hides from gather rays" `Quick hidden;
       Alcotest.test_case "furnace: e (1 + bd + ... + (bd)^n)" `Quick furnace;
       QCheck_alcotest.to_alcotest directions;
+      QCheck_alcotest.to_alcotest cache_keeps;
       Alcotest.test_case "cache: 1 and 2 domains identical" `Quick domains;
       Alcotest.test_case "the picture's pass allocates nothing" `Quick allocation;
     ] )
