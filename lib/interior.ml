@@ -41,6 +41,19 @@ let[@inline] relative_ior inner media =
   if not (List.memq inner media) then (match media with i :: _ -> i.ior | [] -> 1.) /. inner.ior
   else inner.ior /. ior_beyond inner media
 
+(* The index ratio POV-Ray weighs a fresnel reflection by (its
+   ComputeRelativeIOR), the inverse of [relative_ior] but for a ray
+   leaving [inner] while inside other interiors too: there POV-Ray takes
+   the innermost interior's index over [inner]'s, which is 1 when
+   [inner] is the innermost (the ray leaves glass within a hollow sphere
+   around the camera, say), and a fresnel surface then reflects nothing
+   on the way out. *)
+let[@inline] fresnel_ior inner media =
+  match media with
+  | [] -> inner.ior
+  | [ _ ] when List.memq inner media -> 1. /. inner.ior
+  | i :: _ -> if List.memq inner media then i.ior /. inner.ior else inner.ior /. i.ior
+
 (* Lists of media entered, made once per domain: [inner :: media] for
    the pairs met (a ray entering glass would otherwise make a list cell
    at every refraction). A pair is looked up by a hash, in one set of

@@ -44,6 +44,15 @@ val fades_light : t -> bool
     A ray's media are the interiors it is inside, innermost first, each
     once. *)
 
+val fresnel_ior : t -> t list -> float
+(** [fresnel_ior inner media]: the index ratio POV-Ray weighs a fresnel
+    reflection off a surface of [inner] by: [1 / relative_ior inner
+    media], except for a ray leaving [inner] while inside other
+    interiors too, where POV-Ray 3.7 takes the innermost interior's
+    index over [inner]'s (1, no reflection, when [inner] is the
+    innermost: glass inside a hollow object around the camera reflects
+    nothing from within). *)
+
 val relative_ior : t -> t list -> float
 (** [relative_ior inner media]: the relative index of refraction across a
     surface of [inner] for a ray inside [media]. Entering or leaving is

@@ -8,18 +8,18 @@ open Color
 let dot = Vec3.dot_m
 
 (* A nesting level's scalars, stored flat, so that passing them
-   allocates nothing: the relative index, the level's ADC weight, the
+   allocates nothing: the level's ADC weight, the
    weight of a reflection being traced ([refl]) and of the ray traced
    next from here ([child], read by [trace_ray] as it starts). *)
 type nums = {
-  mutable eta : float;
   mutable weight : float;
   mutable refl : float;
   mutable child : float;
   mutable dist : float;  (** how far the ray traced from here last met a surface (infinity: none) *)
+  mutable fres : float;  (** the index ratio a fresnel reflection is weighed by ({!Interior.fresnel_ior}) *)
 }
 
-let nums () = { eta = 1.; weight = 1.; refl = 1.; child = 1.; dist = infinity }
+let nums () = { weight = 1.; refl = 1.; child = 1.; dist = infinity; fres = 1. }
 
 (* the sum of a layer's direct light, per domain: nothing in it traces *)
 let direct_key = Scratch.key (fun () -> Color.acc 0.)
@@ -285,7 +285,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   fr.lights <- Array.unsafe_get s.light_sets obj.lights;
   let inner = obj.interior in
   let eta = Interior.relative_ior inner media in
-  fr.k.eta <- eta;
+  fr.k.fres <- Interior.fresnel_ior inner media;
   let bailout = s.settings.adc_bailout in
   (* guessed from the unperturbed normal; shaded again in the rare case
      the top layer's normal or an opaque texture says otherwise *)
@@ -569,12 +569,13 @@ and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) lev
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else
     let rf = f.reflection in
-    let eta = fr.k.eta in
     let cos_i = -.dot d n in
     (* kr = rmin + k (rmax - rmin), per channel, in scalars *)
     let lo = rf.rmin and hi = rf.rmax in
     let k =
-      if rf.fresnel then if eta = 1. then 0. else Finish.fresnel (1. /. eta) cos_i
+      if rf.fresnel then
+        let r = fr.k.fres in
+        if r = 1. then 0. else Finish.fresnel r cos_i
       else Float.pow (1. -. cos_i) rf.falloff
     in
     let kr = lo.r +. (k *. (hi.r +. (-1. *. lo.r)))

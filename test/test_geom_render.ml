@@ -5,6 +5,23 @@
 open Camlray
 
 let scenes = [
+    (* glass inside a hollow sphere around the camera: POV-Ray weighs the
+       fresnel reflection of a ray leaving the glass by the index ratio
+       of the innermost interior (the glass) over the glass's, 1, so no
+       light is reflected back in from its faces *)
+    ("glass-in-a-hollow-sky", {pov|#version 3.7;
+global_settings { assumed_gamma 1.0 max_trace_level 10 }
+camera { location <0, 2, -6> look_at <0, 0.5, 0> }
+light_source { <-5, 10, -6> color rgb 1 }
+sphere { 0, 50 hollow
+  pigment { gradient y color_map { [0 rgb <0.2, 0.3, 0.6>] [1 rgb <0.9, 0.8, 0.6>] } scale 100 translate -50*y }
+  finish { ambient 1 diffuse 0 } }
+plane { y, -0.5 pigment { checker rgb 0.9 rgb <0.6, 0.1, 0.1> } }
+box { <-1, -0.5, -1>, <1, 1.5, 1> rotate y*30
+  pigment { rgbf <1, 1, 1, 1> }
+  finish { ambient 0 diffuse 0 reflection { 0, 1 fresnel } }
+  interior { ior 1.5 } }
+|pov});
     ("open", {pov|#version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 4, -5> look_at <0, 0, 0> }

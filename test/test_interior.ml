@@ -17,6 +17,21 @@ let relative () =
      overlap, the inner wall of the other child is left as glass to air *)
   Alcotest.(check (float 1e-15)) "a shared interior's inner wall" 1.5 (r glass [ glass ])
 
+(* POV-Ray 3.7's ratio for fresnel reflections: the inverse of the
+   refraction's, but leaving glass while inside something else (a hollow
+   sphere around the camera) it is the innermost index over the glass's,
+   1: no reflection from within *)
+let fresnel () =
+  let f = Interior.fresnel_ior and air = { Interior.default with ior = 1. } in
+  Alcotest.(check (float 1e-15)) "air into glass" 1.5 (f glass []);
+  Alcotest.(check (float 1e-15)) "glass out to air" (1. /. 1.5) (f glass [ glass ]);
+  Alcotest.(check (float 1e-15)) "into glass inside a hollow sphere" 1.5 (f glass [ air ]);
+  Alcotest.(check (float 1e-15)) "out of glass inside a hollow sphere" 1. (f glass [ glass; air ]);
+  Alcotest.(check (float 1e-15)) "into water inside glass" (1.33 /. 1.5) (f water [ glass ]);
+  Alcotest.(check (float 1e-15)) "out of water inside glass" 1. (f water [ water; glass ]);
+  (* leaving glass from inside water entered later: water's over glass's *)
+  Alcotest.(check (float 1e-15)) "out of glass from the water in it" (1.33 /. 1.5) (f glass [ water; glass ])
+
 let beyond () =
   let b = Interior.beyond in
   let inside = b glass [] in
@@ -40,5 +55,6 @@ let fades_light () =
 let tests =
   ( "interior",
     [ Alcotest.test_case "relative index of refraction" `Quick relative;
+      Alcotest.test_case "fresnel index ratio (POV-Ray's)" `Quick fresnel;
       Alcotest.test_case "media past a surface" `Quick beyond;
       Alcotest.test_case "which interiors fade shadow rays" `Quick fades_light ] )
