@@ -236,9 +236,10 @@ let hit_s a (r : Ray.scratch) tmin (h : Hit.t) =
   let lo = tmin *. dl in
   let lo = (if lo > depth_tolerance || lo <> lo then lo else depth_tolerance) -. t0 in
   (* roots past the query's upper bound are not wanted: the search stops
-     there (a clipped or bounded surface's bound is its box's far side) *)
-  let hi = (h.t *. dl) -. t0 in
-  Poly.first_root_in sc.roots sc.eqn a.order lo hi
+     there (a clipped surface's bound is its box's far side), the roots
+     it finds the same whatever the bound *)
+  let stop = (h.t *. dl) -. t0 in
+  Poly.first_root_below sc.roots sc.eqn a.order lo stop
   &&
   let t = (Poly.root sc.roots +. t0) /. dl in
   t > tmin && t < h.t

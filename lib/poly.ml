@@ -122,14 +122,14 @@ type scratch = {
   value_at : Float.Array.t;  (* the level's value there *)
   out : Float.Array.t;  (* the level's last root made *)
   over : int array;  (* 1 once the level has made its last root *)
-  top : Float.Array.t;  (* at 0: the end of the search *)
+  top : Float.Array.t;  (* at 0: the end of the search; at 1: where it stops looking (see [first_root_below]) *)
 }
 
 let scratch max_degree =
   let w = max_degree + 1 in
   let a () = Float.Array.make w 0. in
   { d = Float.Array.make (w * w) 0.; w; at = a (); value_at = a (); out = a (); over = Array.make w 0;
-    top = Float.Array.make 1 0. }
+    top = Float.Array.make 2 0. }
 
 let root sc = Float.Array.unsafe_get sc.out 0
 
@@ -195,6 +195,9 @@ let rec next_root sc lv n =
   else begin
     let d = sc.d and w = sc.w and deg = n - lv in
     let found = ref false in
+    (* a root past the stop is not wanted: no piece that starts there is
+       searched *)
+    if lv = 0 && g sc.at 0 >= g sc.top 1 then Array.unsafe_set sc.over 0 1;
     while (not !found) && Array.unsafe_get sc.over lv = 0 do
       let inner = next_root sc (lv + 1) n in
       let c = if inner then g sc.out (lv + 1) else g sc.top 0 in
@@ -209,12 +212,12 @@ let rec next_root sc lv n =
       end;
       Float.Array.unsafe_set sc.at lv c;
       Float.Array.unsafe_set sc.value_at lv fc;
-      if not inner then Array.unsafe_set sc.over lv 1
+      if (not inner) || (lv = 0 && c >= g sc.top 1) then Array.unsafe_set sc.over lv 1
     done;
     !found
   end
 
-let first_root_in sc (eqn : Float.Array.t) degree lo hi =
+let search sc (eqn : Float.Array.t) degree lo hi stop =
   (* a leading term below the rounding of the others wherever a root is
      looked for is dropped: a direction component that is zero but for
      rounding (a rotation by 90 degrees) leaves such terms, whose roots,
@@ -236,14 +239,15 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
     let cap = if cap < reach || cap <> cap then cap else reach in
     let hi = if hi < cap || hi <> hi then hi else cap in
     let lo = if lo > -.cap || lo <> lo then lo else -.cap in
-    if not (lo < hi) then false
+    let below = if stop < hi then stop else hi in
+    if not (lo < below) then false
     else if
       (* a miss ruled out more cheaply, with the search's answer *)
       n >= 2 && n <= 4
       && Rootless.proved n
            (if n = 4 then g eqn 4 else 0.)
            (if n >= 3 then g eqn 3 else 0.)
-           (g eqn 2) (g eqn 1) (g eqn 0) lo hi
+           (g eqn 2) (g eqn 1) (g eqn 0) lo below
     then false
     else begin
       let d = sc.d and w = sc.w in
@@ -266,11 +270,15 @@ let first_root_in sc (eqn : Float.Array.t) degree lo hi =
         Array.unsafe_set sc.over lv 0
       done;
       Float.Array.unsafe_set sc.top 0 hi;
+      Float.Array.unsafe_set sc.top 1 stop;
       next_root sc 0 n
     end
   end
 
-let first_root sc eqn degree lo = first_root_in sc eqn degree lo infinity
+let first_root_in sc eqn degree lo hi = search sc eqn degree lo hi infinity
+let first_root sc eqn degree lo = search sc eqn degree lo infinity infinity
+let first_root_below sc eqn degree lo stop =
+  search sc eqn degree lo infinity stop && Float.Array.unsafe_get sc.out 0 < stop
 
 (* {2 A cubic's roots in one pass}
 

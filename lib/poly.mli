@@ -40,6 +40,14 @@ val first_root : scratch -> Float.Array.t -> int -> float -> bool
 val first_root_in : scratch -> Float.Array.t -> int -> float -> float -> bool
 (** {!first_root} of the roots below a bound too: in [(lo, hi)]. *)
 
+val first_root_below : scratch -> Float.Array.t -> int -> float -> float -> bool
+(** [first_root_below sc c degree lo stop]: {!first_root}, the same root
+    to the bit, but only looked for below [stop]: [false] where the first
+    root is at or past it (its pieces past [stop] are not searched, and
+    a polynomial that keeps one sign up to [stop] is ruled out as
+    {!first_root} rules one out up to its bound). A query's nearest
+    crossing so far is the stop; the root does not move with it. *)
+
 val root : scratch -> float
 (** The root {!first_root} found. *)
 

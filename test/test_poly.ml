@@ -75,6 +75,29 @@ let first_root_prop =
       | None, Some b -> QCheck.Test.fail_reportf "found none, before %s" (show b)
       | Some a, Some b -> QCheck.Test.fail_reportf "found %s, before %s" (show a) (show b))
 
+(* Stopping at a bound moves no root: the first root below the stop is
+   the first root, to the bit; none is found when the first root is at
+   or past the stop *)
+let below_prop =
+  QCheck.Test.make ~name:"Poly.first_root_below: first_root's root, or none past the stop" ~count:20000
+    QCheck.(make ~print:(fun (c, (lo, stop)) ->
+                Printf.sprintf "[%s] lo %h stop %h"
+                  (String.concat "; " (Array.to_list (Array.map (Printf.sprintf "%h") c))) lo stop)
+              Gen.(pair gpoly (pair (float_range (-6.) 6.) (float_range (-6.) 8.))))
+    (fun (c, (lo, stop)) ->
+      let degree = Array.length c - 1 in
+      let eqn = Float.Array.of_list (Array.to_list c) in
+      let sc = Poly.scratch 8 in
+      let all = if Poly.first_root sc eqn degree lo then Some (Poly.root sc) else None in
+      let got = if Poly.first_root_below sc eqn degree lo stop then Some (Poly.root sc) else None in
+      match (all, got) with
+      | None, None -> true
+      | Some a, None when a >= stop -> true
+      | Some a, Some b when same_bits a b && a < stop -> true
+      | Some a, None -> QCheck.Test.fail_reportf "none found, first_root %s below the stop" (show a)
+      | None, Some b -> QCheck.Test.fail_reportf "found %s, first_root none" (show b)
+      | Some a, Some b -> QCheck.Test.fail_reportf "found %s, first_root %s" (show b) (show a))
+
 (* A window that ends before the roots' bound: roots below minus its end
    are still in it (the window was once clipped to [-hi, hi]) *)
 let windows =
@@ -95,4 +118,4 @@ let windows =
       Alcotest.(check (float 1e-12)) "the first" (-3.) (Float.Array.get found 0);
       Alcotest.(check (float 1e-12)) "the second" (-2.) (Float.Array.get found 1))
 
-let tests = ("poly", windows :: List.map QCheck_alcotest.to_alcotest [ first_root_prop ])
+let tests = ("poly", windows :: List.map QCheck_alcotest.to_alcotest [ first_root_prop; below_prop ])
