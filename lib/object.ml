@@ -584,7 +584,16 @@ and raw_hit o r tmin h f =
           done;
           let b = Bvh.nearest_s x.bvh r tmin h x.bounded f union_leaf in
           b || !any)
-  | Intersection cs -> csg cs r tmin h f by_intersection
+  | Intersection cs ->
+      (* what it keeps lies in its box: its parts' queries stop at the
+         box's far side (an unbounded surface, cut by a box, searches no
+         further) *)
+      let t = h.t in
+      let far = box_far o r in
+      if far < t then h.t <- far;
+      let got = csg cs r tmin h f by_intersection in
+      if not got then h.t <- t;
+      got
   | Merge cs -> csg cs r tmin h f by_merge
 
 and union_leaf bounded f r tmin h i = hit_s (Array.unsafe_get bounded i) r tmin h f

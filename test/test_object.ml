@@ -346,7 +346,7 @@ let gclipped =
       vec
   in
   triple surface
-    (map2 (fun ps c -> String.concat " " (c :: ps)) (list_size (int_range 1 3) plane) (oneof [ return ""; cylinder ]))
+    (map2 (fun ps c -> c @ ps) (list_size (int_range 1 3) plane) (oneof [ return []; map (fun c -> [ c ]) cylinder ]))
     moves
 
 (* A clipped object's crossing is its surface's first crossing inside
@@ -355,7 +355,9 @@ let gclipped =
    box and hands the root search that bound). *)
 let clip_props =
   [ QCheck.Test.make ~name:"clipped crossing: the surface's first inside the clip" ~count:200
-      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ b ^ " / " ^ c) gclipped) (fun (surf, clip, moves) ->
+      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ String.concat " " b ^ " / " ^ c) gclipped)
+      (fun (surf, clip, moves) ->
+        let clip = String.concat " " clip in
         let o = one (Printf.sprintf "object { %s clipped_by { %s } %s }" surf clip moves) in
         let raw = one (Printf.sprintf "object { %s %s }" surf moves) in
         let cl = one (Printf.sprintf "intersection { %s %s }" clip moves) in
@@ -379,7 +381,40 @@ let clip_props =
         done;
         !ok) ]
 
+(* An intersection's crossing is the nearest crossing of any of its parts
+   that lies inside all the others: each part's crossings walked one by
+   one give the same (the intersection's own query stops at its box). *)
+let intersection_props =
+  [ QCheck.Test.make ~name:"intersection crossing: the nearest part crossing inside the others" ~count:200
+      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ String.concat " " b ^ " / " ^ c) gclipped)
+      (fun (surf, cuts, moves) ->
+        let parts = surf :: cuts in
+        let o = one (Printf.sprintf "intersection { %s %s }" (String.concat " " parts) moves) in
+        let each = List.map (fun p -> one (Printf.sprintf "object { %s %s }" p moves)) parts in
+        let st = Random.State.make [| Hashtbl.hash (surf, cuts, moves) |] in
+        let g () = Random.State.float st 4. -. 2. in
+        let ok = ref true in
+        for _ = 1 to 200 do
+          let org = Vec3.make (4. *. g ()) (4. *. g ()) (4. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
+          let r = Ray.make org (Vec3.sub target org) in
+          let h = Hit.create infinity in
+          let got = if Object.hit o r 1e-9 h (Object.found o) then h.t else infinity in
+          let rec walk part others tm n =
+            let h = Hit.create infinity in
+            if n = 0 || not (Object.hit part r tm h (Object.found part)) then infinity
+            else if List.for_all (fun q -> Object.inside q (Ray.at r h.t)) others then h.t
+            else walk part others (Object.next_tmin r h.t) (n - 1)
+          in
+          let want =
+            List.fold_left Float.min infinity
+              (List.mapi (fun i p -> walk p (List.filteri (fun j _ -> j <> i) each) 1e-9 50) each)
+          in
+          if !ok && not (got = want || Float.abs (got -. want) <= 1e-6 *. (1. +. Float.abs want)) then
+            ok := QCheck.Test.fail_reportf "from %s: crossing at %.17g, the walk's at %.17g" (Vec3.to_string org) got want
+        done;
+        !ok) ]
+
 let tests =
   ( "object",
     [ texturing; no_shadow; mesh_inside; degenerate; instancing; shared_textures; bounded_by; plane_boxes ] @ errors
-    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props @ clip_props) )
+    @ List.map QCheck_alcotest.to_alcotest (inside_props @ boundary_props @ box_props @ clip_props @ intersection_props) )
