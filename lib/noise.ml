@@ -19,15 +19,17 @@
 
 let hash_table = Array.append Cells.perm Cells.perm
 
+(* made once: remade per entry it cost every start 7 M instructions *)
+let crc_table =
+  Array.init 256 (fun i ->
+      let c = ref i in
+      for _ = 1 to 8 do
+        c := if !c land 1 = 1 then (!c lsr 1) lxor 0xA001 else !c lsr 1
+      done;
+      !c)
+
 let crc16 bytes =
-  let table =
-    Array.init 256 (fun i ->
-        let c = ref i in
-        for _ = 1 to 8 do
-          c := if !c land 1 = 1 then (!c lsr 1) lxor 0xA001 else !c lsr 1
-        done;
-        !c)
-  in
+  let table = crc_table in
   Bytes.fold_left (fun c b -> (c lsr 8) lxor table.((c lxor Char.code b) land 0xFF)) 0 bytes
 
 let r_entry i =

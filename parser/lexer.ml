@@ -194,6 +194,18 @@ let reserved =
 
 let keyword_names () = Words.fold (fun k _ acc -> k :: acc) keywords [] |> List.sort compare
 
+(* the keyword of each keyword token (the table walked whole per
+   question cost a parse 8% of its instructions: function bodies written
+   back as text, messages made for alternatives tried); where two
+   keywords make one token, the one the walk found last, as the walk
+   did *)
+let names_of_tokens =
+  let t = Hashtbl.create 512 in
+  Words.iter (fun k v -> Hashtbl.replace t v k) keywords;
+  t
+
+let keyword_of raw = Hashtbl.find_opt names_of_tokens raw
+
 let pov_reserved w = Hashtbl.mem reserved w || Words.mem keywords w
 
 let describe = function
@@ -222,15 +234,7 @@ let describe = function
       | FUNC f -> "function " ^ f
       | RGB k -> "keyword " ^ k
       | CHANNEL k -> "keyword " ^ k
-      | _ -> (
-          let found = ref None in
-          Words.iter (fun k v -> if v = Tok t then found := Some k) keywords;
-          match !found with Some k -> "keyword " ^ k | None -> "a declared identifier"))
-
-let keyword_of raw =
-  let found = ref None in
-  Words.iter (fun k v -> if v = raw then found := Some k) keywords;
-  !found
+      | _ -> ( match keyword_of (Tok t) with Some k -> "keyword " ^ k | None -> "a declared identifier"))
 
 exception Lex_error of string
 
