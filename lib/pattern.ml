@@ -303,26 +303,56 @@ let crackle_cubes =
   done;
   Array.of_list (List.rev !l)
 
-(* one cube's point and its "distance" to (x, y, z) (POV-Ray's sum:
-   squared for metric 2, |dx| + |dy| + |dz| for 1, else the sum of
-   |d|^metric), its cube's corner in [cx] [cy] [cz] *)
-let[@inline] crackle_sum square unity m cx cy cz x y z =
-  let seed = Cells.index cx cy cz in
-  let dx = float_of_int cx +. pick_rand seed -. x
-  and dy = float_of_int cy +. pick_rand (seed + 1) -. y
-  and dz = float_of_int cz +. pick_rand (seed + 2) -. z in
+(* Per domain, the points of the 81 cubes around the last cubes asked
+   about, in a few slots picked by a hash of the cube, as POV-Ray keeps
+   them (its crackle cache): the samples of a medium along a ray, and
+   neighbouring rays, fall in the same cubes, and the points are the
+   same numbers however often they are made (each is the cube's corner
+   plus the cell's random offset). *)
+let crackle_slots = 64
+
+type crackle_cache = { corners : int array; (* 3 a slot, min_int while empty *) points : Float.Array.t (* 243 a slot *) }
+
+let crackle_cache_key =
+  Scratch.key (fun () ->
+      { corners = Array.make (3 * crackle_slots) min_int; points = Float.Array.make (243 * crackle_slots) 0. })
+
+(* where the points of cube ([fx], [fy], [fz]) start in [c.points],
+   made there first if the slot holds another cube's *)
+let crackle_points c fx fy fz =
+  let slot = ((fx * 73856093) lxor (fy * 19349663) lxor (fz * 83492791)) land (crackle_slots - 1) in
+  let k = 3 * slot and o = 243 * slot in
+  let cs = c.corners in
+  if not (Array.unsafe_get cs k = fx && Array.unsafe_get cs (k + 1) = fy && Array.unsafe_get cs (k + 2) = fz) then begin
+    let pts = c.points in
+    for i = 0 to 80 do
+      let j = 3 * i in
+      let cx = fx + Array.unsafe_get crackle_cubes j
+      and cy = fy + Array.unsafe_get crackle_cubes (j + 1)
+      and cz = fz + Array.unsafe_get crackle_cubes (j + 2) in
+      let seed = Cells.index cx cy cz in
+      Float.Array.unsafe_set pts (o + j) (float_of_int cx +. pick_rand seed);
+      Float.Array.unsafe_set pts (o + j + 1) (float_of_int cy +. pick_rand (seed + 1));
+      Float.Array.unsafe_set pts (o + j + 2) (float_of_int cz +. pick_rand (seed + 2))
+    done;
+    Array.unsafe_set cs k fx;
+    Array.unsafe_set cs (k + 1) fy;
+    Array.unsafe_set cs (k + 2) fz
+  end;
+  o
+
+(* the [i]th of the 81 cubes' point's "distance" to (x, y, z), the
+   cubes around the one whose points start at [o] in [pts] (POV-Ray's
+   sum: squared for metric 2, |dx| + |dy| + |dz| for 1, else the sum of
+   |d|^metric) *)
+let[@inline] crackle_cube square unity m pts o i x y z =
+  let j = o + (3 * i) in
+  let dx = Float.Array.unsafe_get pts j -. x
+  and dy = Float.Array.unsafe_get pts (j + 1) -. y
+  and dz = Float.Array.unsafe_get pts (j + 2) -. z in
   if square then (dx *. dx) +. (dy *. dy) +. (dz *. dz)
   else if unity then Float.abs dx +. Float.abs dy +. Float.abs dz
   else Float.pow (Float.abs dx) m +. Float.pow (Float.abs dy) m +. Float.pow (Float.abs dz) m
-
-(* the sum of the [i]th of the 81 cubes around the cube ([fx], [fy], [fz]) *)
-let[@inline] crackle_cube square unity m fx fy fz i x y z =
-  let k = 3 * i in
-  crackle_sum square unity m
-    (fx + Array.unsafe_get crackle_cubes k)
-    (fy + Array.unsafe_get crackle_cubes (k + 1))
-    (fz + Array.unsafe_get crackle_cubes (k + 2))
-    x y z
 
 (* POV-Ray 3.7's crackle (pattern.cpp), into [r.v]: the three least sums
    over the 81 cubes' points (sorted as POV-Ray sorts them, so that ties
@@ -338,9 +368,11 @@ let crackle_into (c : crackle) gen (p : Vec3.m) (r : result) =
   and fz = int_of_float (Float.floor (z -. 1e-10)) in
   let m = c.metric in
   let square = m = 2. and unity = m = 1. in
-  let m1 = ref (crackle_cube square unity m fx fy fz 0 x y z)
-  and m2 = ref (crackle_cube square unity m fx fy fz 1 x y z)
-  and m3 = ref (crackle_cube square unity m fx fy fz 2 x y z)
+  let cache = Scratch.get crackle_cache_key in
+  let o = crackle_points cache fx fy fz and pts = cache.points in
+  let m1 = ref (crackle_cube square unity m pts o 0 x y z)
+  and m2 = ref (crackle_cube square unity m pts o 1 x y z)
+  and m3 = ref (crackle_cube square unity m pts o 2 x y z)
   and best = ref 0 in
   if !m2 < !m1 then begin
     let t = !m1 in
@@ -360,7 +392,7 @@ let crackle_into (c : crackle) gen (p : Vec3.m) (r : result) =
     m3 := t
   end;
   for i = 3 to 80 do
-    let s = crackle_cube square unity m fx fy fz i x y z in
+    let s = crackle_cube square unity m pts o i x y z in
     if s < !m1 then begin
       m3 := !m2;
       m2 := !m1;

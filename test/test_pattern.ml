@@ -745,6 +745,26 @@ let crackle_params () =
       Scn.close ~eps:1e-12 "offset adds" (Float.min 1. (Float.sqrt ((f1 *. f1) +. 0.04)))
         (v "crackle form <1, 0, 0> offset 0.2" p))
     pts;
+  (* the cubes' points are kept per domain in a few slots: a value is the
+     same whatever was asked before (points in a few cubes and all over,
+     many sharing a slot; asked again in the reverse order) *)
+  let f = fn_pattern "crackle" in
+  let st = Random.State.make [| 7 |] in
+  let g a = Random.State.float st (2. *. a) -. a in
+  let ps =
+    Array.init 3000 (fun i ->
+        match i mod 3 with
+        | 0 -> Vec3.make (g 1.5) (g 1.5) (g 1.5)
+        | 1 -> Vec3.make (g 60.) (g 60.) (g 60.)
+        (* one column of cubes, far along one axis: cubes that differ in
+           one coordinate by a multiple of the slots share a slot *)
+        | _ -> Vec3.make (g 0.9) (g 0.9) (g 300.))
+  in
+  let first = Array.map (Pattern.value f) ps in
+  for i = Array.length ps - 1 downto 0 do
+    if Int64.bits_of_float (Pattern.value f ps.(i)) <> Int64.bits_of_float first.(i) then
+      Alcotest.failf "crackle at %s: a different value asked again" (Vec3.to_string ps.(i))
+  done;
   (* solid: one value around each feature point, whatever the point *)
   let a = v "crackle solid" (0.5, 0.5, 0.5) and b = v "crackle solid" (0.5001, 0.4999, 0.5) in
   Scn.close ~eps:0. "solid cells" a b;
