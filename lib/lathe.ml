@@ -49,7 +49,9 @@ let work_key = Scratch.key (fun () -> { e = Float.Array.make 7 0.; found = Float
 
 (* crossings of the curve by the half-line of radii beyond [rho] at
    height [y]: odd inside; a segment owns its start, not its end *)
-let inside t x y z =
+(* inlined (into the normal and the shape's inside test): its floats
+   passed to a call would be boxed *)
+let[@inline] inside t x y z =
   let w = Scratch.get work_key in
   let rho = Float.sqrt ((x *. x) +. (z *. z)) in
   let count = ref 0 in

@@ -122,14 +122,16 @@ type scratch = {
   value_at : Float.Array.t;  (* the level's value there *)
   out : Float.Array.t;  (* the level's last root made *)
   over : int array;  (* 1 once the level has made its last root *)
-  top : Float.Array.t;  (* at 0: the end of the search; at 1: where it stops looking (see [first_root_below]) *)
+  top : Float.Array.t;
+      (* at 0: the end of the search; at 1: where it stops looking (see
+         [first_root_below]); at 2 and 3: the window asked for *)
 }
 
 let scratch max_degree =
   let w = max_degree + 1 in
   let a () = Float.Array.make w 0. in
   { d = Float.Array.make (w * w) 0.; w; at = a (); value_at = a (); out = a (); over = Array.make w 0;
-    top = Float.Array.make 2 0. }
+    top = Float.Array.make 4 0. }
 
 let root sc = Float.Array.unsafe_get sc.out 0
 
@@ -217,7 +219,11 @@ let rec next_root sc lv n =
     !found
   end
 
-let search sc (eqn : Float.Array.t) degree lo hi stop =
+(* the window and the stop come in [sc.top] (2: lo, 3: hi, 1: the
+   stop): floats passed to a function too large to inline are boxed,
+   and its callers are in every ray's path *)
+let search sc (eqn : Float.Array.t) degree =
+  let lo = g sc.top 2 and hi = g sc.top 3 and stop = g sc.top 1 in
   (* a leading term below the rounding of the others wherever a root is
      looked for is dropped: a direction component that is zero but for
      rounding (a rotation by 90 degrees) leaves such terms, whose roots,
@@ -270,15 +276,26 @@ let search sc (eqn : Float.Array.t) degree lo hi stop =
         Array.unsafe_set sc.over lv 0
       done;
       Float.Array.unsafe_set sc.top 0 hi;
-      Float.Array.unsafe_set sc.top 1 stop;
       next_root sc 0 n
     end
   end
 
-let first_root_in sc eqn degree lo hi = search sc eqn degree lo hi infinity
-let first_root sc eqn degree lo = search sc eqn degree lo infinity infinity
-let first_root_below sc eqn degree lo stop =
-  search sc eqn degree lo infinity stop && Float.Array.unsafe_get sc.out 0 < stop
+let[@inline] window sc lo hi stop =
+  Float.Array.unsafe_set sc.top 2 lo;
+  Float.Array.unsafe_set sc.top 3 hi;
+  Float.Array.unsafe_set sc.top 1 stop
+
+let[@inline] first_root_in sc eqn degree lo hi =
+  window sc lo hi infinity;
+  search sc eqn degree
+
+let[@inline] first_root sc eqn degree lo =
+  window sc lo infinity infinity;
+  search sc eqn degree
+
+let[@inline] first_root_below sc eqn degree lo stop =
+  window sc lo infinity stop;
+  search sc eqn degree && Float.Array.unsafe_get sc.out 0 < stop
 
 (* {2 A cubic's roots in one pass}
 
