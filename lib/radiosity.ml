@@ -32,7 +32,9 @@ type store = {
 
 let new_store () = { keys = Array.make 256 0; lists = Array.make 256 []; filled = 0; used = Array.make levels false; n = 0 }
 
-let[@inline] mix k = (k lxor (k lsr 29)) * 0x2545F491
+let[@inline] mix k =
+  let h = k * 0x1E3779B97F4A7C15 in
+  h lxor (h lsr 31)
 
 (* the slot of key [k]: its own, or the free one where it would go *)
 let slot keys lists k =
@@ -249,6 +251,18 @@ let rec weigh_all (sm : sums) rs (q : Vec3.m) (n : Vec3.m) final0 =
       end;
       weigh_all sm rest q n final0
 
+(* 2^-l for the levels l = -64 .. 63: a coordinate over a cell's side
+   by one product, exact as the division by 2^l it replaces (both only
+   move the exponent) *)
+let inv_side = Float.Array.init levels (fun li -> Float.ldexp 1. (64 - li))
+
+(* [int_of_float (Float.floor v)] without the call to C's floor
+   ([int_of_float] truncates toward zero; the same int for every [v]
+   an int holds) *)
+let[@inline] ifloor v =
+  let i = int_of_float v in
+  if float_of_int i > v then i - 1 else i
+
 let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   let st = c.stores.(depth) in
   sm.ws <- 0.;
@@ -260,10 +274,8 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
     for li = 0 to levels - 1 do
       if st.used.(li) then begin
         let l = li - 64 in
-        let s = Float.ldexp 1. l in
-        let x0 = int_of_float (Float.floor ((q.mx /. s) -. 0.5))
-        and y0 = int_of_float (Float.floor ((q.my /. s) -. 0.5))
-        and z0 = int_of_float (Float.floor ((q.mz /. s) -. 0.5)) in
+        let k = Float.Array.unsafe_get inv_side li in
+        let x0 = ifloor ((q.mx *. k) -. 0.5) and y0 = ifloor ((q.my *. k) -. 0.5) and z0 = ifloor ((q.mz *. k) -. 0.5) in
         for ix = x0 to x0 + 1 do
           for iy = y0 to y0 + 1 do
             for iz = z0 to z0 + 1 do
