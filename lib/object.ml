@@ -360,8 +360,24 @@ let intersection ?(clip = [||]) ?frame cs =
   node (Intersection cs) clip (framed world frame (fun finv -> meet (frame_box finv) finv None cs))
 
 let with_clip ?frame o clip =
-  let o = { o with clip = Array.append o.clip clip } in
-  { o with bounds = framed (clip_box clip o.bounds) frame (fun finv -> frame_box finv o) }
+  let clipped = { o with clip = Array.append o.clip clip } in
+  (* what is kept lies in the object and the clip at once: a quadric or
+     an intersection's parts met with the clip's planes together, so that
+     a cone between planes is bounded by them (its own box, then the
+     clip's, leaves it unbounded) *)
+  let parts =
+    match o.geom with
+    | Intersection cs -> Some (Array.concat [ cs; o.clip; clip ])
+    | Prim (Shape.Algebraic _) -> Some (Array.append [| { o with clip = [||] } |] clipped.clip)
+    | _ -> None
+  in
+  let world = clip_box clip o.bounds in
+  let world = match parts with Some ps -> box_inter world (meet solid_box Transform.identity None ps) | None -> world in
+  let in_frame finv =
+    let whole = frame_box finv clipped in
+    match parts with Some ps -> box_inter whole (meet (frame_box finv) finv None ps) | None -> whole
+  in
+  { clipped with bounds = framed world frame in_frame }
 
 (* A ray-level test (see [in_bound]): the object's box stays its own,
    since its crossings need not lie inside the bound. *)

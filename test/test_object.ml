@@ -248,6 +248,14 @@ let plane_boxes =
           (fun x -> List.concat_map (fun y -> List.map (fun z -> Transform.point turn (v x y z)) [ 0.; 1.4142 ]) [ -2.; 2. ])
           [ -2.; 2. ]
       in
+      (* a cone clipped by two planes, and an intersection with a cone
+         clipped by a plane (wineglass.pov's glass): the cone is cut
+         with the clip's planes together *)
+      let cone = "quadric { <1, -1, 1>, <0, 0, 0>, <0, 0, 0>, 0 }" in
+      close_box "clipped cone" (v (-1.) 0. (-1.), v 1. 1. 1.)
+        (one (Printf.sprintf "object { %s clipped_by { plane { y, 1 } plane { -y, 0 } } }" cone));
+      close_box "clipped intersection with a cone" (v (-2.) 0. (-2.), v 2. 2. 2.)
+        (one (Printf.sprintf "intersection { plane { y, 1 } object { %s } clipped_by { plane { -y, 0 } } scale 2 }" cone));
       close_box "turned helix"
         (List.fold_left Vec3.min (List.hd corners) corners, List.fold_left Vec3.max (List.hd corners) corners)
         (one (helix ^ " rotate 160*z rotate -90*x }")))
