@@ -261,35 +261,38 @@ let plane_boxes =
         (one (helix ^ " rotate 160*z rotate -90*x }")))
 
 (* random intersections and differences of solids with planes, moved
-   as a whole: no point of the inside, no crossing outside the box *)
+   as a whole: no point of the inside, no crossing outside the box;
+   first, scene-language pieces the generators share *)
+let gnum = QCheck.Gen.(map (Printf.sprintf "%.3f") (fr (-1.) 1.))
+let gvec_src = QCheck.Gen.(map3 (Printf.sprintf "<%s, %s, %s>") gnum gnum gnum)
+let gsphere_src = QCheck.Gen.(map2 (Printf.sprintf "sphere { %s, %s }") gvec_src (map (Printf.sprintf "%.3f") (fr 0.3 1.5)))
+let gaxis = QCheck.Gen.oneof_list [ "x"; "y"; "z"; "-x"; "-y"; "-z" ]
+let gangle = QCheck.Gen.(map (Printf.sprintf "%.0f") (fr (-180.) 180.))
+
 let gcsg =
   let open QCheck.Gen in
-  let num = map (Printf.sprintf "%.3f") (fr (-1.) 1.) in
-  let vec = map3 (Printf.sprintf "<%s, %s, %s>") num num num in
   let solid =
     oneof
-      [ map2 (Printf.sprintf "sphere { %s, %s }") vec (map (Printf.sprintf "%.3f") (fr 0.3 1.5));
-        map2 (Printf.sprintf "box { %s, %s }") vec vec;
-        map2 (Printf.sprintf "blob { threshold 0.5 sphere { %s, 1.2, 1 } sphere { %s, 0.8, 2 } scale <1, 2, 0.5> }") vec vec ]
+      [ gsphere_src;
+        map2 (Printf.sprintf "box { %s, %s }") gvec_src gvec_src;
+        map2 (Printf.sprintf "blob { threshold 0.5 sphere { %s, 1.2, 1 } sphere { %s, 0.8, 2 } scale <1, 2, 0.5> }") gvec_src gvec_src ]
   in
-  let axis = oneof_list [ "x"; "y"; "z"; "-x"; "-y"; "-z" ] in
   let plane =
     map3 (fun n d inv -> Printf.sprintf "plane { %s, %s%s }" n d (if inv then " inverse" else ""))
-      (oneof [ axis; vec ]) num bool
+      (oneof [ gaxis; gvec_src ]) gnum bool
   in
   (* quadrics without mixed terms: ellipsoids, hyperboloids, cylinders, paraboloids *)
   let quadric =
     map3
       (fun (a, b, c) (d, e, f) g -> Printf.sprintf "quadric { <%s, %s, %s>, <0, 0, 0>, <%s, %s, %s>, %s }" a b c d e f g)
-      (triple num num num) (triple num num num) num
+      (triple gnum gnum gnum) (triple gnum gnum gnum) gnum
   in
-  let angle = map (Printf.sprintf "%.0f") (fr (-180.) 180.) in
   let moves =
     map3 (Printf.sprintf "scale <%.2f, %.2f, %.2f> rotate %s translate %s")
       (fr 0.4 2.) (fr 0.4 2.) (fr 0.4 2.)
     (* no rotation half the time: quadrics are bounded in axis-kept frames *)
-    <*> oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") angle angle angle ]
-    <*> vec
+    <*> oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") gangle gangle gangle ]
+    <*> gvec_src
   in
   map4
     (fun op (s, q) ps m -> Printf.sprintf "%s { %s %s %s %s }" op s q (String.concat " " ps) m)
@@ -320,7 +323,9 @@ let box_props =
           let org = Vec3.make (2. *. g ()) (2. *. g ()) (2. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
           let r = Ray.make org (Vec3.sub target org) in
           let h = Hit.create infinity and f = Object.found o in
-          (* the CSG's own query does not read its box (its parents do) *)
+          (* an intersection's own query stops at its box, so this
+             checks differences and the inside above checks the box;
+             intersection_props below checks the crossings kept *)
           if Object.hit o r 1e-9 h f && not (within (Ray.at r h.t)) then ok := false
         done;
         !ok) ]
@@ -329,98 +334,82 @@ let box_props =
    (turned half the time): (surface, clip, moves) *)
 let gclipped =
   let open QCheck.Gen in
-  let num = map (Printf.sprintf "%.3f") (fr (-1.) 1.) in
-  let vec = map3 (Printf.sprintf "<%s, %s, %s>") num num num in
   let surface =
     oneof
-      [ map2 (Printf.sprintf "sphere { %s, %s }") vec (map (Printf.sprintf "%.3f") (fr 0.3 1.5));
+      [ gsphere_src;
         map3
           (fun (a, b, c) (d, e, f) (g, h, i) -> Printf.sprintf "quadric { <%s, %s, %s>, <%s, %s, %s>, <%s, %s, %s>, -0.2 }" a b c d e f g h i)
-          (triple num num num) (triple num num num) (triple num num num);
-        map (Printf.sprintf "torus { 1.2, 0.4 rotate %s }") vec;
+          (triple gnum gnum gnum) (triple gnum gnum gnum) (triple gnum gnum gnum);
+        map (Printf.sprintf "torus { 1.2, 0.4 rotate %s }") gvec_src;
         return
           "quartic { <0, 0, 0, 0, 0, 0, 0, 0, 0, 0,  0, 0, 0, 0, 0, 0, -0.1666, 0, 1, 0, \
            0, 0, 0, 0, 0, 0, 0, 0.5, 0, -1,  0, 0, 0, 0, 0> }" ]
   in
-  let axis = oneof_list [ "x"; "y"; "z"; "-x"; "-y"; "-z" ] in
-  let plane = map2 (Printf.sprintf "plane { %s, %s }") (oneof [ axis; vec ]) num in
+  let plane = map2 (Printf.sprintf "plane { %s, %s }") (oneof [ gaxis; gvec_src ]) gnum in
   let cylinder =
     map2 (Printf.sprintf "quadric { <1, 1, 0>, <0, 0, 0>, <0, 0, 0>, -1 scale <%.2f, %.2f, 1> }") (fr 0.5 2.) (fr 0.5 2.)
   in
-  let angle = map (Printf.sprintf "%.0f") (fr (-180.) 180.) in
   let moves =
     map2 (Printf.sprintf "rotate %s translate %s")
-      (oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") angle angle angle ])
-      vec
+      (oneof [ return "<0, 0, 0>"; map3 (Printf.sprintf "<%s, %s, %s>") gangle gangle gangle ])
+      gvec_src
   in
   triple surface
     (map2 (fun ps c -> c @ ps) (list_size (int_range 1 3) plane) (oneof [ return []; map (fun c -> [ c ]) cylinder ]))
     moves
+
+(* the first crossing of [part] along [r] from [tm] on whose point
+   [keep] holds, its crossings walked one by one (at most [n]) *)
+let rec walk_crossings part keep r tm n =
+  let h = Hit.create infinity in
+  if n = 0 || not (Object.hit part r tm h (Object.found part)) then infinity
+  else if keep (Ray.at r h.t) then h.t
+  else walk_crossings part keep r (Object.next_tmin r h.t) (n - 1)
+
+(* [o]'s crossing along 200 rays towards the middle (seeded by [seed])
+   is [reference]'s, to 1e-6 relative *)
+let agrees o seed reference =
+  let st = Random.State.make [| seed |] in
+  let g () = Random.State.float st 4. -. 2. in
+  let ok = ref true in
+  for _ = 1 to 200 do
+    let org = Vec3.make (4. *. g ()) (4. *. g ()) (4. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
+    let r = Ray.make org (Vec3.sub target org) in
+    let h = Hit.create infinity in
+    let got = if Object.hit o r 1e-9 h (Object.found o) then h.t else infinity in
+    let want = reference r in
+    if !ok && not (got = want || Float.abs (got -. want) <= 1e-6 *. (1. +. Float.abs want)) then
+      ok := QCheck.Test.fail_reportf "from %s: crossing at %.17g, the walk's at %.17g" (Vec3.to_string org) got want
+  done;
+  !ok
+
+let arb_clipped = QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ String.concat " " b ^ " / " ^ c) gclipped
 
 (* A clipped object's crossing is its surface's first crossing inside
    the clip: the surface's crossings walked one by one, each tested
    against the clip, give the same (the object's own query stops at its
    box and hands the root search that bound). *)
 let clip_props =
-  [ QCheck.Test.make ~name:"clipped crossing: the surface's first inside the clip" ~count:200
-      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ String.concat " " b ^ " / " ^ c) gclipped)
+  [ QCheck.Test.make ~name:"clipped crossing: the surface's first inside the clip" ~count:200 arb_clipped
       (fun (surf, clip, moves) ->
         let clip = String.concat " " clip in
         let o = one (Printf.sprintf "object { %s clipped_by { %s } %s }" surf clip moves) in
         let raw = one (Printf.sprintf "object { %s %s }" surf moves) in
         let cl = one (Printf.sprintf "intersection { %s %s }" clip moves) in
-        let st = Random.State.make [| Hashtbl.hash (surf, clip, moves) |] in
-        let g () = Random.State.float st 4. -. 2. in
-        let ok = ref true in
-        for _ = 1 to 200 do
-          let org = Vec3.make (4. *. g ()) (4. *. g ()) (4. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
-          let r = Ray.make org (Vec3.sub target org) in
-          let h = Hit.create infinity in
-          let got = if Object.hit o r 1e-9 h (Object.found o) then h.t else infinity in
-          let rec walk tm n =
-            let h = Hit.create infinity in
-            if n = 0 || not (Object.hit raw r tm h (Object.found raw)) then infinity
-            else if Object.inside cl (Ray.at r h.t) then h.t
-            else walk (Object.next_tmin r h.t) (n - 1)
-          in
-          let want = walk 1e-9 50 in
-          if !ok && not (got = want || Float.abs (got -. want) <= 1e-6 *. (1. +. Float.abs want)) then
-            ok := QCheck.Test.fail_reportf "from %s: crossing at %.17g, the walk's at %.17g" (Vec3.to_string org) got want
-        done;
-        !ok) ]
+        agrees o (Hashtbl.hash (surf, clip, moves)) (fun r -> walk_crossings raw (Object.inside cl) r 1e-9 50)) ]
 
 (* An intersection's crossing is the nearest crossing of any of its parts
    that lies inside all the others: each part's crossings walked one by
    one give the same (the intersection's own query stops at its box). *)
 let intersection_props =
   [ QCheck.Test.make ~name:"intersection crossing: the nearest part crossing inside the others" ~count:200
-      (QCheck.make ~print:(fun (a, b, c) -> a ^ " / " ^ String.concat " " b ^ " / " ^ c) gclipped)
-      (fun (surf, cuts, moves) ->
+      arb_clipped (fun (surf, cuts, moves) ->
         let parts = surf :: cuts in
         let o = one (Printf.sprintf "intersection { %s %s }" (String.concat " " parts) moves) in
         let each = List.map (fun p -> one (Printf.sprintf "object { %s %s }" p moves)) parts in
-        let st = Random.State.make [| Hashtbl.hash (surf, cuts, moves) |] in
-        let g () = Random.State.float st 4. -. 2. in
-        let ok = ref true in
-        for _ = 1 to 200 do
-          let org = Vec3.make (4. *. g ()) (4. *. g ()) (4. *. g ()) and target = Vec3.make (g ()) (g ()) (g ()) in
-          let r = Ray.make org (Vec3.sub target org) in
-          let h = Hit.create infinity in
-          let got = if Object.hit o r 1e-9 h (Object.found o) then h.t else infinity in
-          let rec walk part others tm n =
-            let h = Hit.create infinity in
-            if n = 0 || not (Object.hit part r tm h (Object.found part)) then infinity
-            else if List.for_all (fun q -> Object.inside q (Ray.at r h.t)) others then h.t
-            else walk part others (Object.next_tmin r h.t) (n - 1)
-          in
-          let want =
-            List.fold_left Float.min infinity
-              (List.mapi (fun i p -> walk p (List.filteri (fun j _ -> j <> i) each) 1e-9 50) each)
-          in
-          if !ok && not (got = want || Float.abs (got -. want) <= 1e-6 *. (1. +. Float.abs want)) then
-            ok := QCheck.Test.fail_reportf "from %s: crossing at %.17g, the walk's at %.17g" (Vec3.to_string org) got want
-        done;
-        !ok) ]
+        let inside_others i pt = List.for_all (fun q -> Object.inside q pt) (List.filteri (fun j _ -> j <> i) each) in
+        agrees o (Hashtbl.hash (surf, cuts, moves)) (fun r ->
+            List.fold_left Float.min infinity (List.mapi (fun i p -> walk_crossings p (inside_others i) r 1e-9 50) each))) ]
 
 let tests =
   ( "object",
