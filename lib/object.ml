@@ -471,6 +471,13 @@ let inside_pattern o =
 let fmin = Floats.fmin
 let fmax = Floats.fmax
 
+(* Where the ray leaves the box whose slabs it meets at [ax]/[bx],
+   [ay]/[by], [az]/[bz] (a zero component's slab is no bound) *)
+let[@inline] slab_exit (r : Ray.scratch) ax bx ay by az bz =
+  fmin
+    (if r.dx = 0. then infinity +. 0. else fmax ax bx)
+    (fmin (if r.dy = 0. then infinity +. 0. else fmax ay by) (if r.dz = 0. then infinity +. 0. else fmax az bz))
+
 (* Whether the ray misses the object's box within (tmin, tmax); inlined,
    so that a [tmax] read from a hit record is not boxed to be passed. *)
 let[@inline] box_missed o (r : Ray.scratch) tmin tmax =
@@ -494,13 +501,7 @@ let[@inline] box_missed o (r : Ray.scratch) tmin tmax =
              (if r.dx = 0. then neg_infinity +. 0. else fmin ax bx)
              (fmax (if r.dy = 0. then neg_infinity +. 0. else fmin ay by)
                 (if r.dz = 0. then neg_infinity +. 0. else fmin az bz)))
-      and t1 =
-        fmin tmax
-          (fmin
-             (if r.dx = 0. then infinity +. 0. else fmax ax bx)
-             (fmin (if r.dy = 0. then infinity +. 0. else fmax ay by)
-                (if r.dz = 0. then infinity +. 0. else fmax az bz)))
-      in
+      and t1 = fmin tmax (slab_exit r ax bx ay by az bz) in
       t0 > t1
 
 (* Kinds of acceptance for [first_accepted]. *)
@@ -525,16 +526,20 @@ let[@inline] box_far o (r : Ray.scratch) =
   match o.bounds with
   | None -> infinity +. 0.  (* unboxed, as in [box_missed] *)
   | Some ((lo : Vec3.t), (hi : Vec3.t)) ->
-      let ax = (lo.x -. r.ox) /. r.dx and bx = (hi.x -. r.ox) /. r.dx in
-      let ay = (lo.y -. r.oy) /. r.dy and by = (hi.y -. r.oy) /. r.dy in
-      let az = (lo.z -. r.oz) /. r.dz and bz = (hi.z -. r.oz) /. r.dz in
       let t1 =
-        fmin
-          (if r.dx = 0. then infinity +. 0. else fmax ax bx)
-          (fmin (if r.dy = 0. then infinity +. 0. else fmax ay by)
-             (if r.dz = 0. then infinity +. 0. else fmax az bz))
+        slab_exit r ((lo.x -. r.ox) /. r.dx) ((hi.x -. r.ox) /. r.dx) ((lo.y -. r.oy) /. r.dy)
+          ((hi.y -. r.oy) /. r.dy) ((lo.z -. r.oz) /. r.dz) ((hi.z -. r.oz) /. r.dz)
       in
       t1 +. (1e-9 *. (1. +. Float.abs t1))
+
+(* The query bound [h.t] lowered to where the ray leaves [o]'s box, for
+   an object whose kept crossings all lie in its box (a clipped object,
+   an intersection); the bound before, to put back when nothing is kept *)
+let[@inline] stop_at_box o r (h : Hit.t) =
+  let t = h.t in
+  let far = box_far o r in
+  if far < t then h.t <- far;
+  t
 
 let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
   if Array.length o.bound > 0 && not (in_bound o.bound r tmin 0) then false
@@ -542,9 +547,7 @@ let rec hit_s o (r : Ray.scratch) tmin (h : Hit.t) f =
   else begin
     (* the unclipped surface's crossings past the box are all clipped
        away: the queries need not look for them *)
-    let t = h.t in
-    let far = box_far o r in
-    if far < t then h.t <- far;
+    let t = stop_at_box o r h in
     let got = first_accepted true o r tmin h f by_clip [||] 0 in
     if not got then h.t <- t;
     got
@@ -604,9 +607,7 @@ and raw_hit o r tmin h f =
       (* what it keeps lies in its box: its parts' queries stop at the
          box's far side (an unbounded surface, cut by a box, searches no
          further) *)
-      let t = h.t in
-      let far = box_far o r in
-      if far < t then h.t <- far;
+      let t = stop_at_box o r h in
       let got = csg cs r tmin h f by_intersection in
       if not got then h.t <- t;
       got
