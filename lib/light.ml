@@ -1,6 +1,13 @@
 type kind =
   | Point
-  | Spot of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
+  | Spot of {
+      point_at : Vec3.t;
+      radius : float;
+      falloff : float;
+      tightness : float;
+      cos_radius : float;
+      cos_falloff : float;
+    }
   | Parallel of { point_at : Vec3.t }
   | Cylinder of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
 
@@ -88,13 +95,16 @@ let direction_to l (p : Vec3.t) =
 
 let rad a = a *. Float.pi /. 180.
 
+let spot ~point_at ~radius ~falloff ~tightness =
+  Spot { point_at; radius; falloff; tightness; cos_radius = Float.cos (rad radius); cos_falloff = Float.cos (rad falloff) }
+
 (* a spot light's factor at the cosine [c] between its axis and the
-   direction to the lit point *)
-let[@inline] spot_cos c ~radius ~falloff ~tightness =
+   direction to the lit point; [cr] and [cf], the cosines of its radius
+   and falloff, made with the light *)
+let[@inline] spot_cos c ~cr ~cf ~tightness =
   if c <= 0. then 0.
   else
     let f = if tightness = 0. then 1. else Float.pow c tightness in
-    let cr = Float.cos (rad radius) and cf = Float.cos (rad falloff) in
     if c >= cr then f
     else if c < cf then 0.
     else
@@ -140,7 +150,7 @@ let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
           cylinder_factor ~radius ~falloff ~tightness (Float.sqrt ((qx *. qx) +. (qy *. qy) +. (qz *. qz)))
         end
         else 0.
-    | Spot { point_at; radius; falloff; tightness } ->
+    | Spot { point_at; tightness; cos_radius; cos_falloff; _ } ->
         let ax = point_at.x -. ox and ay = point_at.y -. oy and az = point_at.z -. oz in
         let tx = p.mx -. cx and ty = p.my -. cy and tz = p.mz -. cz in
         let cos =
@@ -148,7 +158,7 @@ let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
           +. (Vec3.unit_k ax ay az 1 *. Vec3.unit_k tx ty tz 1)
           +. (Vec3.unit_k ax ay az 2 *. Vec3.unit_k tx ty tz 2)
         in
-        spot_cos cos ~radius ~falloff ~tightness
+        spot_cos cos ~cr:cos_radius ~cf:cos_falloff ~tightness
   in
   if l.fade_power > 0. && l.fade_distance <> 0. then
     spot *. 2. /. (1. +. Float.pow (distance_at l cx cy cz p /. l.fade_distance) l.fade_power)

@@ -2,14 +2,25 @@
 
 type kind =
   | Point
-  | Spot of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
-      (** angles in degrees (half-angles from the axis) *)
+  | Spot of {
+      point_at : Vec3.t;
+      radius : float;
+      falloff : float;
+      tightness : float;
+      cos_radius : float;
+      cos_falloff : float;
+    }
+      (** angles in degrees (half-angles from the axis); their cosines
+          made once ({!spot}) *)
   | Parallel of { point_at : Vec3.t }
   | Cylinder of { point_at : Vec3.t; radius : float; falloff : float; tightness : float }
       (** POV-Ray's cylindrical light: rays parallel to [point_at -
           position]; [radius] and [falloff] are distances from that axis
           (POV-Ray's defaults 0.75 and 1, tightness 0); nothing is lit
           behind the plane through the light across its axis *)
+
+val spot : point_at:Vec3.t -> radius:float -> falloff:float -> tightness:float -> kind
+(** A spot light's kind, with the cosines of its angles. *)
 
 type area = {
   axis1 : Vec3.t;

@@ -258,7 +258,7 @@ let light (o : Sdl.obj) (l : Sdl.light) projected_through =
     match l.kind with
     | Sdl.Cylinder_light { radius; falloff; tightness } -> Light.Cylinder { point_at; radius; falloff; tightness }
     | Sdl.Spot_light _ | Sdl.Point_light when l.parallel -> Light.Parallel { point_at }
-    | Sdl.Spot_light { radius; falloff; tightness } -> Light.Spot { point_at; radius; falloff; tightness }
+    | Sdl.Spot_light { radius; falloff; tightness } -> Light.spot ~point_at ~radius ~falloff ~tightness
     | Sdl.Point_light -> Light.Point
   in
   let position = Transform.point x l.position in

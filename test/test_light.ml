@@ -178,7 +178,7 @@ let area_illumination () =
   let spot =
     {
       (Light.point Vec3.zero Color.white) with
-      kind = Light.Spot { point_at = Vec3.make 0. (-1.) 0.; radius = 10.; falloff = 20.; tightness = 0. };
+      kind = Light.spot ~point_at:(Vec3.make 0. (-1.) 0.) ~radius:10. ~falloff:20. ~tightness:0.;
     }
   in
   let p = Vec3.m () in

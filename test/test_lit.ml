@@ -6,7 +6,7 @@ open Camlray
 let spot ?(interaction = true) pos at falloff =
   {
     (Light.point pos Color.white) with
-    kind = Light.Spot { point_at = at; radius = falloff; falloff; tightness = 0. };
+    kind = Light.spot ~point_at:at ~radius:falloff ~falloff ~tightness:0.;
     media_interaction = interaction;
   }
 
