@@ -68,8 +68,14 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
     end
   done
 
+(* The sample buffer and the stretch stack are read and written
+   unchecked from here to [stretch]: slots 0 to max_depth + 2 of [slot]
+   floats (a stretch at depth d, at most max_depth, samples its middle
+   into slot 2 + d) and 3 floats a depth up to max_depth, both sized so
+   at [key]. *)
+
 (* [v] added to the sample buffer's [i]th float *)
-let[@inline] bump b i v = Float.Array.set b i (Float.Array.get b i +. v)
+let[@inline] bump b i v = Float.Array.unsafe_set b i (Float.Array.unsafe_get b i +. v)
 
 (* medium [m]'s share of the sample at [p] (the ray's point), added to the
    buffer's slot at [o] *)
@@ -121,7 +127,7 @@ let sample s st (inside : Interior.t list) k =
   Vec3.set p (r.ox +. (x *. r.dx)) (r.oy +. (x *. r.dy)) (r.oz +. (x *. r.dz));
   let b = st.buf and o = k * slot in
   for j = 0 to slot - 1 do
-    Float.Array.set b (o + j) 0.
+    Float.Array.unsafe_set b (o + j) 0.
   done;
   interiors s st inside p o
 
@@ -131,15 +137,15 @@ let sample s st (inside : Interior.t list) k =
    over the channels *)
 let differ st ka kb thr =
   let b = st.buf and oa = ka * slot and ob = kb * slot in
-  Float.abs (Float.Array.get b (oa + 3) -. Float.Array.get b (ob + 3))
-  +. Float.abs (Float.Array.get b (oa + 4) -. Float.Array.get b (ob + 4))
-  +. Float.abs (Float.Array.get b (oa + 5) -. Float.Array.get b (ob + 5))
+  Float.abs (Float.Array.unsafe_get b (oa + 3) -. Float.Array.unsafe_get b (ob + 3))
+  +. Float.abs (Float.Array.unsafe_get b (oa + 4) -. Float.Array.unsafe_get b (ob + 4))
+  +. Float.abs (Float.Array.unsafe_get b (oa + 5) -. Float.Array.unsafe_get b (ob + 5))
   > thr
 
 (* the samples in slots [ka], [kb], [kc] weighing [wa], [wb], [wc] added
    to [sumx] and [sum] *)
 let[@inline] mix bf oa ob oc wa wb wc j =
-  (wa *. Float.Array.get bf (oa + j)) +. (wb *. Float.Array.get bf (ob + j)) +. (wc *. Float.Array.get bf (oc + j))
+  (wa *. Float.Array.unsafe_get bf (oa + j)) +. (wb *. Float.Array.unsafe_get bf (ob + j)) +. (wc *. Float.Array.unsafe_get bf (oc + j))
 
 let add3 st ka kb kc wa wb wc =
   let bf = st.buf and oa = ka * slot and ob = kb * slot and oc = kc * slot in
@@ -162,14 +168,14 @@ let add3 st ka kb kc wa wb wc =
    the other half) *)
 let[@inline] push st depth a b w =
   let f = st.stack and o = 3 * depth in
-  Float.Array.set f o a;
-  Float.Array.set f (o + 1) b;
-  Float.Array.set f (o + 2) w
+  Float.Array.unsafe_set f o a;
+  Float.Array.unsafe_set f (o + 1) b;
+  Float.Array.unsafe_set f (o + 2) w
 
 (* the stretch at [depth] on [st.stack]; the threshold is [st.at.thr] *)
 let rec stretch s st inside ka kb depth level =
   let f = st.stack and o = 3 * depth in
-  let a = Float.Array.get f o and b = Float.Array.get f (o + 1) and w = Float.Array.get f (o + 2) in
+  let a = Float.Array.unsafe_get f o and b = Float.Array.unsafe_get f (o + 1) and w = Float.Array.unsafe_get f (o + 2) in
   let km = 2 + depth in
   st.at.x <- 0.5 *. (a +. b);
   sample s st inside km;
