@@ -21,6 +21,8 @@ type area = {
   orient : bool;
   jitter : bool;
   area_illumination : bool;
+  offsets1 : Float.Array.t;
+  offsets2 : Float.Array.t;
 }
 
 type t = {
@@ -40,9 +42,15 @@ let point position color =
   { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
     area = None; media_interaction = true; media_attenuation = false; projected_through = None }
 
+let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
+
 let area axis1 axis2 n1 n2 =
-  { axis1; axis2; n1 = max 1 n1; n2 = max 1 n2; adaptive = 100; circular = false;
-    orient = false; jitter = false; area_illumination = false }
+  let n1 = max 1 n1 and n2 = max 1 n2 in
+  { axis1; axis2; n1; n2; adaptive = 100; circular = false;
+    orient = false; jitter = false; area_illumination = false;
+    offsets1 = Float.Array.init n1 (offset n1); offsets2 = Float.Array.init n2 (offset n2) }
+
+
 
 (* The unit direction to the light and its distance, written into a
    caller's scratch record: no tuple, no vector. *)
@@ -183,8 +191,6 @@ let attenuation l (p : Vec3.t) =
   Vec3.load pm p;
   attenuation_m l pm
 
-let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
-
 (* The point [(u, v)] of the light's area seen from [p], into [out];
    inlined, so that [u] and [v] are not boxed. Scalars, no vectors made. *)
 let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
@@ -194,11 +200,16 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
      larger of them *)
   let circ = a.circular in
   let ju = u +. 0.001 and jv = v +. 0.001 in
-  let au = Float.abs ju and av = Float.abs jv in
-  let n = Float.sqrt ((ju *. ju) +. (jv *. jv)) in
   (* (0, 0) only for offsets of -0.001, never on the grid (mc's
-     continuous samples might): left there *)
-  let k = if n > 0. then (if au > av then au else av) /. n else 1. in
+     continuous samples might): left there; none of it for a square
+     light *)
+  let k =
+    if not circ then 1.
+    else
+      let au = Float.abs ju and av = Float.abs jv in
+      let n = Float.sqrt ((ju *. ju) +. (jv *. jv)) in
+      if n > 0. then (if au > av then au else av) /. n else 1.
+  in
   let u = if circ then ju *. k else u and v = if circ then jv *. k else v in
   let c = l.position in
   if not a.orient then begin
@@ -236,7 +247,7 @@ let position_at l a (p : Vec3.t) u v =
   position_into l a pm u v out;
   Vec3.of_m out
 
-let sample_position l a p i j = position_at l a p (offset a.n1 i) (offset a.n2 j)
+let sample_position l a p i j = position_at l a p (Float.Array.get a.offsets1 i) (Float.Array.get a.offsets2 j)
 
 (* The samples' colours met so far (3 floats each, [seen] marks them) and
    the recursion's results, 4 quadrants of 3 floats per level: per domain,

@@ -44,6 +44,10 @@ type area = {
       (** diffuse and highlights computed per sample and averaged like the
           shadows (close to POV-Ray: about 42 dB on a test scene, not
           exact); off: shading uses the light's centre *)
+  offsets1 : Float.Array.t;
+      (** [offset n1 i] at [i], made once by {!area} (a record changed
+          with [with] keeps [n1] and [n2] as they were) *)
+  offsets2 : Float.Array.t;  (** [offset n2 j] at [j] *)
 }
 (** [area_light <A1>, <A2>, n1, n2 ...]: shadows are averaged over a grid
     of point samples reaching the ends of the axes. *)

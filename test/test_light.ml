@@ -34,7 +34,20 @@ let positions () =
     Scn.close (msg ^ " x") e.x v.x; Scn.close (msg ^ " y") e.y v.y; Scn.close (msg ^ " z") e.z v.z
   in
   eq "corner" (Vec3.make (-1.) 5. (-2.)) (p 0 0);
-  eq "middle of axis 1, end of axis 2" (Vec3.make 0. 5. 2.) (p 1 1)
+  eq "middle of axis 1, end of axis 2" (Vec3.make 0. 5. 2.) (p 1 1);
+  (* the offsets the area keeps are [offset]'s, to the bit, on each axis *)
+  List.iter
+    (fun (n1, n2) ->
+      let a = Light.area Vec3.unit_x Vec3.unit_z n1 n2 in
+      let check name n t =
+        Alcotest.(check int) (name ^ " length") (max 1 n) (Float.Array.length t);
+        Float.Array.iteri
+          (fun i v -> if Int64.bits_of_float v <> Int64.bits_of_float (Light.offset (max 1 n) i) then
+              Alcotest.failf "%s: offset %d of %d" name i n) t
+      in
+      check "axis 1" n1 a.offsets1;
+      check "axis 2" n2 a.offsets2)
+    [ (1, 1); (2, 7); (5, 5); (17, 3); (0, 4) ]
 
 (* POV-Ray's orient (trace.cpp): with d the unit direction from the lit
    point to the light, the axes along d x z (d x y within 0.01 of +-z)
