@@ -185,10 +185,12 @@ let pov_words =
    albedo xyz statistics number_of_tiles steps bmp translucency number_of_sides dtag \
    anisotropy append"
 
+(* keyed by strings as strings: a #declare asks it for each name (the
+   polymorphic table hashed in C and compared with compare_val) *)
 let reserved =
-  let t = Hashtbl.create 512 in
+  let t = Words.create 512 in
   List.iter
-    (fun w -> if w <> "" then Hashtbl.replace t w ())
+    (fun w -> if w <> "" then Words.replace t w ())
     (String.split_on_char ' ' pov_words);
   t
 
@@ -206,7 +208,7 @@ let names_of_tokens =
 
 let keyword_of raw = Hashtbl.find_opt names_of_tokens raw
 
-let pov_reserved w = Hashtbl.mem reserved w || Words.mem keywords w
+let pov_reserved w = Words.mem reserved w || Words.mem keywords w
 
 let describe = function
   | Eof -> "end of file"
