@@ -220,7 +220,7 @@ let area_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n
     let c = sc.ll and q = sc.q in
     for v = 0 to a.n2 - 1 do
       for u = 0 to a.n1 - 1 do
-        Light.position_into light a p (Float.Array.get a.offsets1 u) (Float.Array.get a.offsets2 v) q;
+        Light.sample_into light a p u v q;
         Light.direction_at light q.mx q.my q.mz p l;
         let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
         let nl = if f.double_illuminate then Float.abs nl else nl in

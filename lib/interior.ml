@@ -51,8 +51,9 @@ let[@inline] relative_ior inner media =
 let[@inline] fresnel_ior inner media =
   match media with
   | [] -> inner.ior
-  | [ _ ] when List.memq inner media -> 1. /. inner.ior
-  | i :: _ -> if List.memq inner media then i.ior /. inner.ior else inner.ior /. i.ior
+  | i :: rest -> (
+      if not (List.memq inner media) then inner.ior /. i.ior
+      else match rest with [] -> 1. /. inner.ior | _ :: _ -> i.ior /. inner.ior)
 
 (* Lists of media entered, made once per domain: [inner :: media] for
    the pairs met (a ray entering glass would otherwise make a list cell

@@ -50,8 +50,6 @@ let area axis1 axis2 n1 n2 =
     orient = false; jitter = false; area_illumination = false;
     offsets1 = Float.Array.init n1 (offset n1); offsets2 = Float.Array.init n2 (offset n2) }
 
-
-
 (* The unit direction to the light and its distance, written into a
    caller's scratch record: no tuple, no vector. *)
 type dir = { mutable lx : float; mutable ly : float; mutable lz : float; mutable dist : float }
@@ -241,13 +239,21 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
       (c.z +. ((u *. (l1 *. e1z)) +. (v *. (l1 *. e2z))))
   end
 
+(* grid sample ([i], [j]) of the area seen from [p], into [out] *)
+let[@inline] sample_into l a p i j out =
+  position_into l a p (Float.Array.get a.offsets1 i) (Float.Array.get a.offsets2 j) out
+
 let position_at l a (p : Vec3.t) u v =
   let pm = Vec3.m () and out = Vec3.m () in
   Vec3.load pm p;
   position_into l a pm u v out;
   Vec3.of_m out
 
-let sample_position l a p i j = position_at l a p (Float.Array.get a.offsets1 i) (Float.Array.get a.offsets2 j)
+let sample_position l a (p : Vec3.t) i j =
+  let pm = Vec3.m () and out = Vec3.m () in
+  Vec3.load pm p;
+  sample_into l a pm i j out;
+  Vec3.of_m out
 
 (* The samples' colours met so far (3 floats each, [seen] marks them) and
    the recursion's results, 4 quadrants of 3 floats per level: per domain,

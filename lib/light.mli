@@ -131,6 +131,10 @@ val position_into : t -> area -> Vec3.m -> float -> float -> Vec3.m -> unit
     place, into [out], nothing allocated ({!position_at} goes through
     it). *)
 
+val sample_into : t -> area -> Vec3.m -> int -> int -> Vec3.m -> unit
+(** [sample_into l a p i j out]: {!position_into} at grid sample [(i,
+    j)] (its offsets kept by the area), nothing allocated. *)
+
 val sample_position : t -> area -> Vec3.t -> int -> int -> Vec3.t
 (** [sample_position l a p i j]: where sample [(i, j)] of an area light
     is, as seen from the lit point [p] ([orient] and [circular] applied). *)

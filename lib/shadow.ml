@@ -332,7 +332,7 @@ let shadow_into (s : Scene.t) (w : walk) =
    to the plane through the sample: POV-Ray's rule) *)
 let area_sample (w : walk) i j (out : Color.acc) =
   let light = w.alight and a = w.aarea and p = w.lp and q = w.q and l = w.sl in
-  Light.position_into light a p (Float.Array.get a.offsets1 i) (Float.Array.get a.offsets2 j) q;
+  Light.sample_into light a p i j q;
   Light.direction_at light q.mx q.my q.mz p l;
   Ray.set w.ray p l.lx l.ly l.lz;
   w.seg.len <- l.dist;
