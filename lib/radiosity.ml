@@ -16,21 +16,28 @@ type record = {
 let levels = 128 (* L from -64 to 63 *)
 
 (* the records of one recursion depth, in cells of side 2^L (L by each
-   record's reach), keyed by (L, cell) mixed into one int: a table of
-   its own, open addressing over two arrays (a slot is free while its
-   list is empty), so that a lookup is a few integer operations with no
-   call (the standard table, polymorphic, calls C to hash each key and
-   [compare_val] to compare: a fifth of radiosity2.pov's time; made for
-   ints by its functor, it calls [hash] and [equal] as closures) *)
+   record's reach: at least the reach, less than twice it), each record
+   in every cell its reach touches, so that a lookup reads one cell per
+   level: the records within a reach of it and few more (a record kept
+   in only the cell of its centre needs the 8 cells about a point read,
+   and those hold some 10 times the records that serve it). Keyed by
+   (L, cell) mixed into one int: a table of its own, open addressing
+   over two arrays (a slot is free while its list is empty), so that a
+   lookup is a few integer operations with no call (the standard table,
+   polymorphic, calls C to hash each key and [compare_val] to compare: a
+   fifth of radiosity2.pov's time; made for ints by its functor, it
+   calls [hash] and [equal] as closures). [levels] holds the levels in
+   use, the first [nlevels] of it, in increasing order. *)
 type store = {
   mutable keys : int array;
   mutable lists : record list array;
   mutable filled : int;  (* slots in use *)
-  used : bool array;
+  mutable levels : int array;
+  mutable nlevels : int;
   mutable n : int;
 }
 
-let new_store () = { keys = Array.make 256 0; lists = Array.make 256 []; filled = 0; used = Array.make levels false; n = 0 }
+let new_store () = { keys = Array.make 256 0; lists = Array.make 256 []; filled = 0; levels = [||]; nlevels = 0; n = 0 }
 
 let[@inline] mix k =
   let h = k * 0x1E3779B97F4A7C15 in
@@ -166,7 +173,8 @@ let clear c =
       st.keys <- Array.make 256 0;
       st.lists <- Array.make 256 [];
       st.filled <- 0;
-      Array.fill st.used 0 levels false;
+      st.levels <- [||];
+      st.nlevels <- 0;
       st.n <- 0)
     c.stores
 
@@ -175,18 +183,60 @@ let records c depth = c.stores.(depth).n
 let[@inline] cell_key l ix iy iz =
   (((((l * 1_000_003) + ix) * 1_000_033) + iy) * 998_244_353) + iz
 
-(* the level whose cells are at least twice [reach] *)
+(* 2^-l for the levels l = -64 .. 63: a coordinate over a cell's side
+   by one product, exact as the division by 2^l it replaces (both only
+   move the exponent) *)
+let inv_side = Float.Array.init levels (fun li -> Float.ldexp 1. (64 - li))
+
+(* [int_of_float (Float.floor v)] without the call to C's floor
+   ([int_of_float] truncates toward zero; the same int for every [v]
+   an int holds) *)
+let[@inline] ifloor v =
+  let i = int_of_float v in
+  if float_of_int i > v then i - 1 else i
+
+(* the level whose cells are at least [reach] across *)
 let level_of reach =
-  let l = int_of_float (Float.ceil (Float.log2 (2. *. reach))) in
-  Int.max (-64) (Int.min 63 l)
+  let l = int_of_float (Float.ceil (Float.log2 reach)) in
+  Int.max (-64) (Int.min 62 l)
+
+(* level [l] among the store's levels in use, kept in increasing order *)
+let use_level st l =
+  let rec find i = i < st.nlevels && (st.levels.(i) = l || find (i + 1)) in
+  if not (find 0) then begin
+    if st.nlevels = Array.length st.levels then
+      st.levels <- Array.append st.levels (Array.make (Int.max 4 st.nlevels) 0);
+    let i = ref st.nlevels in
+    while !i > 0 && st.levels.(!i - 1) > l do
+      st.levels.(!i) <- st.levels.(!i - 1);
+      decr i
+    done;
+    st.levels.(!i) <- l;
+    st.nlevels <- st.nlevels + 1
+  end
 
 let add c depth rc reach =
   let st = c.stores.(depth) in
+  (* a reach past 2^62 (none a scene makes) kept within the top level *)
+  let reach = if reach <= 0x1p62 then reach else 0x1p62 in
   let l = level_of reach in
-  let s = Float.ldexp 1. l in
-  let key = cell_key l (int_of_float (Float.floor (rc.px /. s))) (int_of_float (Float.floor (rc.py /. s))) (int_of_float (Float.floor (rc.pz /. s))) in
-  put st key rc;
-  st.used.(l + 64) <- true;
+  let k = Float.Array.get inv_side (l + 64) and s = Float.ldexp 1. l in
+  (* the cells the ball of the reach about the record's point touches *)
+  let gap v i =
+    let a = float_of_int i *. s in
+    if v < a then a -. v else if v > a +. s then v -. (a +. s) else 0.
+  in
+  for ix = ifloor ((rc.px -. reach) *. k) to ifloor ((rc.px +. reach) *. k) do
+    let gx = gap rc.px ix in
+    for iy = ifloor ((rc.py -. reach) *. k) to ifloor ((rc.py +. reach) *. k) do
+      let gy = gap rc.py iy in
+      for iz = ifloor ((rc.pz -. reach) *. k) to ifloor ((rc.pz +. reach) *. k) do
+        let gz = gap rc.pz iz in
+        if (gx *. gx) +. (gy *. gy) +. (gz *. gz) <= reach *. reach then put st (cell_key l ix iy iz) rc
+      done
+    done
+  done;
+  use_level st l;
   st.n <- st.n + 1
 
 (* POV-Ray's test of one record for the point [q] of normal [n]
@@ -251,18 +301,6 @@ let rec weigh_all (sm : sums) rs (q : Vec3.m) (n : Vec3.m) final0 =
       end;
       weigh_all sm rest q n final0
 
-(* 2^-l for the levels l = -64 .. 63: a coordinate over a cell's side
-   by one product, exact as the division by 2^l it replaces (both only
-   move the exponent) *)
-let inv_side = Float.Array.init levels (fun li -> Float.ldexp 1. (64 - li))
-
-(* [int_of_float (Float.floor v)] without the call to C's floor
-   ([int_of_float] truncates toward zero; the same int for every [v]
-   an int holds) *)
-let[@inline] ifloor v =
-  let i = int_of_float v in
-  if float_of_int i > v then i - 1 else i
-
 let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   let st = c.stores.(depth) in
   sm.ws <- 0.;
@@ -271,19 +309,10 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   sm.sb <- 0.;
   if st.n > 0 then begin
     let final0 = c.final && depth = 0 in
-    for li = 0 to levels - 1 do
-      if st.used.(li) then begin
-        let l = li - 64 in
-        let k = Float.Array.unsafe_get inv_side li in
-        let x0 = ifloor ((q.mx *. k) -. 0.5) and y0 = ifloor ((q.my *. k) -. 0.5) and z0 = ifloor ((q.mz *. k) -. 0.5) in
-        for ix = x0 to x0 + 1 do
-          for iy = y0 to y0 + 1 do
-            for iz = z0 to z0 + 1 do
-              weigh_all sm (cell st (cell_key l ix iy iz)) q n final0
-            done
-          done
-        done
-      end
+    for u = 0 to st.nlevels - 1 do
+      let l = Array.unsafe_get st.levels u in
+      let k = Float.Array.unsafe_get inv_side (l + 64) in
+      weigh_all sm (cell st (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k)))) q n final0
     done;
     if sm.ws > 0. then Color.acc_set out (sm.sr /. sm.ws) (sm.sg /. sm.ws) (sm.sb /. sm.ws)
   end
