@@ -220,7 +220,8 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in
       (* radiosity's pretrace, before the picture reads its cache *)
-      if o.mode = Whitted then Whitted.prepare scene ~width ~height;
+      if o.mode = Whitted then
+        Whitted.prepare ?par:(if domains > 1 then Some (Render.parallel ~domains) else None) scene ~width ~height;
       let last = ref 0. in
       let progress ~done_ ~total =
         let now = Unix.gettimeofday () in

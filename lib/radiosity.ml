@@ -30,60 +30,93 @@ let levels = 128 (* L from -64 to 63 *)
    use, the first [nlevels] of it, in increasing order. *)
 type store = {
   mutable keys : int array;
-  mutable lists : record list array;
+  mutable cells : Float.Array.t array;  (* a cell's records, [width] floats each, oldest first *)
+  mutable counts : int array;  (* records in the cell (0: a free slot) *)
   mutable filled : int;  (* slots in use *)
   mutable levels : int array;
   mutable nlevels : int;
   mutable n : int;
 }
 
-let new_store () = { keys = Array.make 256 0; lists = Array.make 256 []; filled = 0; levels = [||]; nlevels = 0; n = 0 }
+(* a record in a cell: its 14 fields in [record]'s order *)
+let width = 14
+
+let no_cell = Float.Array.make 0 0.
+
+let new_store () =
+  { keys = Array.make 256 0; cells = Array.make 256 no_cell; counts = Array.make 256 0; filled = 0; levels = [||];
+    nlevels = 0; n = 0 }
 
 let[@inline] mix k =
   let h = k * 0x1E3779B97F4A7C15 in
   h lxor (h lsr 31)
 
 (* the slot of key [k]: its own, or the free one where it would go *)
-let slot keys lists k =
+let slot keys counts k =
   let mask = Array.length keys - 1 in
   let i = ref (mix k land mask) in
-  while
-    (match Array.unsafe_get lists !i with [] -> false | _ :: _ -> true) && Array.unsafe_get keys !i <> k
-  do
+  while Array.unsafe_get counts !i > 0 && Array.unsafe_get keys !i <> k do
     i := (!i + 1) land mask
   done;
   !i
 
-(* the records of cell [k] ([] for none) *)
-let[@inline] cell st k = Array.unsafe_get st.lists (slot st.keys st.lists k)
-
 let rec put st k rc =
   if 2 * (st.filled + 1) > Array.length st.keys then begin
     (* grown to twice the size, the cells moved over as they are *)
-    let keys = st.keys and lists = st.lists in
+    let keys = st.keys and cells = st.cells and counts = st.counts in
     let size = 2 * Array.length keys in
     st.keys <- Array.make size 0;
-    st.lists <- Array.make size [];
+    st.cells <- Array.make size no_cell;
+    st.counts <- Array.make size 0;
     Array.iteri
-      (fun i l ->
-        match l with
-        | [] -> ()
-        | _ :: _ ->
-            let j = slot st.keys st.lists keys.(i) in
-            st.keys.(j) <- keys.(i);
-            st.lists.(j) <- l)
-      lists;
+      (fun i c ->
+        if c > 0 then begin
+          let j = slot st.keys st.counts keys.(i) in
+          st.keys.(j) <- keys.(i);
+          st.cells.(j) <- cells.(i);
+          st.counts.(j) <- c
+        end)
+      counts;
     put st k rc
   end
   else begin
-    let i = slot st.keys st.lists k in
-    (match st.lists.(i) with [] -> st.filled <- st.filled + 1; st.keys.(i) <- k | _ :: _ -> ());
-    st.lists.(i) <- rc :: st.lists.(i)
+    let i = slot st.keys st.counts k in
+    let c = st.counts.(i) in
+    if c = 0 then begin
+      st.filled <- st.filled + 1;
+      st.keys.(i) <- k;
+      st.cells.(i) <- Float.Array.make (4 * width) 0.
+    end
+    else if (c + 1) * width > Float.Array.length st.cells.(i) then begin
+      let a = Float.Array.make (2 * c * width) 0. in
+      Float.Array.blit st.cells.(i) 0 a 0 (c * width);
+      st.cells.(i) <- a
+    end;
+    let a = st.cells.(i) and o = c * width in
+    let set j v = Float.Array.set a (o + j) v in
+    set 0 rc.px; set 1 rc.py; set 2 rc.pz;
+    set 3 rc.nx; set 4 rc.ny; set 5 rc.nz;
+    set 6 rc.ir; set 7 rc.ig; set 8 rc.ib;
+    set 9 rc.hmd; set 10 rc.near;
+    set 11 rc.tx; set 12 rc.ty; set 13 rc.tz;
+    st.counts.(i) <- c + 1
   end
 
-type cache = { mutable filling : bool; mutable final : bool; stores : store array }
+(* [picture]: the colours the final pass found at the pixels' centres of
+   a [pw] x [ph] image, 3 floats a pixel by rows (empty: none) *)
+type cache = {
+  mutable filling : bool;
+  mutable final : bool;
+  mutable speculating : bool;
+  stores : store array;
+  mutable picture : Float.Array.t;
+  mutable pw : int;
+  mutable ph : int;
+}
 
-let new_cache () = { filling = false; final = true; stores = Array.init 21 (fun _ -> new_store ()) }
+let new_cache () =
+  { filling = false; final = true; speculating = false; stores = Array.init 21 (fun _ -> new_store ());
+    picture = Float.Array.make 0 0.; pw = 0; ph = 0 }
 
 type t = {
   count : int;
@@ -165,18 +198,23 @@ let reset_depth () = Scratch.get depth_key := 0
 
 let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2 r.nearest_count | _ -> 1
 
+let clear_store st =
+  st.keys <- Array.make 256 0;
+  st.cells <- Array.make 256 no_cell;
+  st.counts <- Array.make 256 0;
+  st.filled <- 0;
+  st.levels <- [||];
+  st.nlevels <- 0;
+  st.n <- 0
+
 let clear c =
   c.filling <- false;
   c.final <- true;
-  Array.iter
-    (fun st ->
-      st.keys <- Array.make 256 0;
-      st.lists <- Array.make 256 [];
-      st.filled <- 0;
-      st.levels <- [||];
-      st.nlevels <- 0;
-      st.n <- 0)
-    c.stores
+  c.speculating <- false;
+  Array.iter clear_store c.stores;
+  c.picture <- Float.Array.make 0 0.;
+  c.pw <- 0;
+  c.ph <- 0
 
 let records c depth = c.stores.(depth).n
 
@@ -215,8 +253,7 @@ let use_level st l =
     st.nlevels <- st.nlevels + 1
   end
 
-let add c depth rc reach =
-  let st = c.stores.(depth) in
+let keep st rc reach =
   (* a reach past 2^62 (none a scene makes) kept within the top level *)
   let reach = if reach <= 0x1p62 then reach else 0x1p62 in
   let l = level_of reach in
@@ -239,30 +276,66 @@ let add c depth rc reach =
   use_level st l;
   st.n <- st.n + 1
 
+(* A sample of the pretrace traced ahead of its turn, on any domain:
+   the records its gathers make, kept apart ([overlay], and [made] in
+   the order they were made), and every lookup it makes, logged as 9
+   floats (depth, point, normal, error bound, final rules) *)
+type spec = {
+  overlay : cache;
+  mutable made : (int * record * float) list;  (* newest first *)
+  mutable log : Float.Array.t;
+  mutable nlog : int;
+  mutable logging : bool;
+}
+
+let spec_key =
+  Scratch.key (fun () -> { overlay = new_cache (); made = []; log = Float.Array.make 64 0.; nlog = 0; logging = true })
+
+exception Abandoned
+
+(* the most lookups a sample traced ahead logs (72 bytes each): past
+   them it is abandoned, to be traced in turn (a scene of count 1000
+   gathers at two depths logged 470 MB a batch before the cap) *)
+let log_cap = 9 * 8192
+
+let add c depth rc reach =
+  if c.speculating then begin
+    let sp = Scratch.get spec_key in
+    keep sp.overlay.stores.(depth) rc reach;
+    sp.made <- (depth, rc, reach) :: sp.made
+  end
+  else keep c.stores.(depth) rc reach
+
+(* field [i] of the record at [o] in a cell *)
+let[@inline] at a o i = Float.Array.unsafe_get a (o + i)
+
 (* POV-Ray's test of one record for the point [q] of normal [n]
-   (AverageNearBlock): the weight it gets, 0 when it does not serve *)
-let[@inline] weigh rc (q : Vec3.m) (n : Vec3.m) eb final0 =
-  let dx = q.mx -. rc.px and dy = q.my -. rc.py and dz = q.mz -. rc.pz in
+   (AverageNearBlock): the weight it gets, 0 when it does not serve; the
+   record the [width] floats of [a] from [o] *)
+let[@inline] weigh a o (q : Vec3.m) (n : Vec3.m) eb final0 =
+  let dx = q.mx -. (at a o 0) and dy = q.my -. (at a o 1) and dz = q.mz -. (at a o 2) in
   let d2 = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
-  let quick = rc.hmd *. eb in
+  let hmd = (at a o 9) in
+  let quick = hmd *. eb in
   if d2 >= quick *. quick then 0.
   else begin
     let dist = Float.sqrt d2 in
     let far = dist > 1e-6 in
     let ux = if far then dx /. dist else 0. and uy = if far then dy /. dist else 0. and uz = if far then dz /. dist else 0. in
     (* a smaller reach toward the nearest surface the gather met *)
-    let cn = if far then (rc.tx *. ux) +. (rc.ty *. uy) +. (rc.tz *. uz) else 0. in
-    let ri = if cn > 0. then (cn *. rc.near) +. ((1. -. cn) *. rc.hmd) else rc.hmd in
+    let cn = if far then ((at a o 11) *. ux) +. ((at a o 12) *. uy) +. ((at a o 13) *. uz) else 0. in
+    let ri = if cn > 0. then (cn *. (at a o 10)) +. ((1. -. cn) *. hmd) else hmd in
     if dist >= ri *. eb then 0.
     else begin
-      let dd = (n.mx *. rc.nx) +. (n.my *. rc.ny) +. (n.mz *. rc.nz) in
+      let nx = (at a o 3) and ny = (at a o 4) and nz = (at a o 5) in
+      let dd = (n.mx *. nx) +. (n.my *. ny) +. (n.mz *. nz) in
       let e = (dist /. ri) +. (2. *. Float.sqrt (Float.abs (1. -. dd))) in
       if e >= eb then 0.
       else begin
         (* not a record well in front of the point (it may shadow it) *)
         let front =
           if far then begin
-            let hx = n.mx +. rc.nx and hy = n.my +. rc.ny and hz = n.mz +. rc.nz in
+            let hx = n.mx +. nx and hy = n.my +. ny and hz = n.mz +. nz in
             let hl = Float.sqrt ((hx *. hx) +. (hy *. hy) +. (hz *. hz)) in
             if hl > 0. then ((ux *. hx) +. (uy *. hy) +. (uz *. hz)) /. hl else 1.
           end
@@ -287,19 +360,64 @@ type sums = { mutable eb : float; mutable ws : float; mutable sr : float; mutabl
 let sums_key = Scratch.key (fun () -> { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. })
 let sums () = Scratch.get sums_key
 
-(* a loop, not List.iter and a closure over float refs: nothing boxed *)
-let rec weigh_all (sm : sums) rs (q : Vec3.m) (n : Vec3.m) final0 =
-  match rs with
-  | [] -> ()
-  | rc :: rest ->
-      let w = weigh rc q n sm.eb final0 in
-      if w > 0. then begin
-        sm.ws <- sm.ws +. w;
-        sm.sr <- sm.sr +. (w *. rc.ir);
-        sm.sg <- sm.sg +. (w *. rc.ig);
-        sm.sb <- sm.sb +. (w *. rc.ib)
-      end;
-      weigh_all sm rest q n final0
+(* a cell's [count] records (a loop with nothing boxed) *)
+let weigh_all (sm : sums) a count (q : Vec3.m) (n : Vec3.m) final0 =
+  for i = 0 to count - 1 do
+    let o = i * width in
+    let w = weigh a o q n sm.eb final0 in
+    if w > 0. then begin
+      sm.ws <- sm.ws +. w;
+      sm.sr <- sm.sr +. (w *. at a o 6);
+      sm.sg <- sm.sg +. (w *. at a o 7);
+      sm.sb <- sm.sb +. (w *. at a o 8)
+    end
+  done
+
+let[@inline] weigh_level sm st l (q : Vec3.m) n final0 =
+  let k = Float.Array.unsafe_get inv_side (l + 64) in
+  let i = slot st.keys st.counts (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k))) in
+  weigh_all sm (Array.unsafe_get st.cells i) (Array.unsafe_get st.counts i) q n final0
+
+let log_lookup sp depth (q : Vec3.m) (n : Vec3.m) eb final0 =
+  if sp.nlog + 9 > log_cap then raise Abandoned;
+  if sp.nlog + 9 > Float.Array.length sp.log then begin
+    let log = Float.Array.make (2 * Float.Array.length sp.log) 0. in
+    Float.Array.blit sp.log 0 log 0 sp.nlog;
+    sp.log <- log
+  end;
+  let a = sp.log and i = sp.nlog in
+  Float.Array.set a i (float_of_int depth);
+  Float.Array.set a (i + 1) q.mx;
+  Float.Array.set a (i + 2) q.my;
+  Float.Array.set a (i + 3) q.mz;
+  Float.Array.set a (i + 4) n.mx;
+  Float.Array.set a (i + 5) n.my;
+  Float.Array.set a (i + 6) n.mz;
+  Float.Array.set a (i + 7) eb;
+  Float.Array.set a (i + 8) (if final0 then 1. else 0.);
+  sp.nlog <- i + 9
+
+(* a speculating lookup: the cache's records and the sample's own, level
+   by level in increasing order, the sample's own last in a level (in
+   the cache of a sample traced in turn they would be at the end of
+   their cells: the same sums, added in the same order) *)
+let lookup_ahead c depth q n sm final0 =
+  let sp = Scratch.get spec_key in
+  if sp.logging then log_lookup sp depth q n sm.eb final0;
+  let st = c.stores.(depth) and ov = sp.overlay.stores.(depth) in
+  let i = ref 0 and j = ref 0 in
+  while !i < st.nlevels || !j < ov.nlevels do
+    let a = if !i < st.nlevels then Array.unsafe_get st.levels !i else max_int in
+    let b = if !j < ov.nlevels then Array.unsafe_get ov.levels !j else max_int in
+    if a <= b then begin
+      weigh_level sm st a q n final0;
+      incr i
+    end;
+    if b <= a then begin
+      weigh_level sm ov b q n final0;
+      incr j
+    end
+  done
 
 let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   let st = c.stores.(depth) in
@@ -307,15 +425,86 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   sm.sr <- 0.;
   sm.sg <- 0.;
   sm.sb <- 0.;
-  if st.n > 0 then begin
-    let final0 = c.final && depth = 0 in
+  let final0 = c.final && depth = 0 in
+  if c.speculating then lookup_ahead c depth q n sm final0
+  else if st.n > 0 then
     for u = 0 to st.nlevels - 1 do
-      let l = Array.unsafe_get st.levels u in
-      let k = Float.Array.unsafe_get inv_side (l + 64) in
-      weigh_all sm (cell st (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k)))) q n final0
+      weigh_level sm st (Array.unsafe_get st.levels u) q n final0
     done;
-    if sm.ws > 0. then Color.acc_set out (sm.sr /. sm.ws) (sm.sg /. sm.ws) (sm.sb /. sm.ws)
-  end
+  if sm.ws > 0. then Color.acc_set out (sm.sr /. sm.ws) (sm.sg /. sm.ws) (sm.sb /. sm.ws)
+
+(* Samples traced ahead, then taken in turn *)
+
+type outcome = { records : (int * record * float) list; lookups : Float.Array.t }
+
+let speculate c b = c.speculating <- b
+
+let begin_sample ?(ahead = true) () =
+  let sp = Scratch.get spec_key in
+  sp.logging <- ahead;
+  if (match sp.made with [] -> false | _ :: _ -> true) then Array.iter (fun st -> if st.n > 0 then clear_store st) sp.overlay.stores;
+  sp.made <- [];
+  sp.nlog <- 0
+
+let end_sample () =
+  let sp = Scratch.get spec_key in
+  let o = { records = List.rev sp.made; lookups = Float.Array.sub sp.log 0 sp.nlog } in
+  begin_sample ();
+  o
+
+(* the records taken in turn so far in a batch of samples, and the sums
+   and vectors its test reads through *)
+type batch = { taken : cache; bsm : sums; bq : Vec3.m; bn : Vec3.m }
+
+let batch () =
+  { taken = new_cache (); bsm = { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. };
+    bq = { Vec3.mx = 0.; my = 0.; mz = 0. }; bn = { Vec3.mx = 0.; my = 0.; mz = 0. } }
+
+let start_batch b = Array.iter (fun st -> if st.n > 0 then clear_store st) b.taken.stores
+
+(* whether a record taken in the batch weighs in one of the lookups *)
+let conflicts b o =
+  let a = o.lookups and sm = b.bsm and q = b.bq and n = b.bn in
+  let rec from i =
+    i < Float.Array.length a
+    &&
+    let st = b.taken.stores.(int_of_float (Float.Array.get a i)) in
+    (st.n > 0
+    && begin
+      Vec3.set q (Float.Array.get a (i + 1)) (Float.Array.get a (i + 2)) (Float.Array.get a (i + 3));
+      Vec3.set n (Float.Array.get a (i + 4)) (Float.Array.get a (i + 5)) (Float.Array.get a (i + 6));
+      sm.eb <- Float.Array.get a (i + 7);
+      sm.ws <- 0.;
+      let final0 = Float.Array.get a (i + 8) = 1. in
+      for u = 0 to st.nlevels - 1 do
+        weigh_level sm st (Array.unsafe_get st.levels u) q n final0
+      done;
+      sm.ws > 0.
+    end)
+    || from (i + 9)
+  in
+  from 0
+
+let commit c b o =
+  List.iter
+    (fun (depth, rc, reach) ->
+      keep c.stores.(depth) rc reach;
+      keep b.taken.stores.(depth) rc reach)
+    o.records
+
+let set_picture c ~width ~height p =
+  if Float.Array.length p <> 3 * width * height then invalid_arg "Radiosity.set_picture";
+  c.picture <- p;
+  c.pw <- width;
+  c.ph <- height
+
+let picture_into c ~width ~height x y (out : Color.acc) =
+  width = c.pw && height = c.ph && x >= 0 && x < width && y >= 0 && y < height
+  &&
+  let p = 3 * ((y * width) + x) in
+  Color.acc_set out (Float.Array.unsafe_get c.picture p) (Float.Array.unsafe_get c.picture (p + 1))
+    (Float.Array.unsafe_get c.picture (p + 2));
+  true
 
 let filling c = c.filling
 let set_filling c b = c.filling <- b

@@ -96,6 +96,16 @@ val final : cache -> bool
     pretrace's. *)
 
 val set_final : cache -> bool -> unit
+val set_picture : cache -> width:int -> height:int -> Float.Array.t -> unit
+(** Keep the colours the final pass found at the centres of a [width] x
+    [height] image's pixels (3 floats a pixel, by rows), which its
+    picture then takes ([clear] forgets them). *)
+
+val picture_into : cache -> width:int -> height:int -> int -> int -> Color.acc -> bool
+(** [picture_into c ~width ~height x y out]: the kept colour of pixel
+    [(x, y)] into [out], and [true], when colours of an image that size
+    are kept; [false] otherwise. *)
+
 val records : cache -> int -> int
 (** Records kept at a depth. *)
 
@@ -107,6 +117,50 @@ val reuse_count : t -> int -> int
 val add : cache -> int -> record -> float -> unit
 (** [add c depth r reach]: keep a record whose reach (its harmonic mean
     distance times the largest error bound at that depth) is [reach]. *)
+
+(** {2 Samples traced ahead of their turn}
+
+    The pretrace's samples, each traced after the ones before it have
+    filled the cache, traced on several domains at once with the same
+    result: a batch of samples is traced ahead, each seeing the cache as
+    it was before the batch and the records of its own gathers; then,
+    in turn, a sample none of whose lookups the records taken before it
+    in the batch weigh in had the same lookups, and so the same gathers,
+    as traced in turn, and its records are taken; another is traced
+    again. *)
+
+val speculate : cache -> bool -> unit
+(** While on, gathers keep their records apart (per domain) and lookups
+    are logged: set it before the batch's parallel loop, clear it after. *)
+
+type outcome
+(** What a sample traced ahead found: its records and its lookups. *)
+
+val begin_sample : ?ahead:bool -> unit -> unit
+(** Start a sample on the calling domain (its records and log emptied):
+    traced ahead (its lookups logged), or ([~ahead:false]) in turn. *)
+
+exception Abandoned
+(** Raised by a lookup of a sample traced ahead that has logged 8192
+    lookups: the sample is to be traced in turn. *)
+
+val end_sample : unit -> outcome
+(** The calling domain's sample's outcome. *)
+
+type batch
+
+val batch : unit -> batch
+
+val start_batch : batch -> unit
+(** No record taken yet. *)
+
+val conflicts : batch -> outcome -> bool
+(** Whether a record taken in the batch weighs in one of the outcome's
+    lookups (then the sample must be traced again). *)
+
+val commit : cache -> batch -> outcome -> unit
+(** Keep the outcome's records in the cache, in the order they were
+    made, and note them as taken in the batch. *)
 
 type sums = { mutable eb : float; mutable ws : float; mutable sr : float; mutable sg : float; mutable sb : float }
 (** A lookup's error bound (set by the caller), total weight and

@@ -784,21 +784,129 @@ let sample s ~width ~height px py =
   sample_in s ~width ~height px py out;
   Color.of_acc out
 
-let pixel_into s ~width ~height x y out =
-  sample_in s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
+let pixel_into (s : Scene.t) ~width ~height x y out =
+  match s.settings.radiosity with
+  | Some r when Radiosity.picture_into r.cache ~width ~height x y out -> ()
+  | _ -> sample_in s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
 
 let pixel s ~width ~height x y =
   let out = Color.acc 0. in
   pixel_into s ~width ~height x y out;
   Color.of_acc out
 
+(* The pixels of a [width] x [height] image, as indices [y * width + x],
+   coarse to fine: those on every 2^k-th row and column before the
+   others, the largest k first; those of a k > 0 in an order of their
+   own (by a hash of the index), so that pixels taken one after the
+   other lie far apart and a batch of them traced ahead seldom makes a
+   record another one of the batch would have used; the others (one or
+   both coordinates odd: three pixels in four, most served by the
+   records of the pixels before them) by rows, the pixels after one
+   another near one another, as fast to trace as a picture's rows.
+   Radiosity2.pov at 320x240 on 2 domains, batches of 64: traced again,
+   1 pixel in 8 taken all by rows, 1 in 2500 all by the hash, 1 in 66
+   this way; on one domain, some 25% slower all by the hash than by
+   rows, this way as fast as by rows. *)
+let centres_order ~width ~height =
+  let n = width * height in
+  if n > 1 lsl 27 then invalid_arg "Whitted.prepare: more than 2^27 pixels";
+  let rec zeros v k = if v land 1 = 1 then k else zeros (v lsr 1) (k + 1) in
+  let coarseness i =
+    let x = i mod width and y = i / width in
+    Int.min (if x = 0 then 62 else zeros x 0) (if y = 0 then 62 else zeros y 0)
+  in
+  (* the coarse pixels: one int each, 62 - coarseness (6 bits), 28 bits
+     of the hash, the index (27 bits) *)
+  let coarse = ref [] and fine = ref [] in
+  for i = n - 1 downto 0 do
+    let k = coarseness i in
+    if k = 0 then fine := i :: !fine
+    else coarse := ((62 - k) lsl 55) lor ((Sampler.hash i land 0xfff_ffff) lsl 27) lor i :: !coarse
+  done;
+  let coarse = Array.of_list !coarse in
+  Array.sort Int.compare coarse;
+  Array.append (Array.map (fun k -> k land 0x7ff_ffff) coarse) (Array.of_list !fine)
+
+(* a sample's colour, per domain, and the colours of a batch traced ahead *)
+let ahead_key = Scratch.key (fun () -> Color.acc 0.)
+
+(* Radiosity's samples, the points [(xs.(i), ys.(i))], traced each after
+   the ones before it, their colours given to [take i] in turn: on the
+   calling domain, or with [par] in batches (of 2 up to [batch], grown
+   while few of a batch are traced again: while the cache is empty,
+   every sample traced ahead gathers, and in turn few do), each traced
+   ahead on every domain, then taken in turn, a sample whose lookups a
+   record taken before it in the batch weighs in traced again, in turn,
+   as is one abandoned for its many lookups (see Radiosity's
+   speculate). The cache, and the colours, are the same. *)
+let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
+  let n = Float.Array.length xs in
+  let out = Color.acc 0. in
+  match par with
+  | None ->
+      for i = 0 to n - 1 do
+        sample_in s ~width ~height (Float.Array.get xs i) (Float.Array.get ys i) out;
+        take i out
+      done
+  | Some par ->
+      let b = Radiosity.batch () in
+      let ahead = Array.make batch None and colours = Float.Array.make (3 * batch) 0. in
+      let trace ~ahead i out =
+        Radiosity.begin_sample ~ahead ();
+        sample_in s ~width ~height (Float.Array.get xs i) (Float.Array.get ys i) out;
+        Radiosity.end_sample ()
+      in
+      let lo = ref 0 and size = ref (Int.min 2 batch) in
+      while !lo < n do
+        let m = Int.min !size (n - !lo) in
+        let again = ref 0 in
+        Radiosity.speculate c true;
+        Fun.protect
+          ~finally:(fun () -> Radiosity.speculate c false)
+          (fun () ->
+            par m (fun k ->
+                let a = Scratch.get ahead_key in
+                match trace ~ahead:true (!lo + k) a with
+                | o ->
+                    ahead.(k) <- Some o;
+                    Float.Array.set colours (3 * k) a.ar;
+                    Float.Array.set colours ((3 * k) + 1) a.ag;
+                    Float.Array.set colours ((3 * k) + 2) a.ab
+                | exception Radiosity.Abandoned -> ahead.(k) <- None);
+            Radiosity.start_batch b;
+            for k = 0 to m - 1 do
+              let o =
+                match ahead.(k) with
+                | Some o when not (Radiosity.conflicts b o) ->
+                    Color.acc_set out (Float.Array.get colours (3 * k)) (Float.Array.get colours ((3 * k) + 1))
+                      (Float.Array.get colours ((3 * k) + 2));
+                    o
+                | Some _ | None ->
+                    incr again;
+                    trace ~ahead:false (!lo + k) out
+              in
+              ahead.(k) <- None;
+              Radiosity.commit c b o;
+              take (!lo + k) out
+            done);
+        lo := !lo + m;
+        (* the next batch twice as large while few are traced again, half
+           as large when many are *)
+        if 8 * !again <= m then size := Int.min batch (2 * !size)
+        else if 4 * !again > m then size := Int.max 2 (!size / 2)
+      done
+
 (* POV-Ray's radiosity pretrace: camera rays through the centres of
    blocks of [pretrace_start] of the image's width, then of half that,
-   down to [pretrace_end] (at least a pixel), traced on the calling
-   domain one after the other, their gathers kept in the cache; the
-   final pass then only reads it (gathering, without keeping, where no
-   record serves), so the picture does not depend on the domains. *)
-let prepare (s : Scene.t) ~width ~height =
+   down to [pretrace_end] (at least a pixel), their gathers kept in the
+   cache; then its final pass, as far as its gathers go: every pixel's
+   centre, by the final rules, a record kept where none serves (POV-Ray
+   keeps those its final pass makes, so that the pixels after reuse
+   them), the colour found the pixel's. Each sample is traced after the
+   ones before it (with [par], on several domains at once, to the same
+   cache and colours: see [in_turn]), so the picture does not depend on
+   the domains. *)
+let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
   match s.settings.radiosity with
   | None -> ()
   | Some r ->
@@ -808,32 +916,37 @@ let prepare (s : Scene.t) ~width ~height =
       Radiosity.set_final c false;
       Fun.protect
         ~finally:(fun () ->
+          Radiosity.speculate c false;
           Radiosity.set_filling c false;
           Radiosity.set_final c true)
         (fun () ->
-          let out = Color.acc 0. in
           let stop = Float.max 1. (r.pretrace_end *. float_of_int width) in
+          let xs = ref [] and ys = ref [] in
           let rec pass size =
             let size = Float.max 1. size in
             let nx = int_of_float (Float.ceil (float_of_int width /. size))
             and ny = int_of_float (Float.ceil (float_of_int height /. size)) in
             for j = 0 to ny - 1 do
               for i = 0 to nx - 1 do
-                let px = Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size)
-                and py = Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) in
-                sample_in s ~width ~height px py out
+                xs := Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size) :: !xs;
+                ys := Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) :: !ys
               done
             done;
             if size > stop *. 1.0001 then pass (size /. 2.)
           in
           pass (r.pretrace_start *. float_of_int width);
-          (* then POV-Ray's final pass, as far as its gathers go: every
-             pixel's centre looked up by the final rules, a record kept
-             where none serves (POV-Ray keeps those its final pass
-             makes, so that the pixels after reuse them) *)
+          let points l = Float.Array.of_list (List.rev l) in
+          in_turn s c ?par ~width ~height ~batch (points !xs) (points !ys) (fun _ _ -> ());
           Radiosity.set_final c true;
-          for y = 0 to height - 1 do
-            for x = 0 to width - 1 do
-              sample_in s ~width ~height (float_of_int x +. 0.5) (float_of_int y +. 0.5) out
-            done
-          done)
+          let order = centres_order ~width ~height in
+          let centre k = float_of_int k +. 0.5 in
+          let picture = Float.Array.make (3 * width * height) 0. in
+          in_turn s c ?par ~width ~height ~batch
+            (Float.Array.init (width * height) (fun i -> centre (order.(i) mod width)))
+            (Float.Array.init (width * height) (fun i -> centre (order.(i) / width)))
+            (fun i (a : Color.acc) ->
+              let p = 3 * order.(i) in
+              Float.Array.set picture p a.ar;
+              Float.Array.set picture (p + 1) a.ag;
+              Float.Array.set picture (p + 2) a.ab);
+          Radiosity.set_picture c ~width ~height picture)

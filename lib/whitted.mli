@@ -34,17 +34,24 @@ val pixel : Scene.t -> width:int -> height:int -> int -> int -> Color.t
 (** The colour of pixel [(x, y)]: one ray through the pixel centre. *)
 
 val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -> unit
-(** {!pixel} written into a sum the caller owns (overwritten): a camera
+(** {!pixel} written into a sum the caller owns (overwritten); after
+    {!prepare} of a scene with radiosity at that size, the colour its
+    final pass found (the same ray's, traced then). A camera
     ray that crosses nothing transparent allocates nothing but what
     patterns other than a plain checker and sky spheres need. *)
 
-val prepare : Scene.t -> width:int -> height:int -> unit
-(** For a scene with radiosity, POV-Ray's pretrace: fills the scene's
-    irradiance cache from coarse passes of camera rays (on the calling
-    domain), which the render then reads. Call it before rendering the
-    picture of that size; without it, every point gathers anew (the
-    same picture in the mean, noisier and much slower). Nothing for
-    other scenes. *)
+val prepare : ?par:Image.par -> ?batch:int -> Scene.t -> width:int -> height:int -> unit
+(** For a scene with radiosity, POV-Ray's pretrace and the gathers of
+    its final pass: fills the scene's irradiance cache from coarse
+    passes of camera rays, then through every pixel's centre (coarse
+    pixels first), each ray after the ones before it; the centres'
+    colours are the picture's ({!pixel_into} at that size takes them),
+    and the cache serves the rest of the render (anti-aliasing's
+    samples). With [par] (several domains), [batch] rays (128) at a time
+    are traced ahead at once and then taken in turn: the same cache and
+    colours as on one domain. Without a [prepare], every point gathers
+    anew (the same picture in the mean, noisier and much slower).
+    Nothing for other scenes. *)
 
 val start_media : Scene.t -> Vec3.m -> Interior.t list
 (** The interiors of every object holding a point (a camera ray's

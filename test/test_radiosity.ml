@@ -160,7 +160,47 @@ let domains () =
   (* the pretrace again gives the same cache, so the same picture *)
   Whitted.prepare s ~width:w ~height:h;
   let c = Render.image ~domains:2 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h) in
-  Alcotest.(check bool) "a second pretrace: the same image" true (same_image a c)
+  Alcotest.(check bool) "a second pretrace: the same image" true (same_image a c);
+  let records () = List.init 3 (Radiosity.records r.cache) in
+  let kept = records () in
+  (* traced ahead on 2 domains, in batches small and large (the whole
+     picture in one: its samples' records serve one another, and many
+     are traced again): the same records, the same picture *)
+  List.iter
+    (fun batch ->
+      Whitted.prepare ~par:(Render.parallel ~domains:2) ~batch s ~width:w ~height:h;
+      Alcotest.(check (list int)) (Printf.sprintf "batches of %d: the records" batch) kept (records ());
+      let d = Render.image ~domains:2 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h) in
+      Alcotest.(check bool) (Printf.sprintf "batches of %d: the same image" batch) true (same_image a d))
+    [ 1; 7; 128; w * h ];
+  (* gathers three deep, 400 rays at the top: some samples traced ahead
+     make over 8192 lookups and are abandoned (2 at this size), traced
+     in turn: the same picture *)
+  let deep = Helpers.compile_string (Str.global_replace (Str.regexp_string "count 20 recursion_limit 2") "count 400 recursion_limit 3" room) in
+  let picture par =
+    Whitted.prepare ?par deep ~width:8 ~height:6;
+    Render.image ~domains:1 ~width:8 ~height:6 (Whitted.pixel deep ~width:8 ~height:6)
+  in
+  Alcotest.(check bool) "abandoned samples: the same image" true
+    (same_image (picture None) (picture (Some (Render.parallel ~domains:2))));
+  (* and the picture's pixels are the colours of the rays through their
+     centres, traced when the pretrace reached them: near those traced
+     with the whole cache (a pixel's colour in the wrong place would be
+     far from it at the sphere's edges) *)
+  let worst = ref 0. and sum = ref 0. in
+  for y = 0 to h - 1 do
+    for x = 0 to w - 1 do
+      let q = Whitted.sample s ~width:w ~height:h (float_of_int x +. 0.5) (float_of_int y +. 0.5) in
+      let d =
+        Float.abs (Image.get_r a x y -. q.r) +. Float.abs (Image.get_g a x y -. q.g) +. Float.abs (Image.get_b a x y -. q.b)
+      in
+      worst := Float.max !worst d;
+      sum := !sum +. d
+    done
+  done;
+  Printf.printf "picture against the whole cache: worst %.4f, mean %.5f\n" !worst (!sum /. float_of_int (w * h));
+  if !worst > 0.1 || !sum > 0.01 *. float_of_int (w * h) then
+    Alcotest.failf "the picture against the whole cache: worst %.3f, mean %.4f" !worst (!sum /. float_of_int (w * h))
 
 (* The picture's pass reads the cache allocating nothing: minor words a
    camera ray of the second of two one-domain renders after the pretrace
@@ -169,8 +209,9 @@ let domains () =
    float arguments) *)
 let allocation () =
   let s = Helpers.compile_string room in
-  (* the size Test_whitted.words_per_ray renders at *)
-  Whitted.prepare s ~width:64 ~height:48;
+  (* not the size Test_whitted.words_per_ray renders at (64x48), whose
+     pixels the pretrace has traced: its rays look the cache up *)
+  Whitted.prepare s ~width:48 ~height:36;
   let words = Test_whitted.words_per_ray s in
   if words > 0.1 then Alcotest.failf "%.2f minor words a camera ray" words
 
