@@ -313,9 +313,9 @@ let[@inline] at a o i = Float.Array.unsafe_get a (o + i)
    (AverageNearBlock): the weight it gets, 0 when it does not serve; the
    record the [width] floats of [a] from [o] *)
 let[@inline] weigh a o (q : Vec3.m) (n : Vec3.m) eb final0 =
-  let dx = q.mx -. (at a o 0) and dy = q.my -. (at a o 1) and dz = q.mz -. (at a o 2) in
+  let dx = q.mx -. at a o 0 and dy = q.my -. at a o 1 and dz = q.mz -. at a o 2 in
   let d2 = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
-  let hmd = (at a o 9) in
+  let hmd = at a o 9 in
   let quick = hmd *. eb in
   if d2 >= quick *. quick then 0.
   else begin
@@ -323,11 +323,11 @@ let[@inline] weigh a o (q : Vec3.m) (n : Vec3.m) eb final0 =
     let far = dist > 1e-6 in
     let ux = if far then dx /. dist else 0. and uy = if far then dy /. dist else 0. and uz = if far then dz /. dist else 0. in
     (* a smaller reach toward the nearest surface the gather met *)
-    let cn = if far then ((at a o 11) *. ux) +. ((at a o 12) *. uy) +. ((at a o 13) *. uz) else 0. in
-    let ri = if cn > 0. then (cn *. (at a o 10)) +. ((1. -. cn) *. hmd) else hmd in
+    let cn = if far then (at a o 11 *. ux) +. (at a o 12 *. uy) +. (at a o 13 *. uz) else 0. in
+    let ri = if cn > 0. then (cn *. at a o 10) +. ((1. -. cn) *. hmd) else hmd in
     if dist >= ri *. eb then 0.
     else begin
-      let nx = (at a o 3) and ny = (at a o 4) and nz = (at a o 5) in
+      let nx = at a o 3 and ny = at a o 4 and nz = at a o 5 in
       let dd = (n.mx *. nx) +. (n.my *. ny) +. (n.mz *. nz) in
       let e = (dist /. ri) +. (2. *. Float.sqrt (Float.abs (1. -. dd))) in
       if e >= eb then 0.
@@ -357,7 +357,8 @@ let[@inline] weigh a o (q : Vec3.m) (n : Vec3.m) eb final0 =
 
 type sums = { mutable eb : float; mutable ws : float; mutable sr : float; mutable sg : float; mutable sb : float }
 
-let sums_key = Scratch.key (fun () -> { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. })
+let new_sums () = { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. }
+let sums_key = Scratch.key new_sums
 let sums () = Scratch.get sums_key
 
 (* a cell's [count] records (a loop with nothing boxed) *)
@@ -377,6 +378,12 @@ let[@inline] weigh_level sm st l (q : Vec3.m) n final0 =
   let k = Float.Array.unsafe_get inv_side (l + 64) in
   let i = slot st.keys st.counts (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k))) in
   weigh_all sm (Array.unsafe_get st.cells i) (Array.unsafe_get st.counts i) q n final0
+
+(* every level of a store in use, in increasing order *)
+let weigh_levels sm st q n final0 =
+  for u = 0 to st.nlevels - 1 do
+    weigh_level sm st (Array.unsafe_get st.levels u) q n final0
+  done
 
 let log_lookup sp depth (q : Vec3.m) (n : Vec3.m) eb final0 =
   if sp.nlog + 9 > log_cap then raise Abandoned;
@@ -427,10 +434,7 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
   sm.sb <- 0.;
   let final0 = c.final && depth = 0 in
   if c.speculating then lookup_ahead c depth q n sm final0
-  else if st.n > 0 then
-    for u = 0 to st.nlevels - 1 do
-      weigh_level sm st (Array.unsafe_get st.levels u) q n final0
-    done;
+  else if st.n > 0 then weigh_levels sm st q n final0;
   if sm.ws > 0. then Color.acc_set out (sm.sr /. sm.ws) (sm.sg /. sm.ws) (sm.sb /. sm.ws)
 
 (* Samples traced ahead, then taken in turn *)
@@ -457,7 +461,7 @@ let end_sample () =
 type batch = { taken : cache; bsm : sums; bq : Vec3.m; bn : Vec3.m }
 
 let batch () =
-  { taken = new_cache (); bsm = { eb = 0.; ws = 0.; sr = 0.; sg = 0.; sb = 0. };
+  { taken = new_cache (); bsm = new_sums ();
     bq = { Vec3.mx = 0.; my = 0.; mz = 0. }; bn = { Vec3.mx = 0.; my = 0.; mz = 0. } }
 
 let start_batch b = Array.iter (fun st -> if st.n > 0 then clear_store st) b.taken.stores
@@ -475,10 +479,7 @@ let conflicts b o =
       Vec3.set n (Float.Array.get a (i + 4)) (Float.Array.get a (i + 5)) (Float.Array.get a (i + 6));
       sm.eb <- Float.Array.get a (i + 7);
       sm.ws <- 0.;
-      let final0 = Float.Array.get a (i + 8) = 1. in
-      for u = 0 to st.nlevels - 1 do
-        weigh_level sm st (Array.unsafe_get st.levels u) q n final0
-      done;
+      weigh_levels sm st q n (Float.Array.get a (i + 8) = 1.);
       sm.ws > 0.
     end)
     || from (i + 9)
