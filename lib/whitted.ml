@@ -926,12 +926,16 @@ let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
             let size = Float.max 1. size in
             let nx = int_of_float (Float.ceil (float_of_int width /. size))
             and ny = int_of_float (Float.ceil (float_of_int height /. size)) in
-            for j = 0 to ny - 1 do
-              for i = 0 to nx - 1 do
+            (* a pass's blocks in an order of their own (by a hash of
+               the index), as the final pass's coarse pixels *)
+            let order = Array.init (nx * ny) (fun i -> ((Sampler.hash i land 0xfff_ffff) lsl 27) lor i) in
+            Array.sort Int.compare order;
+            Array.iter
+              (fun k ->
+                let i = k land 0x7ff_ffff mod nx and j = k land 0x7ff_ffff / nx in
                 xs := Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size) :: !xs;
-                ys := Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) :: !ys
-              done
-            done;
+                ys := Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) :: !ys)
+              order;
             if size > stop *. 1.0001 then pass (size /. 2.)
           in
           pass (r.pretrace_start *. float_of_int width);
