@@ -809,7 +809,6 @@ let pixel s ~width ~height x y =
    rows, this way as fast as by rows. *)
 let centres_order ~width ~height =
   let n = width * height in
-  if n > 1 lsl 27 then invalid_arg "Whitted.prepare: more than 2^27 pixels";
   let rec zeros v k = if v land 1 = 1 then k else zeros (v lsr 1) (k + 1) in
   let coarseness i =
     let x = i mod width and y = i / width in
@@ -910,6 +909,8 @@ let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
   match s.settings.radiosity with
   | None -> ()
   | Some r ->
+      (* the orders below number pixels and blocks in 27 bits *)
+      if width * height > 1 lsl 27 then invalid_arg "Whitted.prepare: more than 2^27 pixels";
       let c = r.cache in
       Radiosity.clear c;
       Radiosity.set_filling c true;
@@ -932,7 +933,7 @@ let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
             Array.sort Int.compare order;
             Array.iter
               (fun k ->
-                let i = k land 0x7ff_ffff mod nx and j = k land 0x7ff_ffff / nx in
+                let i = (k land 0x7ff_ffff) mod nx and j = (k land 0x7ff_ffff) / nx in
                 xs := Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size) :: !xs;
                 ys := Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) :: !ys)
               order;
