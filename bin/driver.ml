@@ -91,13 +91,13 @@ let same_file a b =
     sa.st_dev = sb.st_dev && sa.st_ino = sb.st_ino
   with Unix.Unix_error _ -> false
 
-let progress_bar ~start ~done_ ~total =
+let progress_bar ~label ~start ~done_ ~total =
   let frac = float_of_int done_ /. float_of_int total in
   let elapsed = Unix.gettimeofday () -. start in
   let eta = if frac > 0. then elapsed *. (1. -. frac) /. frac else 0. in
   let width = 30 in
   let filled = int_of_float (frac *. float_of_int width) in
-  Printf.eprintf "\r[%s%s] %3.0f%%  ETA %5.1fs " (String.make filled '#')
+  Printf.eprintf "\r%s[%s%s] %3.0f%%  ETA %5.1fs " (if label = "" then "" else label ^ " ") (String.make filled '#')
     (String.make (width - filled) '.') (100. *. frac) eta;
   flush stderr
 
@@ -220,14 +220,25 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let tty = Unix.isatty Unix.stderr && not o.quiet in
       let t1 = Unix.gettimeofday () in
       (* radiosity's pretrace, before the picture reads its cache *)
-      if o.mode = Whitted then
-        Whitted.prepare ?par:(if domains > 1 then Some (Render.parallel ~domains) else None) scene ~width ~height;
+      if o.mode = Whitted then begin
+        let last = ref 0. in
+        let progress ~done_ ~total =
+          let now = Unix.gettimeofday () in
+          if tty && (now -. !last > 0.1 || done_ = total) then (
+            last := now;
+            progress_bar ~label:"radiosity" ~start:t1 ~done_ ~total)
+        in
+        Whitted.prepare ?par:(if domains > 1 then Some (Render.parallel ~domains) else None) ~progress scene ~width ~height;
+        if tty && Option.is_some scene.settings.radiosity then prerr_newline ()
+      end;
+      (* the picture's own progress, after the pretrace's *)
+      let t_pixels = Unix.gettimeofday () in
       let last = ref 0. in
       let progress ~done_ ~total =
         let now = Unix.gettimeofday () in
         if tty && (now -. !last > 0.1 || done_ = total) then (
           last := now;
-          progress_bar ~start:t1 ~done_ ~total)
+          progress_bar ~label:"" ~start:t_pixels ~done_ ~total)
       in
       let cancelled () = Atomic.get cancelled in
       let img =

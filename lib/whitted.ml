@@ -908,7 +908,7 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
    ones before it (with [par], on several domains at once, to the same
    cache and colours: see [in_turn]), so the picture does not depend on
    the domains. *)
-let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
+let prepare ?par ?(batch = 128) ?(progress = fun ~done_:_ ~total:_ -> ()) (s : Scene.t) ~width ~height =
   match s.settings.radiosity with
   | None -> ()
   | Some r ->
@@ -944,7 +944,10 @@ let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
           in
           pass (r.pretrace_start *. float_of_int width);
           let points l = Float.Array.of_list (List.rev l) in
-          in_turn s c ?par ~width ~height ~batch (points !xs) (points !ys) (fun _ _ -> ());
+          let passes = List.length !xs in
+          let total = passes + (width * height) in
+          in_turn s c ?par ~width ~height ~batch (points !xs) (points !ys) (fun i _ ->
+              if i land 255 = 255 then progress ~done_:(i + 1) ~total);
           Radiosity.set_final c true;
           let order = centres_order ~width ~height in
           let centre k = float_of_int k +. 0.5 in
@@ -953,6 +956,7 @@ let prepare ?par ?(batch = 128) (s : Scene.t) ~width ~height =
             (Float.Array.init (width * height) (fun i -> centre (order.(i) mod width)))
             (Float.Array.init (width * height) (fun i -> centre (order.(i) / width)))
             (fun i (a : Color.acc) ->
+              if i land 255 = 255 || i = (width * height) - 1 then progress ~done_:(passes + i + 1) ~total;
               let p = 3 * order.(i) in
               Float.Array.set picture p a.ar;
               Float.Array.set picture (p + 1) a.ag;

@@ -40,7 +40,8 @@ val pixel_into : Scene.t -> width:int -> height:int -> int -> int -> Color.acc -
     ray that crosses nothing transparent allocates nothing but what
     patterns other than a plain checker and sky spheres need. *)
 
-val prepare : ?par:Image.par -> ?batch:int -> Scene.t -> width:int -> height:int -> unit
+val prepare :
+  ?par:Image.par -> ?batch:int -> ?progress:(done_:int -> total:int -> unit) -> Scene.t -> width:int -> height:int -> unit
 (** For a scene with radiosity, POV-Ray's pretrace and the gathers of
     its final pass: fills the scene's irradiance cache from coarse
     passes of camera rays, then through every pixel's centre (coarse
@@ -49,7 +50,8 @@ val prepare : ?par:Image.par -> ?batch:int -> Scene.t -> width:int -> height:int
     and the cache serves the rest of the render (anti-aliasing's
     samples). With [par] (several domains), [batch] rays (128) at a time
     are traced ahead at once and then taken in turn: the same cache and
-    colours as on one domain. Without a [prepare], every point gathers
+    colours as on one domain. [progress] is told how many of its rays
+    are done, from the calling domain. Without a [prepare], every point gathers
     anew (the same picture in the mean, noisier and much slower).
     Nothing for other scenes. *)
 

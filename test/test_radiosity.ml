@@ -173,6 +173,20 @@ let domains () =
       let d = Render.image ~domains:2 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h) in
       Alcotest.(check bool) (Printf.sprintf "batches of %d: the same image" batch) true (same_image a d))
     [ 1; 7; 128; w * h ];
+  (* its progress: counts that grow, up to the whole (the passes' rays
+     and every pixel), on one domain and on two *)
+  List.iter
+    (fun par ->
+      let seen = ref [] in
+      Whitted.prepare ?par ~progress:(fun ~done_ ~total -> seen := (done_, total) :: !seen) s ~width:w ~height:h;
+      match !seen with
+      | [] -> Alcotest.fail "no progress told"
+      | (last, total) :: _ ->
+          let dones = List.rev_map fst !seen in
+          Alcotest.(check bool) "progress grows" true (List.sort_uniq compare dones = dones);
+          Alcotest.(check int) "progress ends at the whole" total last;
+          if total <= w * h then Alcotest.failf "a whole of %d for %d pixels and the passes" total (w * h))
+    [ None; Some (Render.parallel ~domains:2) ];
   (* gathers three deep, 400 rays at the top: some samples traced ahead
      make over 8192 lookups and are abandoned (2 at this size), traced
      in turn: the same picture *)
