@@ -218,28 +218,26 @@ let render_frame o ~clock ~frame ~out ~t0 =
         | Monte_carlo -> Path.pixel_into (Path.prepare scene) ~width ~height ~seed:o.seed ~spp ~max_depth
       in
       let tty = Unix.isatty Unix.stderr && not o.quiet in
-      let t1 = Unix.gettimeofday () in
-      (* radiosity's pretrace, before the picture reads its cache *)
-      if o.mode = Whitted then begin
-        let last = ref 0. in
-        let progress ~done_ ~total =
+      (* a progress bar on a terminal, from now, redrawn at most every
+         0.1 s *)
+      let bar label =
+        let start = Unix.gettimeofday () and last = ref 0. in
+        fun ~done_ ~total ->
           let now = Unix.gettimeofday () in
           if tty && (now -. !last > 0.1 || done_ = total) then (
             last := now;
-            progress_bar ~label:"radiosity" ~start:t1 ~done_ ~total)
-        in
-        Whitted.prepare ?par:(if domains > 1 then Some (Render.parallel ~domains) else None) ~progress scene ~width ~height;
+            progress_bar ~label ~start ~done_ ~total)
+      in
+      let t1 = Unix.gettimeofday () in
+      (* radiosity's pretrace, before the picture reads its cache *)
+      if o.mode = Whitted then begin
+        Whitted.prepare
+          ?par:(if domains > 1 then Some (Render.parallel ~domains) else None)
+          ~progress:(bar "radiosity") scene ~width ~height;
         if tty && Option.is_some scene.settings.radiosity then prerr_newline ()
       end;
       (* the picture's own progress, after the pretrace's *)
-      let t_pixels = Unix.gettimeofday () in
-      let last = ref 0. in
-      let progress ~done_ ~total =
-        let now = Unix.gettimeofday () in
-        if tty && (now -. !last > 0.1 || done_ = total) then (
-          last := now;
-          progress_bar ~label:"" ~start:t_pixels ~done_ ~total)
-      in
+      let progress = bar "" in
       let cancelled () = Atomic.get cancelled in
       let img =
         with_signals (fun () ->
