@@ -25,6 +25,14 @@ type acc = { mutable ar : float; mutable ag : float; mutable ab : float }
 
 let acc v = { ar = v; ag = v; ab = v }
 let[@inline] acc_set (a : acc) r g b = a.ar <- r; a.ag <- g; a.ab <- b
+
+let[@inline] acc_store fa i (a : acc) =
+  Float.Array.set fa (3 * i) a.ar;
+  Float.Array.set fa ((3 * i) + 1) a.ag;
+  Float.Array.set fa ((3 * i) + 2) a.ab
+
+let[@inline] acc_load fa i (a : acc) =
+  acc_set a (Float.Array.get fa (3 * i)) (Float.Array.get fa ((3 * i) + 1)) (Float.Array.get fa ((3 * i) + 2))
 let of_acc (a : acc) = { r = a.ar; g = a.ag; b = a.ab }
 let acc_max (a : acc) = Float.max a.ar (Float.max a.ag a.ab)
 let acc_is_black (a : acc) = a.ar = 0. && a.ag = 0. && a.ab = 0.

@@ -32,6 +32,13 @@ val acc : float -> acc
 (** [acc v]: a new sum holding grey [v]. *)
 
 val acc_set : acc -> float -> float -> float -> unit
+
+val acc_store : Float.Array.t -> int -> acc -> unit
+(** [acc_store fa i a]: the sum into floats [3 i] to [3 i + 2] of [fa]. *)
+
+val acc_load : Float.Array.t -> int -> acc -> unit
+(** [acc_load fa i a]: floats [3 i] to [3 i + 2] of [fa] into the sum. *)
+
 val of_acc : acc -> t
 val acc_max : acc -> float
 val acc_is_black : acc -> bool

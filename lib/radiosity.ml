@@ -501,11 +501,10 @@ let set_picture c ~width ~height p =
 
 let picture_into c ~width ~height x y (out : Color.acc) =
   width = c.pw && height = c.ph && x >= 0 && x < width && y >= 0 && y < height
-  &&
-  let p = 3 * ((y * width) + x) in
-  Color.acc_set out (Float.Array.unsafe_get c.picture p) (Float.Array.unsafe_get c.picture (p + 1))
-    (Float.Array.unsafe_get c.picture (p + 2));
-  true
+  && begin
+    Color.acc_load c.picture ((y * width) + x) out;
+    true
+  end
 
 let filling c = c.filling
 let set_filling c b = c.filling <- b

@@ -794,6 +794,13 @@ let pixel s ~width ~height x y =
   pixel_into s ~width ~height x y out;
   Color.of_acc out
 
+(* Indices below 2^27 in increasing [rank] (0 to 63), each rank's in an
+   order of their own: by a hash of the index *)
+let hashed ?(rank = fun _ -> 0) is =
+  let key = Array.map (fun i -> (rank i lsl 55) lor ((Sampler.hash i land 0xfff_ffff) lsl 27) lor i) is in
+  Array.sort Int.compare key;
+  Array.map (fun k -> k land 0x7ff_ffff) key
+
 (* The pixels of a [width] x [height] image, as indices [y * width + x],
    coarse to fine: those on every 2^k-th row and column before the
    others, the largest k first; those of a k > 0 in an order of their
@@ -814,19 +821,13 @@ let centres_order ~width ~height =
     let x = i mod width and y = i / width in
     Int.min (if x = 0 then 62 else zeros x 0) (if y = 0 then 62 else zeros y 0)
   in
-  (* the coarse pixels: one int each, 62 - coarseness (6 bits), 28 bits
-     of the hash, the index (27 bits) *)
   let coarse = ref [] and fine = ref [] in
   for i = n - 1 downto 0 do
-    let k = coarseness i in
-    if k = 0 then fine := i :: !fine
-    else coarse := ((62 - k) lsl 55) lor ((Sampler.hash i land 0xfff_ffff) lsl 27) lor i :: !coarse
+    if coarseness i = 0 then fine := i :: !fine else coarse := i :: !coarse
   done;
-  let coarse = Array.of_list !coarse in
-  Array.sort Int.compare coarse;
-  Array.append (Array.map (fun k -> k land 0x7ff_ffff) coarse) (Array.of_list !fine)
+  Array.append (hashed ~rank:(fun i -> 62 - coarseness i) (Array.of_list !coarse)) (Array.of_list !fine)
 
-(* a sample's colour, per domain, and the colours of a batch traced ahead *)
+(* a sample traced ahead's colour, per domain *)
 let ahead_key = Scratch.key (fun () -> Color.acc 0.)
 
 (* Radiosity's samples, the points [(xs.(i), ys.(i))], traced each after
@@ -868,17 +869,14 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
                 match trace ~ahead:true (!lo + k) a with
                 | o ->
                     ahead.(k) <- Some o;
-                    Float.Array.set colours (3 * k) a.ar;
-                    Float.Array.set colours ((3 * k) + 1) a.ag;
-                    Float.Array.set colours ((3 * k) + 2) a.ab
+                    Color.acc_store colours k a
                 | exception Radiosity.Abandoned -> ahead.(k) <- None);
             Radiosity.start_batch b;
             for k = 0 to m - 1 do
               let o =
                 match ahead.(k) with
                 | Some o when not (Radiosity.conflicts b o) ->
-                    Color.acc_set out (Float.Array.get colours (3 * k)) (Float.Array.get colours ((3 * k) + 1))
-                      (Float.Array.get colours ((3 * k) + 2));
+                    Color.acc_load colours k out;
                     o
                 | Some _ | None ->
                     incr again;
@@ -932,14 +930,12 @@ let prepare ?par ?(batch = 128) ?(progress = fun ~done_:_ ~total:_ -> ()) (s : S
             and ny = int_of_float (Float.ceil (float_of_int height /. size)) in
             (* a pass's blocks in an order of their own (by a hash of
                the index), as the final pass's coarse pixels *)
-            let order = Array.init (nx * ny) (fun i -> ((Sampler.hash i land 0xfff_ffff) lsl 27) lor i) in
-            Array.sort Int.compare order;
             Array.iter
               (fun k ->
-                let i = (k land 0x7ff_ffff) mod nx and j = (k land 0x7ff_ffff) / nx in
+                let i = k mod nx and j = k / nx in
                 xs := Float.min (float_of_int width -. 0.5) ((float_of_int i +. 0.5) *. size) :: !xs;
                 ys := Float.min (float_of_int height -. 0.5) ((float_of_int j +. 0.5) *. size) :: !ys)
-              order;
+              (hashed (Array.init (nx * ny) Fun.id));
             if size > stop *. 1.0001 then pass (size /. 2.)
           in
           pass (r.pretrace_start *. float_of_int width);
@@ -957,8 +953,5 @@ let prepare ?par ?(batch = 128) ?(progress = fun ~done_:_ ~total:_ -> ()) (s : S
             (Float.Array.init (width * height) (fun i -> centre (order.(i) / width)))
             (fun i (a : Color.acc) ->
               if i land 255 = 255 || i = (width * height) - 1 then progress ~done_:(passes + i + 1) ~total;
-              let p = 3 * order.(i) in
-              Float.Array.set picture p a.ar;
-              Float.Array.set picture (p + 1) a.ag;
-              Float.Array.set picture (p + 2) a.ab);
+              Color.acc_store picture order.(i) a);
           Radiosity.set_picture c ~width ~height picture)
