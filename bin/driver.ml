@@ -232,7 +232,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
       (* radiosity's pretrace, before the picture reads its cache *)
       if o.mode = Whitted then begin
         Whitted.prepare
-          ?par:(if domains > 1 then Some (Render.parallel ~domains) else None)
+          ?par:(if domains > 1 then Some (Render.pulled ~domains) else None)
           ~progress:(bar "radiosity") scene ~width ~height;
         if tty && Option.is_some scene.settings.radiosity then prerr_newline ()
       end;

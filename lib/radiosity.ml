@@ -36,6 +36,7 @@ type store = {
   mutable levels : int array;
   mutable nlevels : int;
   mutable n : int;
+  used : int array;  (* the slots filled, in order, while there are 256 *)
 }
 
 (* a record in a cell: its 14 fields in [record]'s order *)
@@ -45,7 +46,7 @@ let no_cell = Float.Array.make 0 0.
 
 let new_store () =
   { keys = Array.make 256 0; cells = Array.make 256 no_cell; counts = Array.make 256 0; filled = 0; levels = [||];
-    nlevels = 0; n = 0 }
+    nlevels = 0; n = 0; used = Array.make 128 0 }
 
 let[@inline] mix k =
   let h = k * 0x1E3779B97F4A7C15 in
@@ -83,9 +84,12 @@ let rec put st k rc =
     let i = slot st.keys st.counts k in
     let c = st.counts.(i) in
     if c = 0 then begin
+      (* at most 128 slots of 256 are filled before the table grows *)
+      if Array.length st.keys = 256 then Array.unsafe_set st.used st.filled i;
       st.filled <- st.filled + 1;
       st.keys.(i) <- k;
-      st.cells.(i) <- Float.Array.make (4 * width) 0.
+      (* a cell emptied by [clear_store] is filled again *)
+      if Float.Array.length st.cells.(i) = 0 then st.cells.(i) <- Float.Array.make (4 * width) 0.
     end
     else if (c + 1) * width > Float.Array.length st.cells.(i) then begin
       let a = Float.Array.make (2 * c * width) 0. in
@@ -198,12 +202,23 @@ let reset_depth () = Scratch.get depth_key := 0
 
 let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2 r.nearest_count | _ -> 1
 
+(* emptied to 256 slots; the arrays kept when they have that many,
+   only the slots filled emptied, their cells kept for the next records
+   there (a sample's own records and a batch's, cleared over and over,
+   seldom fill more than a few) *)
 let clear_store st =
-  st.keys <- Array.make 256 0;
-  st.cells <- Array.make 256 no_cell;
-  st.counts <- Array.make 256 0;
+  if Array.length st.keys = 256 then
+    for u = 0 to st.filled - 1 do
+      let i = st.used.(u) in
+      st.keys.(i) <- 0;
+      st.counts.(i) <- 0
+    done
+  else begin
+    st.keys <- Array.make 256 0;
+    st.cells <- Array.make 256 no_cell;
+    st.counts <- Array.make 256 0
+  end;
   st.filled <- 0;
-  st.levels <- [||];
   st.nlevels <- 0;
   st.n <- 0
 
@@ -285,11 +300,12 @@ type spec = {
   mutable made : (int * record * float) list;  (* newest first *)
   mutable log : Float.Array.t;
   mutable nlog : int;
+  mutable depths : int;  (* bit [d] set: a lookup at depth [d] logged *)
   mutable logging : bool;
 }
 
 let spec_key =
-  Scratch.key (fun () -> { overlay = new_cache (); made = []; log = Float.Array.make 64 0.; nlog = 0; logging = true })
+  Scratch.key (fun () -> { overlay = new_cache (); made = []; log = Float.Array.make 64 0.; nlog = 0; depths = 0; logging = true })
 
 exception Abandoned
 
@@ -402,7 +418,8 @@ let log_lookup sp depth (q : Vec3.m) (n : Vec3.m) eb final0 =
   Float.Array.set a (i + 6) n.mz;
   Float.Array.set a (i + 7) eb;
   Float.Array.set a (i + 8) (if final0 then 1. else 0.);
-  sp.nlog <- i + 9
+  sp.nlog <- i + 9;
+  sp.depths <- sp.depths lor (1 lsl depth)
 
 (* a speculating lookup: the cache's records and the sample's own, level
    by level in increasing order, the sample's own last in a level (in
@@ -439,7 +456,14 @@ let lookup c depth (q : Vec3.m) (n : Vec3.m) (sm : sums) (out : Color.acc) =
 
 (* Samples traced ahead, then taken in turn *)
 
-type outcome = { records : (int * record * float) list; lookups : Float.Array.t }
+type outcome = {
+  mutable records : (int * record * float) list;
+  mutable lookups : Float.Array.t;
+  mutable nlookups : int;
+  mutable depths : int;  (* as [spec]'s *)
+}
+
+let outcome () = { records = []; lookups = Float.Array.make 64 0.; nlookups = 0; depths = 0 }
 
 let speculate c b = c.speculating <- b
 
@@ -448,29 +472,43 @@ let begin_sample ?(ahead = true) () =
   sp.logging <- ahead;
   if (match sp.made with [] -> false | _ :: _ -> true) then Array.iter (fun st -> if st.n > 0 then clear_store st) sp.overlay.stores;
   sp.made <- [];
-  sp.nlog <- 0
+  sp.nlog <- 0;
+  sp.depths <- 0
 
-let end_sample () =
+(* the log handed over to [o], [o]'s old one kept for the next sample *)
+let end_sample o =
   let sp = Scratch.get spec_key in
-  let o = { records = List.rev sp.made; lookups = Float.Array.sub sp.log 0 sp.nlog } in
-  begin_sample ();
-  o
+  let log = o.lookups in
+  o.records <- List.rev sp.made;
+  o.lookups <- sp.log;
+  o.nlookups <- sp.nlog;
+  o.depths <- sp.depths;
+  sp.log <- log;
+  begin_sample ()
 
 (* the records taken in turn so far in a batch of samples, and the sums
    and vectors its test reads through *)
-type batch = { taken : cache; bsm : sums; bq : Vec3.m; bn : Vec3.m }
+type batch = { taken : cache; mutable bdepths : int; bsm : sums; bq : Vec3.m; bn : Vec3.m }
 
 let batch () =
-  { taken = new_cache (); bsm = new_sums ();
+  { taken = new_cache (); bdepths = 0; bsm = new_sums ();
     bq = { Vec3.mx = 0.; my = 0.; mz = 0. }; bn = { Vec3.mx = 0.; my = 0.; mz = 0. } }
 
-let start_batch b = Array.iter (fun st -> if st.n > 0 then clear_store st) b.taken.stores
+let start_batch b =
+  Array.iter (fun st -> if st.n > 0 then clear_store st) b.taken.stores;
+  b.bdepths <- 0
 
-(* whether a record taken in the batch weighs in one of the lookups *)
+(* whether a record taken in the batch weighs in one of the lookups;
+   the lookups not read when none was at a depth with records taken (a
+   sample traced ahead, most of the final pass's, with none taken yet
+   in its batch: its log, written by another domain, is a cache miss
+   every 64 bytes) *)
 let conflicts b o =
+  o.depths land b.bdepths <> 0
+  &&
   let a = o.lookups and sm = b.bsm and q = b.bq and n = b.bn in
   let rec from i =
-    i < Float.Array.length a
+    i < o.nlookups
     &&
     let st = b.taken.stores.(int_of_float (Float.Array.get a i)) in
     (st.n > 0
@@ -490,7 +528,8 @@ let commit c b o =
   List.iter
     (fun (depth, rc, reach) ->
       keep c.stores.(depth) rc reach;
-      keep b.taken.stores.(depth) rc reach)
+      keep b.taken.stores.(depth) rc reach;
+      b.bdepths <- b.bdepths lor (1 lsl depth))
     o.records
 
 let set_picture c ~width ~height p =

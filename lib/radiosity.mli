@@ -134,7 +134,11 @@ val speculate : cache -> bool -> unit
     are logged: set it before the batch's parallel loop, clear it after. *)
 
 type outcome
-(** What a sample traced ahead found: its records and its lookups. *)
+(** What a sample traced ahead found: its records and its lookups; made
+    once and filled again by each sample ({!end_sample}). *)
+
+val outcome : unit -> outcome
+(** An empty one. *)
 
 val begin_sample : ?ahead:bool -> unit -> unit
 (** Start a sample on the calling domain (its records and log emptied):
@@ -144,8 +148,9 @@ exception Abandoned
 (** Raised by a lookup of a sample traced ahead that has logged 8192
     lookups: the sample is to be traced in turn. *)
 
-val end_sample : unit -> outcome
-(** The calling domain's sample's outcome. *)
+val end_sample : outcome -> unit
+(** The calling domain's sample's outcome, into [o] (what [o] held is
+    dropped; nothing is allocated but the list of the sample's records). *)
 
 type batch
 

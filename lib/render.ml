@@ -153,6 +153,26 @@ let parallel ~domains n f =
         let pool = T.setup_pool ~num_domains:(min n domains - 1) () in
         Fun.protect ~finally:(fun () -> T.teardown_pool pool) (fun () -> run pool)
 
+(* One task per domain, each taking indices from a counter. Radiosity's
+   final pass on radiosity2.pov at 320x240, 2 domains (76,800 samples of
+   some 7 us in batches of up to 128): traced ahead in 0.35 s with
+   [parallel] (a task, and its fibre's stack grown, per sample), 0.25 s
+   this way. *)
+let pulled ~domains n f =
+  if domains <= 1 || n <= 1 then
+    for i = 0 to n - 1 do
+      f i
+    done
+  else begin
+    let next = Atomic.make 0 in
+    parallel ~domains (Int.min domains n) (fun _ ->
+        let i = ref (Atomic.fetch_and_add next 1) in
+        while !i < n do
+          f !i;
+          i := Atomic.fetch_and_add next 1
+        done)
+  end
+
 let run_tiles ~domains ?(progress = fun ~done_:_ ~total:_ -> ())
     ?(cancelled = fun () -> false) ?order_seed ~width ~height ~size f =
   let ts = tiles ~width ~height ~size in

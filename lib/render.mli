@@ -61,3 +61,10 @@ val parallel : domains:int -> Image.par
 (** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
     [domains] workers, the {!with_pool} pool when there is one (in turn
     when [domains <= 1]): the image encoders' parts, the BVH's subtrees. *)
+
+val pulled : domains:int -> Image.par
+(** [pulled ~domains n f] runs [f 0] ... [f (n-1)] as {!parallel} does,
+    each domain taking the next [i] from a shared counter until none is
+    left: for many small items of uneven cost (radiosity's samples),
+    where a task of [parallel]'s per item would cost as much as the
+    item. *)

@@ -850,11 +850,15 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
       done
   | Some par ->
       let b = Radiosity.batch () in
-      let ahead = Array.make batch None and colours = Float.Array.make (3 * batch) 0. in
-      let trace ~ahead i out =
+      (* per place in the batch: traced ahead (not abandoned), what was
+         found, the colour *)
+      let ahead = Array.make batch false
+      and found = Array.init batch (fun _ -> Radiosity.outcome ())
+      and colours = Float.Array.make (3 * batch) 0. in
+      let trace ~ahead i k out =
         Radiosity.begin_sample ~ahead ();
         sample_in s ~width ~height (Float.Array.get xs i) (Float.Array.get ys i) out;
-        Radiosity.end_sample ()
+        Radiosity.end_sample found.(k)
       in
       let lo = ref 0 and size = ref (Int.min 2 batch) in
       while !lo < n do
@@ -866,24 +870,20 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
           (fun () ->
             par m (fun k ->
                 let a = Scratch.get ahead_key in
-                match trace ~ahead:true (!lo + k) a with
-                | o ->
-                    ahead.(k) <- Some o;
+                match trace ~ahead:true (!lo + k) k a with
+                | () ->
+                    ahead.(k) <- true;
                     Color.acc_store colours k a
-                | exception Radiosity.Abandoned -> ahead.(k) <- None);
+                | exception Radiosity.Abandoned -> ahead.(k) <- false);
             Radiosity.start_batch b;
             for k = 0 to m - 1 do
-              let o =
-                match ahead.(k) with
-                | Some o when not (Radiosity.conflicts b o) ->
-                    Color.acc_load colours k out;
-                    o
-                | Some _ | None ->
-                    incr again;
-                    trace ~ahead:false (!lo + k) out
-              in
-              ahead.(k) <- None;
-              Radiosity.commit c b o;
+              if ahead.(k) && not (Radiosity.conflicts b found.(k)) then Color.acc_load colours k out
+              else begin
+                incr again;
+                trace ~ahead:false (!lo + k) k out
+              end;
+              ahead.(k) <- false;
+              Radiosity.commit c b found.(k);
               take (!lo + k) out
             done);
         lo := !lo + m;

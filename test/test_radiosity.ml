@@ -168,7 +168,7 @@ let domains () =
      are traced again): the same records, the same picture *)
   List.iter
     (fun batch ->
-      Whitted.prepare ~par:(Render.parallel ~domains:2) ~batch s ~width:w ~height:h;
+      Whitted.prepare ~par:(Render.pulled ~domains:2) ~batch s ~width:w ~height:h;
       Alcotest.(check (list int)) (Printf.sprintf "batches of %d: the records" batch) kept (records ());
       let d = Render.image ~domains:2 ~width:w ~height:h (Whitted.pixel s ~width:w ~height:h) in
       Alcotest.(check bool) (Printf.sprintf "batches of %d: the same image" batch) true (same_image a d))
@@ -186,7 +186,7 @@ let domains () =
           Alcotest.(check bool) "progress grows" true (List.sort_uniq compare dones = dones);
           Alcotest.(check int) "progress ends at the whole" total last;
           if total <= w * h then Alcotest.failf "a whole of %d for %d pixels and the passes" total (w * h))
-    [ None; Some (Render.parallel ~domains:2) ];
+    [ None; Some (Render.pulled ~domains:2) ];
   (* gathers three deep, 400 rays at the top: some samples traced ahead
      make over 8192 lookups and are abandoned (2 at this size), traced
      in turn: the same picture *)
@@ -196,7 +196,7 @@ let domains () =
     Render.image ~domains:1 ~width:8 ~height:6 (Whitted.pixel deep ~width:8 ~height:6)
   in
   Alcotest.(check bool) "abandoned samples: the same image" true
-    (same_image (picture None) (picture (Some (Render.parallel ~domains:2))));
+    (same_image (picture None) (picture (Some (Render.pulled ~domains:2))));
   (* and the picture's pixels are the colours of the rays through their
      centres, traced when the pretrace reached them: near those traced
      with the whole cache (a pixel's colour in the wrong place would be

@@ -56,6 +56,27 @@ let units =
           [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (2, 383); (2, 384);
             (2, 767); (2, 768); (3, 383); (3, 385); (3, 575); (3, 577); (4, 1535); (4, 1537);
             (2, 7500); (4, 1875); (4, 1999) ]);
+    Alcotest.test_case "pulled runs every index once, on every domain" `Quick (fun () ->
+        List.iter
+          (fun (domains, n) ->
+            let seen = Array.init n (fun _ -> Atomic.make 0) in
+            Render.pulled ~domains n (fun i -> Atomic.incr seen.(i));
+            Array.iteri
+              (fun i a ->
+                if Atomic.get a <> 1 then
+                  Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
+              seen)
+          [ (1, 0); (1, 5); (2, 0); (2, 1); (2, 2); (2, 3); (3, 2); (2, 128); (4, 1000) ];
+        (* the caller's first index waits (up to 5 s) for another domain
+           to take one: the counter is shared, not split in advance *)
+        let me = (Domain.self () :> int) and other = Atomic.make false and t0 = Unix.gettimeofday () in
+        let by = Array.make 64 (-1) in
+        Render.pulled ~domains:2 64 (fun i ->
+            let d = (Domain.self () :> int) in
+            by.(i) <- d;
+            if d <> me then Atomic.set other true
+            else while not (Atomic.get other) && Unix.gettimeofday () -. t0 < 5. do Domain.cpu_relax () done);
+        Alcotest.(check bool) "another domain took indices" true (Array.exists (fun d -> d <> me) by));
     Alcotest.test_case "with_pool: the loops of a command share one pool, torn down after" `Quick (fun () ->
         (* the domains other than the caller's that ran indices of a loop
            (the caller's indices wait, up to 5 s, for the worker to take one) *)
