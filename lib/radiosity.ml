@@ -22,21 +22,21 @@ let levels = 128 (* L from -64 to 63 *)
    in only the cell of its centre needs the 8 cells about a point read,
    and those hold some 10 times the records that serve it). Keyed by
    (L, cell) mixed into one int: a table of its own, open addressing
-   over two arrays (a slot is free while its list is empty), so that a
+   over an array of keys and counts side by side (a slot is free while
+   its count is 0: one cache line read for both) and one of cells, so that a
    lookup is a few integer operations with no call (the standard table,
    polymorphic, calls C to hash each key and [compare_val] to compare: a
    fifth of radiosity2.pov's time; made for ints by its functor, it
    calls [hash] and [equal] as closures). [levels] holds the levels in
    use, the first [nlevels] of it, in increasing order. *)
 type store = {
-  mutable keys : int array;
+  mutable slots : int array;  (* slot i: its key at 2i, the records in its cell at 2i + 1 (0: free) *)
   mutable cells : Float.Array.t array;  (* a cell's records, [width] floats each, oldest first *)
-  mutable counts : int array;  (* records in the cell (0: a free slot) *)
   mutable filled : int;  (* slots in use *)
   mutable levels : int array;
   mutable nlevels : int;
   mutable n : int;
-  used : int array;  (* the slots filled, in order, while there are 256 *)
+  mutable used : int array;  (* the slots filled, the first [filled] of it *)
 }
 
 (* a record in a cell: its 14 fields in [record]'s order *)
@@ -45,49 +45,50 @@ let width = 14
 let no_cell = Float.Array.make 0 0.
 
 let new_store () =
-  { keys = Array.make 256 0; cells = Array.make 256 no_cell; counts = Array.make 256 0; filled = 0; levels = [||];
+  { slots = Array.make 512 0; cells = Array.make 256 no_cell; filled = 0; levels = [||];
     nlevels = 0; n = 0; used = Array.make 128 0 }
 
 let[@inline] mix k =
   let h = k * 0x1E3779B97F4A7C15 in
   h lxor (h lsr 31)
 
+let[@inline] size st = Array.length st.cells
+
 (* the slot of key [k]: its own, or the free one where it would go *)
-let slot keys counts k =
-  let mask = Array.length keys - 1 in
+let slot slots k =
+  let mask = (Array.length slots / 2) - 1 in
   let i = ref (mix k land mask) in
-  while Array.unsafe_get counts !i > 0 && Array.unsafe_get keys !i <> k do
+  while Array.unsafe_get slots ((2 * !i) + 1) > 0 && Array.unsafe_get slots (2 * !i) <> k do
     i := (!i + 1) land mask
   done;
   !i
 
 let rec put st k rc =
-  if 2 * (st.filled + 1) > Array.length st.keys then begin
+  if 2 * (st.filled + 1) > size st then begin
     (* grown to twice the size, the cells moved over as they are *)
-    let keys = st.keys and cells = st.cells and counts = st.counts in
-    let size = 2 * Array.length keys in
-    st.keys <- Array.make size 0;
-    st.cells <- Array.make size no_cell;
-    st.counts <- Array.make size 0;
-    Array.iteri
-      (fun i c ->
-        if c > 0 then begin
-          let j = slot st.keys st.counts keys.(i) in
-          st.keys.(j) <- keys.(i);
-          st.cells.(j) <- cells.(i);
-          st.counts.(j) <- c
-        end)
-      counts;
+    let slots = st.slots and cells = st.cells and used = st.used in
+    let n = 2 * size st in
+    st.slots <- Array.make (2 * n) 0;
+    st.cells <- Array.make n no_cell;
+    st.used <- Array.make (n / 2) 0;
+    for u = 0 to st.filled - 1 do
+      let i = used.(u) in
+      let j = slot st.slots slots.(2 * i) in
+      st.slots.(2 * j) <- slots.(2 * i);
+      st.slots.((2 * j) + 1) <- slots.((2 * i) + 1);
+      st.cells.(j) <- cells.(i);
+      st.used.(u) <- j
+    done;
     put st k rc
   end
   else begin
-    let i = slot st.keys st.counts k in
-    let c = st.counts.(i) in
+    let i = slot st.slots k in
+    let c = st.slots.((2 * i) + 1) in
     if c = 0 then begin
-      (* at most 128 slots of 256 are filled before the table grows *)
-      if Array.length st.keys = 256 then Array.unsafe_set st.used st.filled i;
+      (* at most half the slots are filled before the table grows *)
+      st.used.(st.filled) <- i;
       st.filled <- st.filled + 1;
-      st.keys.(i) <- k;
+      st.slots.(2 * i) <- k;
       (* a cell emptied by [clear_store] is filled again *)
       if Float.Array.length st.cells.(i) = 0 then st.cells.(i) <- Float.Array.make (4 * width) 0.
     end
@@ -103,7 +104,7 @@ let rec put st k rc =
     set 6 rc.ir; set 7 rc.ig; set 8 rc.ib;
     set 9 rc.hmd; set 10 rc.near;
     set 11 rc.tx; set 12 rc.ty; set 13 rc.tz;
-    st.counts.(i) <- c + 1
+    st.slots.((2 * i) + 1) <- c + 1
   end
 
 (* [picture]: the colours the final pass found at the pixels' centres of
@@ -202,22 +203,17 @@ let reset_depth () = Scratch.get depth_key := 0
 
 let reuse_count r depth = match depth with 0 -> r.nearest_count | 1 -> Int.min 2 r.nearest_count | _ -> 1
 
-(* emptied to 256 slots; the arrays kept when they have that many,
-   only the slots filled emptied, their cells kept for the next records
-   there (a sample's own records and a batch's, cleared over and over,
-   seldom fill more than a few) *)
+(* emptied: only the slots filled, the arrays and the slots' cells kept
+   for the records after (a sample's own records and a batch's, cleared
+   over and over, seldom fill more than a few slots; radiosity2.pov at
+   320x240 on 2 domains: a batch's table grew 183 times when emptied
+   back to 256 slots) *)
 let clear_store st =
-  if Array.length st.keys = 256 then
-    for u = 0 to st.filled - 1 do
-      let i = st.used.(u) in
-      st.keys.(i) <- 0;
-      st.counts.(i) <- 0
-    done
-  else begin
-    st.keys <- Array.make 256 0;
-    st.cells <- Array.make 256 no_cell;
-    st.counts <- Array.make 256 0
-  end;
+  for u = 0 to st.filled - 1 do
+    let i = st.used.(u) in
+    st.slots.(2 * i) <- 0;
+    st.slots.((2 * i) + 1) <- 0
+  done;
   st.filled <- 0;
   st.nlevels <- 0;
   st.n <- 0
@@ -392,8 +388,9 @@ let weigh_all (sm : sums) a count (q : Vec3.m) (n : Vec3.m) final0 =
 
 let[@inline] weigh_level sm st l (q : Vec3.m) n final0 =
   let k = Float.Array.unsafe_get inv_side (l + 64) in
-  let i = slot st.keys st.counts (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k))) in
-  weigh_all sm (Array.unsafe_get st.cells i) (Array.unsafe_get st.counts i) q n final0
+  let i = slot st.slots (cell_key l (ifloor (q.mx *. k)) (ifloor (q.my *. k)) (ifloor (q.mz *. k))) in
+  let c = Array.unsafe_get st.slots ((2 * i) + 1) in
+  if c > 0 then weigh_all sm (Array.unsafe_get st.cells i) c q n final0
 
 (* every level of a store in use, in increasing order *)
 let weigh_levels sm st q n final0 =
