@@ -47,19 +47,6 @@ let[@inline] irid_thickness (f : Finish.t) (p : Vec3.m) =
     th *. (1.0 +. (((2.0 *. !t) -. 1.0) *. single f.irid_turb))
   end
 
-(* POV-Ray's iridescence of channel [c] (0 red, 1 green, 2 blue): a thin
-   film of {!irid_thickness} seen at the cosines [cl] to the light and of
-   the ray [d] to the normal [n] shifts the channel by its wavelength (the
-   amount and the wavelengths in single precision, as POV-Ray keeps
-   them) *)
-let irid_k (s : Scene.t) (f : Finish.t) (p : Vec3.m) cl (d : Vec3.m) (n : Vec3.m) c =
-  let t = irid_thickness f p in
-  let ce = Float.abs ((n.mx *. d.mx) +. (n.my *. d.my) +. (n.mz *. d.mz)) in
-  let phase = 2. *. Float.pi *. t *. (Float.abs cl +. ce) in
-  let wl = s.settings.irid_wavelength in
-  let w = single (if c = 0 then wl.r else if c = 1 then wl.g else wl.b) in
-  1. +. (single f.irid *. Float.cos (phase /. w))
-
 (* What one light, or one sample of an area light that shades per
    sample, brings to the point: its colour there (attenuated and
    shadowed), the cosine [nl] of its direction to the normal (as the
@@ -72,10 +59,30 @@ type lightlet = {
   mutable lb : float;
   mutable nl : float;
   mutable icos : float;
+  mutable ir : float;
+  mutable ig : float;
+  mutable ib : float;
+      (** iridescence's factors of the channels (set by [irid_into]) *)
   mutable hl : float;
       (** 1: highlights drawn; 0: not (radiosity's gather rays); a float,
           so that the record stays one of floats, stored flat *)
 }
+
+(* POV-Ray's iridescence: a thin film of {!irid_thickness} seen at the
+   cosines [c.icos] to the light and of the ray [d] to the normal [n]
+   shifts each channel by its wavelength (the amount and the wavelengths
+   in single precision, as POV-Ray keeps them), the factors into [c.ir],
+   [c.ig], [c.ib]. Not inlined: [shade] held six copies of it (with
+   -inline 200), 23.6 KB of code between the lines every light runs. *)
+let[@inline never] irid_into (s : Scene.t) (f : Finish.t) (p : Vec3.m) (d : Vec3.m) (n : Vec3.m) (c : lightlet) =
+  let t = irid_thickness f p in
+  let ce = Float.abs ((n.mx *. d.mx) +. (n.my *. d.my) +. (n.mz *. d.mz)) in
+  let phase = 2. *. Float.pi *. t *. (Float.abs c.icos +. ce) in
+  let wl = s.settings.irid_wavelength in
+  let k = single f.irid in
+  c.ir <- 1. +. (k *. Float.cos (phase /. single wl.r));
+  c.ig <- 1. +. (k *. Float.cos (phase /. single wl.g));
+  c.ib <- 1. +. (k *. Float.cos (phase /. single wl.b))
 
 (* Diffuse and highlights of the lightlet [c] coming along [l] (the unit
    direction toward it), on the back side with [back], added into [out] *)
@@ -84,8 +91,9 @@ let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Ve
   let alpha = k.alpha and lr = c.lr and lg = c.lg and lb = c.lb and nl = c.nl in
   if back then begin
     let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
-    let ir = if f.irid > 0. then irid_k s f p c.icos d n 0 else 1. and ig = if f.irid > 0. then irid_k s f p c.icos d n 1 else 1.
-    and ib = if f.irid > 0. then irid_k s f p c.icos d n 2 else 1. in
+    if f.irid > 0. then irid_into s f p d n c;
+    let ir = if f.irid > 0. then c.ir else 1. and ig = if f.irid > 0. then c.ig else 1.
+    and ib = if f.irid > 0. then c.ib else 1. in
     out.ar <- out.ar +. (ir *. k *. (pc.r *. lr));
     out.ag <- out.ag +. (ig *. k *. (pc.g *. lg));
     out.ab <- out.ab +. (ib *. k *. (pc.b *. lb))
@@ -130,9 +138,10 @@ let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Ve
     end;
     if f.irid > 0. then begin
       (* POV-Ray's iridescence scales this light's diffuse and highlights *)
-      cr := !cr *. irid_k s f p c.icos d n 0;
-      cg := !cg *. irid_k s f p c.icos d n 1;
-      cb := !cb *. irid_k s f p c.icos d n 2
+      irid_into s f p d n c;
+      cr := !cr *. c.ir;
+      cg := !cg *. c.ig;
+      cb := !cb *. c.ib
     end;
     out.ar <- out.ar +. !cr;
     out.ag <- out.ag +. !cg;
@@ -191,7 +200,7 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
 (* Per domain: the lightlet handed to [shade] and a sample's position *)
 type scratch = { ll : lightlet; q : Vec3.m }
 
-let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; hl = 1. }; q = Vec3.m () })
+let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; q = Vec3.m () })
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
