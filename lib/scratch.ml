@@ -30,16 +30,22 @@ type 'a key = { slots : 'a option array; make : unit -> 'a }
 
 let makers : (unit -> unit) list ref = ref []
 
+(* a domain's first [get] (or any, past [max_domains]): out of line, so
+   that the copies of [get] inlined into the per-ray code are a load and
+   a test (the snowman at 400x300, callgrind's cache model: instruction
+   cache misses 2.79 M -> 1.62 M, Whitted.trace_ray 13.0 -> 11.2 KB) *)
+let[@inline never] first k i =
+  if i >= max_domains then k.make ()
+  else begin
+    let v = k.make () in
+    k.slots.(i) <- Some v;
+    v
+  end
+
 let get k =
   let i = Domain.self_index () in
-  if i >= max_domains then k.make ()
-  else
-    match Array.unsafe_get k.slots i with
-    | Some v -> v
-    | None ->
-        let v = k.make () in
-        k.slots.(i) <- Some v;
-        v
+  if i >= max_domains then first k i
+  else match Array.unsafe_get k.slots i with Some v -> v | None -> first k i
 
 let key make =
   let k = { slots = Array.make max_domains None; make } in
