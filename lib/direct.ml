@@ -59,10 +59,10 @@ type lightlet = {
   mutable lb : float;
   mutable nl : float;
   mutable icos : float;
+  (* iridescence's factors of the three channels, set by [irid_into] *)
   mutable ir : float;
   mutable ig : float;
   mutable ib : float;
-      (** iridescence's factors of the channels (set by [irid_into]) *)
   mutable hl : float;
       (** 1: highlights drawn; 0: not (radiosity's gather rays); a float,
           so that the record stays one of floats, stored flat *)

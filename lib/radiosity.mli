@@ -150,7 +150,8 @@ exception Abandoned
 
 val end_sample : outcome -> unit
 (** The calling domain's sample's outcome, into [o] (what [o] held is
-    dropped; nothing is allocated but the list of the sample's records). *)
+    dropped; the sample's lookups change places with [o]'s old buffer,
+    not copied). *)
 
 type batch
 
