@@ -38,58 +38,48 @@ let same_images a b =
 let default_scene () =
   In_channel.with_open_bin (Filename.concat (Helpers.scenes_dir ()) "default.scn") In_channel.input_all
 
+(* [loop ~domains n f] ran [f] on every index once, for each (domains, n) *)
+let every_index_once (loop : domains:int -> Image.par) cases =
+  List.iter
+    (fun (domains, n) ->
+      let seen = Array.init n (fun _ -> Atomic.make 0) in
+      loop ~domains n (fun i -> Atomic.incr seen.(i));
+      Array.iteri
+        (fun i a ->
+          if Atomic.get a <> 1 then
+            Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
+        seen)
+    cases
+
+(* the domains other than the caller's that ran indices of [loop 64 f]
+   (the caller's indices wait, up to 5 s, for another domain to take one) *)
+let other_domains (loop : Image.par) =
+  let ids = Array.make 64 (-1) and me = (Domain.self () :> int) and other = Atomic.make false in
+  let t0 = Unix.gettimeofday () in
+  loop 64 (fun i ->
+      let d = (Domain.self () :> int) in
+      ids.(i) <- d;
+      if d <> me then Atomic.set other true
+      else while not (Atomic.get other) && Unix.gettimeofday () -. t0 < 5. do Domain.cpu_relax () done);
+  List.sort_uniq compare (List.filter (fun d -> d <> me) (Array.to_list ids))
+
 let units =
   [
     Alcotest.test_case "8x8 whitted image equals the computed colours" `Quick computed_8x8;
     Alcotest.test_case "the parallel loop runs every index once, whatever the chunks" `Quick (fun () ->
         (* tasks take up to 4 indices, at least 96 tasks a domain: sizes
            around each chunk boundary *)
-        List.iter
-          (fun (domains, n) ->
-            let seen = Array.init n (fun _ -> Atomic.make 0) in
-            Render.parallel ~domains n (fun i -> Atomic.incr seen.(i));
-            Array.iteri
-              (fun i a ->
-                if Atomic.get a <> 1 then
-                  Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
-              seen)
+        every_index_once Render.parallel
           [ (1, 0); (2, 0); (2, 1); (2, 63); (2, 64); (2, 127); (2, 128); (2, 257); (2, 383); (2, 384);
             (2, 767); (2, 768); (3, 383); (3, 385); (3, 575); (3, 577); (4, 1535); (4, 1537);
             (2, 7500); (4, 1875); (4, 1999) ]);
     Alcotest.test_case "pulled runs every index once, on every domain" `Quick (fun () ->
-        List.iter
-          (fun (domains, n) ->
-            let seen = Array.init n (fun _ -> Atomic.make 0) in
-            Render.pulled ~domains n (fun i -> Atomic.incr seen.(i));
-            Array.iteri
-              (fun i a ->
-                if Atomic.get a <> 1 then
-                  Alcotest.failf "%d domains, %d indices: index %d ran %d times" domains n i (Atomic.get a))
-              seen)
-          [ (1, 0); (1, 5); (2, 0); (2, 1); (2, 2); (2, 3); (3, 2); (2, 128); (4, 1000) ];
-        (* the caller's first index waits (up to 5 s) for another domain
-           to take one: the counter is shared, not split in advance *)
-        let me = (Domain.self () :> int) and other = Atomic.make false and t0 = Unix.gettimeofday () in
-        let by = Array.make 64 (-1) in
-        Render.pulled ~domains:2 64 (fun i ->
-            let d = (Domain.self () :> int) in
-            by.(i) <- d;
-            if d <> me then Atomic.set other true
-            else while not (Atomic.get other) && Unix.gettimeofday () -. t0 < 5. do Domain.cpu_relax () done);
-        Alcotest.(check bool) "another domain took indices" true (Array.exists (fun d -> d <> me) by));
+        every_index_once Render.pulled [ (1, 0); (1, 5); (2, 0); (2, 1); (2, 2); (2, 3); (3, 2); (2, 128); (4, 1000) ];
+        (* while the caller's first index waits, another domain takes
+           indices: the counter is shared, not split in advance *)
+        Alcotest.(check int) "another domain took indices" 1 (List.length (other_domains (Render.pulled ~domains:2))));
     Alcotest.test_case "with_pool: the loops of a command share one pool, torn down after" `Quick (fun () ->
-        (* the domains other than the caller's that ran indices of a loop
-           (the caller's indices wait, up to 5 s, for the worker to take one) *)
-        let workers () =
-          let ids = Array.make 64 (-1) and me = (Domain.self () :> int) and other = Atomic.make false in
-          let t0 = Unix.gettimeofday () in
-          Render.parallel ~domains:2 64 (fun i ->
-              let d = (Domain.self () :> int) in
-              ids.(i) <- d;
-              if d <> me then Atomic.set other true
-              else while not (Atomic.get other) && Unix.gettimeofday () -. t0 < 5. do Domain.cpu_relax () done);
-          List.sort_uniq compare (List.filter (fun d -> d <> me) (Array.to_list ids))
-        in
+        let workers () = other_domains (Render.parallel ~domains:2) in
         let one d = match d with [ d ] -> d | _ -> Alcotest.failf "expected one worker domain, got %d" (List.length d) in
         let a, b = Render.with_pool ~domains:2 (fun () -> (one (workers ()), one (workers ()))) in
         Alcotest.(check int) "the same worker in both loops" a b;
