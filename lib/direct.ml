@@ -91,12 +91,15 @@ let shade s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Ve
   let alpha = k.alpha and lr = c.lr and lg = c.lg and lb = c.lb and nl = c.nl in
   if back then begin
     let k = alpha *. f.diffuse_back *. Float.pow (-.nl) f.brilliance in
-    if f.irid > 0. then irid_into s f p d n c;
-    let ir = if f.irid > 0. then c.ir else 1. and ig = if f.irid > 0. then c.ig else 1.
-    and ib = if f.irid > 0. then c.ib else 1. in
-    out.ar <- out.ar +. (ir *. k *. (pc.r *. lr));
-    out.ag <- out.ag +. (ig *. k *. (pc.g *. lg));
-    out.ab <- out.ab +. (ib *. k *. (pc.b *. lb))
+    if f.irid > 0. then irid_into s f p d n c
+    else begin
+      c.ir <- 1.;
+      c.ig <- 1.;
+      c.ib <- 1.
+    end;
+    out.ar <- out.ar +. (c.ir *. k *. (pc.r *. lr));
+    out.ag <- out.ag +. (c.ig *. k *. (pc.g *. lg));
+    out.ab <- out.ab +. (c.ib *. k *. (pc.b *. lb))
   end
   else begin
     let cr = ref 0. and cg = ref 0. and cb = ref 0. in

@@ -505,10 +505,9 @@ let start_batch b =
   b.bdepths <- 0
 
 (* whether a record taken in the batch weighs in one of the lookups;
-   the lookups not read when none was at a depth with records taken (a
-   sample traced ahead, most of the final pass's, with none taken yet
-   in its batch: its log, written by another domain, is a cache miss
-   every 64 bytes) *)
+   the log not walked when none was at a depth with records taken (most
+   of the final pass's samples, their batch having taken no record yet:
+   one test, not a walk of its log) *)
 let conflicts b o =
   o.depths land b.bdepths <> 0
   &&

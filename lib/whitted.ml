@@ -882,7 +882,6 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
                 incr again;
                 trace ~ahead:false (!lo + k) k out
               end;
-              ahead.(k) <- false;
               Radiosity.commit c b found.(k);
               take (!lo + k) out
             done);
