@@ -197,6 +197,15 @@ let[@inline] fill m (layer : Texture.layer) (inter : Interior.t) (p : Vec3.m) co
     let kx = if refracts then alpha *. kx else kx
     and ky = if refracts then alpha *. ky else ky
     and kz = if refracts then alpha *. kz else kz in
+    (* conserve_energy: the transparent part cut by what the mirror
+       reflects, 1 - its weight per channel, as whitted mode cuts it by
+       1 - reflectivity; where the glass's Fresnel stands for the
+       reflection (a clear refracting surface) nothing is cut. Not below
+       0: POV-Ray takes light away where the reflectivity passes 1, a
+       path's weight stays positive. *)
+    let cr = if f.conserve_energy then clamp01 (1. -. kx) else 1.
+    and cg = if f.conserve_energy then clamp01 (1. -. ky) else 1.
+    and cb = if f.conserve_energy then clamp01 (1. -. kz) else 1. in
     (* [tint f.metallic cos_o pig] for the highlights *)
     let plainh = f.metallic = 0. in
     let hk = if plainh then 0. else Finish.metallic_k f.metallic cos_o in
@@ -217,9 +226,9 @@ let[@inline] fill m (layer : Texture.layer) (inter : Interior.t) (p : Vec3.m) co
     push m k_phong pr pg pb 0. 0. 0. e;
     (* the transparent part *)
     if tr > 0. then begin
-      let tr_r = (pig.filter *. pig.r) +. pig.transmit
-      and tr_g = (pig.filter *. pig.g) +. pig.transmit
-      and tr_b = (pig.filter *. pig.b) +. pig.transmit in
+      let tr_r = cr *. ((pig.filter *. pig.r) +. pig.transmit)
+      and tr_g = cg *. ((pig.filter *. pig.g) +. pig.transmit)
+      and tr_b = cb *. ((pig.filter *. pig.b) +. pig.transmit) in
       let eta = if refracts then if entering then 1. /. inter.ior else inter.ior else 1. in
       push m k_glass tr_r tr_g tr_b tr tr tr eta
     end

@@ -80,6 +80,7 @@ type frame = {
   tn : Vec3.m;  (** the normal turned into that space *)
   amb : Color.acc;  (** the radiosity gathered at [p], once [amb_done] *)
   mutable amb_done : bool;
+  kr : Color.acc;  (** the reflectivity of the layer being shaded *)
 }
 
 let new_frame () =
@@ -87,7 +88,7 @@ let new_frame () =
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
     uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||]; chain = [||]; nchain = 0;
-    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false }
+    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false; kr = Color.acc 0. }
 
 (* a texture map's frame entered (the chain grows once, to the deepest
    nesting met) *)
@@ -440,14 +441,31 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
             k.refl <- k.weight *. Color.acc_max w;
             reflection s f pc n d level media fr rc
           end;
+          (* the layers above filter this layer's own colour, not its
+             reflection: POV-Ray adds each layer's reflected ray as it
+             is (trace.cpp's ComputeLightedTexture; measured: a mirror
+             under an rgbt 0.5 layer reflects in full) *)
+          let lr = w.ar *. lr and lg = w.ag *. lg and lb = w.ab *. lb in
           let lr = if refl_here then lr +. rc.ar else lr
           and lg = if refl_here then lg +. rc.ag else lg
           and lb = if refl_here then lb +. rc.ab else lb in
-          Color.acc_set acc (acc.ar +. (w.ar *. lr)) (acc.ag +. (w.ag *. lg)) (acc.ab +. (w.ab *. lb));
+          Color.acc_set acc (acc.ar +. lr) (acc.ag +. lg) (acc.ab +. lb);
           Color.acc_set w
             (w.ar *. ((pig.filter *. pc.r) +. pig.transmit))
             (w.ag *. ((pig.filter *. pc.g) +. pig.transmit))
             (w.ab *. ((pig.filter *. pc.b) +. pig.transmit));
+          if f.conserve_energy && Finish.has_reflection f then begin
+            (* POV-Ray's conserve_energy: what the layer lets through
+               less what it reflects (1 - reflectivity, at most 1 per
+               channel); its reflectivity also where the reflection is
+               not traced (totally reflected inside) *)
+            if not refl_here then reflectivity f pc n d fr;
+            let kr = fr.kr in
+            Color.acc_set w
+              (w.ar *. Float.min 1. (1. -. kr.ar))
+              (w.ag *. Float.min 1. (1. -. kr.ag))
+              (w.ab *. Float.min 1. (1. -. kr.ab))
+          end;
           if not (Color.acc_is_black w) then layers s d level media fr refl acc w tp rest)
 
 (* POV-Ray's radiosity at the frame's point, into [fr.amb], once per
@@ -565,42 +583,50 @@ and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) keep =
 (* the reflected light into [out] (the frame's [rf]); the reflected ray
    starts at the frame's point along its [rd], weighs [fr.k.refl] times
    the reflection's, and brings its light back into its [rc] *)
+(* POV-Ray's reflectivity of a finish seen along [d] about [n] (trace.cpp's
+   ComputeReflectivity, then the reflection's metallic tint by the
+   pigment [pc]), per channel, into [fr.kr]; the weight its reflected ray
+   is traced with into [fr.k.child], relative to the layer's *)
+and reflectivity (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) (fr : frame) =
+  let rf = f.reflection in
+  let cos_i = -.dot d n in
+  (* kr = rmin + k (rmax - rmin), per channel, in scalars *)
+  let lo = rf.rmin and hi = rf.rmax in
+  let k =
+    if rf.fresnel then
+      let r = fr.k.fres in
+      if r = 1. then 0. else Finish.fresnel r cos_i
+    else Float.pow (1. -. cos_i) rf.falloff
+  in
+  let kr = lo.r +. (k *. (hi.r +. (-1. *. lo.r)))
+  and kg = lo.g +. (k *. (hi.g +. (-1. *. lo.g)))
+  and kb = lo.b +. (k *. (hi.b +. (-1. *. lo.b))) in
+  fr.k.child <-
+    (if rf.fresnel then Float.max kr (Float.max kg kb) else Float.max (max_channel lo) (max_channel hi));
+  let m = rf.rmetallic in
+  let mk = if m = 0. then 0. else Finish.metallic_k m cos_i in
+  Color.acc_set fr.kr (kr *. Finish.tint m mk pc.r) (kg *. Finish.tint m mk pc.g) (kb *. Finish.tint m mk pc.b)
+
 and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) level media (fr : frame) (out : Color.acc) =
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
-  else
-    let rf = f.reflection in
-    let cos_i = -.dot d n in
-    (* kr = rmin + k (rmax - rmin), per channel, in scalars *)
-    let lo = rf.rmin and hi = rf.rmax in
-    let k =
-      if rf.fresnel then
-        let r = fr.k.fres in
-        if r = 1. then 0. else Finish.fresnel r cos_i
-      else Float.pow (1. -. cos_i) rf.falloff
-    in
-    let kr = lo.r +. (k *. (hi.r +. (-1. *. lo.r)))
-    and kg = lo.g +. (k *. (hi.g +. (-1. *. lo.g)))
-    and kb = lo.b +. (k *. (hi.b +. (-1. *. lo.b))) in
-    let w =
-      if rf.fresnel then Float.max kr (Float.max kg kb)
-      else Float.max (max_channel lo) (max_channel hi)
-    in
-    let m = rf.rmetallic in
-    let mk = if m = 0. then 0. else Finish.metallic_k m cos_i in
-    let kr = kr *. Finish.tint m mk pc.r and kg = kg *. Finish.tint m mk pc.g and kb = kb *. Finish.tint m mk pc.b in
+  else begin
+    reflectivity f pc n d fr;
+    let kr = fr.kr.ar and kg = fr.kr.ag and kb = fr.kr.ab in
     if kr = 0. && kg = 0. && kb = 0. then Color.acc_set out 0. 0. 0.
     else begin
+      let rf = f.reflection in
       let rd = fr.rd and rc = fr.rc in
       mirror d n fr.n0 rd;
-      fr.k.child <- fr.k.refl *. w;
+      fr.k.child <- fr.k.refl *. fr.k.child;
       (* no_reflection objects are left out from here on *)
       trace_ray (Scene.reflected s) Ray.epsilon infinity fr.p rd (level + 1) fr.k media rc;
-      if f.irid > 0. then irid s f fr.p cos_i (Float.abs (dot rd n)) rc;
+      if f.irid > 0. then irid s f fr.p (-.dot d n) (Float.abs (dot rd n)) rc;
       if rf.exponent = 1. then Color.acc_set out (kr *. rc.ar) (kg *. rc.ag) (kb *. rc.ab)
       else
         let e = 1. /. rf.exponent in
         Color.acc_set out (kr *. Float.pow rc.ar e) (kg *. Float.pow rc.ag e) (kb *. Float.pow rc.ab e)
     end
+  end
 
 (* POV-Ray starts camera rays inside every object that contains the
    camera (the last one in the scene first). Cached per scene and origin:

@@ -81,6 +81,32 @@ let glass_furnace () =
   Alcotest.(check (float 0.01)) "mean" 1. (mean img);
   all_within "glass" img 1. 0.1
 
+(* conserve_energy: a clear sphere (rgbt 1) that also reflects 0.5
+   passes the other half under a uniform sky of 1 (2.5 without it); a
+   refracting one keeps 1 through its Fresnel split, whose reflection
+   stands for the finish's *)
+let conserve_energy () =
+  (* lobes are chosen at random: the 6x6 central pixels' mean *)
+  let centre img =
+    let s = ref 0. in
+    for y = 3 to 8 do
+      for x = 3 to 8 do
+        let r, _, _ = Helpers.pixel img x y in
+        s := !s +. r
+      done
+    done;
+    !s /. 36.
+  in
+  let clear fin = furnace ("diffuse 0 " ^ fin ^ " } pigment { rgbt 1 } interior { ior 1") in
+  let on text = centre (render ~w:12 ~h:12 ~spp:256 ~depth:32 text) in
+  Alcotest.(check (float 0.02)) "reflection 0.5, conserved" 1. (on (clear "reflection 0.5 conserve_energy"));
+  (* without it light is made: 0.5 reflected, and all of it let in,
+     where the far side lets all out and reflects 0.5 back in, again
+     and again: 0.5 + 1 / (1 - 0.5) *)
+  Alcotest.(check (float 0.05)) "not conserved" 2.5 (on (clear "reflection 0.5"));
+  Alcotest.(check (float 0.02)) "refracting, conserved" 1.
+    (on (furnace "diffuse 0 reflection 0.5 conserve_energy } pigment { rgbt 1 } interior { ior 1.5"))
+
 (* A white diffuse sphere inside a clear hollow shell (ior 1) under a sky
    of radiance 1: every pixel 1. A path passing straight through the
    shell keeps the diffuse vertex's MIS weight; counted as a specular
@@ -693,6 +719,7 @@ let tests =
       Alcotest.test_case "white furnace: albedo 1 -> 1, 0.5 -> 0.5, diffuse+mirror mix" `Quick
         white_furnace;
       Alcotest.test_case "glass furnace: a clear dielectric keeps radiance 1" `Quick glass_furnace;
+      Alcotest.test_case "conserve_energy: a clear mirror sphere keeps radiance 1" `Quick conserve_energy;
       Alcotest.test_case "a clear (ior 1) shell: the sky and a sphere light counted once" `Quick clear_shell;
       Alcotest.test_case "enclosure a=0.5 Le=0.5 -> 1" `Quick (enclosure 0.5 0.5 1. 0.02);
       Alcotest.test_case "enclosure a=0.9 Le=0.5 -> 5" `Quick (enclosure 0.9 0.5 5. 0.15);
