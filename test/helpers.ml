@@ -36,11 +36,28 @@ let run args =
   Sys.remove err;
   (code, o, e)
 
-let temp_dir () =
-  let d = Filename.temp_file "camlray" ".d" in
-  Sys.remove d;
-  Sys.mkdir d 0o755;
+(* A path and what is under it removed (a symbolic link itself, not
+   what it points to) *)
+let rec remove_tree p =
+  match (Unix.lstat p).st_kind with
+  | Unix.S_DIR ->
+      Array.iter (fun e -> remove_tree (Filename.concat p e)) (Sys.readdir p);
+      Unix.rmdir p
+  | _ -> Sys.remove p
+  | exception Unix.Unix_error (Unix.ENOENT, _, _) -> ()
+
+(* The folders [temp_dir] made, removed with their contents when the
+   test program ends, but for those a failure message points to *)
+let made = ref []
+let () = at_exit (fun () -> List.iter (fun d -> try remove_tree d with Sys_error _ | Unix.Unix_error _ -> ()) !made)
+
+let temp_dir ?(prefix = "camlray") () =
+  let d = Filename.temp_dir prefix ".d" in
+  made := d :: !made;
   d
+
+(* [d] left in place for whoever reads the failure that names it *)
+let keep d = made := List.filter (fun e -> e <> d) !made
 
 let write_file path text = Out_channel.with_open_bin path (fun oc -> output_string oc text)
 

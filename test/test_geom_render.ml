@@ -152,13 +152,15 @@ let compare_with_pov dir name src =
          (Filename.quote pov) (Filename.quote theirs));
   let a = Image.read ours and b = Image.read theirs in
   let frac = within2 a b and psnr = Metrics.psnr a b in
-  if frac < 0.99 || psnr < 35. then
+  if frac < 0.99 || psnr < 35. then begin
+    Helpers.keep dir;
     Alcotest.failf "%s: %.2f%% of pixels within 2/255, PSNR %.1f dB (files in %s)" name (100. *. frac) psnr dir
+  end
 
 let case (name, src) =
   Alcotest.test_case ("camlray = POV-Ray: " ^ name) `Slow (fun () ->
       if not (have_povray ()) then Alcotest.skip ()
-      else compare_with_pov (Filename.temp_dir "camlray-geom" "") name src)
+      else compare_with_pov (Helpers.temp_dir ~prefix:"camlray-geom" ()) name src)
 
 (* obj2pov: a generated OBJ (quads, a group with normals, negative
    indices) converted and rendered by both. *)
@@ -207,7 +209,7 @@ object { OBJ_pyramid pigment { rgb <0.3, 0.6, 0.9> } translate <-3, 0, 2> }
 
 let obj2pov =
   Alcotest.test_case "obj2pov output renders the same in camlray and POV-Ray" `Slow (fun () ->
-      let dir = Filename.temp_dir "camlray-obj" "" in
+      let dir = Helpers.temp_dir ~prefix:"camlray-obj" () in
       let f name text = Out_channel.with_open_bin (Filename.concat dir name) (fun oc -> output_string oc text) in
       f "t.obj" obj;
       f "bad.obj" "v 0 0 0\nv 1 0 0\nf 1 2 3\n";
