@@ -8,7 +8,15 @@ let max_depth = 12
 (* where along the ray the sample being read is, the interval being
    sampled and its split threshold (an all-float record: the floats are
    not boxed; passed as arguments they would be) *)
-type at = { mutable x : float; mutable lo : float; mutable hi : float; mutable thr : float }
+type at = {
+  mutable x : float;
+  mutable lo : float;
+  mutable hi : float;
+  mutable thr : float;
+  mutable aa : float;
+  mutable cos : float;  (** the cosine the phases are read at *)
+  mutable phases : float;  (** their sum *)
+}
 
 type st = {
   buf : Float.Array.t;  (** samples: 0 and 1 a stretch's ends, 2 + k a middle at depth k *)
@@ -18,6 +26,9 @@ type st = {
   dens : Color.acc;
   ext : Color.acc;
   lit : Color.acc;  (** the light scattered at a sample *)
+  sc : Color.acc;  (** the media's scattering there, summed *)
+  mutable scatters : bool;  (** some medium of the sample scatters *)
+  mutable count : int;  (** how many media the ray is in *)
   sum : Color.acc;  (** a stretch's mean of the second triple *)
   sumx : Color.acc;  (** its mean extinction *)
   od : Color.acc;  (** the optical depth of the ray so far *)
@@ -34,18 +45,43 @@ let key =
   Scratch.key (fun () ->
       { buf = Float.Array.make (slot * (max_depth + 3)) 0.; r = Ray.scratch (); p = Vec3.m ();
         pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0.; lit = Color.acc 0.;
+        sc = Color.acc 0.; scatters = false; count = 0;
         sum = Color.acc 0.; sumx = Color.acc 0.; od = Color.acc 0.; got = Color.acc 0.;
         lit_spans = Lit.make (); lit_now = false;
-        at = { x = 0.; lo = 0.; hi = 0.; thr = 0. }; stack = Float.Array.make (3 * (max_depth + 2)) 0. })
+        at = { x = 0.; lo = 0.; hi = 0.; thr = 0.; aa = 0.; cos = 0.; phases = 0. }; stack = Float.Array.make (3 * (max_depth + 2)) 0. })
+
+(* the phases of all the media the ray is in at the cosine [a.cos],
+   summed into [a.phases]; a medium that does not scatter counts as
+   isotropic (POV-Ray's default type) *)
+let rec phases (a : at) = function
+  | [] -> ()
+  | (i : Interior.t) :: r ->
+      phases_of a i.media;
+      phases a r
+
+and phases_of a = function
+  | [] -> ()
+  | (m : Media.t) :: ms ->
+      (match m.scattering with
+      | Some sc -> a.phases <- a.phases +. Media.phase sc a.cos
+      | None -> a.phases <- a.phases +. 1.);
+      phases_of a ms
+
+let rec count = function [] -> 0 | (i : Interior.t) :: r -> List.length i.media + count r
 
 (* the light of every light that lights the ray at [p] (media-interacting
-   and not shadowless: see {!Lit.cut}), each weighted by the phase of [sc]
-   toward the eye, into [st.lit] *)
-let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
+   and not shadowless: see {!Lit.cut}), each weighted by the phase toward
+   the eye, into [st.lit]. POV-Ray 3.7 (media.cpp's
+   ComputeMediaScatteringAttenuation) weighs the media's summed
+   scattering by the mean of all their phases, not each medium's by its
+   own: so does this (measured: Mie hazy and Rayleigh media in one
+   interior) *)
+let in_scatter (s : Scene.t) st (inside : Interior.t list) (p : Vec3.m) =
   let lit = st.lit and r = st.r in
   Color.acc_set lit 0. 0. 0.;
   let w = Shadow.walk () in
   let l = Shadow.toward w in
+  let n = float_of_int st.count in
   for i = 0 to Array.length s.lights - 1 do
     let light = s.lights.(i) in
     (* POV-Ray reads a light only inside its lit part of the ray *)
@@ -58,8 +94,10 @@ let in_scatter (s : Scene.t) st (sc : Media.scattering) (p : Vec3.m) =
         Shadow.light s w light p;
         let a = Shadow.passed w in
         (* the light travels along -l, the eye is back along the ray *)
-        let c = (l.lx *. r.dx) +. (l.ly *. r.dy) +. (l.lz *. r.dz) in
-        let k = att *. Media.phase sc c in
+        st.at.cos <- (l.lx *. r.dx) +. (l.ly *. r.dy) +. (l.lz *. r.dz);
+        st.at.phases <- 0.;
+        phases st.at inside;
+        let k = att *. (st.at.phases /. n) in
         Color.acc_set lit
           (lit.ar +. (k *. a.ar *. light.color.r))
           (lit.ag +. (k *. a.ag *. light.color.g))
@@ -79,7 +117,7 @@ let[@inline] bump b i v = Float.Array.unsafe_set b i (Float.Array.unsafe_get b i
 
 (* medium [m]'s share of the sample at [p] (the ray's point), added to the
    buffer's slot at [o] *)
-let medium s st (m : Media.t) p o =
+let medium st (m : Media.t) p o =
   let b = st.buf in
   Color.acc_set st.ext 0. 0. 0.;
   Media.add_extinction m p st.pig st.dens st.ext;
@@ -96,29 +134,25 @@ let medium s st (m : Media.t) p o =
   match m.scattering with
   | None -> ()
   | Some sc ->
-      if st.lit_now then in_scatter s st sc p else Color.acc_set st.lit 0. 0. 0.;
-      let lr = dr *. sc.color.r *. st.lit.ar
-      and lg = dg *. sc.color.g *. st.lit.ag
-      and lb = db *. sc.color.b *. st.lit.ab in
-      bump b (o + 3) lr;
-      bump b (o + 4) lg;
-      bump b (o + 5) lb
+      st.scatters <- true;
+      let t = st.sc in
+      Color.acc_set t (t.ar +. (dr *. sc.color.r)) (t.ag +. (dg *. sc.color.g)) (t.ab +. (db *. sc.color.b))
 
 (* every medium of the interiors, in order (loops, not closures: a
    sample is taken thousands of times a ray) *)
-let rec media_of s st (ms : Media.t list) p o =
+let rec media_of st (ms : Media.t list) p o =
   match ms with
   | [] -> ()
   | m :: rest ->
-      medium s st m p o;
-      media_of s st rest p o
+      medium st m p o;
+      media_of st rest p o
 
-let rec interiors s st (inside : Interior.t list) p o =
+let rec interiors st (inside : Interior.t list) p o =
   match inside with
   | [] -> ()
   | i :: rest ->
-      media_of s st i.media p o;
-      interiors s st rest p o
+      media_of st i.media p o;
+      interiors st rest p o
 
 (* the sample at [st.at.x] along the ray into slot [k] *)
 let sample s st (inside : Interior.t list) k =
@@ -129,7 +163,16 @@ let sample s st (inside : Interior.t list) k =
   for j = 0 to slot - 1 do
     Float.Array.unsafe_set b (o + j) 0.
   done;
-  interiors s st inside p o
+  Color.acc_set st.sc 0. 0. 0.;
+  st.scatters <- false;
+  interiors st inside p o;
+  if st.scatters && st.lit_now then begin
+    in_scatter s st inside p;
+    let t = st.sc and lit = st.lit in
+    bump b (o + 3) (t.ar *. lit.ar);
+    bump b (o + 4) (t.ag *. lit.ag);
+    bump b (o + 5) (t.ab *. lit.ab)
+  end
 
 (* POV-Ray's test for splitting a stretch: the colours of two samples
    (emitted plus scattered light, over the whole interval: [thr] comes
@@ -200,14 +243,31 @@ let rec first_media = function
   | (i : Interior.t) :: r -> ( match i.media with [] -> first_media r | ms -> ms)
 
 (* POV-Ray samples with the settings of the medium with the most
-   intervals (the first of them) *)
-let rec most_intervals (best : Media.t) = function
-  | [] -> best
-  | (i : Interior.t) :: r -> most_intervals (pick best i.media) r
+   intervals, the first of them in its order: the interiors as the ray
+   entered them (the list holds the last entered first), each one's media
+   as written; [none] below every medium *)
+let none = { Media.default with intervals = min_int }
+
+let rec most_intervals = function
+  | [] -> none
+  | (i : Interior.t) :: older -> pick (most_intervals older) i.media
 
 and pick best = function
   | [] -> best
   | (m : Media.t) :: ms -> pick (if m.intervals > best.intervals then m else best) ms
+
+(* and the smallest aa_threshold of them all, into [a.aa] *)
+let rec least_threshold (a : at) = function
+  | [] -> ()
+  | (i : Interior.t) :: r ->
+      least_in a i.media;
+      least_threshold a r
+
+and least_in a = function
+  | [] -> ()
+  | (m : Media.t) :: ms ->
+      if m.aa_threshold < a.aa then a.aa <- m.aa_threshold;
+      least_in a ms
 
 (* a stretch's light, dimmed by the depth before it *)
 let gather st =
@@ -253,7 +313,7 @@ let interval s st inside (m0 : Media.t) =
     let step = ds /. float_of_int (n + 1) in
     st.at.x <- a;
     sample s st inside 0;
-    st.at.thr <- m0.aa_threshold /. ds;
+    st.at.thr <- st.at.aa /. ds;
     for i = 0 to n - 1 do
       let x = a +. (step *. float_of_int i) in
       (* ends alternate between slots 0 and 1 *)
@@ -320,9 +380,12 @@ let intervals s st inside (m0 : Media.t) =
 let[@inline] apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
   match first_media inside with
   | [] -> ()
-  | m0 :: _ when Float.is_finite t ->
-      let m0 = most_intervals m0 inside in
+  | _ :: _ when Float.is_finite t ->
+      let m0 = most_intervals inside in
       let st = Scratch.get key in
+      st.at.aa <- infinity;
+      least_threshold st.at inside;
+      st.count <- count inside;
       let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
       let r = st.r in
       r.ox <- o.mx; r.oy <- o.my; r.oz <- o.mz;
