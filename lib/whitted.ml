@@ -580,9 +580,6 @@ and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) keep =
     end
   end
 
-(* the reflected light into [out] (the frame's [rf]); the reflected ray
-   starts at the frame's point along its [rd], weighs [fr.k.refl] times
-   the reflection's, and brings its light back into its [rc] *)
 (* POV-Ray's reflectivity of a finish seen along [d] about [n] (trace.cpp's
    ComputeReflectivity, then the reflection's metallic tint by the
    pigment [pc]), per channel, into [fr.kr]; the weight its reflected ray
@@ -607,6 +604,9 @@ and reflectivity (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) (fr
   let mk = if m = 0. then 0. else Finish.metallic_k m cos_i in
   Color.acc_set fr.kr (kr *. Finish.tint m mk pc.r) (kg *. Finish.tint m mk pc.g) (kb *. Finish.tint m mk pc.b)
 
+(* the reflected light into [out] (the frame's [rf]); the reflected ray
+   starts at the frame's point along its [rd], weighs [fr.k.refl] times
+   the reflection's, and brings its light back into its [rc] *)
 and reflection s (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) level media (fr : frame) (out : Color.acc) =
   if not (Finish.has_reflection f) then Color.acc_set out 0. 0. 0.
   else begin
