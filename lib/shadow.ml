@@ -59,6 +59,9 @@ type walk = {
   mutable inside : Interior.t array;
       (** the interiors the ray is in along the stretch being walked *)
   mutable ni : int;
+  mutable ending : Interior.t;
+      (** the interior of the object whose crossing ends the stretch
+          being walked ([Interior.default] toward the light) *)
   inside_f : Object.found;  (** a point tested for being inside *)
   ray : Ray.scratch;
   l : Light.dir;
@@ -95,7 +98,7 @@ type walk = {
 let shadow_key =
   Scratch.key (fun () ->
       { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0;
-        order = [||]; inside = [||]; ni = 0; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
+        order = [||]; inside = [||]; ni = 0; ending = Interior.default; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
         ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
@@ -210,23 +213,27 @@ let toggle (w : walk) (i : Interior.t) =
   end
 
 (* What a stretch [w.sp] of the shadow ray takes from the light: the
-   fade and the media of the interiors it runs in, and, in the open
-   (inside hollow objects only), the fogs (the ends are read from the
-   walk: float arguments would be boxed) *)
+   media of the interiors it runs in, the fade of the object whose
+   crossing ends it when the ray leaves that object there (POV-Ray's
+   ComputeShadowTexture: a ray leaving a solid through a clipped-away
+   hole, or an outer solid through an inner one's surface, is not faded
+   by it there), and, in the open (inside hollow objects only), the fogs
+   (the ends are read from the walk: float arguments would be boxed) *)
 let stretch (w : walk) =
   let a = w.acc and r = w.ray in
   let lo = w.sp.lo and hi = w.sp.hi in
+  let e = w.ending in
+  if Interior.fades_light e && index_in w e >= 0 then begin
+    let d = hi -. lo and fc = e.fade_color in
+    Color.acc_set a
+      (a.ar *. Interior.fade_channel e fc.r d)
+      (a.ag *. Interior.fade_channel e fc.g d)
+      (a.ab *. Interior.fade_channel e fc.b d)
+  end;
   let inner = ref true in
   for j = 0 to w.ni - 1 do
     let i = w.inside.(j) in
     if not i.hollow then inner := false;
-    if Interior.fades_light i then begin
-      let d = hi -. lo and fc = i.fade_color in
-      Color.acc_set a
-        (a.ar *. Interior.fade_channel i fc.r d)
-        (a.ag *. Interior.fade_channel i fc.g d)
-        (a.ab *. Interior.fade_channel i fc.b d)
-    end;
     (* the interior's media dim the light (POV-Ray 3.7 does so whatever
        the light's media_attenuation) *)
     if i.media <> [] then Media.transmittance_into i.media r w.sp a
@@ -268,6 +275,7 @@ let stretches (w : walk) =
     if hi > !lo && not (Color.acc_is_black w.acc) then begin
       w.sp.lo <- !lo;
       w.sp.hi <- hi;
+      w.ending <- (if a = n then Interior.default else w.fobjs.(ord.(a)).interior);
       stretch w
     end;
     if a < n then toggle w w.fobjs.(ord.(a)).interior;

@@ -258,13 +258,18 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
       fr.has_uv <- obj.uv;
       if obj.uv then Object.uv_into obj p h fr.uv;
       (* POV-Ray fades what comes through the far side of a medium, not
-         the far surface's own shading *)
+         the far surface's own shading, and only where the ray leaves
+         the object it hits (its interior is one the ray is in), by that
+         interior's fade over the whole way here (trace.cpp's
+         ComputeLightedTexture): a ray that leaves a solid through a
+         clipped-away hole is not faded by it *)
       let fade = fr.fade in
-      (match media with
-      | (i : Interior.t) :: _ when i.fade_distance <> 0. ->
-          let c = i.fade_color in
-          Color.acc_set fade (Interior.fade_channel i c.r t) (Interior.fade_channel i c.g t) (Interior.fade_channel i c.b t)
-      | _ -> Color.acc_set fade 1. 1. 1.);
+      let i = obj.interior in
+      if i.fade_distance <> 0. && List.memq i media then begin
+        let c = i.fade_color in
+        Color.acc_set fade (Interior.fade_channel i c.r t) (Interior.fade_channel i c.g t) (Interior.fade_channel i c.b t)
+      end
+      else Color.acc_set fade 1. 1. 1.;
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
       if s.atmosphere <> [] || s.rainbows <> [] then aired_hit s o d p media out

@@ -946,6 +946,38 @@ let media () =
 (* Scene-level (atmospheric) media: the camera at the origin looks along
    +z at a plane z = 3 whose inside is beyond it (the camera inside a
    plane is inside a solid: no atmosphere there) *)
+(* Interior fade, as POV-Ray 3.7 applies it: where a ray leaves the
+   object it hits, by that object's fade over the way from the last
+   surface (an outer solid's fade only over the stretch that ends at its
+   own surface, not where the ray enters an inner solid); the same for
+   shadow rays. Values measured with povray 3.7 (1x1, 16-bit PNG) *)
+let fade_rules () =
+  let back = "background { rgb <.2,.4,.6> }\nplane { -z, -5 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n" in
+  color ~eps:2e-5 "nested, seen" (0.03922, 0.17647, 0.01961)
+    (pixel
+       (back
+       ^ "box { <-1,-1,1>, <1,1,4> pigment { rgbf 1 } finish { ambient 0 diffuse 0 } \
+          interior { fade_distance 0.5 fade_power 1 fade_color <0.5,0,0> } }\n\
+          box { <-0.5,-0.5,2>, <0.5,0.5,3> pigment { rgbf 1 } finish { ambient 0 diffuse 0 } \
+          interior { fade_distance 0.25 fade_power 2 fade_color <0,0.5,0> } }"));
+  let lit = "camera { location <0,0,-1> look_at <0,0,0> angle 10 }\nlight_source { <0, 0, -10>, rgb 1 }\n" in
+  color ~eps:2e-5 "nested, in a shadow ray and seen" (0.01875, 0.045, 0.005)
+    (pixel
+       (lit
+       ^ "plane { -z, -10 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+          box { <-5,-5,1>, <5,5,6> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } \
+          interior { fade_distance 1 fade_power 1 fade_color <0.5,0,0> } }\n\
+          box { <-4,-4,2>, <4,4,3> pigment { rgbt 1 } finish { ambient 0 diffuse 0 } \
+          interior { fade_distance 0.5 fade_power 2 fade_color <0,0.5,0> } }"));
+  (* an open hemisphere (clipped_by): the ray leaves it through the hole,
+     unfaded, seen and as a shadow ray *)
+  let bowl = "sphere { <0,0,3>, 2 clipped_by { plane { z, 3 } } pigment { rgbf 1 } finish { ambient 0 diffuse 0 } \
+              interior { fade_distance 0.5 fade_power 1 fade_color <0.2,0,0> } }\n" in
+  gray "clipped, seen" 1.
+    (pixel ("background { rgb <.2,.4,.6> }\nbox { <-0.5,-0.5,4>, <0.5,0.5,4.5> pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n" ^ bowl));
+  color ~eps:2e-5 "clipped, lit through it" (0.31429, 0.14285, 0.14285)
+    (pixel (lit ^ "disc { <0,0,4>, <0,0,-1>, 0.5 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n" ^ bowl))
+
 (* Several media along a ray, as POV-Ray 3.7 mixes them (media.cpp):
    their scattering summed and weighed by the mean of all their phases
    (a medium that does not scatter counts as isotropic), not each by its
@@ -1234,6 +1266,7 @@ let tests =
       Alcotest.test_case "media" `Quick media;
       Alcotest.test_case "atmospheric media" `Quick atmosphere;
       Alcotest.test_case "several media: POV-Ray's mixing and sampling rules" `Quick mixed_media;
+      Alcotest.test_case "interior fade in nested and clipped solids (POV-Ray's values)" `Quick fade_rules;
       Alcotest.test_case "declared media and densities" `Quick declared_media;
       Alcotest.test_case "pigment and finish edit what they are written over" `Quick edits;
       Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
