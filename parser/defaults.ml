@@ -6,6 +6,7 @@ let first = ref None
 let items_seen = ref false
 let tex = ref (Texture.layer Pigment.black Finish.default)
 let tex_set = ref false
+let template : Normal.t option ref = ref None
 let charset_ = ref `Ascii
 let noise_explicit = ref false
 let warned : (string, unit) Hashtbl.t = Hashtbl.create 4
@@ -17,6 +18,7 @@ let reset () =
   items_seen := false;
   tex := Texture.layer Pigment.black Finish.default;
   tex_set := false;
+  template := None;
   charset_ := `Ascii;
   noise_explicit := false;
   Pattern.scene_noise_generator := 2;
@@ -49,6 +51,8 @@ let texture_set () = !tex_set
 let set_finish f = tex_set := true; tex := { !tex with finish = f }
 let set_pigment p = tex_set := true; tex := { !tex with pigment = p }
 let set_normal n = tex_set := true; tex := { !tex with normal = n }
+let normal_template () = !template
+let set_normal_template n = template := n
 
 let finder : (Loc.t -> string -> string option) ref = ref (fun _ _ -> None)
 let set_finder f = finder := f

@@ -48,6 +48,14 @@ val set_finish : Camlray.Finish.t -> unit
 val set_pigment : Camlray.Pigment.t -> unit
 val set_normal : Camlray.Normal.t option -> unit
 
+val normal_template : unit -> Camlray.Normal.t option
+(** What a normal written from here on starts from (POV-Ray copies the
+    [#default] normal into each new one): the [#default] normal, or,
+    where that gave only modifiers ([bump_size 1.5], a [scale]), a normal
+    carrying them; [None] before any. *)
+
+val set_normal_template : Camlray.Normal.t option -> unit
+
 val set_finder : (Loc.t -> string -> string option) -> unit
 (** How the parse finds a file a scene names outside [#include] (a
     font): the include path, within the reads the scene is allowed. *)

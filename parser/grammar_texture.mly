@@ -427,7 +427,16 @@ image_file_kind:
   | t = transformation { fun (tex, i) -> (Option.map (Texture.transform t) tex, i) }
 
 %public default_item:
-  | NORMAL LBRACE n = normal_body RBRACE { fun () -> Defaults.set_normal n }
+  (* a normal of modifiers alone perturbs nothing, but the normals
+     written after it start from them *)
+  | NORMAL LBRACE e = normal_edit RBRACE
+      { let n = e None in
+        let template =
+          match n with Some _ -> n | None -> e (Some (Texdesc.normal (Texdesc.of_pattern Pattern.Bozo)))
+        in
+        fun () ->
+          Defaults.set_normal n;
+          Defaults.set_normal_template template }
 
 %public color_map_body:
   | m = COLOR_MAP_ID { m }
@@ -572,17 +581,17 @@ image_file_kind:
         let n = Some (Texdesc.normal p) in
         fun _ -> n }
   | k = block_kind a = ioption(bump_size) ms = list(normal_mod)
-      { let p = Texdesc.of_pattern k in
+      { let p = Texdesc.of_normal_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
   (* checker, hexagon, brick with a list of normals, one a cell *)
   | k = block_kind cs = normal_cells ms = list(normal_mod)
-      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_pattern k) with ncells = cs })) in
+      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_normal_pattern k) with ncells = cs })) in
         fun _ -> n }
   | n = NORMAL_ID ms = list(normal_mod) { let n = moved ms n in fun _ -> n }
   | k = pattern_kind a = ioption(bump_size) ms = list(normal_mod)
-      { let p = Texdesc.of_pattern k in
+      { let p = Texdesc.of_normal_pattern k in
         let p = match a with Some a -> { p with Texdesc.amount = fl $loc(a) a } | None -> p in
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
@@ -604,7 +613,7 @@ image_file_kind:
         let n = Some (Texdesc.normal (Texdesc.apply ms p)) in
         fun _ -> n }
   | OBJECT LBRACE k = pattern_object cs = normal_cells RBRACE ms = list(normal_mod)
-      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_pattern k) with ncells = cs })) in
+      { let n = Some (Texdesc.normal (Texdesc.apply ms { (Texdesc.of_normal_pattern k) with ncells = cs })) in
         fun _ -> n }
   | OBJECT LBRACE pattern_object RBRACE
       { Diag.error (loc $loc) "the object pattern in a normal needs its two normals (object { OBJECT normal { ... } normal { ... } })" }

@@ -39,6 +39,23 @@ let of_pigment (p : Pigment.t) =
   | _ -> { empty with base = p }
 
 let of_pattern k = { empty with pattern = Some (Pattern.make k) }
+
+(* A normal's pattern starts as a copy of the #default normal, as
+   POV-Ray's parser makes it (Parse_Tnormal copies the default): its
+   amount, transformations, turbulence and warps, the pattern replaced
+   (measured: under #default { normal { bump_size 1.5 scale 3 } },
+   normal { marble } renders as marble 1.5 scale 3; a turbulence is
+   kept the same way) *)
+let of_normal_pattern k =
+  let p = of_pattern k in
+  match Defaults.normal_template () with
+  | None -> p
+  | Some (d : Normal.t) ->
+      let t = Pattern.make k in
+      { p with
+        amount = d.amount;
+        xform = d.xform;
+        pattern = Some { t with turbulence = d.pattern.turbulence; warps = d.pattern.warps } }
 let average () = { empty with average = true }
 
 (* the pattern carries the warps and turbulence written; its kind is

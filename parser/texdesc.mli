@@ -35,6 +35,10 @@ type modifier = pat -> pat
 
 val of_pigment : Pigment.t -> pat
 val of_pattern : Pattern.kind -> pat
+
+val of_normal_pattern : Pattern.kind -> pat
+(** A normal's pattern, starting from the [#default] normal (its amount,
+    transformations, turbulence and warps), as POV-Ray copies it. *)
 val average : unit -> pat
 
 val facets : unit -> pat

@@ -221,7 +221,18 @@ let default_texture () =
   gray "inherited through a union" 0.275 (pixel (d ^ "union { plane { z, 1 } sphere { <0,0,5>, 1 } }"));
   gray "a parent's texture wins" 1.
     (pixel (d ^ "union { plane { z, 1 } pigment { rgb 1 } finish { ambient 1 } }"));
-  gray "before #default" 0. (pixel ("plane { z, 1 }\nsphere { <0,0,-10>, 1 }\n" ^ d))
+  gray "before #default" 0. (pixel ("plane { z, 1 }\nsphere { <0,0,-10>, 1 }\n" ^ d));
+  (* a normal written after #default { normal { ... } } starts from the
+     default normal, as POV-Ray copies it: its amount, transformations and
+     turbulence (values measured with povray 3.7) *)
+  let bumpy d =
+    pixel
+      ("light_source { <5, 5, -10>, rgb 1 }\n#default { " ^ d ^ " finish { phong 0.8 phong_size 20 } }\n\
+        plane { z, 1 pigment { rgb 1 } normal { marble turbulence 0.5 scale 0.7 } }")
+  in
+  gray ~eps:2e-5 "no default normal" 0.64176 (bumpy "");
+  gray ~eps:2e-5 "default bump_size" 0.67512 (bumpy "normal { bump_size 1.5 }");
+  gray ~eps:2e-5 "default bump_size and scale" 0.58384 (bumpy "normal { bump_size 1.5 scale 3 }")
 
 (* The slope of a normal pattern, as povray 3.7 measures it: a plane lit
    head-on with normal { gradient x, 1 }: 0.99124 on the ramps (tilt 2/15),
