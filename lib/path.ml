@@ -83,6 +83,7 @@ type state = {
   fat : Color.acc;  (** the fogs' attenuation over a stretch *)
   fadd : Color.acc;  (** and their colour *)
   so : Vec3.m;  (** where a shadow ray's stretch starts *)
+  sn : Vec3.m;  (** the normal where a shadow ray crosses a surface *)
   md : Medium.t;
 }
 
@@ -98,7 +99,7 @@ let state_key =
         sampler = Sampler.create ~seed:0 ~pixel:0 ~sample:0; set = [||]; ph = Hit.create infinity;
         pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); inside = []; sstart = [];
         cross_t = Float.Array.make 16 0.; cross_o = [||]; order = Array.make 16 0; ncross = 0;
-        fat = c (); fadd = c (); so = v (); md = Medium.get () })
+        fat = c (); fadd = c (); so = v (); sn = v (); md = Medium.get () })
 
 let dot = Vec3.dot_m
 
@@ -108,18 +109,31 @@ let dot = Vec3.dot_m
    is found by the paths, not by shadow rays). [blocks o]: every crossing
    of [o] blocks (one is enough to find). A crossing's filter multiplies
    [tr] of the domain's state (the shadow ray's there too). *)
+let opaque_top (tex : Texture.t) =
+  match tex with [] -> true | (layer : Texture.layer) :: _ -> Pigment.opaque layer.pigment
+
 let blocks (o : Object.t) =
-  o.interior.ior <> 1.
-  || match o.texture with [] -> true | (layer : Texture.layer) :: _ -> Pigment.opaque layer.pigment
+  o.interior.ior <> 1. || (opaque_top o.texture && (o.back == o.texture || opaque_top o.back))
+
+(* The texture a shadow ray crossing [o] at [st.q] meets: the
+   interior_texture where it leaves the solid, as whitted mode's shadow
+   rays (and POV-Ray's) *)
+let side_texture st (o : Object.t) h =
+  if o.back == o.texture then o.texture
+  else begin
+    let r = st.shadow and n = st.sn in
+    Object.normal_into o st.q h n;
+    if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then o.back else o.texture
+  end
 
 let pass_through (o : Object.t) (h : Hit.t) =
   let t = h.t in
-  match o.texture with
+  let st = Scratch.get state_key in
+  let r = st.shadow in
+  Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+  match side_texture st o h with
   | [] -> false
   | (layer : Texture.layer) :: _ ->
-      let st = Scratch.get state_key in
-      let r = st.shadow in
-      Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
       if o.uv then begin
         Object.uv_into o st.q h st.uv;
         Pattern.set_uv st.uv.mx st.uv.my

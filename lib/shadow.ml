@@ -131,7 +131,7 @@ let add_fader w (o : Object.t) (h : Hit.t) =
    shadow ray (3 words a camera ray on caustics.pov); the factor not
    returned: a float returned from a function not inlined is boxed (0.4
    words a camera ray) *)
-let caustics w (o : Object.t) q h c =
+let caustics w (o : Object.t) (tex : Texture.t) q h c =
   let r = w.ray and n = w.cn and pn = w.pn in
   Object.normal_into o q h n;
   (* POV-Ray (ComputeShadowColour) turns the normal against the shadow
@@ -139,7 +139,7 @@ let caustics w (o : Object.t) q h c =
      matters *)
   if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then Vec3.set n (-.n.mx) (-.n.my) (-.n.mz);
   let dl = Float.sqrt ((r.dx *. r.dx) +. (r.dy *. r.dy) +. (r.dz *. r.dz)) in
-  let k = ref 1. and rest = ref o.texture in
+  let k = ref 1. and rest = ref tex in
   while (match !rest with [] -> false | _ -> true) do
     match !rest with
     | [] -> ()
@@ -152,34 +152,49 @@ let caustics w (o : Object.t) q h c =
   let a = w.acc in
   Color.acc_set a (a.ar *. !k) (a.ag *. !k) (a.ab *. !k)
 
+(* The texture a shadow ray meets at a crossing of [o] at [q]: the
+   interior_texture where it leaves the solid through the surface (its
+   direction along the outward normal), as POV-Ray's ComputeShadowColour
+   picks it (measured: a sphere whose outer texture has clear stripes and
+   whose interior_texture is opaque casts a full shadow) *)
+let side_texture w (o : Object.t) q h =
+  if o.back == o.texture then o.texture
+  else begin
+    let r = w.ray and n = w.cn in
+    Object.normal_into o q h n;
+    if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then o.back else o.texture
+  end
+
 let shadow_hit (o : Object.t) (h : Hit.t) =
   let t = h.t in
   let w = Scratch.get shadow_key in
   let a = w.acc in
-  if Texture.blocks_light o.texture then begin
+  let r = w.ray and q = w.cross and f = w.filter in
+  Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
+  let tex = side_texture w o q h in
+  if Texture.blocks_light tex then begin
     Color.acc_set a 0. 0. 0.;
     false
   end
   else begin
-    let r = w.ray and q = w.cross and f = w.filter in
-    Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
     (* a uv-mapped texture reads the crossing's uv (the shading this
        shadow ray serves has read its own already) *)
     if o.uv then begin
       Object.uv_into o q h w.uv;
       Pattern.set_uv w.uv.mx w.uv.my
     end;
-    filter_into o.texture q f 0;
+    filter_into tex q f 0;
     let c = o.interior.caustics in
-    if c <> 0. then caustics w o q h c;
+    if c <> 0. then caustics w o tex q h c;
     Color.acc_set a (a.ar *. f.ar) (a.ag *. f.ag) (a.ab *. f.ab);
     if Interior.fades_light o.interior || o.interior.media <> [] || (w.fogs != [] && not o.interior.hollow) then
       add_fader w o h;
     not (Color.acc_is_black a)
   end
 
-(* where [shadow_hit] is false whatever the crossing *)
-let shadow_opaque (o : Object.t) = Texture.blocks_light o.texture
+(* where [shadow_hit] is false whatever the crossing: both sides block *)
+let shadow_opaque (o : Object.t) =
+  Texture.blocks_light o.texture && (o.back == o.texture || Texture.blocks_light o.back)
 
 (* Whether the shadow ray is inside [o] just past its crossing at [t]:
    past a surface of a CSG, the CSG is inside exactly where the leaf

@@ -100,6 +100,34 @@ let conserve_energy () =
   Alcotest.(check (float 0.02)) "refracting, conserved" 1.
     (on (furnace "diffuse 0 reflection 0.5 conserve_energy } pigment { rgbt 1 } interior { ior 1.5"))
 
+(* A shadow ray meets a solid's interior_texture where it leaves it, as
+   in whitted mode: the ground under a sphere that is clear outside lets
+   through what its inside filters (none where the inside is opaque),
+   against the same ground unshadowed; the sphere is not seen, and the
+   light is a point: the light is direct *)
+let interior_texture_shadow () =
+  let ground sphere =
+    let img =
+      render ~w:3 ~h:3 ~spp:64 ~depth:4
+        (header
+        ^ "camera { location <0,5,-0.001> look_at <0,0,0> angle 5 }\nlight_source { <0,20,0>, rgb 1 }\n\
+           plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.9 } }\n" ^ sphere)
+    in
+    Helpers.pixel img 1 1
+  in
+  let r0, g0, b0 = ground "" in
+  let inside pig =
+    ground
+      ("sphere { <0,2,0>, 1 texture { pigment { rgbt 1 } finish { ambient 0 diffuse 0 } } \
+        interior_texture { pigment { " ^ pig ^ " } finish { ambient 0 diffuse 0 } } no_image }\n")
+  in
+  let r, g, b = inside "rgb <0.2,0.4,1>" in
+  if r +. g +. b > 0.01 *. (r0 +. g0 +. b0) then Alcotest.failf "opaque inside: %g %g %g" r g b;
+  let r, g, b = inside "rgbf <0.2,1,0.5,1>" in
+  Alcotest.(check (float 0.01)) "filter red" 0.2 (r /. r0);
+  Alcotest.(check (float 0.01)) "filter green" 1. (g /. g0);
+  Alcotest.(check (float 0.01)) "filter blue" 0.5 (b /. b0)
+
 (* A white diffuse sphere inside a clear hollow shell (ior 1) under a sky
    of radiance 1: every pixel 1. A path passing straight through the
    shell keeps the diffuse vertex's MIS weight; counted as a specular
@@ -713,6 +741,7 @@ let tests =
         white_furnace;
       Alcotest.test_case "glass furnace: a clear dielectric keeps radiance 1" `Quick glass_furnace;
       Alcotest.test_case "conserve_energy: a clear mirror sphere keeps radiance 1" `Quick conserve_energy;
+      Alcotest.test_case "shadow rays meet the interior_texture where they leave a solid" `Quick interior_texture_shadow;
       Alcotest.test_case "a clear (ior 1) shell: the sky and a sphere light counted once" `Quick clear_shell;
       Alcotest.test_case "enclosure a=0.5 Le=0.5 -> 1" `Quick (enclosure 0.5 0.5 1. 0.02);
       Alcotest.test_case "enclosure a=0.9 Le=0.5 -> 5" `Quick (enclosure 0.9 0.5 5. 0.15);

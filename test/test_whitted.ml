@@ -957,6 +957,28 @@ let media () =
 (* Scene-level (atmospheric) media: the camera at the origin looks along
    +z at a plane z = 3 whose inside is beyond it (the camera inside a
    plane is inside a solid: no atmosphere there) *)
+(* A shadow ray meets a solid's interior_texture where it leaves the
+   solid through its surface, its texture where it enters (POV-Ray's
+   ComputeShadowColour). Ground lit from above through a clear sphere
+   whose inside is opaque: shadowed (ambient 0.1 only); inside a filter
+   green: green (0.1 + 0.9 f); a disc inside such a sphere is lit through
+   the inside's filter alone. Values measured with povray 3.7. *)
+let interior_texture_shadows () =
+  let ground inside =
+    pixel
+      ("camera { location <0,5,-0.001> look_at <0,0,0> angle 5 }\nlight_source { <0,20,0>, rgb 1 }\n\
+        plane { y, 0 pigment { rgb 1 } finish { ambient 0.1 diffuse 0.9 } }\n\
+        sphere { <0,2,0>, 1 texture { pigment { rgbt 1 } } interior_texture { pigment { " ^ inside ^ " } } no_image }")
+  in
+  gray ~eps:2e-5 "opaque inside" 0.1 (ground "rgb <0.2,0.4,1>");
+  color ~eps:2e-5 "filtering inside" (0.28, 1., 0.55) (ground "rgbf <0.2,1,0.5,1>");
+  color ~eps:2e-5 "lit from inside" (0.28, 1., 0.55)
+    (pixel
+       "camera { location <0,-5,0.001> look_at <0,0,0> angle 5 }\nlight_source { <0,20,0>, rgb 1 }\n\
+        disc { <0,0,0>, <0,-1,0>, 0.5 pigment { rgb 1 } finish { ambient 0.1 diffuse 0.9 } double_illuminate }\n\
+        sphere { <0,0.5,0>, 1 texture { pigment { rgbf <1,0.5,0.5,1> } } \
+        interior_texture { pigment { rgbf <0.2,1,0.5,1> } } no_image }")
+
 (* Interior fade, as POV-Ray 3.7 applies it: where a ray leaves the
    object it hits, by that object's fade over the way from the last
    surface (an outer solid's fade only over the stretch that ends at its
@@ -1278,6 +1300,7 @@ let tests =
       Alcotest.test_case "atmospheric media" `Quick atmosphere;
       Alcotest.test_case "several media: POV-Ray's mixing and sampling rules" `Quick mixed_media;
       Alcotest.test_case "interior fade in nested and clipped solids (POV-Ray's values)" `Quick fade_rules;
+      Alcotest.test_case "shadow rays meet the interior_texture where they leave a solid" `Quick interior_texture_shadows;
       Alcotest.test_case "declared media and densities" `Quick declared_media;
       Alcotest.test_case "pigment and finish edit what they are written over" `Quick edits;
       Alcotest.test_case "pigment functions inside nested maps" `Quick nested_pigment_function;
