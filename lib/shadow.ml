@@ -62,7 +62,11 @@ type walk = {
   mutable ending : Interior.t;
       (** the interior of the object whose crossing ends the stretch
           being walked ([Interior.default] toward the light) *)
-  inside_f : Object.found;  (** a point tested for being inside *)
+  mutable last : bool;  (** the stretch walked is the last, to the light *)
+  mutable start : Interior.t list;
+      (** the interiors the shadow ray starts in: those of the ray whose
+          hit it lights, as POV-Ray copies them into its shadow ray *)
+  mutable start_media : bool;  (** some interior of [start] has media *)
   ray : Ray.scratch;
   l : Light.dir;
   seg : length;  (** how far the shadow ray goes *)
@@ -98,7 +102,7 @@ type walk = {
 let shadow_key =
   Scratch.key (fun () ->
       { acc = Color.acc 1.; fobjs = [||]; fts = Float.Array.create 0; nf = 0;
-        order = [||]; inside = [||]; ni = 0; ending = Interior.default; inside_f = Object.found (Object.make (Shape.sphere Vec3.zero 1.));
+        order = [||]; inside = [||]; ni = 0; ending = Interior.default; last = false; start = []; start_media = false;
         ray = Ray.scratch (); l = Light.dir (); seg = { len = 0. };
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
@@ -187,25 +191,18 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
     let c = o.interior.caustics in
     if c <> 0. then caustics w o tex q h c;
     Color.acc_set a (a.ar *. f.ar) (a.ag *. f.ag) (a.ab *. f.ab);
-    if Interior.fades_light o.interior || o.interior.media <> [] || (w.fogs != [] && not o.interior.hollow) then
-      add_fader w o h;
+    (* where the ray starts in media, every crossing ends a stretch:
+       POV-Ray computes the media it runs in up to each surface it
+       crosses, and not beyond the last *)
+    if Interior.fades_light o.interior || o.interior.media <> [] || w.start_media
+       || (w.fogs != [] && not o.interior.hollow)
+    then add_fader w o h;
     not (Color.acc_is_black a)
   end
 
 (* where [shadow_hit] is false whatever the crossing: both sides block *)
 let shadow_opaque (o : Object.t) =
   Texture.blocks_light o.texture && (o.back == o.texture || Texture.blocks_light o.back)
-
-(* Whether the shadow ray is inside [o] just past its crossing at [t]:
-   past a surface of a CSG, the CSG is inside exactly where the leaf
-   crossed is (its other children do not change there) *)
-let entering (w : walk) (o : Object.t) t =
-  let r = w.ray and f = w.inside_f in
-  let t = t +. (1e-6 *. (1. +. t)) and p = f.pt in
-  p.ox <- r.ox +. (t *. r.dx);
-  p.oy <- r.oy +. (t *. r.dy);
-  p.oz <- r.oz +. (t *. r.dz);
-  Object.inside_s o f
 
 let[@inline] index_in (w : walk) (i : Interior.t) =
   let k = ref (-1) in
@@ -250,8 +247,10 @@ let stretch (w : walk) =
     let i = w.inside.(j) in
     if not i.hollow then inner := false;
     (* the interior's media dim the light (POV-Ray 3.7 does so whatever
-       the light's media_attenuation) *)
-    if i.media <> [] then Media.transmittance_into i.media r w.sp a
+       the light's media_attenuation), but for the last stretch, from
+       the last surface crossed to the light, where POV-Ray computes the
+       atmosphere alone (trace.cpp's TraceShadowRay) *)
+    if i.media <> [] && not w.last then Media.transmittance_into i.media r w.sp a
   done;
   if w.fogs != [] && !inner then begin
     Vec3.set w.fo (r.ox +. (lo *. r.dx)) (r.oy +. (lo *. r.dy)) (r.oz +. (lo *. r.dz));
@@ -259,9 +258,24 @@ let stretch (w : walk) =
     Fog.dim w.fogs w.fo w.fd (hi -. lo) a
   end
 
+(* the interiors of [l] not yet in the walk's set, added *)
+let rec add_start (w : walk) = function
+  | [] -> ()
+  | (i : Interior.t) :: r ->
+      if index_in w i < 0 then begin
+        w.inside.(w.ni) <- i;
+        w.ni <- w.ni + 1
+      end;
+      add_start w r
+
 (* The recorded crossings taken in the order of distance, the stretches
    between them (and the ray's ends) dimmed by [stretch]. The ray starts
-   inside the interiors whose first crossing leaves them. POV-Ray's fogs
+   in [w.start], the interiors of the ray whose hit it lights, and at
+   each crossing leaves the crossed object's interior if it is in it,
+   else enters it, as POV-Ray's shadow rays do (trace.cpp's
+   ComputeShadowMedia): a merge of parts with their own interiors, or a
+   solid left through a clipped-away hole, is not taken for what its
+   geometry says. POV-Ray's fogs
    dim a media_attenuation light's shadow ray only where it runs outside
    solids (measured: 0.548806 = exp(-0.6), not exp(-0.65), with a clear
    solid box 1 unit deep on 10 units of fog of distance 20); the media of
@@ -273,17 +287,9 @@ let stretches (w : walk) =
   let n = w.nf and ts = w.fts and ord = w.order in
   Floats.order_prefix ts n ord;
   w.ni <- 0;
-  for a = 0 to n - 1 do
-    let k = ord.(a) in
-    let i = w.fobjs.(k).interior in
-    if index_in w i < 0 then begin
-      let first = ref true in
-      for b = 0 to a - 1 do
-        if w.fobjs.(ord.(b)).interior == i then first := false
-      done;
-      if !first && not (entering w w.fobjs.(k) (Float.Array.get ts k)) then toggle w i
-    end
-  done;
+  let need = n + List.length w.start in
+  if Array.length w.inside < need then w.inside <- Array.make need Interior.default;
+  add_start w w.start;
   let lo = ref 0. in
   for a = 0 to n do
     let hi = if a = n then dist else Float.Array.get ts ord.(a) in
@@ -291,6 +297,7 @@ let stretches (w : walk) =
       w.sp.lo <- !lo;
       w.sp.hi <- hi;
       w.ending <- (if a = n then Interior.default else w.fobjs.(ord.(a)).interior);
+      w.last <- a = n;
       stretch w
     end;
     if a < n then toggle w w.fobjs.(ord.(a)).interior;
@@ -400,5 +407,10 @@ let light s (w : walk) (light : Light.t) (p : Vec3.m) =
       Color.acc_set w.acc c.ar c.ag c.ab
 
 let walk () = Scratch.get shadow_key
+let rec any_media = function [] -> false | (i : Interior.t) :: r -> i.media <> [] || any_media r
+
+let starts_in w l =
+  w.start <- l;
+  w.start_media <- any_media l
 let[@inline] toward w = w.l
 let[@inline] passed w = w.acc

@@ -2,10 +2,12 @@
     point from a light, through what lies between. A surface crossed lets
     through (f*P + t) of its pigment (a texture's layers multiply, a
     texture map blends its textures'); an opaque one blocks (the walk
-    stops there); inside an object with a fading interior and a fade power
-    the light fades over every stretch travelled inside, including the
-    stretch from a lit point that is itself inside. An area light is the
-    average of its samples (adaptive where it says so).
+    stops there); an object with a fading interior and a fade power fades
+    the light over the stretch that ends where the ray leaves it, the
+    interiors the ray is in taken as POV-Ray takes them: at first the lit
+    ray's ({!starts_in}), then each crossing leaves the crossed interior
+    if the ray is in it, else enters it. An area light is the average of
+    its samples (adaptive where it says so).
 
     The walk's state is a record per domain, reused from ray to ray:
     nothing is allocated unless the shadow ray crosses something
@@ -15,6 +17,11 @@ type walk
 
 val walk : unit -> walk
 (** The calling domain's walk. *)
+
+val starts_in : walk -> Interior.t list -> unit
+(** [starts_in w l]: the shadow rays walked from here on start inside
+    the interiors [l], those of the ray whose hit (or medium sample) they
+    light, as POV-Ray copies them into its shadow ray. *)
 
 val toward : walk -> Light.dir
 (** The direction and distance to the light being shaded, which the

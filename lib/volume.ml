@@ -29,6 +29,7 @@ type st = {
   sc : Color.acc;  (** the media's scattering there, summed *)
   mutable scatters : bool;  (** some medium of the sample scatters *)
   mutable count : int;  (** how many media the ray is in *)
+  mutable starts : Interior.t list;  (** the interiors the ray runs in, where its shadow rays start *)
   sum : Color.acc;  (** a stretch's mean of the second triple *)
   sumx : Color.acc;  (** its mean extinction *)
   od : Color.acc;  (** the optical depth of the ray so far *)
@@ -45,7 +46,7 @@ let key =
   Scratch.key (fun () ->
       { buf = Float.Array.make (slot * (max_depth + 3)) 0.; r = Ray.scratch (); p = Vec3.m ();
         pig = Pigment.out (); dens = Color.acc 0.; ext = Color.acc 0.; lit = Color.acc 0.;
-        sc = Color.acc 0.; scatters = false; count = 0;
+        sc = Color.acc 0.; scatters = false; count = 0; starts = [];
         sum = Color.acc 0.; sumx = Color.acc 0.; od = Color.acc 0.; got = Color.acc 0.;
         lit_spans = Lit.make (); lit_now = false;
         at = { x = 0.; lo = 0.; hi = 0.; thr = 0.; aa = 0.; cos = 0.; phases = 0. }; stack = Float.Array.make (3 * (max_depth + 2)) 0. })
@@ -80,6 +81,7 @@ let in_scatter (s : Scene.t) st (inside : Interior.t list) (p : Vec3.m) =
   let lit = st.lit and r = st.r in
   Color.acc_set lit 0. 0. 0.;
   let w = Shadow.walk () in
+  Shadow.starts_in w st.starts;
   let l = Shadow.toward w in
   let n = float_of_int st.count in
   for i = 0 to Array.length s.lights - 1 do
@@ -377,7 +379,7 @@ let intervals s st inside (m0 : Media.t) =
     done
   end
 
-let[@inline] apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color.acc) =
+let[@inline] apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t ~starts inside (out : Color.acc) =
   match first_media inside with
   | [] -> ()
   | _ :: _ when Float.is_finite t ->
@@ -386,6 +388,7 @@ let[@inline] apply (s : Scene.t) (o : Vec3.m) (d : Vec3.m) t inside (out : Color
       st.at.aa <- infinity;
       least_threshold st.at inside;
       st.count <- count inside;
+      st.starts <- starts;
       let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
       let r = st.r in
       r.ox <- o.mx; r.oy <- o.my; r.oz <- o.mz;

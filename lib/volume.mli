@@ -6,13 +6,15 @@
     unlit stretches, shared among them by its [ratio]), each sampled by
     the medium's method ({!Media.pieces}). *)
 
-val apply : Scene.t -> Vec3.m -> Vec3.m -> float -> Interior.t list -> Color.acc -> unit
-(** [apply s o d t inside c]: [c], the light arriving at distance [t] (in
+val apply : Scene.t -> Vec3.m -> Vec3.m -> float -> starts:Interior.t list -> Interior.t list -> Color.acc -> unit
+(** [apply s o d t ~starts inside c]: [c], the light arriving at distance [t] (in
     units of [d]) along the ray from [o], as seen from [o] through the
     media of the interiors [inside]: dimmed by
     [exp (-integral of extinction)], plus emission and the single
     scattering of each light (with its shadow, media_interaction lights
     only, and not shadowless ones, which POV-Ray's media leave out; each
-    within its own lit stretch). The settings are those of
+    within its own lit stretch; the shadow rays start in the interiors
+    [starts], the ray's own, whether [inside] is they or the scene's
+    atmosphere). The settings are those of
     the medium with the most intervals. Nothing happens when no interior has media, or [t] is
     infinite. *)

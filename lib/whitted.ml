@@ -173,7 +173,7 @@ let[@inline never] mediated_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec
   if has_media media && in_open media then begin
     let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
     let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
-    Volume.apply s o d t media out
+    Volume.apply s o d t ~starts:media media out
   end
 
 (* POV-Ray lays its rainbows over what a ray in the open brings back
@@ -196,15 +196,15 @@ let[@inline never] aired_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m
   let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
   let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
   if in_open media then begin
-    if media <> [] then Volume.apply s o d t media out;
+    if media <> [] then Volume.apply s o d t ~starts:media media out;
     if s.rainbows <> [] then rainbowed s d (Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))) out;
-    if s.atmosphere <> [] then Volume.apply s o d t s.atmosphere out
+    if s.atmosphere <> [] then Volume.apply s o d t ~starts:media s.atmosphere out
   end
 
 let[@inline never] aired_sky (s : Scene.t) (o : Vec3.m) (d : Vec3.m) media out =
   if in_open media then begin
     let dl = Float.sqrt ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz)) in
-    Volume.apply s o d (Fog.missed /. dl) s.atmosphere out
+    Volume.apply s o d (Fog.missed /. dl) ~starts:media s.atmosphere out
   end
 
 (* POV-Ray's iridescence, on the reflected light [rc]: a thin film of
@@ -423,6 +423,9 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
              radiosity) and emission *)
           let dl = Scratch.get direct_key in
           Color.acc_set dl 0. 0. 0.;
+          (* shadow rays start in the interiors this ray runs in (set
+             here: the rays traced above shaded other hits) *)
+          Shadow.starts_in (Shadow.walk ()) media;
           Direct.lights s fr.sh fr.lights f pc fr.a p n d dl;
           let amb =
             match s.settings.radiosity with
