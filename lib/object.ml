@@ -730,6 +730,13 @@ let normal_into o (p : Vec3.m) h out =
       if o.inverted then Vec3.set out (-.out.mx) (-.out.my) (-.out.mz)
   | Union _ | Intersection _ | Merge _ -> invalid_arg "Object.normal: not a leaf"
 
+let crossed_texture o (p : Vec3.m) h (r : Ray.scratch) (n : Vec3.m) =
+  if o.back == o.texture then o.texture
+  else begin
+    normal_into o p h n;
+    if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then o.back else o.texture
+  end
+
 let uv_into o (p : Vec3.m) h out =
   match o.geom with
   | Prim s ->

@@ -124,6 +124,13 @@ val normal_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
     written in place ({!normal} goes through it): nothing allocated, for
     every shape, transformed or not. *)
 
+val crossed_texture : t -> Vec3.m -> Hit.t -> Ray.scratch -> Vec3.m -> Texture.t
+(** [crossed_texture leaf p h r n]: the texture a ray along [r]'s
+    direction meets crossing the leaf's surface at [p]: its
+    [interior_texture] where the ray leaves the solid (along the outward
+    normal, which it leaves in [n] when there is an interior texture), its
+    texture otherwise, as POV-Ray's shadow rays pick it. *)
+
 val uv_into : t -> Vec3.m -> Hit.t -> Vec3.m -> unit
 (** [uv_into leaf p h out]: the leaf's uv coordinates ({!Shape.uv_into}
     in its own frame) at the world point [p] found by [h], into [out]

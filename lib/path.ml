@@ -115,23 +115,13 @@ let opaque_top (tex : Texture.t) =
 let blocks (o : Object.t) =
   o.interior.ior <> 1. || (opaque_top o.texture && (o.back == o.texture || opaque_top o.back))
 
-(* The texture a shadow ray crossing [o] at [st.q] meets: the
-   interior_texture where it leaves the solid, as whitted mode's shadow
-   rays (and POV-Ray's) *)
-let side_texture st (o : Object.t) h =
-  if o.back == o.texture then o.texture
-  else begin
-    let r = st.shadow and n = st.sn in
-    Object.normal_into o st.q h n;
-    if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then o.back else o.texture
-  end
-
 let pass_through (o : Object.t) (h : Hit.t) =
   let t = h.t in
   let st = Scratch.get state_key in
   let r = st.shadow in
   Vec3.set st.q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
-  match side_texture st o h with
+  (* the interior_texture where it leaves the solid, as in whitted mode *)
+  match Object.crossed_texture o st.q h r st.sn with
   | [] -> false
   | (layer : Texture.layer) :: _ ->
       if o.uv then begin

@@ -156,26 +156,17 @@ let caustics w (o : Object.t) (tex : Texture.t) q h c =
   let a = w.acc in
   Color.acc_set a (a.ar *. !k) (a.ag *. !k) (a.ab *. !k)
 
-(* The texture a shadow ray meets at a crossing of [o] at [q]: the
-   interior_texture where it leaves the solid through the surface (its
-   direction along the outward normal), as POV-Ray's ComputeShadowColour
-   picks it (measured: a sphere whose outer texture has clear stripes and
-   whose interior_texture is opaque casts a full shadow) *)
-let side_texture w (o : Object.t) q h =
-  if o.back == o.texture then o.texture
-  else begin
-    let r = w.ray and n = w.cn in
-    Object.normal_into o q h n;
-    if (n.mx *. r.dx) +. (n.my *. r.dy) +. (n.mz *. r.dz) > 0. then o.back else o.texture
-  end
-
 let shadow_hit (o : Object.t) (h : Hit.t) =
   let t = h.t in
   let w = Scratch.get shadow_key in
   let a = w.acc in
   let r = w.ray and q = w.cross and f = w.filter in
   Vec3.set q (r.ox +. (t *. r.dx)) (r.oy +. (t *. r.dy)) (r.oz +. (t *. r.dz));
-  let tex = side_texture w o q h in
+  (* the interior_texture where the ray leaves the solid, as POV-Ray's
+     ComputeShadowColour picks it (measured: a sphere whose outer texture
+     has clear stripes and whose interior_texture is opaque casts a full
+     shadow) *)
+  let tex = Object.crossed_texture o q h r w.cn in
   if Texture.blocks_light tex then begin
     Color.acc_set a 0. 0. 0.;
     false
