@@ -20,7 +20,9 @@ let time f =
   let r = f () in
   (r, Unix.gettimeofday () -. t0)
 
-let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
+(* POV-Ray run on [scene]; [`Done ok], or [`Late] when it ran past
+   [limit] seconds (it is killed then) *)
+let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth ~limit =
   let aa_opts =
     match aa with
     | Some t -> [ Printf.sprintf "+A%g" t; "+AM1"; Printf.sprintf "+R%d" aa_depth; "-J" ]
@@ -31,8 +33,29 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth =
       "-D"; "-P"; "+FN"; "-UA"; "+L" ^ Filename.dirname scene ]
     @ aa_opts
   in
-  let cmd = String.concat " " (List.map Filename.quote args) ^ " >" ^ Filename.quote log ^ " 2>&1" in
-  Sys.command cmd = 0 && Sys.file_exists out
+  let fd = Unix.openfile log [ Unix.O_WRONLY; Unix.O_CREAT; Unix.O_TRUNC; Unix.O_CLOEXEC ] 0o644 in
+  let pid =
+    Fun.protect ~finally:(fun () -> Unix.close fd) (fun () ->
+        Unix.create_process "povray" (Array.of_list args) Unix.stdin fd fd)
+  in
+  let deadline = match limit with Some s -> Unix.gettimeofday () +. s | None -> infinity in
+  let rec wait () =
+    match Unix.waitpid [ Unix.WNOHANG ] pid with
+    | 0, _ ->
+        if Unix.gettimeofday () > deadline then begin
+          Unix.kill pid Sys.sigkill;
+          ignore (Unix.waitpid [] pid);
+          `Late
+        end
+        else begin
+          Unix.sleepf 0.02;
+          wait ()
+        end
+    | _, Unix.WEXITED 0 -> `Done (Sys.file_exists out)
+    | _, _ -> `Done false
+    | exception Unix.Unix_error (Unix.EINTR, _, _) -> wait ()
+  in
+  wait ()
 
 (* Scenes whose pictures depend on POV-Ray's random sampling (jittered
    area lights, focal blur's lens samples, radiosity's gathers and where
@@ -123,7 +146,7 @@ let write_report out_dir ~width ~height ~aa ~aa_depth rows =
   write "report.md" md;
   write "report.tsv" tsv
 
-let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
+let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs ~limit =
   (* SSIM looks through an 11x11 window *)
   if width < 11 || height < 11 then begin
     Printf.eprintf "camlray compare: error: images of at least 11x11 pixels are compared (SSIM's window), not %dx%d\n"
@@ -151,12 +174,12 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
           let name = Filename.remove_extension (Filename.basename scene) in
           let path suffix = Filename.concat out_dir (name ^ suffix) in
           let pov_png = path ".povray.png" and cam_png = path ".camlray.png" in
-          let pov_ok, pov_s =
+          let pov_run, pov_s =
             time (fun () ->
-                povray ~scene ~out:pov_png ~log:(path ".povray.log") ~width ~height ~aa ~aa_depth)
+                povray ~scene ~out:pov_png ~log:(path ".povray.log") ~width ~height ~aa ~aa_depth ~limit)
           in
-          let cam_code, cam_s =
-            time (fun () ->
+          let render () =
+            Driver.with_time_limit limit (fun () ->
                 Driver.render
                   { Driver.scene = Some scene; output = Some cam_png; width; height;
                     mode = Driver.Whitted; spp = None; depth = None; domains = None; seed = 0;
@@ -164,10 +187,15 @@ let run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs =
                     frames = None; clock = None; clock_range = None; subset = None;
                     tile_order_seed = None; aa; aa_depth; limits = Camlray_lang.Supplier.default_limits })
           in
+          (* nothing to compare with when POV-Ray ran past the limit *)
+          let cam_code, cam_s = if pov_run = `Late then (0, 0.) else time render in
           let noise = uses_noise ~include_dirs ~width ~height scene in
           let row note = { name; noise; psnr = nan; ssim = nan; max_diff = -1; pov_s; cam_s; note } in
           let r =
-            if not pov_ok then row (Printf.sprintf "POV-Ray failed (see %s.povray.log)" name)
+            let late = Printf.sprintf "ran past the %g s limit" (Option.value limit ~default:0.) in
+            if pov_run = `Late then row ("POV-Ray " ^ late)
+            else if pov_run = `Done false then row (Printf.sprintf "POV-Ray failed (see %s.povray.log)" name)
+            else if cam_code = 130 && limit <> None then row ("camlray " ^ late)
             else if cam_code <> 0 then row "camlray failed"
             else
               let a = Image.read pov_png and b = Image.read cam_png in
@@ -205,10 +233,19 @@ let cmd ~aa_args ~include_path =
     Arg.(value & opt string "compare-report" & info [ "o"; "output" ] ~docv:"DIR"
            ~doc:"Folder for the report, the renders and the side-by-side and difference images.")
   in
-  let run inputs width height (aa, aa_depth) out_dir include_dirs =
-    run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs
+  let limit =
+    Arg.(value & opt (some float) None & info [ "time-limit" ] ~docv:"SECONDS"
+           ~doc:"Give each renderer at most $(docv) seconds a scene: POV-Ray is stopped, camlray's render \
+                 cancelled, and the scene reported as ran past the limit (and the exit status is 1).")
+  in
+  let run inputs width height (aa, aa_depth) out_dir include_dirs limit =
+    match limit with
+    | Some s when not (s > 0.) ->
+        Printf.eprintf "camlray compare: error: --time-limit must be a positive number of seconds, not %g\n" s;
+        1
+    | _ -> run ~inputs ~width ~height ~aa ~aa_depth ~out_dir ~include_dirs ~limit
   in
   Cmd.v
     (Cmd.info "compare"
        ~doc:"Render scenes with POV-Ray and camlray and report how far apart the images are.")
-    Term.(const run $ inputs $ width $ height $ aa_args $ out $ include_path)
+    Term.(const run $ inputs $ width $ height $ aa_args $ out $ include_path $ limit)

@@ -7,8 +7,10 @@ val povray_available : unit -> bool
 
 val run :
   inputs:string list -> width:int -> height:int -> aa:float option -> aa_depth:int ->
-  out_dir:string -> include_dirs:string list -> int
-(** Exit code: 0 when every scene was rendered by both (or when POV-Ray is
+  out_dir:string -> include_dirs:string list -> limit:float option -> int
+(** [limit]: the seconds each renderer may take a scene (POV-Ray is
+    killed, camlray's render cancelled, past it; the scene is reported as
+    having run past the limit). Exit code: 0 when every scene was rendered by both (or when POV-Ray is
     not installed: a message says nothing was compared), 1 otherwise.
     Writes [out_dir/report.md] and [out_dir/report.tsv] (scene, psnr,
     ssim, max_diff, povray_s, camlray_s). *)

@@ -103,6 +103,21 @@ let progress_bar ~label ~start ~done_ ~total =
 
 let cancelled = Atomic.make false
 
+(* [f ()] with the render cancelled once [limit] seconds have passed (an
+   alarm sets the flag the render checks between pixels, as an interrupt
+   does); the flag cleared and the alarm disarmed after *)
+let with_time_limit limit f =
+  match limit with
+  | None -> f ()
+  | Some secs ->
+      let old = Sys.signal Sys.sigalrm (Sys.Signal_handle (fun _ -> Atomic.set cancelled true)) in
+      let disarm () = ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.; it_value = 0. }) in
+      ignore (Unix.setitimer Unix.ITIMER_REAL { Unix.it_interval = 0.; it_value = secs });
+      Fun.protect f ~finally:(fun () ->
+          disarm ();
+          Sys.set_signal Sys.sigalrm old;
+          Atomic.set cancelled false)
+
 let with_signals f =
   let handle = Sys.Signal_handle (fun _ -> Atomic.set cancelled true) in
   let old_int = Sys.signal Sys.sigint handle in
@@ -231,9 +246,15 @@ let render_frame o ~clock ~frame ~out ~t0 =
       let t1 = Unix.gettimeofday () in
       (* radiosity's pretrace, before the picture reads its cache *)
       if o.mode = Whitted then begin
+        (* a time limit (compare's) stops the pretrace at its next
+           progress report *)
+        let radiosity_bar = bar "radiosity" in
         Whitted.prepare
           ?par:(if domains > 1 then Some (Render.pulled ~domains) else None)
-          ~progress:(bar "radiosity") scene ~width ~height;
+          ~progress:(fun ~done_ ~total ->
+            if Atomic.get cancelled then raise Render.Cancelled;
+            radiosity_bar ~done_ ~total)
+          scene ~width ~height;
         if tty && Option.is_some scene.settings.radiosity then prerr_newline ()
       end;
       (* the picture's own progress, after the pretrace's *)

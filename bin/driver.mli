@@ -30,6 +30,11 @@ type render_opts = {
 }
 
 val render : render_opts -> int
+
+val with_time_limit : float option -> (unit -> 'a) -> 'a
+(** [with_time_limit (Some s) f]: [f ()], a {!render} inside it cancelled
+    (exit code 130, nothing written) once [s] seconds have passed. *)
+
 val check :
   string -> string list -> string list -> Camlray_lang.Supplier.limits -> int -> float -> int
 (** [check scene include_dirs allow_read limits frame_number clock] *)

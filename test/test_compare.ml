@@ -86,10 +86,36 @@ let too_small () =
     (try ignore (Str.search_forward (Str.regexp_string "at least 11x11 pixels") err 0); true with Not_found -> false);
   Alcotest.(check bool) "nothing rendered" false (Sys.file_exists (Filename.concat out "checker.camlray.png"))
 
+(* --time-limit: a scene POV-Ray takes long over (400 glass spheres
+   under a 17x17 area light) is stopped at the limit and reported as
+   such, camlray not run for it, the exit status 1; and the limit must
+   be a positive number of seconds *)
+let time_limit () =
+  if Sys.command "command -v povray >/dev/null 2>&1" <> 0 then Alcotest.skip ()
+  else begin
+    let d = Helpers.temp_dir () in
+    let scene = Filename.concat d "slow.pov" in
+    Helpers.write_file scene
+      "#version 3.7;\nglobal_settings { assumed_gamma 1 }\ncamera { location <0,0,-5> look_at 0 }\n\
+       light_source { <5,5,-5>, rgb 1 area_light <2,0,0>, <0,2,0>, 17, 17 }\n\
+       #declare I = 0;\n#while (I < 400)\n\
+       sphere { <mod(I,20)*0.3-3, div(I,20)*0.3-3, 2>, 0.2 pigment { rgbf <1,1,1,0.9> } interior { ior 1.5 } }\n\
+       #declare I = I + 1;\n#end\n";
+    let out = Filename.concat d "report" in
+    let code, stdout, _ = Helpers.run [ "compare"; "-W"; "160"; "-H"; "120"; "--time-limit"; "0.2"; "-o"; out; scene ] in
+    Alcotest.(check int) "exit 1" 1 code;
+    Alcotest.(check bool) "says so" true (Helpers.contains stdout "POV-Ray ran past the 0.2 s limit");
+    Alcotest.(check bool) "camlray not run" false (Sys.file_exists (Filename.concat out "slow.camlray.png"));
+    let code, _, err = Helpers.run [ "compare"; "--time-limit"; "0"; "-o"; out; scene ] in
+    Alcotest.(check int) "a limit of 0: exit 1" 1 code;
+    Alcotest.(check bool) "why" true (Helpers.contains err "--time-limit must be a positive number")
+  end
+
 let tests =
   ( "compare",
     [
       Alcotest.test_case "camlray vs POV-Ray" `Slow cross_render;
       Alcotest.test_case "skips without povray" `Quick skips;
       Alcotest.test_case "images under 11x11 are refused" `Quick too_small;
+      Alcotest.test_case "--time-limit stops POV-Ray and reports the scene" `Quick time_limit;
     ] )
