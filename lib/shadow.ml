@@ -400,8 +400,12 @@ let light s (w : walk) (light : Light.t) (p : Vec3.m) =
 let walk () = Scratch.get shadow_key
 let rec any_media = function [] -> false | (i : Interior.t) :: r -> i.media <> [] || any_media r
 
+(* set at every layer shaded: most often the same list (no interiors),
+   left as it is then *)
 let starts_in w l =
-  w.start <- l;
-  w.start_media <- any_media l
+  if w.start != l then begin
+    w.start <- l;
+    w.start_media <- any_media l
+  end
 let[@inline] toward w = w.l
 let[@inline] passed w = w.acc
