@@ -248,6 +248,13 @@ let render_frame o ~clock ~frame ~out ~t0 =
       if o.mode = Whitted then begin
         (* a time limit (compare's) stops the pretrace at its next
            progress report *)
+        (* the photons first (Whitted.prepare would shoot them), timed *)
+        Caustics.prepare scene;
+        (match scene.settings.photons with
+        | Some { state = { map = Some m }; _ } ->
+            Printf.eprintf "camlray: %d photons stored, gather radius %.4g (%.3f s)\n%!" (Photon.size m)
+              (Photon.radius m) (Unix.gettimeofday () -. t1)
+        | _ -> ());
         let radiosity_bar = bar "radiosity" in
         Whitted.prepare
           ?par:(if domains > 1 then Some (Render.pulled ~domains) else None)

@@ -268,3 +268,50 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     | Some a when a.area_illumination -> area_light s f pc k p n d light a cache j sc out
     | _ -> one_light s f pc k p n d light cache j sc.ll out
   done
+
+(* Photons: each gathered photon lights the point as a light from the
+   way it came (POV-Ray's ComputePhotonDiffuseLight) *)
+type photons_scratch = { pl : lightlet; pd : Light.dir; sum : Color.acc }
+
+let photons_key =
+  Scratch.key (fun () ->
+      { pl = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; pd = Light.dir ();
+        sum = Color.acc 0. })
+
+(* highlights drawn: a light that casts shadows *)
+let photon_source = Light.point Vec3.zero Color.black
+
+let photons s (m : Photon.map) cache (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m)
+    (n0 : Vec3.m) (d : Vec3.m) (out : Color.acc) =
+  let q = Photon.query () in
+  Photon.gather m q p n;
+  let cnt = Photon.found q in
+  if cnt > 0 then begin
+    let sc = Scratch.get photons_key in
+    let c = sc.pl and l = sc.pd and sum = sc.sum in
+    c.hl <- (if cache.highlights then 1. else 0.);
+    Color.acc_set sum 0. 0. 0.;
+    for j = 0 to cnt - 1 do
+      let i = Photon.index q j in
+      l.lx <- Photon.direction m i 0;
+      l.ly <- Photon.direction m i 1;
+      l.lz <- Photon.direction m i 2;
+      (* POV-Ray's compensation for the photons' slant: the flux over
+         the cosine to the unperturbed normal, at most tenfold *)
+      let a = (n0.mx *. l.lx) +. (n0.my *. l.ly) +. (n0.mz *. l.lz) in
+      let a = Float.max 0.1 (Float.min 1. a) in
+      let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
+      let nl = if f.double_illuminate then Float.abs nl else nl in
+      let back = nl < 1e-10 in
+      if (not back) || f.diffuse_back <> 0. then begin
+        c.lr <- Photon.flux m i 0 /. a;
+        c.lg <- Photon.flux m i 1 /. a;
+        c.lb <- Photon.flux m i 2 /. a;
+        c.nl <- nl;
+        c.icos <- nl;
+        shade s f pc k p n d photon_source l back c sum
+      end
+    done;
+    let ar = Photon.area q in
+    Color.acc_set out (out.ar +. (sum.ar /. ar)) (out.ag +. (sum.ag /. ar)) (out.ab +. (sum.ab /. ar))
+  end

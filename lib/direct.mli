@@ -47,3 +47,15 @@ val lights :
     kept in [c] are used (they must be [p]'s, for the same [ls]: {!forget} them when the
     point changes), those not kept are traced and kept. Allocates nothing
     unless a shadow ray crosses something transparent. *)
+
+val photons :
+  Scene.t -> Photon.map -> shadows -> Finish.t -> Pigment.out -> opacity -> Vec3.m -> Vec3.m -> Vec3.m -> Vec3.m ->
+  Color.acc -> unit
+(** [photons s m c f pc a p n n0 d out]: the light of the photons of map
+    [m] gathered around [p] (normal [n], the layer's; [n0] the
+    unperturbed one, both facing the ray [d]), as POV-Ray 3.7 adds it:
+    each photon lights the point like a light from where it came, its
+    flux divided by its cosine to [n0] (at least 0.1), through the
+    finish's diffuse (or diffuse_back from behind) and, where [c] draws
+    them, highlights; the sum over the area of the gather. Allocates
+    nothing. *)

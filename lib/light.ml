@@ -36,11 +36,13 @@ type t = {
   media_interaction : bool;
   media_attenuation : bool;
   projected_through : Object.t option;
+  photons : Photon.flags;
 }
 
 let point position color =
   { position; color; kind = Point; fade_distance = 0.; fade_power = 0.; shadowless = false;
-    area = None; media_interaction = true; media_attenuation = false; projected_through = None }
+    area = None; media_interaction = true; media_attenuation = false; projected_through = None;
+    photons = Photon.none }
 
 let offset n i = if n <= 1 then 0. else (float_of_int i /. float_of_int (n - 1)) -. 0.5
 
@@ -139,8 +141,7 @@ let[@inline] cylinder_factor ~radius ~falloff ~tightness d =
 (* The attenuation of the light as if it stood at (cx, cy, cz), a
    spotlight's axis from (ox, oy, oz) to its point_at, at a point written
    in place, in scalars (inlined: nothing boxed) *)
-let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
-  let spot =
+let[@inline] beam_axis l ox oy oz cx cy cz (p : Vec3.m) =
     match l.kind with
     | Point | Parallel _ -> 1.
     | Cylinder { point_at; radius; falloff; tightness } ->
@@ -165,7 +166,9 @@ let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
           +. (Vec3.unit_k ax ay az 2 *. Vec3.unit_k tx ty tz 2)
         in
         spot_cos cos ~cr:cos_radius ~cf:cos_falloff ~tightness
-  in
+
+let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
+  let spot = beam_axis l ox oy oz cx cy cz p in
   if l.fade_power > 0. && l.fade_distance <> 0. then
     spot *. 2. /. (1. +. Float.pow (distance_at l cx cy cz p /. l.fade_distance) l.fade_power)
   else spot
@@ -183,6 +186,10 @@ let[@inline] attenuation_shifted l cx cy cz (p : Vec3.m) =
 let[@inline] attenuation_m l (p : Vec3.m) =
   let c = l.position in
   attenuation_at l c.x c.y c.z p
+
+let beam l (p : Vec3.m) =
+  let c = l.position in
+  beam_axis l c.x c.y c.z c.x c.y c.z p
 
 let attenuation l (p : Vec3.t) =
   let pm = Vec3.m () in

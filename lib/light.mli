@@ -67,6 +67,7 @@ type t = {
           when the ray from the point toward the light meets this object
           (never drawn, casting no shadow) before the light; what lies
           between that crossing and the light casts no shadow *)
+  photons : Photon.flags;  (** its [photons { }] words (refraction, reflection, area_light) *)
 }
 
 val point : Vec3.t -> Color.t -> t
@@ -86,6 +87,11 @@ val cylinder_factor : radius:float -> falloff:float -> tightness:float -> float 
     tightness], times the smooth step [(3 - 2s) s^2], [s = x / (1 -
     radius / falloff)], between [radius] and [falloff] (when [radius] >
     0). *)
+
+val beam : t -> Vec3.m -> float
+(** The spotlight's or cylindrical light's factor at a point (1 for
+    other lights), without the light's fade: what a photon shot toward
+    the point starts with. *)
 
 val attenuation_m : t -> Vec3.m -> float
 (** The same at a point written in place, in scalars (inlined: nothing

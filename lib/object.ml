@@ -13,6 +13,7 @@ type t = {
   inv : Float.Array.t;
   uv : bool;
   lights : int;
+  photon : Photon.flags;
 }
 
 and geom = Prim of Shape.t | Union of t array | Intersection of t array | Merge of t array
@@ -280,7 +281,7 @@ let inverse_matrix xf =
 let identity_matrix = inverse_matrix Transform.identity
 
 let make ?(xform = Transform.identity) ?(texture = Texture.default) ?back ?(interior = Interior.default)
-    ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) ?(lights = 0) shape =
+    ?(no_shadow = false) ?(inverted = false) ?(clip = [||]) ?(lights = 0) ?(photon = Photon.none) shape =
   let back = match back with Some b -> b | None -> texture in
   let uv = Texture.uses_uv texture || Texture.uses_uv back in
   (* a uv-mapped sphere keeps its transform: its uv is taken in its own frame *)
@@ -288,7 +289,7 @@ let make ?(xform = Transform.identity) ?(texture = Texture.default) ?back ?(inte
   let b = if inverted then None else world_box xform (Shape.bounds shape) in
   let inv = if Transform.is_identity xform then identity_matrix else inverse_matrix xform in
   { geom = Prim shape; xform; texture; back; interior; no_shadow; inverted; clip; bound = [||]; bounds = clip_box clip b;
-    index = None; inv; uv; lights }
+    index = None; inv; uv; lights; photon }
 
 let node geom clip b =
   {
@@ -311,6 +312,7 @@ let node geom clip b =
     inv = identity_matrix;
     uv = false;
     lights = 0;
+    photon = Photon.none;
   }
 
 (* A BVH over the children of a large union. *)

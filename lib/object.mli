@@ -30,6 +30,7 @@ type t = private {
       (** leaves: the lights that light the surface, an index into
           the scene's [light_sets]: 0 for the scene's global lights, another
           for the objects of a [light_group] *)
+  photon : Photon.flags;  (** leaves: the words of its [photons] block (pushed down from CSG) *)
 }
 
 and geom =
@@ -46,7 +47,7 @@ and index = {
 
 val make :
   ?xform:Transform.t -> ?texture:Texture.t -> ?back:Texture.t -> ?interior:Interior.t -> ?no_shadow:bool ->
-  ?inverted:bool -> ?clip:t array -> ?lights:int -> Shape.t -> t
+  ?inverted:bool -> ?clip:t array -> ?lights:int -> ?photon:Photon.flags -> Shape.t -> t
 (** A leaf ([lights]: its light set, 0 by default). A sphere under a similarity (rotations, uniform scales,
     translations) is stored moved, with the identity transform. *)
 

@@ -6,6 +6,7 @@ type settings = {
   legacy_alpha : bool;
   irid_wavelength : Color.t;
   radiosity : Radiosity.t option;
+  photons : Photon.settings option;
 }
 
 (* [finite] is stored in BVH leaf order. [spheres] holds, per finite
@@ -47,6 +48,7 @@ let default_settings =
     legacy_alpha = false;
     irid_wavelength = Color.make 0.70 0.52 0.48;
     radiosity = None;
+    photons = None;
   }
 
 (* What testing an object costs, in tests of a sphere held in the flat

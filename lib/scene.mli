@@ -10,6 +10,7 @@ type settings = {
       (** pre-3.7 transparency rule: alpha = 1 - (f max(rgb) + t) *)
   irid_wavelength : Color.t;  (** [irid_wavelength], POV-Ray's <0.25, 0.18, 0.14> by default *)
   radiosity : Radiosity.t option;  (** global_settings' [radiosity], computed in whitted mode *)
+  photons : Photon.settings option;  (** global_settings' [photons], shot in whitted mode *)
 }
 
 type accel

@@ -97,6 +97,8 @@ type walk = {
   mutable occlude : bool;  (** the light casts shadows (it is not shadowless) *)
   ph : Hit.t;  (** the crossing of the projected_through object *)
   pf : Object.found;
+  mutable collecting : bool;  (** the lit surface gathers photons ({!collects}) *)
+  mutable lphotons : Photon.flags;  (** the photons words of the light walked to *)
 }
 
 let shadow_key =
@@ -108,7 +110,8 @@ let shadow_key =
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
         fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); through = None; occlude = true;
-        ph = Hit.create infinity; pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)) })
+        ph = Hit.create infinity; pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); collecting = false;
+        lphotons = Photon.none })
 
 (* a crossing of a fading object, kept in growing arrays *)
 let add_fader w (o : Object.t) (h : Hit.t) =
@@ -167,7 +170,7 @@ let shadow_hit (o : Object.t) (h : Hit.t) =
      has clear stripes and whose interior_texture is opaque casts a full
      shadow) *)
   let tex = Object.crossed_texture o q h r w.cn in
-  if Texture.blocks_light tex then begin
+  if Texture.blocks_light tex || (w.collecting && Photon.blocks_shadow o.photon ~light:w.lphotons) then begin
     Color.acc_set a 0. 0. 0.;
     false
   end
@@ -369,6 +372,7 @@ let[@inline] aim (s : Scene.t) (w : walk) (light : Light.t) =
    if w.fogs != f then w.fogs <- f);
   if w.through != light.projected_through then w.through <- light.projected_through;
   w.occlude <- not light.shadowless;
+  if w.lphotons != light.photons then w.lphotons <- light.photons;
   match s.atmosphere with
   | [] -> if w.air != [] then w.air <- []
   | (i : Interior.t) :: _ ->
@@ -409,3 +413,5 @@ let starts_in w l =
   end
 let[@inline] toward w = w.l
 let[@inline] passed w = w.acc
+
+let collects w b = w.collecting <- b

@@ -23,6 +23,12 @@ val starts_in : walk -> Interior.t list -> unit
     the interiors [l], those of the ray whose hit (or medium sample) they
     light, as POV-Ray copies them into its shadow ray. *)
 
+val collects : walk -> bool -> unit
+(** [collects w b]: whether the surface lit from here on gathers
+    photons; then, as in POV-Ray, a photon target that refracts the
+    light's photons blocks its shadow rays entirely (the light through
+    it comes as photons). *)
+
 val toward : walk -> Light.dir
 (** The direction and distance to the light being shaded, which the
     caller sets ({!Light.direction_into}) before {!point} or {!light}. *)

@@ -81,6 +81,7 @@ type frame = {
   amb : Color.acc;  (** the radiosity gathered at [p], once [amb_done] *)
   mutable amb_done : bool;
   kr : Color.acc;  (** the reflectivity of the layer being shaded *)
+  mutable collect : bool;  (** the surface gathers photons (the scene has some, it does not say collect off) *)
 }
 
 let new_frame () =
@@ -88,7 +89,7 @@ let new_frame () =
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
     uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||]; chain = [||]; nchain = 0;
-    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false; kr = Color.acc 0. }
+    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false; kr = Color.acc 0.; collect = false }
 
 (* a texture map's frame entered (the chain grows once, to the deepest
    nesting met) *)
@@ -289,6 +290,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   (* a light_group's surfaces see only their own set of lights *)
   fr.lights <- Array.unsafe_get s.light_sets obj.lights;
+  fr.collect <- obj.photon.collect && (match s.settings.photons with Some { state = { map = Some m }; _ } -> Photon.size m > 0 | _ -> false);
   let inner = obj.interior in
   let eta = Interior.relative_ior inner media in
   fr.k.fres <- Interior.fresnel_ior inner media;
@@ -425,8 +427,16 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
           Color.acc_set dl 0. 0. 0.;
           (* shadow rays start in the interiors this ray runs in (set
              here: the rays traced above shaded other hits) *)
-          Shadow.starts_in (Shadow.walk ()) media;
+          let sw = Shadow.walk () in
+          Shadow.starts_in sw media;
+          (* with photons, a target that refracts them casts a full
+             shadow here: its light comes as photons *)
+          Shadow.collects sw fr.collect;
           Direct.lights s fr.sh fr.lights f pc fr.a p n d dl;
+          (if fr.collect && (f.diffuse <> 0. || f.diffuse_back <> 0. || f.specular <> 0. || f.phong <> 0.) then
+             match s.settings.photons with
+             | Some { state = { map = Some m }; _ } -> Direct.photons s m fr.sh f pc fr.a p n fr.n0 d dl
+             | _ -> ());
           let amb =
             match s.settings.radiosity with
             | None -> s.settings.ambient_light
@@ -940,6 +950,8 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
    cache and colours: see [in_turn]), so the picture does not depend on
    the domains. *)
 let prepare ?par ?(batch = 128) ?(progress = fun ~done_:_ ~total:_ -> ()) (s : Scene.t) ~width ~height =
+  (* the photons first: radiosity's gathers see them *)
+  Caustics.prepare s;
   match s.settings.radiosity with
   | None -> ()
   | Some r ->

@@ -277,6 +277,7 @@ let light (o : Sdl.obj) (l : Sdl.light) projected_through =
     media_attenuation = l.media_attenuation;
     area = Option.map (area_of o x) l.area;
     projected_through;
+    photons = o.photon;
   }
 
 let positive (o : Sdl.obj) what r =
@@ -400,11 +401,12 @@ type ctx = {
   lset : int;  (** the leaves' light set: 0, or a light group's (see [group_sets]) *)
   global : bool option;  (** in a light group: the outermost group's [global_lights] *)
   glights : Light.t list option;  (** in a light group: the lights its objects see *)
+  photon : Photon.flags;  (** the parents' photons words, pushed down (they override the children's) *)
 }
 
 let top_ctx lights =
   { xf = Transform.identity; tex = None; inner = None; inter = None; no_shadow = false; flags = 0; lights;
-    lset = 0; global = None; glights = None }
+    lset = 0; global = None; glights = None; photon = Photon.none }
 
 (* The light sets of the light groups placed so far, last first: whether
    the global lights join, the group's own lights. Set [k] (1-based, in
@@ -457,7 +459,10 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
   let tex = match o.texture with Some _ -> o.texture | None -> ctx.tex in
   let inter = interior_of ctx o in
   let inner = match o.inner with Some _ -> o.inner | None -> ctx.inner in
-  let ctx' = { ctx with xf = o.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o.no_shadow; flags = ctx.flags lor o.flags } in
+  let ctx' =
+    { ctx with xf = o.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o.no_shadow; flags = ctx.flags lor o.flags;
+      photon = Photon.pushed ~parent:ctx.photon o.photon }
+  in
   let children l = Array.of_list (List.filter_map (obj ctx') l) in
   match o.shape with
   | Sdl.Light l ->
@@ -532,7 +537,7 @@ and leaf ctx o tex inter =
   let texture = leaf_texture ctx tex in
   let interior = Option.value ~default:Interior.default inter in
   let back = Option.map (fun t -> leaf_texture ctx (Some t)) ctx.inner in
-  Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset (shape o)
+  Object.make ~xform:o.xform ~texture ?back ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset ~photon:ctx.photon (shape o)
 
 (* A blob whose components have textures of their own: POV-Ray shades
    each component's (the blob's for those without), weighed by its share
@@ -549,7 +554,7 @@ and blob ctx o tex inter threshold comps =
   in
   let texture = [ Texture.blob_field b ~cut:!bailout o.xform (Array.of_list textures) ] in
   let interior = Option.value ~default:Interior.default inter in
-  Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset (Shape.Blob b)
+  Object.make ~xform:o.xform ~texture ~interior ~no_shadow:ctx.no_shadow ~lights:ctx.lset ~photon:ctx.photon (Shape.Blob b)
 
 (* An object compiled on its own while the scene is still being read
    (POV-Ray's trace(), inside(), min_extent() and max_extent() ask
@@ -568,10 +573,12 @@ let rec top ctx (o : Sdl.obj) acc =
     let tex = match o'.texture with Some _ -> o'.texture | None -> ctx.tex in
     let inter = interior_of ctx o' in
     let inner = match o'.inner with Some _ -> o'.inner | None -> ctx.inner in
-    { ctx with xf = o'.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags }
+    { ctx with xf = o'.xform; tex; inner; inter; no_shadow = ctx.no_shadow || o'.no_shadow; flags = ctx.flags lor o'.flags;
+      photon = Photon.pushed ~parent:ctx.photon o'.photon }
   in
   match o.shape with
-  | Sdl.Csg (Sdl.Union, l) ->
+  | Sdl.Csg (Sdl.Union, l) when not ((Photon.pushed ~parent:ctx.photon o.photon).target > 0. && not o.photon.split_union) ->
+      (* (a target union with split_union off is shot at as one) *)
       let ctx' = inside () in
       List.fold_left (fun acc c -> top ctx' c acc) acc l
   | Sdl.Light_group (global, l) ->
@@ -648,6 +655,7 @@ and scene_ (s : Sdl.scene) =
                 | Sdl.Ambient_light c -> settings := { !settings with ambient_light = c }
                 | Sdl.Irid_wavelength c -> settings := { !settings with irid_wavelength = c }
                 | Sdl.Radiosity r -> settings := { !settings with radiosity = Some r }
+                | Sdl.Photons p -> settings := { !settings with photons = Some p }
                 | Sdl.Noise_generator _ | Sdl.Number_of_waves _ -> ())
               gs)
       s.items;

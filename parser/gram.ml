@@ -263,3 +263,107 @@ let object_radiosity l items =
     items;
   Defaults.warn_once "object radiosity" l
     "an object's radiosity { importance } is read and ignored: camlray's gathers shoot all their rays"
+
+(* photons { ... }: a word and its values *)
+type photon_item = Loc.t * string * (Loc.t * Value.t) list
+
+let photon_values w n vs =
+  if List.length vs > n then Diag.error (fst (List.nth vs n)) "photons %s takes at most %d value%s" w n (if n = 1 then "" else "s");
+  List.map (fun (vl, v) -> (vl, Value.to_float vl v)) vs
+
+let photon_one l w vs =
+  match photon_values w 1 vs with [ (vl, x) ] -> (vl, x) | _ -> Diag.error l "photons %s needs a value" w
+
+(* on/off words: alone they mean on; [refraction] and [reflection] need
+   their value, as in POV-Ray *)
+let photon_switch l w ~needs vs =
+  match photon_values w 1 vs with
+  | [ (_, x) ] -> x <> 0.
+  | _ -> if needs then Diag.error l "photons %s needs on or off" w else true
+
+let photons (items : photon_item list) =
+  let int_at_least vl w lo x =
+    let n = int_of_float (Float.floor (x +. 0.5)) in
+    if n < lo then Diag.error vl "photons %s %d: it takes %d or more" w n lo;
+    n
+  in
+  let s =
+    List.fold_left
+      (fun (s : Photon.settings) (l, w, vs) ->
+        match w with
+        | "spacing" ->
+            let vl, x = photon_one l w vs in
+            if not (x > 0.) then Diag.error vl "photons spacing %g: it must be positive" x;
+            { s with spacing = x }
+        | "count" ->
+            let vl, x = photon_one l w vs in
+            { s with count = int_at_least vl w 1 x }
+        | "gather" -> (
+            match photon_values w 2 vs with
+            | [ (l1, a); (l2, b) ] ->
+                let a = int_at_least l1 w 0 a and b = int_at_least l2 w 0 b in
+                if a > b then Diag.error l "photons gather %d, %d: the minimum is above the maximum" a b;
+                if b = 0 then Diag.error l2 "photons gather's maximum must be positive";
+                { s with gather_min = a; gather_max = b }
+            | _ -> Diag.error l "photons gather takes two values: the least and the most photons gathered")
+        | "media" -> (
+            match photon_values w 2 vs with
+            | (l1, n) :: rest ->
+                let n = int_at_least l1 w 0 n in
+                List.iter (fun (vl, f) -> if not (f > 0.) then Diag.error vl "photons media's spacing factor %g: it must be positive" f) rest;
+                if n > 0 then
+                  Defaults.warn_once "media photons" l "media photons are not computed: camlray's photons light surfaces only";
+                { s with media_steps = n }
+            | [] -> Diag.error l "photons media needs the most steps")
+        | "jitter" -> { s with jitter = snd (photon_one l w vs) }
+        | "max_trace_level" ->
+            let vl, x = photon_one l w vs in
+            { s with max_trace_level = int_at_least vl w 1 x }
+        | "adc_bailout" -> { s with adc_bailout = snd (photon_one l w vs) }
+        | "autostop" -> { s with autostop = snd (photon_one l w vs) }
+        | "expand_thresholds" -> (
+            match photon_values w 2 vs with
+            | [ (_, a); (l2, b) ] -> { s with expand_tolerance = Float.max 0. a; expand_min = int_at_least l2 w 0 b }
+            | _ -> Diag.error l "photons expand_thresholds takes two values: the tolerance and the least count")
+        | "radius" -> (
+            match photon_values w 4 vs with
+            | [] -> s
+            | (_, r) :: rest -> (
+                let s = { s with radius = r } in
+                match rest with (_, m) :: _ -> { s with radius_mult = m } | [] -> s))
+        | "save_file" | "load_file" ->
+            Defaults.warn_once "photon files" l (Printf.sprintf "photons %s is read and ignored: the photons are shot anew" w);
+            s
+        | _ -> Diag.error l "photons %s is not a global_settings word (an object's or a light's)" w)
+      (Photon.default_settings ()) items
+  in
+  s
+
+(* an object's or a light's photons { }, applied to what it modifies *)
+let object_photons (items : photon_item list) (o : Sdl.obj) =
+  let light = match o.shape with Sdl.Light _ -> true | _ -> false in
+  let onoff b = if b then 1 else -1 in
+  let p =
+    List.fold_left
+      (fun (p : Photon.flags) (l, w, vs) ->
+        match (w, light) with
+        | "refraction", _ -> { p with refraction = onoff (photon_switch l w ~needs:true vs) }
+        | "reflection", _ -> { p with reflection = onoff (photon_switch l w ~needs:true vs) }
+        | "area_light", true ->
+            if vs <> [] then Diag.error l "photons area_light takes no value";
+            { p with area_light = true }
+        | "target", false -> (
+            match photon_values w 1 vs with
+            | [ (_, x) ] -> { p with target = Float.max 0. x }
+            | _ -> { p with target = 1. })
+        | "collect", false -> { p with collect = photon_switch l w ~needs:false vs }
+        | "pass_through", false -> { p with pass_through = photon_switch l w ~needs:false vs }
+        | "split_union", false -> { p with split_union = photon_switch l w ~needs:true vs }
+        | _, true -> Diag.error l "a light's photons block takes refraction, reflection and area_light, not %s" w
+        | _, false ->
+            Diag.error l "an object's photons block takes target, refraction, reflection, collect, pass_through and split_union, not %s" w)
+      o.photon items
+  in
+  (* POV-Ray: pass_through on a target that refracts is refused *)
+  let p = if p.pass_through && p.target > 0. && p.refraction >= 0 then { p with pass_through = false } else p in
+  { o with photon = p }

@@ -108,3 +108,14 @@ val radiosity : rad_item list -> Camlray.Radiosity.t
 
 val object_radiosity : Loc.t -> rad_item list -> unit
 (** An object's [radiosity { importance ... }]: checked, warned about once, ignored. *)
+
+type photon_item = Loc.t * string * (Loc.t * Value.t) list
+(** A word of a [photons] block and its values. *)
+
+val photons : photon_item list -> Camlray.Photon.settings
+(** global_settings' [photons { }] block, POV-Ray's defaults for what it does not say. *)
+
+val object_photons : photon_item list -> Sdl.obj -> Sdl.obj
+(** An object's (target, refraction, reflection, collect, pass_through,
+    split_union) or a light's (refraction, reflection, area_light)
+    [photons { }] words, over those already said. *)

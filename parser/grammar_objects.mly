@@ -242,6 +242,7 @@ items_rev:
       { with_texture $loc (fun l -> { l with Texture.finish = f l.finish }) }
   | INTERIOR LBRACE i = interior_body RBRACE { fun (o : Sdl.obj) -> { o with interior = Some i } }
   | NO_SHADOW { fun (o : Sdl.obj) -> { o with no_shadow = true } }
+  | ps = photons_block { Gram.object_photons ps }
   | k = object_flag %prec below_shift { fun (o : Sdl.obj) -> { o with flags = o.flags lor k } }
   | k = object_flag b = param
       { let on = Value.to_bool (loc $loc(b)) b in

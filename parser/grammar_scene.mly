@@ -6,7 +6,8 @@
 %token BACKGROUND GLOBAL_SETTINGS ASSUMED_GAMMA MAX_TRACE_LEVEL ADC_BAILOUT AMBIENT_LIGHT IRID_WAVELENGTH
 %token FOG FOG_TYPE FOG_OFFSET FOG_ALT TURB_DEPTH DISTANCE
 %token RAINBOW WIDTH ARC_ANGLE FALLOFF_ANGLE
-%token RADIOSITY
+%token RADIOSITY PHOTONS
+%token <string> PHOTON_WORD
 %token <string> RAD_WORD RAD_FILE
 
 %start <Sdl.item list> scene
@@ -122,6 +123,28 @@ fog_item:
   | AMBIENT_LIGHT c = color_value { Sdl.Ambient_light (Value.to_rgb (loc $loc(c)) c) }
   | IRID_WAVELENGTH c = color_value { Sdl.Irid_wavelength (Value.to_rgb (loc $loc(c)) c) }
   | RADIOSITY LBRACE rs = list(rad_item) RBRACE { Sdl.Radiosity (Gram.radiosity rs) }
+  | ps = photons_block { Sdl.Photons (Gram.photons ps) }
+
+(* photons { ... }: global_settings', an object's or a light's, told
+   apart by Gram; a word and its values (on/off may stand alone) *)
+%public photons_block:
+  | PHOTONS LBRACE ps = list(photon_item) RBRACE { ps }
+
+photon_item:
+  | w = photon_word v = ioption(param) m = list(preceded(COMMA, param))
+      { (loc $loc(w), w, List.map (fun v -> (loc $loc(v), v)) (Option.to_list v @ m)) }
+  | w = RAD_FILE s = string_arg { (loc $loc(w), w, [ (loc $loc(s), Value.String s) ]) }
+
+photon_word:
+  | w = PHOTON_WORD { w }
+  | w = RAD_WORD { w }
+  | MEDIA { "media" }
+  | JITTER { "jitter" }
+  | MAX_TRACE_LEVEL { "max_trace_level" }
+  | ADC_BAILOUT { "adc_bailout" }
+  | RADIUS { "radius" }
+  | REFLECTION { "reflection" }
+  | AREA_LIGHT { "area_light" }
 
 (* a radiosity block's word and its values (on/off words may stand
    alone): global_settings' or an object's, told apart by Gram *)

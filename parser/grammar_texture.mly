@@ -43,7 +43,7 @@
                   media_interaction = true; media_attenuation = false;
                   area = None; looks_like = None; projected_through = None } in
         let o = { Sdl.loc = loc $loc; shape = Sdl.Light l; xform = Transform.identity;
-                  texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None } in
+                  texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None; photon = Photon.none } in
         List.fold_left (fun o f -> f o) o ms }
 
 %public light_mod:

@@ -38,7 +38,11 @@ let scene_keywords =
     ("fog_offset", FOG_OFFSET); ("fog_alt", FOG_ALT); ("turb_depth", TURB_DEPTH); ("distance", DISTANCE);
     ("rainbow", RAINBOW); ("width", WIDTH); ("arc_angle", ARC_ANGLE); ("falloff_angle", FALLOFF_ANGLE);
     ("radiosity", RADIOSITY); ("save_file", RAD_FILE "save_file"); ("load_file", RAD_FILE "load_file");
+    ("photons", PHOTONS);
   ]
+  @ List.map (fun k -> (k, PHOTON_WORD k))
+      [ "spacing"; "gather"; "autostop"; "expand_thresholds"; "target"; "collect"; "pass_through"; "split_union";
+        "refraction" ]
   @ List.map (fun k -> (k, RAD_WORD k))
       [ "count"; "recursion_limit"; "brightness"; "error_bound"; "pretrace_start"; "pretrace_end";
         "nearest_count"; "low_error_factor"; "gray_threshold"; "minimum_reuse"; "maximum_reuse";

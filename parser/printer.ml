@@ -91,6 +91,19 @@ let light_kind (l : Sdl.light) =
 
 (* The text of an object: its head (the keyword, '{' and the shape's
    parameters) and its modifiers, without the closing '}'. *)
+(* an object's or a light's photons { } words *)
+let photons (p : Photon.flags) =
+  let sw w v = if v > 0 then [ w ^ " on" ] else if v < 0 then [ w ^ " off" ] else [] in
+  "photons { "
+  ^ String.concat " "
+      ((if p.target > 0. then [ "target " ^ float p.target ] else [])
+      @ sw "refraction" p.refraction @ sw "reflection" p.reflection
+      @ (if p.collect then [] else [ "collect off" ])
+      @ (if p.pass_through then [ "pass_through" ] else [])
+      @ (if p.split_union then [] else [ "split_union off" ])
+      @ if p.area_light then [ "area_light" ] else [])
+  ^ " }"
+
 let rec parts (o : Sdl.obj) =
   let tex =
     match o.texture with
@@ -117,6 +130,7 @@ let rec parts (o : Sdl.obj) =
         (fun (k, w) -> if o.flags land k <> 0 then Some w else None)
         [ (Sdl.no_image, "no_image"); (Sdl.no_reflection, "no_reflection"); (Sdl.double_illuminate, "double_illuminate") ]
     @ (if o.hollow then [ "hollow on" ] else [])
+    @ (if o.photon = Photon.none then [] else [ photons o.photon ])
     @ if Transform.is_identity o.xform then [] else [ matrix o.xform ]
   in
   let simple head = (head, mods) in
@@ -127,7 +141,8 @@ let rec parts (o : Sdl.obj) =
           ^ (match l.projected_through with Some p -> " projected_through { " ^ obj p ^ " }" | None -> "")
           ^ (if l.media_interaction then "" else " media_interaction off")
           ^ (if l.media_attenuation then " media_attenuation on" else ""),
-        if Transform.is_identity o.xform then [] else [ matrix o.xform ] )
+        (if o.photon = Photon.none then [] else [ photons o.photon ])
+        @ if Transform.is_identity o.xform then [] else [ matrix o.xform ] )
   | Sdl.Sphere (c, r) -> simple (Printf.sprintf "sphere { %s, %s" (vec c) (float r))
   | Sdl.Plane (n, d) -> simple (Printf.sprintf "plane { %s, %s" (vec n) (float d))
   | Sdl.Box (a, b) -> simple (Printf.sprintf "box { %s, %s" (vec a) (vec b))
@@ -333,6 +348,15 @@ let global = function
         (float r.maximum_reuse) (float r.adc_bailout) (float r.max_sample) (b r.always_sample) (b r.normal) (b r.media)
   | Sdl.Noise_generator n -> Printf.sprintf "noise_generator %d" n
   | Sdl.Number_of_waves n -> Printf.sprintf "number_of_waves %d" n
+  | Sdl.Photons p ->
+      Printf.sprintf
+        "photons { spacing %s %sgather %d, %d jitter %s %s%sautostop %s expand_thresholds %s, %d radius %s, %s%s }"
+        (float p.spacing) (if p.count > 0 then Printf.sprintf "count %d " p.count else "") p.gather_min p.gather_max
+        (float p.jitter)
+        (if p.max_trace_level > 0 then Printf.sprintf "max_trace_level %d " p.max_trace_level else "")
+        (if p.adc_bailout >= 0. then Printf.sprintf "adc_bailout %s " (float p.adc_bailout) else "")
+        (float p.autostop) (float p.expand_tolerance) p.expand_min (float p.radius) (float p.radius_mult)
+        (if p.media_steps > 0 then Printf.sprintf " media %d" p.media_steps else "")
 
 let item = function
   | Sdl.Object o -> obj o

@@ -153,6 +153,7 @@ and obj = {
   no_shadow : bool;
   hollow : bool;
   flags : int;  (** {!no_image}, {!no_reflection}, {!double_illuminate} *)
+  photon : Photon.flags;  (** its [photons { }] block; a light's too *)
 }
 
 type camera_item =
@@ -199,6 +200,7 @@ type global =
   | Radiosity of Radiosity.t  (** [radiosity { ... }]; [keep_ambient] is set by the compiler *)
   | Noise_generator of int  (** the scene's, for patterns naming none *)
   | Number_of_waves of int  (** the number of wave sources of ripples and waves (at least 1) *)
+  | Photons of Photon.settings  (** [photons { ... }]: caustics in whitted mode *)
 
 type item =
   | Object of obj

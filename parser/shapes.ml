@@ -27,7 +27,7 @@ let obj loc shape ms =
   Budget.parsed loc;
   let o =
     { Sdl.loc; shape; xform = Transform.identity; texture = None; interior = None; no_shadow = false;
-      hollow = false; flags = 0; inner = None }
+      hollow = false; flags = 0; inner = None; photon = Photon.none }
   in
   let o = List.fold_left (fun o f -> f o) o ms in
   match o.texture with
@@ -262,7 +262,7 @@ let isosurface loc floc (f : Fn.t) items =
       accuracy = 0.001; max_gradient = 1.1; evaluate = None; iso_open = false; max_trace = 1 }
   in
   let o = { Sdl.loc; shape = Sdl.Isosurface iso; xform = Transform.identity; texture = None; interior = None;
-            no_shadow = false; hollow = false; flags = 0; inner = None } in
+            no_shadow = false; hollow = false; flags = 0; inner = None; photon = Photon.none } in
   List.fold_left
     (fun (o : Sdl.obj) item ->
       let set g = match o.shape with Sdl.Isosurface i -> { o with shape = Sdl.Isosurface (g i) } | _ -> o in
@@ -373,7 +373,7 @@ let blob_moved t (c : Blob.component) =
 let blob_component loc ms comp =
   let o =
     { Sdl.loc; shape = Sdl.Sphere (Vec3.zero, 1.); xform = Transform.identity; texture = None; interior = None;
-      no_shadow = false; hollow = false; flags = 0; inner = None }
+      no_shadow = false; hollow = false; flags = 0; inner = None; photon = Photon.none }
   in
   let o = List.fold_left (fun o f -> f o) o ms in
   { Sdl.comp = blob_moved o.xform comp; ctex = o.texture }

@@ -180,27 +180,6 @@ and ident t name loc =
           end
           else if name = "defined" || name = "dimensions" || name = "dimension_size" then
             (Parser.FLOAT (Arrays.query t name loc), loc)
-          else if name = "photons" && (raw_peek t).raw = Tok Parser.LBRACE then begin
-            (* photons { ... } in global settings, objects and lights:
-               read past, a warning once *)
-            ignore (raw_next t);
-            let rec skip depth =
-              if depth > 0 then
-                match (raw_next t).raw with
-                | Tok Parser.LBRACE -> skip (depth + 1)
-                | Tok Parser.RBRACE -> skip (depth - 1)
-                | Eof -> fail t loc "%s { is not closed" name
-                | _ -> skip depth
-            in
-            skip 1;
-            if not (List.mem name t.skipped) then begin
-              t.skipped <- name :: t.skipped;
-              Diag.warning loc
-                "photons are read and ignored: whitted mode draws no caustics; mc mode finds them by path \
-                 tracing (slowly)"
-            end;
-            next t
-          end
           else if List.mem name [ "linear_spline"; "quadratic_spline"; "cubic_spline"; "bezier_spline";
                                   "linear_sweep"; "conic_sweep" ] then
             (* a prism's words (a spline { } reads its own kind) *)

@@ -35,6 +35,7 @@ let () =
       Test_lang.tests;
       Test_sampler.tests;
       Test_radiosity.tests;
+      Test_photons.tests;
       Test_bsdf.tests;
       Test_finish.tests;
       Test_fog.tests;

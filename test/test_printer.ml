@@ -48,7 +48,8 @@ let gen_obj =
   QCheck.Gen.(
     map
       (fun (shape, xform, texture, (interior, no_shadow, (hollow, flags))) ->
-        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow; flags; inner = None })
+        { Sdl.loc = Loc.none; shape; xform; texture; interior; no_shadow; hollow; flags; inner = None;
+          photon = Photon.none })
       (quad
          (oneof
             [
@@ -104,7 +105,7 @@ let same_xform a b =
 let normalise (o : Sdl.obj) =
   (* lights keep no texture or interior *)
   match o.shape with
-  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None }
+  | Sdl.Light _ -> { o with texture = None; interior = None; no_shadow = false; hollow = false; flags = 0; inner = None; photon = Photon.none }
   | _ -> o
 
 let round_trip =
