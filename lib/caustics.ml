@@ -312,6 +312,8 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
       max_level = (if ps.max_trace_level > 0 then ps.max_trace_level else s.settings.max_trace_level);
       st; hit_target = false; pig = Pigment.out () }
   in
+  (* the interiors a photon starts in, found once per origin *)
+  let inside o = List.map (fun (x : Object.t) -> x.interior) (Scene.containing s o) in
   let origins =
     match samples with
     | None -> [ (light.position, 1.) ]
@@ -323,9 +325,10 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
                    ( Vec3.add light.position (Vec3.add (Vec3.scale (off a.n1 i) a.axis1) (Vec3.scale (off a.n2 j) a.axis2)),
                      1. /. float_of_int (a.n1 * a.n2) ))))
   in
+  let origins = List.map (fun (o, share) -> (o, share, if par then [] else inside o)) origins in
   let shoot_dir jt jp =
     List.iter
-      (fun (org, share) ->
+      (fun (org, share, media) ->
         let o, d =
           if par then begin
             let left = frame dir in
@@ -345,7 +348,7 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
         Vec3.load q (Vec3.add o d);
         let a = share *. Light.beam light q in
         if a >= 1e-5 then begin
-          let media = List.map (fun (x : Object.t) -> x.interior) (Scene.containing s o) in
+          let media = if par then inside o else media in
           trace sh o d (Color.scale a light.color) 1. 0 0. true media
         end)
       origins
