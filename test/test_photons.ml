@@ -126,16 +126,17 @@ let gather_is_brute =
 
 (* Caustics against POV-Ray: a floor (diffuse, ambient 0) under a clear
    sphere target, lit from above, seen from straight above *)
-let floor ?(collect = "") ?(sphere = "pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1 }") ~at ~size ~diffuse () =
+let floor ?(collect = "") ?(sphere = "pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1 }") ?(light = "")
+    ~at ~size ~diffuse () =
   let x, z = at in
   Printf.sprintf
     "#version 3.7;\n\
      global_settings { assumed_gamma 1.0 photons { spacing 0.01 } }\n\
      camera { orthographic location <%g, 1, %g> look_at <%g, 0, %g> right x*%g up z*%g sky z }\n\
-     light_source { <0, 10, 0>, rgb 1 }\n\
+     light_source { <0, 10, 0>, rgb 1 %s }\n\
      plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse %g } %s }\n\
      sphere { <0, 3, 0>, 1 %s photons { target refraction on } }"
-    x z x z size size diffuse collect sphere
+    x z x z size size light diffuse collect sphere
 
 let mean_render ?(domains = 1) src =
   let s = Scn.compile ~raw:true src in
@@ -161,6 +162,14 @@ let caustics () =
   let glass = "pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1.5 }" in
   near "a glass ball's caustic" ~rel:0.02 0.4681 (fst (mean_render (floor ~sphere:glass ~at:(0., 0.) ~size:0.4 ~diffuse:0.1 ())));
   near "its edge" ~rel:0.02 0.1877 (fst (mean_render (floor ~sphere:glass ~at:(0.3, 0.3) ~size:0.2 ~diffuse:0.1 ())));
+  (* the same ball under other lights *)
+  List.iter
+    (fun (what, light, want) ->
+      near what ~rel:0.02 want (fst (mean_render (floor ~sphere:glass ~light ~at:(0., 0.) ~size:0.4 ~diffuse:0.1 ()))))
+    [ ("a spotlight", "spotlight point_at <0, 0, 0> radius 4 falloff 8 tightness 5", 0.4665);
+      ("a parallel light", "parallel point_at <0, 0, 0>", 0.0918);
+      ("a fading light", "fade_distance 4 fade_power 2", 0.1287);
+      ("an area light shooting from its samples", "area_light x, z, 3, 3 photons { area_light }", 0.3371) ];
   (* a floor that does not collect: the glass casts its usual filtered
      shadow (all the light through) *)
   near "collect off" ~rel:1e-3 0.1
