@@ -249,7 +249,7 @@ let render_frame o ~clock ~frame ~out ~t0 =
         (* a time limit (compare's) stops the pretrace at its next
            progress report *)
         (* the photons first (Whitted.prepare would shoot them), timed *)
-        Caustics.prepare scene;
+        Caustics.prepare ?par:(if domains > 1 then Some (Render.pulled ~domains) else None) scene;
         (match scene.settings.photons with
         | Some { state = { map = Some m }; _ } ->
             Printf.eprintf "camlray: %d photons stored, gather radius %.4g (%.3f s)\n%!" (Photon.size m)

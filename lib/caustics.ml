@@ -291,7 +291,7 @@ let frame toctr =
   let up = if Float.abs (Float.abs toctr.Vec3.z -. 1.) < 0.1 then Vec3.unit_y else Vec3.unit_z in
   Vec3.normalize (Vec3.cross toctr up)
 
-let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Light.t) u =
+let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing st k (light : Light.t) u =
   let ctr, rad = sphere u in
   let par = parallel light in
   let dir = axis light in
@@ -307,7 +307,7 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
   let spread = match samples with Some a -> spread *. Float.sqrt (float_of_int (a.n1 * a.n2)) | None -> spread in
   let dtheta = if par then spread else Float.atan spread in
   let maxtheta = if par then rad else if dist >= rad then Float.asin (rad /. dist) else Float.pi in
-  let sh =
+  let sh0 =
     { scene = s; light; unit_ = u; spread; par; adc = (if ps.adc_bailout >= 0. then ps.adc_bailout else s.settings.adc_bailout);
       max_level = (if ps.max_trace_level > 0 then ps.max_trace_level else s.settings.max_trace_level);
       st; hit_target = false; pig = Pigment.out () }
@@ -326,7 +326,7 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
                      1. /. float_of_int (a.n1 * a.n2) ))))
   in
   let origins = List.map (fun (o, share) -> (o, share, if par then [] else inside o)) origins in
-  let shoot_dir jt jp =
+  let shoot_dir sh jt jp =
     List.iter
       (fun (org, share, media) ->
         let o, d =
@@ -353,28 +353,48 @@ let shoot_unit (s : Scene.t) (ps : Photon.settings) ~spacing st rng (light : Lig
         end)
       origins
   in
+  (* one ring of directions, with its own random numbers and store:
+     rings are shot in batches on every domain, then taken in order *)
+  let ring r =
+    let rng = Random.State.make [| 1; k; r |] in
+    let sh = { sh0 with st = Photon.store (); hit_target = false; pig = Pigment.out () } in
+    let th = float_of_int r *. dtheta in
+    let dphi = if th < 1e-10 then 2. *. Float.pi else if par then dtheta /. th else dtheta /. Float.sin th in
+    let minphi = -.Float.pi +. (dphi *. Random.State.float rng 1. *. 0.5) in
+    let maxphi = Float.pi -. (dphi /. 2.) +. (minphi +. Float.pi) in
+    let phi = ref minphi in
+    while !phi < maxphi do
+      let jp = !phi +. (dphi *. (Random.State.float rng 1. -. 0.5) *. ps.jitter) in
+      let jt = th +. (dtheta *. (Random.State.float rng 1. -. 0.5) *. ps.jitter) in
+      shoot_dir sh jt jp;
+      phi := !phi +. dphi
+    done;
+    (sh.st, sh.hit_target)
+  in
   if spread > 0. then begin
-    let theta = ref 0. and hit_once = ref false and stop = ref false in
-    while !theta < maxtheta && not !stop do
-      sh.hit_target <- false;
-      let th = !theta in
-      let dphi = if th < 1e-10 then 2. *. Float.pi else if par then dtheta /. th else dtheta /. Float.sin th in
-      let minphi = -.Float.pi +. (dphi *. Random.State.float rng 1. *. 0.5) in
-      let maxphi = Float.pi -. (dphi /. 2.) +. (minphi +. Float.pi) in
-      let phi = ref minphi in
-      while !phi < maxphi do
-        let jp = !phi +. (dphi *. (Random.State.float rng 1. -. 0.5) *. ps.jitter) in
-        let jt = th +. (dtheta *. (Random.State.float rng 1. -. 0.5) *. ps.jitter) in
-        shoot_dir jt jp;
-        phi := !phi +. dphi
-      done;
-      if sh.hit_target then hit_once := true;
-      if !hit_once && (not sh.hit_target) && th > ps.autostop *. maxtheta then stop := true;
-      theta := th +. dtheta
+    let rings = int_of_float (Float.ceil (maxtheta /. dtheta)) in
+    let batch = 64 in
+    let start = ref 0 and hit_once = ref false and stop = ref false in
+    while !start < rings && not !stop do
+      let n = Int.min batch (rings - !start) in
+      let got = Array.make n (st, false) in
+      par_ n (fun i -> got.(i) <- ring (!start + i));
+      Array.iteri
+        (fun i (rs, hit) ->
+          if not !stop then begin
+            Photon.append st rs;
+            (* POV-Ray's autostop: past that share of the cone, a ring
+               that misses the target ends the shooting *)
+            if hit then hit_once := true;
+            let th = float_of_int (!start + i) *. dtheta in
+            if !hit_once && (not hit) && th > ps.autostop *. maxtheta then stop := true
+          end)
+        got;
+      start := !start + n
     done
   end
 
-let shoot (s : Scene.t) (ps : Photon.settings) =
+let shoot ?(par = Image.sequential) (s : Scene.t) (ps : Photon.settings) =
   let us = Array.fold_right units s.objects [] in
   let spacing = if ps.count > 0 then spacing_for_count s ps us else ps.spacing in
   let st = Photon.store () in
@@ -386,12 +406,12 @@ let shoot (s : Scene.t) (ps : Photon.settings) =
           (fun u ->
             incr k;
             if Photon.shoots u.flags ~light:light.photons then
-              shoot_unit s ps ~spacing st (Random.State.make [| 1; !k |]) light u)
+              shoot_unit ~par_:par s ps ~spacing st !k light u)
           us)
     s.lights;
   Photon.build ps st
 
-let prepare (s : Scene.t) =
+let prepare ?par (s : Scene.t) =
   match s.settings.photons with
-  | Some ps when ps.state.map = None -> ps.state.map <- Some (shoot s ps)
+  | Some ps when ps.state.map = None -> ps.state.map <- Some (shoot ?par s ps)
   | _ -> ()

@@ -23,10 +23,12 @@
     fade, spread^2 and the length of its way^2, so that the density of
     photons gives the light's intensity. *)
 
-val shoot : Scene.t -> Photon.settings -> Photon.map
-(** The photon map of a scene (deterministic: the same photons every
-    time). *)
+val shoot : ?par:Image.par -> Scene.t -> Photon.settings -> Photon.map
+(** The photon map of a scene. The rings of directions are shot in
+    batches, with [par] on several domains, each ring with random
+    numbers of its own and taken in order: the same photons every time,
+    whatever the domains. *)
 
-val prepare : Scene.t -> unit
+val prepare : ?par:Image.par -> Scene.t -> unit
 (** Shoot the scene's photons once, when it has a [photons] block and
     they have not been shot yet. *)

@@ -76,7 +76,19 @@ let default_settings () =
 (* photons as they are shot: growing arrays *)
 type store = { mutable data : Float.Array.t; mutable k : int }
 
-let store () = { data = Float.Array.create (9 * 1024); k = 0 }
+let store () = { data = Float.Array.create (9 * 16); k = 0 }
+
+let append st src =
+  if src.k > 0 then begin
+    let need = 9 * (st.k + src.k) in
+    if need > Float.Array.length st.data then begin
+      let d = Float.Array.create (Int.max need (2 * Float.Array.length st.data)) in
+      Float.Array.blit st.data 0 d 0 (9 * st.k);
+      st.data <- d
+    end;
+    Float.Array.blit src.data 0 st.data (9 * st.k) (9 * src.k);
+    st.k <- st.k + src.k
+  end
 let stored st = st.k
 
 let add st x y z ~r ~g ~b dx dy dz =

@@ -89,6 +89,9 @@ val add : store -> float -> float -> float -> r:float -> g:float -> b:float -> f
 
 val stored : store -> int
 
+val append : store -> store -> unit
+(** [append st src]: [src]'s photons after [st]'s. *)
+
 val build : ?seed:int -> settings -> store -> map
 (** The kd-tree over the photons, with its gather radius: the settings'
     [radius] when positive, else POV-Ray's estimate (the mean density

@@ -951,7 +951,7 @@ let in_turn (s : Scene.t) c ?par ~width ~height ~batch xs ys take =
    the domains. *)
 let prepare ?par ?(batch = 128) ?(progress = fun ~done_:_ ~total:_ -> ()) (s : Scene.t) ~width ~height =
   (* the photons first: radiosity's gathers see them *)
-  Caustics.prepare s;
+  Caustics.prepare ?par s;
   match s.settings.radiosity with
   | None -> ()
   | Some r ->
