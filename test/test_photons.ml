@@ -140,7 +140,7 @@ let floor ?(collect = "") ?(sphere = "pigment { rgbf 1 } finish { ambient 0 diff
 
 let mean_render ?(domains = 1) src =
   let s = Scn.compile ~raw:true src in
-  Caustics.prepare s;
+  Caustics.prepare ?par:(if domains > 1 then Some (Render.pulled ~domains) else None) s;
   let img = Render.image ~domains ~width:16 ~height:16 (Whitted.pixel s ~width:16 ~height:16) in
   let sum = ref 0. in
   for y = 0 to 15 do
@@ -189,7 +189,8 @@ let caustics () =
   near "a mirror's caustic" ~rel:0.02 0.3103 (fst (mean_render (wall "photons { target reflection on }")));
   near "no target, no caustic" ~rel:1e-3 0.1816 (fst (mean_render (wall "")))
 
-(* the photons are shot once, the same whatever the domains *)
+(* the photons are shot once, the same whatever the domains shooting
+   and rendering *)
 let domains () =
   let src = floor ~sphere:"pigment { rgbf 1 } interior { ior 1.5 }" ~at:(0.2, 0.) ~size:0.6 ~diffuse:0.3 () in
   let _, a = mean_render ~domains:1 src and _, b = mean_render ~domains:2 src in
