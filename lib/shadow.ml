@@ -372,7 +372,8 @@ let[@inline] aim (s : Scene.t) (w : walk) (light : Light.t) =
    if w.fogs != f then w.fogs <- f);
   if w.through != light.projected_through then w.through <- light.projected_through;
   w.occlude <- not light.shadowless;
-  if w.lphotons != light.photons then w.lphotons <- light.photons;
+  (* read only where photons block shadow rays ({!collects}) *)
+  if w.collecting && w.lphotons != light.photons then w.lphotons <- light.photons;
   match s.atmosphere with
   | [] -> if w.air != [] then w.air <- []
   | (i : Interior.t) :: _ ->

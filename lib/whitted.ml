@@ -290,7 +290,11 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   (* a light_group's surfaces see only their own set of lights *)
   fr.lights <- Array.unsafe_get s.light_sets obj.lights;
-  fr.collect <- obj.photon.collect && (match s.settings.photons with Some { state = { map = Some m }; _ } -> Photon.size m > 0 | _ -> false);
+  fr.collect <-
+    (match s.settings.photons with
+    | None -> false
+    | Some { state = { map = Some m }; _ } -> obj.photon.collect && Photon.size m > 0
+    | Some _ -> false);
   let inner = obj.interior in
   let eta = Interior.relative_ior inner media in
   fr.k.fres <- Interior.fresnel_ior inner media;
