@@ -251,9 +251,13 @@ let render_frame o ~clock ~frame ~out ~t0 =
         (* the photons first (Whitted.prepare would shoot them), timed *)
         Caustics.prepare ?par:(if domains > 1 then Some (Render.pulled ~domains) else None) scene;
         (match scene.settings.photons with
-        | Some { state = { map = Some m }; _ } ->
-            Printf.eprintf "camlray: %d photons stored, gather radius %.4g (%.3f s)\n%!" (Photon.size m)
-              (Photon.radius m) (Unix.gettimeofday () -. t1)
+        | Some { state = { map = Some m; media_map }; _ } ->
+            Printf.eprintf "camlray: %d photons stored, gather radius %.4g%s (%.3f s)\n%!" (Photon.size m)
+              (Photon.radius m)
+              (match media_map with
+              | Some mm -> Printf.sprintf "; %d media photons, radius %.4g" (Photon.size mm) (Photon.radius mm)
+              | None -> "")
+              (Unix.gettimeofday () -. t1)
         | _ -> ());
         let radiosity_bar = bar "radiosity" in
         Whitted.prepare

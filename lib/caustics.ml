@@ -74,8 +74,11 @@ type shot = {
   max_level : int;
   adc : float;
   st : Photon.store;
+  mst : Photon.store;  (** the media's photons *)
   mutable hit_target : bool;
   pig : Pigment.out;
+  rng : Random.State.t;
+  ps : Photon.settings;
 }
 
 let grey r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
@@ -130,7 +133,7 @@ let rec trace sh (o : Vec3.t) (d : Vec3.t) (c : Color.t) weight level depth pass
         in
         (match through with
         | None -> ()
-        | Some pass -> surface sh h d c weight level depth passprev pass media)
+        | Some pass -> surface sh o h d c weight level depth passprev pass media)
   end
 
 (* the nearest surface a photon meets: no_shadow objects are not seen *)
@@ -140,10 +143,12 @@ and next_hit s o d =
       match next_hit s h.point d with Some h' -> Some { h' with t = h.t +. h'.t } | None -> None)
   | r -> r
 
-and surface sh (h : Scene.hit) d c weight level depth passprev pass media =
+and surface sh o (h : Scene.hit) d c weight level depth passprev pass media =
   let obj = h.obj and p = h.point in
   let inner = obj.interior in
   let dist = h.t in
+  (* the media on the way here: photons left in them, and their extinction *)
+  let c = if List.exists (fun (i : Interior.t) -> i.media <> []) media then stretch sh o d dist c depth level passprev media else c in
   (* interior fade over the way inside *)
   let c =
     if Interior.fades_light inner && List.memq inner media then
@@ -267,16 +272,75 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
             (List.rev !mirrors)
       end)
 
+(* POV-Ray's media photons over the stretch of [ds] from [o] along [d]
+   (photons.cpp's DepositMediaPhotons): after the photon's first surface,
+   in hollow interiors, up to [media_steps] of them spaced [media_factor]
+   spreads apart at the distance travelled, each with the colour the
+   photon came in with (no extinction within the stretch, as POV-Ray)
+   and a flux that makes their density the light's; the colour out
+   dimmed by the mean extinction of the samples. A stretch too short for
+   one sample leaves POV-Ray's photon without colour (0/0): so here. *)
+and stretch sh (o : Vec3.t) (d : Vec3.t) ds c depth level passprev media =
+  let ms = List.concat_map (fun (i : Interior.t) -> i.media) media in
+  let scatters = List.exists (fun (m : Media.t) -> m.scattering <> None) ms in
+  let absorbs = List.exists (fun (m : Media.t) -> m.absorption <> Color.black) ms in
+  if not (scatters || absorbs) then c
+  else begin
+    let pig = Pigment.out () and dens = Color.acc 0. and ext = Color.acc 0. and p = Vec3.m () in
+    let od = Color.acc 0. in
+    let extinction s =
+      Vec3.set p (o.x +. (s *. d.x)) (o.y +. (s *. d.y)) (o.z +. (s *. d.z));
+      Color.acc_set ext 0. 0. 0.;
+      List.iter (fun m -> Media.add_extinction m p pig dens ext) ms;
+      Color.acc_set od (od.ar +. (ext.ar *. ds)) (od.ag +. (ext.ag *. ds)) (od.ab +. (ext.ab *. ds))
+    in
+    let ps = sh.ps in
+    let deposit = level > 1 && (not passprev) && ps.media_steps > 0 && List.for_all (fun (i : Interior.t) -> i.hollow) media in
+    let n =
+      if deposit then begin
+        let base = if sh.par then sh.spread else sh.spread *. depth in
+        let n0 = int_of_float (ds /. (base *. ps.media_factor)) in
+        let n, f =
+          if n0 <= ps.media_steps then (n0, ps.media_factor) else (ps.media_steps, ds /. (base *. float_of_int ps.media_steps))
+        in
+        for j = 0 to n - 1 do
+          let u = Random.State.float sh.rng 1. in
+          let d0 = (float_of_int j +. 0.5 +. (ps.jitter *. u) -. (0.5 *. ps.jitter)) /. float_of_int n in
+          let s = d0 *. ds in
+          extinction s;
+          if scatters then begin
+            let dp = depth +. s in
+            let k = f *. sh.spread *. (if sh.par then 1. else dp) *. fade_at sh.light dp *. sh.spread *. sh.spread
+                    *. (if sh.par then 1. else dp *. dp) in
+            Photon.add sh.mst p.mx p.my p.mz ~r:(k *. c.Color.r) ~g:(k *. c.g) ~b:(k *. c.b) (-.d.x) (-.d.y) (-.d.z)
+          end
+        done;
+        n
+      end
+      else begin
+        (* not a deposit: the extinction by ten samples *)
+        for j = 0 to 9 do
+          extinction ((float_of_int j +. 0.5) *. ds /. 10.)
+        done;
+        10
+      end
+    in
+    if n = 0 then Color.black
+    else
+      let k = 1. /. float_of_int n in
+      Color.make (c.r *. Float.exp (-.od.ar *. k)) (c.g *. Float.exp (-.od.ag *. k)) (c.b *. Float.exp (-.od.ab *. k))
+  end
+
+and fade_at (l : Light.t) depth =
+  if l.fade_power > 0. && Float.abs l.fade_distance > 1e-10 then
+    2. /. (1. +. Float.pow (depth /. l.fade_distance) l.fade_power)
+  else 1.
+
 (* a photon kept where it lands: its flux makes the density of photons
    around it give the light's own intensity (POV-Ray's spread^2 depth^2),
    faded as the light fades over the whole way *)
 and store sh (p : Vec3.t) d c depth =
-  let l = sh.light in
-  let fade =
-    if l.fade_power > 0. && Float.abs l.fade_distance > 1e-10 then
-      2. /. (1. +. Float.pow (depth /. l.fade_distance) l.fade_power)
-    else 1.
-  in
+  let fade = fade_at sh.light depth in
   let k = fade *. sh.spread *. sh.spread *. if sh.par then 1. else depth *. depth in
   Photon.add sh.st p.x p.y p.z ~r:(k *. c.r) ~g:(k *. c.g) ~b:(k *. c.b) (-.d.x) (-.d.y) (-.d.z)
 
@@ -291,7 +355,7 @@ let frame toctr =
   let up = if Float.abs (Float.abs toctr.Vec3.z -. 1.) < 0.1 then Vec3.unit_y else Vec3.unit_z in
   Vec3.normalize (Vec3.cross toctr up)
 
-let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing st k (light : Light.t) u =
+let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing st mst k (light : Light.t) u =
   let ctr, rad = sphere u in
   let par = parallel light in
   let dir = axis light in
@@ -310,7 +374,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
   let sh0 =
     { scene = s; light; unit_ = u; spread; par; adc = (if ps.adc_bailout >= 0. then ps.adc_bailout else s.settings.adc_bailout);
       max_level = (if ps.max_trace_level > 0 then ps.max_trace_level else s.settings.max_trace_level);
-      st; hit_target = false; pig = Pigment.out () }
+      st; mst = st; hit_target = false; pig = Pigment.out (); rng = Random.State.make [| 0 |]; ps }
   in
   (* the interiors a photon starts in, found once per origin *)
   let inside o = List.map (fun (x : Object.t) -> x.interior) (Scene.containing s o) in
@@ -357,7 +421,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
      rings are shot in batches on every domain, then taken in order *)
   let ring r =
     let rng = Random.State.make [| 1; k; r |] in
-    let sh = { sh0 with st = Photon.store (); hit_target = false; pig = Pigment.out () } in
+    let sh = { sh0 with st = Photon.store (); mst = Photon.store (); hit_target = false; pig = Pigment.out (); rng } in
     let th = float_of_int r *. dtheta in
     let dphi = if th < 1e-10 then 2. *. Float.pi else if par then dtheta /. th else dtheta /. Float.sin th in
     let minphi = -.Float.pi +. (dphi *. Random.State.float rng 1. *. 0.5) in
@@ -369,7 +433,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
       shoot_dir sh jt jp;
       phi := !phi +. dphi
     done;
-    (sh.st, sh.hit_target)
+    (sh.st, sh.mst, sh.hit_target)
   in
   if spread > 0. then begin
     let rings = int_of_float (Float.ceil (maxtheta /. dtheta)) in
@@ -377,12 +441,13 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
     let start = ref 0 and hit_once = ref false and stop = ref false in
     while !start < rings && not !stop do
       let n = Int.min batch (rings - !start) in
-      let got = Array.make n (st, false) in
+      let got = Array.make n (st, mst, false) in
       par_ n (fun i -> got.(i) <- ring (!start + i));
       Array.iteri
-        (fun i (rs, hit) ->
+        (fun i (rs, rms, hit) ->
           if not !stop then begin
             Photon.append st rs;
+            Photon.append mst rms;
             (* POV-Ray's autostop: past that share of the cone, a ring
                that misses the target ends the shooting *)
             if hit then hit_once := true;
@@ -397,7 +462,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
 let shoot ?(par = Image.sequential) (s : Scene.t) (ps : Photon.settings) =
   let us = Array.fold_right units s.objects [] in
   let spacing = if ps.count > 0 then spacing_for_count s ps us else ps.spacing in
-  let st = Photon.store () in
+  let st = Photon.store () and mst = Photon.store () in
   let k = ref 0 in
   Array.iter
     (fun (light : Light.t) ->
@@ -406,12 +471,15 @@ let shoot ?(par = Image.sequential) (s : Scene.t) (ps : Photon.settings) =
           (fun u ->
             incr k;
             if Photon.shoots u.flags ~light:light.photons then
-              shoot_unit ~par_:par s ps ~spacing st !k light u)
+              shoot_unit ~par_:par s ps ~spacing st mst !k light u)
           us)
     s.lights;
-  Photon.build ps st
+  (Photon.build ps st, if Photon.stored mst > 0 then Some (Photon.build ~volume:true ps mst) else None)
 
 let prepare ?par (s : Scene.t) =
   match s.settings.photons with
-  | Some ps when ps.state.map = None -> ps.state.map <- Some (shoot ?par s ps)
+  | Some ps when ps.state.map = None ->
+      let m, mm = shoot ?par s ps in
+      ps.state.map <- Some m;
+      ps.state.media_map <- mm
   | _ -> ()

@@ -23,8 +23,16 @@
     fade, spread^2 and the length of its way^2, so that the density of
     photons gives the light's intensity. *)
 
-val shoot : ?par:Image.par -> Scene.t -> Photon.settings -> Photon.map
-(** The photon map of a scene. The rings of directions are shot in
+val shoot : ?par:Image.par -> Scene.t -> Photon.settings -> Photon.map * Photon.map option
+(** The photon maps of a scene: the surfaces', and the media's when the
+    settings ask for media photons ([media STEPS]) and some were left:
+    after its first surface, over each stretch inside hollow interiors
+    with media, a photon leaves up to STEPS photons, spaced [FACTOR]
+    spreads apart at the distance travelled (jittered), each with the
+    colour it came in with and a flux that makes their density the
+    light's; its colour is dimmed by the stretch's mean extinction (a
+    stretch too short for one sample leaves it without colour, as in
+    POV-Ray). The rings of directions are shot in
     batches, with [par] on several domains, each ring with random
     numbers of its own and taken in order: the same photons every time,
     whatever the domains. *)

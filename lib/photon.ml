@@ -63,15 +63,18 @@ type settings = {
   radius : float;
   radius_mult : float;
   media_steps : int;
+  media_factor : float;
+  media_radius : float;
+  media_mult : float;
   state : state;
 }
 
-and state = { mutable map : map option }
+and state = { mutable map : map option; mutable media_map : map option }
 
 let default_settings () =
   { spacing = 1.; count = 0; gather_min = 20; gather_max = 100; jitter = 0.4; max_trace_level = -1;
     adc_bailout = -1.; autostop = 0.5; expand_tolerance = 0.2; expand_min = 35; radius = 0.; radius_mult = 1.;
-    media_steps = 0; state = { map = None } }
+    media_steps = 0; media_factor = 1.; media_radius = 0.; media_mult = 1.; state = { map = None; media_map = None } }
 
 (* photons as they are shot: growing arrays *)
 type store = { mutable data : Float.Array.t; mutable k : int }
@@ -103,32 +106,33 @@ let add st x y z ~r ~g ~b dx dy dz =
 
 let size m = m.n
 let radius m = m.r0
-let position m i k = Float.Array.get m.pos ((3 * i) + k)
-let flux m i k = Float.Array.get m.col ((3 * i) + k)
-let direction m i k = Float.Array.get m.dir ((3 * i) + k)
+let[@inline] position m i k = Float.Array.get m.pos ((3 * i) + k)
+let[@inline] flux m i k = Float.Array.get m.col ((3 * i) + k)
+let[@inline] direction m i k = Float.Array.get m.dir ((3 * i) + k)
 
 (* The search state, per domain: the query point, normal and bound in
    a float array (a record mixing floats and ints would box them), the
    photons kept in a max-heap by distance. *)
 type query = {
-  q : Float.Array.t;  (** x, y, z, nx, ny, nz, bound (squared), flatten (0 or 1) *)
+  q : Float.Array.t;
+      (** x, y, z, nx, ny, nz, bound (squared), flatten (0 or 1), search
+          radius; then the last gather's area and volume *)
   mutable heap_d : Float.Array.t;
   mutable heap_i : int array;
   mutable cnt : int;
   mutable cap : int;
   mutable over : bool;  (** a photon was dropped for a nearer one *)
-  mutable area_ : float;
 }
 
 let query_key =
   Scratch.key (fun () ->
-      { q = Float.Array.make 8 0.; heap_d = Float.Array.create 0; heap_i = [||]; cnt = 0; cap = 0; over = false;
-        area_ = 1. })
+      { q = Float.Array.make 11 0.; heap_d = Float.Array.create 0; heap_i = [||]; cnt = 0; cap = 0; over = false })
 
 let query () = Scratch.get query_key
-let found q = q.cnt
-let area q = q.area_
-let index q i = q.heap_i.(i)
+let[@inline] found q = q.cnt
+let[@inline] area q = Float.Array.get q.q 9
+let[@inline] volume q = Float.Array.get q.q 10
+let[@inline] index q i = Array.unsafe_get q.heap_i i
 
 let sift_down q =
   let hd = q.heap_d and hi = q.heap_i and n = q.cnt in
@@ -211,7 +215,9 @@ let rec search m qr lo hi =
     consider m qr mid
   end
 
-let reset m qr r =
+(* the search radius in [q.(8)]: a float passed would be boxed *)
+let reset m qr =
+  let r = Float.Array.get qr.q 8 in
   if qr.cap < m.gmax then begin
     qr.heap_d <- Float.Array.create m.gmax;
     qr.heap_i <- Array.make m.gmax 0
@@ -223,11 +229,13 @@ let reset m qr r =
 
 (* found within radius [r] (flattened when the query's flag says so);
    the area of the estimate *)
-let run m qr r =
-  reset m qr r;
+let run m qr =
+  reset m qr;
+  let r = Float.Array.get qr.q 8 in
   search m qr 0 m.n;
   let rr = if qr.over then Float.Array.get qr.heap_d 0 else r *. r in
-  qr.area_ <- Float.pi *. rr
+  Float.Array.set qr.q 9 (Float.pi *. rr);
+  Float.Array.set qr.q 10 (4. /. 3. *. Float.pi *. rr *. Float.sqrt rr)
 
 let nearest m qr x y z ~radius =
   let q = qr.q in
@@ -235,8 +243,29 @@ let nearest m qr x y z ~radius =
   Float.Array.set q 1 y;
   Float.Array.set q 2 z;
   Float.Array.set q 7 0.;
-  run m qr radius;
+  Float.Array.set q 8 radius;
+  run m qr;
   qr.cnt
+
+(* POV-Ray's adaptive gather of the query set up *)
+let adaptive m qr =
+  Float.Array.set qr.q 8 m.r0;
+  run m qr;
+  if qr.cnt < m.gmin then begin
+    (* POV-Ray's one expansion, to three times the radius: kept when the
+       density barely changes, or when it holds only a few photons *)
+    let n1 = qr.cnt and a1 = area qr in
+    let prev = if n1 = 0 then 1e-16 else float_of_int n1 /. a1 in
+    Float.Array.set qr.q 8 (3. *. m.r0);
+    run m qr;
+    let n2 = qr.cnt in
+    let here = float_of_int n2 /. area qr in
+    if not ((here -. prev) /. prev < m.tolerance || (n2 > 0 && n2 < m.emin)) then begin
+      Float.Array.set qr.q 8 m.r0;
+      run m qr;
+      assert (qr.cnt = n1)
+    end
+  end
 
 let gather m qr (p : Vec3.m) (n : Vec3.m) =
   let q = qr.q in
@@ -247,23 +276,18 @@ let gather m qr (p : Vec3.m) (n : Vec3.m) =
   Float.Array.set q 4 n.my;
   Float.Array.set q 5 n.mz;
   Float.Array.set q 7 1.;
-  run m qr m.r0;
-  if qr.cnt < m.gmin then begin
-    (* POV-Ray's one expansion, to three times the radius: kept when the
-       density barely changes, or when it holds only a few photons *)
-    let n1 = qr.cnt and a1 = qr.area_ in
-    let prev = if n1 = 0 then 1e-16 else float_of_int n1 /. a1 in
-    run m qr (3. *. m.r0);
-    let n2 = qr.cnt in
-    let here = float_of_int n2 /. qr.area_ in
-    if not ((here -. prev) /. prev < m.tolerance || (n2 > 0 && n2 < m.emin)) then begin
-      run m qr m.r0;
-      assert (qr.cnt = n1)
-    end
-  end
+  adaptive m qr
+
+let gather_volume m qr (p : Vec3.m) =
+  let q = qr.q in
+  Float.Array.set q 0 p.mx;
+  Float.Array.set q 1 p.my;
+  Float.Array.set q 2 p.mz;
+  Float.Array.set q 7 0.;
+  adaptive m qr
 
 (* Building: quickselect the median of each range on its widest axis *)
-let build ?(seed = 0) (s : settings) st =
+let build ?(seed = 0) ?(volume = false) (s : settings) st =
   let n = st.k in
   let d = st.data in
   let idx = Array.init n Fun.id in
@@ -313,8 +337,9 @@ let build ?(seed = 0) (s : settings) st =
     { n; pos = part 0; col = part 3; dir = part 6; axis; r0 = 1.; gmin = s.gather_min; gmax = s.gather_max;
       tolerance = s.expand_tolerance; emin = s.expand_min }
   in
+  let given = if volume then s.media_radius else s.radius in
   let r0 =
-    if s.radius > 0. then s.radius
+    if given > 0. then given
     else if n = 0 then 1.
     else begin
       (* POV-Ray's estimate: the density at the gather_max nearest photons
@@ -323,7 +348,11 @@ let build ?(seed = 0) (s : settings) st =
       let rng = Random.State.make [| seed; n |] in
       let samples = max 100 (min 1000 (n / 20)) in
       let qr = query () in
-      let density r cnt = if r > 0. then float_of_int cnt /. (Float.pi *. r *. r) else 0. in
+      let density r cnt =
+        if r <= 0. then 0.
+        else if volume then 3. *. float_of_int cnt /. (4. *. Float.pi *. r *. r *. r)
+        else float_of_int cnt /. (Float.pi *. r *. r)
+      in
       let sum = ref 0. in
       for i = 1 to samples do
         let j = Random.State.int rng n in
@@ -333,7 +362,10 @@ let build ?(seed = 0) (s : settings) st =
         sum := !sum +. dn
       done;
       let avg = !sum /. float_of_int samples in
-      let r = Float.sqrt (float_of_int m0.gmax /. (avg *. Float.pi)) in
+      let r =
+        if volume then Float.pow (3. *. float_of_int m0.gmax /. (avg *. Float.pi *. 4.)) 0.3333
+        else Float.sqrt (float_of_int m0.gmax /. (avg *. Float.pi))
+      in
       let less = ref 0 in
       for _ = 1 to samples do
         let j = Random.State.int rng n in
@@ -345,4 +377,4 @@ let build ?(seed = 0) (s : settings) st =
       r *. (1. +. (20. *. float_of_int !less /. float_of_int samples))
     end
   in
-  { m0 with r0 = r0 *. s.radius_mult }
+  { m0 with r0 = (if volume then 2. *. r0 *. s.media_mult else r0 *. s.radius_mult) }

@@ -67,11 +67,17 @@ type settings = {
   expand_min : int;  (** 35 *)
   radius : float;  (** the gather radius; not positive: estimated from the map *)
   radius_mult : float;  (** 1 *)
-  media_steps : int;  (** read; media photons are not computed *)
+  media_steps : int;  (** [media STEPS]: the most media photons a stretch of ray deposits (0: none) *)
+  media_factor : float;  (** [media STEPS, FACTOR]: their spacing along the ray, in [spacing]s (1) *)
+  media_radius : float;  (** [radius]'s third value: the media map's gather radius (estimated when not positive) *)
+  media_mult : float;  (** its fourth: a multiplier (1) *)
   state : state;
 }
 
-and state = { mutable map : map option  (** shot once, before the first render *) }
+and state = {
+  mutable map : map option;  (** the surfaces' photons, shot once before the first render *)
+  mutable media_map : map option;  (** the media's *)
+}
 
 val default_settings : unit -> settings
 (** POV-Ray's defaults when a [photons] block is present (a fresh state). *)
@@ -92,14 +98,16 @@ val stored : store -> int
 val append : store -> store -> unit
 (** [append st src]: [src]'s photons after [st]'s. *)
 
-val build : ?seed:int -> settings -> store -> map
+val build : ?seed:int -> ?volume:bool -> settings -> store -> map
 (** The kd-tree over the photons, with its gather radius: the settings'
     [radius] when positive, else POV-Ray's estimate (the mean density
     around random photons at their [gather_max] nearest, a radius that
     holds [gather_max] photons at that density, widened by the share of
     photons whose density is well below the mean), times
     [radius_mult]. [seed] picks the random photons (the same map each
-    time). *)
+    time). With [volume], a media map: densities per volume, the radius
+    [media_radius] or the one holding [gather_max] at the mean density,
+    widened as above, times [media_mult] and 2 (POV-Ray's rules). *)
 
 val size : map -> int
 val radius : map -> float
@@ -125,7 +133,14 @@ val gather : map -> query -> Vec3.m -> Vec3.m -> unit
     [expand_tolerance]) or the count small (below [expand_min]). Read
     them with {!found}, {!photon} and {!area}. *)
 
+val gather_volume : map -> query -> Vec3.m -> unit
+(** [gather_volume m q p]: {!gather} in a media map: plain distance, no
+    normal. Read the result with {!found}, {!photon} and {!volume}. *)
+
 val found : query -> int
+val volume : query -> float
+(** 4/3 pi r^3 of the last gather (r as for {!area}). *)
+
 val area : query -> float
 (** pi r^2 of the last gather: r the search radius when it held no more
     photons than it keeps, else the (flattened) distance of the farthest

@@ -82,6 +82,14 @@ let in_scatter (s : Scene.t) st (inside : Interior.t list) (p : Vec3.m) =
   Color.acc_set lit 0. 0. 0.;
   let w = Shadow.walk () in
   Shadow.starts_in w st.starts;
+  (* with photons, refracting targets block the samples' shadow rays:
+     their light comes as media photons (POV-Ray's rule, on the
+     surfaces' map) *)
+  Shadow.collects w
+    (match s.settings.photons with
+    | None -> false
+    | Some { state = { map = Some m; _ }; _ } -> Photon.size m > 0
+    | Some _ -> false);
   let l = Shadow.toward w in
   let n = float_of_int st.count in
   for i = 0 to Array.length s.lights - 1 do
@@ -107,6 +115,32 @@ let in_scatter (s : Scene.t) st (inside : Interior.t list) (p : Vec3.m) =
       end
     end
   done
+
+(* POV-Ray's media photons at [p] (media.cpp's ComputeMediaPhotons): the
+   nearest of the media map (plain distance), each a light from where it
+   came weighted by the media's mean phase, over the volume of the
+   gather, into [st.lit] *)
+let media_photons st inside (m : Photon.map) (p : Vec3.m) =
+  let lit = st.lit and r = st.r in
+  Color.acc_set lit 0. 0. 0.;
+  let q = Photon.query () in
+  Photon.gather_volume m q p;
+  let cnt = Photon.found q in
+  if cnt > 0 then begin
+    let n = float_of_int st.count *. Photon.volume q in
+    for j = 0 to cnt - 1 do
+      let i = Photon.index q j in
+      st.at.cos <-
+        (Photon.direction m i 0 *. r.dx) +. (Photon.direction m i 1 *. r.dy) +. (Photon.direction m i 2 *. r.dz);
+      st.at.phases <- 0.;
+      phases st.at inside;
+      let k = st.at.phases /. n in
+      Color.acc_set lit
+        (lit.ar +. (k *. Photon.flux m i 0))
+        (lit.ag +. (k *. Photon.flux m i 1))
+        (lit.ab +. (k *. Photon.flux m i 2))
+    done
+  end
 
 (* The sample buffer and the stretch stack are read and written
    unchecked from here to [stretch]: slots 0 to max_depth + 2 of [slot]
@@ -174,7 +208,17 @@ let sample s st (inside : Interior.t list) k =
     bump b (o + 3) (t.ar *. lit.ar);
     bump b (o + 4) (t.ag *. lit.ag);
     bump b (o + 5) (t.ab *. lit.ab)
-  end
+  end;
+  (* media photons, lit stretch or not *)
+  if st.scatters then
+    match s.settings.photons with
+    | Some { state = { media_map = Some m; _ }; _ } ->
+        media_photons st inside m p;
+        let t = st.sc and lit = st.lit in
+        bump b (o + 3) (t.ar *. lit.ar);
+        bump b (o + 4) (t.ag *. lit.ag);
+        bump b (o + 5) (t.ab *. lit.ab)
+    | _ -> ()
 
 (* POV-Ray's test for splitting a stretch: the colours of two samples
    (emitted plus scattered light, over the whole interval: [thr] comes

@@ -310,10 +310,14 @@ let photons (items : photon_item list) =
             match photon_values w 2 vs with
             | (l1, n) :: rest ->
                 let n = int_at_least l1 w 0 n in
-                List.iter (fun (vl, f) -> if not (f > 0.) then Diag.error vl "photons media's spacing factor %g: it must be positive" f) rest;
-                if n > 0 then
-                  Defaults.warn_once "media photons" l "media photons are not computed: camlray's photons light surfaces only";
-                { s with media_steps = n }
+                let f =
+                  match rest with
+                  | (vl, f) :: _ ->
+                      if not (f > 0.) then Diag.error vl "photons media's spacing factor %g: it must be positive" f;
+                      f
+                  | [] -> 1.
+                in
+                { s with media_steps = n; media_factor = f }
             | [] -> Diag.error l "photons media needs the most steps")
         | "jitter" -> { s with jitter = snd (photon_one l w vs) }
         | "max_trace_level" ->
@@ -328,9 +332,9 @@ let photons (items : photon_item list) =
         | "radius" -> (
             match photon_values w 4 vs with
             | [] -> s
-            | (_, r) :: rest -> (
-                let s = { s with radius = r } in
-                match rest with (_, m) :: _ -> { s with radius_mult = m } | [] -> s))
+            | (_, r) :: rest ->
+                let nth k d = match List.nth_opt rest k with Some (_, v) -> v | None -> d in
+                { s with radius = r; radius_mult = nth 0 1.; media_radius = nth 1 0.; media_mult = nth 2 1. })
         | "save_file" | "load_file" ->
             Defaults.warn_once "photon files" l (Printf.sprintf "photons %s is read and ignored: the photons are shot anew" w);
             s

@@ -350,13 +350,14 @@ let global = function
   | Sdl.Number_of_waves n -> Printf.sprintf "number_of_waves %d" n
   | Sdl.Photons p ->
       Printf.sprintf
-        "photons { spacing %s %sgather %d, %d jitter %s %s%sautostop %s expand_thresholds %s, %d radius %s, %s%s }"
+        "photons { spacing %s %sgather %d, %d jitter %s %s%sautostop %s expand_thresholds %s, %d radius %s, %s, %s, %s%s }"
         (float p.spacing) (if p.count > 0 then Printf.sprintf "count %d " p.count else "") p.gather_min p.gather_max
         (float p.jitter)
         (if p.max_trace_level > 0 then Printf.sprintf "max_trace_level %d " p.max_trace_level else "")
         (if p.adc_bailout >= 0. then Printf.sprintf "adc_bailout %s " (float p.adc_bailout) else "")
         (float p.autostop) (float p.expand_tolerance) p.expand_min (float p.radius) (float p.radius_mult)
-        (if p.media_steps > 0 then Printf.sprintf " media %d" p.media_steps else "")
+        (float p.media_radius) (float p.media_mult)
+        (if p.media_steps > 0 then Printf.sprintf " media %d, %s" p.media_steps (float p.media_factor) else "")
 
 let item = function
   | Sdl.Object o -> obj o

@@ -13,12 +13,15 @@ let words () =
   Alcotest.(check (list int)) "count, gather" [ 0; 20; 100 ] [ p.count; p.gather_min; p.gather_max ];
   Scn.check_floats "jitter, autostop, expand, radius" [ 0.4; 0.5; 0.2; 0.; 1. ]
     [ p.jitter; p.autostop; p.expand_tolerance; p.radius; p.radius_mult ];
+  Alcotest.(check int) "no media photons" 0 p.media_steps;
   Alcotest.(check int) "expand count" 35 p.expand_min;
   let p =
     settings
       "global_settings { photons { spacing 0.02 gather 10, 50 jitter 0 max_trace_level 9 adc_bailout 0.01 autostop 0 \
-       expand_thresholds 0.3, 20 radius 0.5, 2 } }"
+       expand_thresholds 0.3, 20 radius 0.5, 2, 0.1, 3 media 100, 2 } }"
   in
+  Alcotest.(check int) "media steps" 100 p.media_steps;
+  Scn.check_floats "media's factor and radius" [ 2.; 0.1; 3. ] [ p.media_factor; p.media_radius; p.media_mult ];
   Alcotest.(check (list int)) "ints" [ 10; 50; 9; 20 ] [ p.gather_min; p.gather_max; p.max_trace_level; p.expand_min ];
   Scn.check_floats "floats" [ 0.02; 0.; 0.01; 0.; 0.3; 0.5; 2. ]
     [ p.spacing; p.jitter; p.adc_bailout; p.autostop; p.expand_tolerance; p.radius; p.radius_mult ];
@@ -189,6 +192,33 @@ let caustics () =
   near "a mirror's caustic" ~rel:0.02 0.3103 (fst (mean_render (wall "photons { target reflection on }")));
   near "no target, no caustic" ~rel:1e-3 0.1816 (fst (mean_render (wall "")))
 
+(* media photons: a hollow clear box of scattering media, a target lit
+   from above, seen from the front; its samples' shadow rays are
+   blocked (the box refracts its light's photons) and its light comes as
+   media photons (POV-Ray: 0.6051, 0.6000 lit directly without photons;
+   with extinction 1, 0.4763 and 0.3514) *)
+let media_photons () =
+  let box ~photons ~ext =
+    Printf.sprintf
+      "#version 3.7;\n\
+       global_settings { assumed_gamma 1 max_trace_level 10 %s }\n\
+       camera { orthographic location <0, 0, -10> look_at <0, 0, 0> right x*0.4 up y*0.4 }\n\
+       light_source { <0, 30, 0> color rgb 1 photons { refraction on reflection off } }\n\
+       box { <-1, -1, -1>, <1, 1, 1> hollow pigment { rgbf 1 } photons { target }\n\
+      \  interior { media { scattering { 1, rgb 0.3 extinction %d } method 3 intervals 1 samples 10, 10 } } }"
+      (if photons then "photons { spacing 0.03 media 100, 2 }" else "")
+      ext
+  in
+  let s = Scn.compile ~raw:true (box ~photons:true ~ext:0) in
+  Caustics.prepare s;
+  (match s.settings.photons with
+  | Some { state = { media_map = Some m; _ }; _ } -> Alcotest.(check bool) "media photons stored" true (Photon.size m > 1000)
+  | _ -> Alcotest.fail "no media photon map");
+  near "lit by media photons" ~rel:0.02 0.6051 (fst (mean_render (box ~photons:true ~ext:0)));
+  near "lit directly" ~rel:1e-3 0.6 (fst (mean_render (box ~photons:false ~ext:0)));
+  near "media photons, extinction 1" ~rel:0.02 0.4763 (fst (mean_render (box ~photons:true ~ext:1)));
+  near "lit directly, extinction 1" ~rel:1e-3 0.3514 (fst (mean_render (box ~photons:false ~ext:1)))
+
 (* the photons are shot once, the same whatever the domains shooting
    and rendering *)
 let domains () =
@@ -211,5 +241,6 @@ let tests =
       QCheck_alcotest.to_alcotest nearest_is_brute;
       QCheck_alcotest.to_alcotest gather_is_brute;
       Alcotest.test_case "caustics against POV-Ray" `Quick caustics;
+      Alcotest.test_case "media photons against POV-Ray" `Quick media_photons;
       Alcotest.test_case "same on any domains" `Quick domains;
     ] )
