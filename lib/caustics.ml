@@ -283,6 +283,8 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
 and stretch sh (o : Vec3.t) (d : Vec3.t) ds c depth level passprev media =
   let ms = List.concat_map (fun (i : Interior.t) -> i.media) media in
   let scatters = List.exists (fun (m : Media.t) -> m.scattering <> None) ms in
+  (* POV-Ray leaves none where every medium says collect off *)
+  let collect = List.exists (fun (m : Media.t) -> m.collect) ms in
   let absorbs = List.exists (fun (m : Media.t) -> m.absorption <> Color.black) ms in
   if not (scatters || absorbs) then c
   else begin
@@ -308,7 +310,7 @@ and stretch sh (o : Vec3.t) (d : Vec3.t) ds c depth level passprev media =
           let d0 = (float_of_int j +. 0.5 +. (ps.jitter *. u) -. (0.5 *. ps.jitter)) /. float_of_int n in
           let s = d0 *. ds in
           extinction s;
-          if scatters then begin
+          if scatters && collect then begin
             let dp = depth +. s in
             let k = f *. sh.spread *. (if sh.par then 1. else dp) *. fade_at sh.light dp *. sh.spread *. sh.spread
                     *. (if sh.par then 1. else dp *. dp) in

@@ -17,13 +17,14 @@ type t = {
   confidence : float;
   variance : float;
   ratio : float;
+  collect : bool;
   mutable bound : float;
 }
 
 let default =
   { emission = Color.black; absorption = Color.black; scattering = None; density = []; meth = 3;
     intervals = 1; samples = 10; samples_max = 10; aa_threshold = 0.1; aa_level = 3; jitter = 0.;
-    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9; bound = -1. }
+    confidence = 0.9; variance = 1. /. 128.; ratio = 0.9; collect = true; bound = -1. }
 
 let scattering kind color = { kind; color; eccentricity = 0.; extinction = 1. }
 let transform t m = if m.density = [] then m else { m with density = List.map (Pigment.transform t) m.density }

@@ -25,6 +25,7 @@ type t = {
   confidence : float;  (** read; used by method 1 only *)
   variance : float;
   ratio : float;
+  collect : bool;  (** photons: [collect off] leaves no media photons in it, and its samples' shadows as they are *)
   mutable bound : float;
       (** {!majorant}'s cache: -1 until it is first asked for (kept
           by [{ m with ... }] copies, which cannot change it once the

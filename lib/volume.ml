@@ -68,6 +68,12 @@ and phases_of a = function
       | None -> a.phases <- a.phases +. 1.);
       phases_of a ms
 
+(* some medium of the interiors collects photons (POV-Ray's flag is
+   that all of them say collect off) *)
+let rec collecting = function
+  | [] -> false
+  | (i : Interior.t) :: r -> List.exists (fun (m : Media.t) -> m.collect) i.media || collecting r
+
 let rec count = function [] -> 0 | (i : Interior.t) :: r -> List.length i.media + count r
 
 (* the light of every light that lights the ray at [p] (media-interacting
@@ -88,7 +94,7 @@ let in_scatter (s : Scene.t) st (inside : Interior.t list) (p : Vec3.m) =
   Shadow.collects w
     (match s.settings.photons with
     | None -> false
-    | Some { state = { map = Some m; _ }; _ } -> Photon.size m > 0
+    | Some { state = { map = Some m; _ }; _ } -> Photon.size m > 0 && collecting inside
     | Some _ -> false);
   let l = Shadow.toward w in
   let n = float_of_int st.count in

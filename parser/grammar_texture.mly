@@ -856,6 +856,11 @@ media_item:
         if k < 1 then Diag.error (loc $loc(e)) "aa_level in media must be at least 1";
         fun (m : Media.t) -> { m with aa_level = k } }
   | t = transformation { Media.transform t }
+  (* photons: collect [on|off] *)
+  | w = PHOTON_WORD b = ioption(param)
+      { if w <> "collect" then Diag.error (loc $loc(w)) "%s is a photons word: media take collect" w;
+        let on = match b with Some b -> Value.to_bool (loc $loc(b)) b | None -> true in
+        fun (m : Media.t) -> { m with collect = on } }
 
 scattering_item:
   | ECCENTRICITY e = param { let x = fl $loc(e) e in fun (s : Media.scattering) -> { s with eccentricity = x } }

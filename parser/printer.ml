@@ -53,7 +53,7 @@ let density = function
 let media (m : Media.t) =
   Printf.sprintf
     "media { emission %s absorption %s%s%s method %d intervals %d samples %d, %d confidence %s variance %s \
-     ratio %s jitter %s aa_threshold %s aa_level %d }"
+     ratio %s jitter %s aa_threshold %s aa_level %d%s }"
     (rgb m.emission) (rgb m.absorption)
     (match m.scattering with
     | None -> ""
@@ -63,6 +63,7 @@ let media (m : Media.t) =
     (String.concat "" (List.map density m.density))
     m.meth m.intervals m.samples m.samples_max (float m.confidence) (float m.variance) (float m.ratio)
     (float m.jitter) (float m.aa_threshold) m.aa_level
+    (if m.collect then "" else " collect off")
 
 let interior (i : Interior.t) =
   Printf.sprintf "interior { ior %s fade_distance %s fade_power %s fade_color %s%s%s }" (float i.ior)

@@ -198,26 +198,29 @@ let caustics () =
    media photons (POV-Ray: 0.6051, 0.6000 lit directly without photons;
    with extinction 1, 0.4763 and 0.3514) *)
 let media_photons () =
-  let box ~photons ~ext =
+  let box ?(collect = "") ~photons ~ext () =
     Printf.sprintf
       "#version 3.7;\n\
        global_settings { assumed_gamma 1 max_trace_level 10 %s }\n\
        camera { orthographic location <0, 0, -10> look_at <0, 0, 0> right x*0.4 up y*0.4 }\n\
        light_source { <0, 30, 0> color rgb 1 photons { refraction on reflection off } }\n\
        box { <-1, -1, -1>, <1, 1, 1> hollow pigment { rgbf 1 } photons { target }\n\
-      \  interior { media { scattering { 1, rgb 0.3 extinction %d } method 3 intervals 1 samples 10, 10 } } }"
+      \  interior { media { scattering { 1, rgb 0.3 extinction %d } %s method 3 intervals 1 samples 10, 10 } } }"
       (if photons then "photons { spacing 0.03 media 100, 2 }" else "")
-      ext
+      ext collect
   in
-  let s = Scn.compile ~raw:true (box ~photons:true ~ext:0) in
+  let s = Scn.compile ~raw:true (box ~photons:true ~ext:0 ()) in
   Caustics.prepare s;
   (match s.settings.photons with
   | Some { state = { media_map = Some m; _ }; _ } -> Alcotest.(check bool) "media photons stored" true (Photon.size m > 1000)
   | _ -> Alcotest.fail "no media photon map");
-  near "lit by media photons" ~rel:0.02 0.6051 (fst (mean_render (box ~photons:true ~ext:0)));
-  near "lit directly" ~rel:1e-3 0.6 (fst (mean_render (box ~photons:false ~ext:0)));
-  near "media photons, extinction 1" ~rel:0.02 0.4763 (fst (mean_render (box ~photons:true ~ext:1)));
-  near "lit directly, extinction 1" ~rel:1e-3 0.3514 (fst (mean_render (box ~photons:false ~ext:1)))
+  near "lit by media photons" ~rel:0.02 0.6051 (fst (mean_render (box ~photons:true ~ext:0 ())));
+  near "lit directly" ~rel:1e-3 0.6 (fst (mean_render (box ~photons:false ~ext:0 ())));
+  near "media photons, extinction 1" ~rel:0.02 0.4763 (fst (mean_render (box ~photons:true ~ext:1 ())));
+  near "lit directly, extinction 1" ~rel:1e-3 0.3514 (fst (mean_render (box ~photons:false ~ext:1 ())));
+  (* a medium that says collect off: no photons left in it, its samples
+     lit directly (POV-Ray 0.6000) *)
+  near "collect off" ~rel:1e-3 0.6 (fst (mean_render (box ~collect:"collect off" ~photons:true ~ext:0 ())))
 
 (* the photons are shot once, the same whatever the domains shooting
    and rendering *)
