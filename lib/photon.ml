@@ -94,7 +94,24 @@ let append st src =
   end
 let stored st = st.k
 
+(* POV-Ray keeps a photon's flux in RGBE bytes (a shared exponent, each
+   channel truncated to 8 bits of it) and its direction in two signed
+   bytes of angle (127 steps a half turn): so here, for the same light *)
+let rgbe v c =
+  if v < 1e-32 then 0.
+  else
+    let _, e = Float.frexp v in
+    Float.ldexp (Float.of_int (Float.to_int (Float.ldexp c (8 - e)))) (e - 8)
+
+let byte_angle a = Float.of_int (Float.to_int (a *. 127. /. Float.pi)) *. Float.pi /. 127.
+
 let add st x y z ~r ~g ~b dx dy dz =
+  let v = Float.max r (Float.max g b) in
+  let r = rgbe v r and g = rgbe v g and b = rgbe v b in
+  let h = Float.sqrt ((dx *. dx) +. (dz *. dz)) in
+  let theta = byte_angle (Float.asin (Float.max (-1.) (Float.min 1. dy))) in
+  let phi = byte_angle (if h = 0. then 0. else Float.atan2 dz dx) in
+  let dx = Float.cos theta *. Float.cos phi and dy = Float.sin theta and dz = Float.cos theta *. Float.sin phi in
   if 9 * (st.k + 1) > Float.Array.length st.data then begin
     let d = Float.Array.create (2 * Float.Array.length st.data) in
     Float.Array.blit st.data 0 d 0 (9 * st.k);
