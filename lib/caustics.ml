@@ -64,9 +64,11 @@ let spacing_for_count (s : Scene.t) (ps : Photon.settings) us =
   in
   if estimate > 0. then ps.spacing *. Float.sqrt (estimate /. float_of_int ps.count) else ps.spacing
 
-(* what one photon meets; its state *)
+(* what one photon meets; its state (the objects it sees are its
+   [view]: without the no_image objects from the light and after
+   refractions, without the no_reflection ones after a reflection, as
+   camera rays) *)
 type shot = {
-  scene : Scene.t;
   light : Light.t;
   unit_ : unit_;
   spread : float;
@@ -114,10 +116,10 @@ let mirror d n n0 =
   let r = reflect d n in
   if Vec3.dot r n0 < 0. then reflect d n0 else r
 
-let rec trace sh (o : Vec3.t) (d : Vec3.t) (c : Color.t) weight level depth passprev media =
+let rec trace sh view (o : Vec3.t) (d : Vec3.t) (c : Color.t) weight level depth passprev media =
   if level < sh.max_level && weight >= sh.adc then begin
     let level = level + 1 in
-    match next_hit sh.scene o d with
+    match next_hit view o d with
     | None -> ()
     | Some (h : Scene.hit) ->
         let obj = h.obj and fl = h.obj.photon in
@@ -133,7 +135,7 @@ let rec trace sh (o : Vec3.t) (d : Vec3.t) (c : Color.t) weight level depth pass
         in
         (match through with
         | None -> ()
-        | Some pass -> surface sh o h d c weight level depth passprev pass media)
+        | Some pass -> surface sh view o h d c weight level depth passprev pass media)
   end
 
 (* the nearest surface a photon meets: no_shadow objects are not seen *)
@@ -143,7 +145,7 @@ and next_hit s o d =
       match next_hit s h.point d with Some h' -> Some { h' with t = h.t +. h'.t } | None -> None)
   | r -> r
 
-and surface sh o (h : Scene.hit) d c weight level depth passprev pass media =
+and surface sh view o (h : Scene.hit) d c weight level depth passprev pass media =
   let obj = h.obj and p = h.point in
   let inner = obj.interior in
   let dist = h.t in
@@ -165,11 +167,11 @@ and surface sh o (h : Scene.hit) d c weight level depth passprev pass media =
   let n0 = if entering then h.normal else Vec3.neg h.normal in
   let tex = if entering then obj.texture else obj.back in
   let fres = Interior.fresnel_ior inner media in
-  layers sh h d c weight level depth pass media n0 fres 1. tex
+  layers sh view h d c weight level depth pass media n0 fres 1. tex
 
 (* a texture's layers at the hit, carrying [share] of the photon (a
    texture map splits it among its entries) *)
-and layers sh h d c weight level depth pass media n0 fres share tex =
+and layers sh view h d c weight level depth pass media n0 fres share tex =
   let p = Vec3.m () in
   Vec3.load p h.point;
   let fil = ref (1., 1., 1.) and trans = ref 1. and mirrors = ref [] and top = ref None in
@@ -226,7 +228,7 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
       List.iter
         (fun (k, t) ->
           if k > 0. then
-            layers sh h d
+            layers sh view h d
               (Color.make (c.r *. fr) (c.g *. fg) (c.b *. fb))
               weight level depth pass media n0 fres (share *. k) (t @ rest))
         entries
@@ -237,7 +239,7 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
       let inner = h.obj.interior in
       let flags = h.obj.photon and lf = sh.light.photons in
       if pass then
-        trace sh h.point d (Color.make (c.r *. fr) (c.g *. fg) (c.b *. fb)) (weight *. max3 fr fg fb) level depth true
+        trace sh view h.point d (Color.make (c.r *. fr) (c.g *. fg) (c.b *. fb)) (weight *. max3 fr fg fb) level depth true
           (Interior.beyond inner media)
       else begin
         let tir = ref false in
@@ -245,17 +247,17 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
           let w' = weight *. max3 fr fg fb in
           let filtered = Color.make (c.r *. fr) (c.g *. fg) (c.b *. fb) in
           let eta = Interior.relative_ior inner media in
-          if eta = 1. then trace sh h.point d filtered w' level depth false (Interior.beyond inner media)
+          if eta = 1. then trace sh view h.point d filtered w' level depth false (Interior.beyond inner media)
           else begin
             let cos_i = -.Vec3.dot d top in
             let k = 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) in
             if k < 0. then begin
               tir := true;
-              trace sh h.point (mirror d top n0) c weight level depth false media
+              trace sh (Scene.reflected view) h.point (mirror d top n0) c weight level depth false media
             end
             else
               let rd = Vec3.add (Vec3.scale eta d) (Vec3.scale ((eta *. cos_i) -. Float.sqrt k) top) in
-              trace sh h.point (Vec3.normalize rd) filtered w' level depth false (Interior.beyond inner media)
+              trace sh view h.point (Vec3.normalize rd) filtered w' level depth false (Interior.beyond inner media)
           end
         end;
         if Photon.reflects flags ~light:lf && not !tir then
@@ -265,7 +267,7 @@ and layers sh h d c weight level depth pass media n0 fres share tex =
               if not (kr.r = 0. && kr.g = 0. && kr.b = 0.) then begin
                 let e = if m.expo = 1. then 1. else 1. /. m.expo in
                 let ch k x = if e = 1. then k *. x else k *. Float.pow x e in
-                trace sh h.point (mirror d m.n n0)
+                trace sh (Scene.reflected view) h.point (mirror d m.n n0)
                   (Color.make (ch kr.r c.r) (ch kr.g c.g) (ch kr.b c.b))
                   (m.w *. max3 kr.r kr.g kr.b) level depth false media
               end)
@@ -374,7 +376,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
   let dtheta = if par then spread else Float.atan spread in
   let maxtheta = if par then rad else if dist >= rad then Float.asin (rad /. dist) else Float.pi in
   let sh0 =
-    { scene = s; light; unit_ = u; spread; par; adc = (if ps.adc_bailout >= 0. then ps.adc_bailout else s.settings.adc_bailout);
+    { light; unit_ = u; spread; par; adc = (if ps.adc_bailout >= 0. then ps.adc_bailout else s.settings.adc_bailout);
       max_level = (if ps.max_trace_level > 0 then ps.max_trace_level else s.settings.max_trace_level);
       st; mst = st; hit_target = false; pig = Pigment.out (); rng = Random.State.make [| 0 |]; ps }
   in
@@ -415,7 +417,7 @@ let shoot_unit ~(par_ : Image.par) (s : Scene.t) (ps : Photon.settings) ~spacing
         let a = share *. Light.beam light q in
         if a >= 1e-5 then begin
           let media = if par then inside o else media in
-          trace sh o d (Color.scale a light.color) 1. 0 0. true media
+          trace sh (Scene.image s) o d (Color.scale a light.color) 1. 0 0. true media
         end)
       origins
   in

@@ -130,7 +130,7 @@ let gather_is_brute =
 (* Caustics against POV-Ray: a floor (diffuse, ambient 0) under a clear
    sphere target, lit from above, seen from straight above *)
 let floor ?(collect = "") ?(sphere = "pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1 }") ?(light = "")
-    ~at ~size ~diffuse () =
+    ?(extra = "") ~at ~size ~diffuse () =
   let x, z = at in
   Printf.sprintf
     "#version 3.7;\n\
@@ -138,8 +138,8 @@ let floor ?(collect = "") ?(sphere = "pigment { rgbf 1 } finish { ambient 0 diff
      camera { orthographic location <%g, 1, %g> look_at <%g, 0, %g> right x*%g up z*%g sky z }\n\
      light_source { <0, 10, 0>, rgb 1 %s }\n\
      plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse %g } %s }\n\
-     sphere { <0, 3, 0>, 1 %s photons { target refraction on } }"
-    x z x z size size light diffuse collect sphere
+     sphere { <0, 3, 0>, 1 %s photons { target refraction on } }\n%s"
+    x z x z size size light diffuse collect sphere extra
 
 let mean_render ?(domains = 1) src =
   let s = Scn.compile ~raw:true src in
@@ -173,6 +173,15 @@ let caustics () =
       ("a parallel light", "parallel point_at <0, 0, 0>", 0.0918);
       ("a fading light", "fade_distance 4 fade_power 2", 0.1287);
       ("an area light shooting from its samples", "area_light x, z, 3, 3 photons { area_light }", 0.3371) ];
+  (* a clear slab under the ball that says nothing of photons stops
+     them (stored on it): a dark floor; no_image, photons from the light
+     do not see it (POV-Ray: 0, and 0.4681 as without it) *)
+  let slab flag =
+    floor ~sphere:glass ~extra:("box { <-2, 1.5, -2>, <2, 1.6, 2> pigment { rgbf 1 } interior { ior 1.5 } " ^ flag ^ " }")
+      ~at:(0., 0.) ~size:0.4 ~diffuse:0.1 ()
+  in
+  near "a slab in the way" ~rel:0. 0. (fst (mean_render (slab "")));
+  near "a no_image slab" ~rel:0.02 0.4681 (fst (mean_render (slab "no_image")));
   (* a floor that does not collect: the glass casts its usual filtered
      shadow (all the light through) *)
   near "collect off" ~rel:1e-3 0.1
