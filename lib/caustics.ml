@@ -4,8 +4,9 @@
    target's bounding sphere, spaced so that photons land [spacing] apart
    at the target (times its multiplier); each photon reflects and
    refracts where the surfaces and the light allow it, and is stored on
-   every surface it meets after its first. Run once per scene, on one
-   domain, before the render. *)
+   every surface it meets after its first (and in the media it crosses,
+   with media photons). Run once per scene before the render, the rings
+   of directions in batches on every domain. *)
 
 (* a target: a top-level object (a union's children apart, unless it
    says split_union off), the leaves that are its surfaces *)
