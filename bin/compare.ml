@@ -59,10 +59,11 @@ let povray ~scene ~out ~log ~width ~height ~aa ~aa_depth ~limit =
 
 (* Scenes whose pictures depend on POV-Ray's random sampling (jittered
    area lights, focal blur's lens samples, radiosity's gathers and where
-   its cache keeps them, crand's grain), so they cannot match pixel for
-   pixel: reported separately. Noise patterns are POV-Ray's own and are
-   held to the same standard as any other scene. *)
-let noise_words = [ "jitter"; "aperture"; "radiosity"; "crand" ]
+   its cache keeps them, crand's grain, photons: each ring of directions
+   starts at a random angle, even with jitter 0), so they cannot match
+   pixel for pixel: reported separately. Noise patterns are POV-Ray's own
+   and are held to the same standard as any other scene. *)
+let noise_words = [ "jitter"; "aperture"; "radiosity"; "crand"; "photons" ]
 
 let has_noise_word text =
   let words =
