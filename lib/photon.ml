@@ -151,8 +151,17 @@ let[@inline] area q = Float.Array.get q.q 9
 let[@inline] volume q = Float.Array.get q.q 10
 let[@inline] index q i = Array.unsafe_get q.heap_i i
 
+(* heap entries [a] and [b] exchanged *)
+let swap q a b =
+  let hd = q.heap_d and hi = q.heap_i in
+  let td = Float.Array.get hd a and ti = hi.(a) in
+  Float.Array.set hd a (Float.Array.get hd b);
+  hi.(a) <- hi.(b);
+  Float.Array.set hd b td;
+  hi.(b) <- ti
+
 let sift_down q =
-  let hd = q.heap_d and hi = q.heap_i and n = q.cnt in
+  let hd = q.heap_d and n = q.cnt in
   let i = ref 0 and continue = ref true in
   while !continue do
     let l = (2 * !i) + 1 in
@@ -161,11 +170,7 @@ let sift_down q =
       let r = l + 1 in
       let c = if r < n && Float.Array.get hd r > Float.Array.get hd l then r else l in
       if Float.Array.get hd c > Float.Array.get hd !i then begin
-        let td = Float.Array.get hd c and ti = hi.(c) in
-        Float.Array.set hd c (Float.Array.get hd !i);
-        hi.(c) <- hi.(!i);
-        Float.Array.set hd !i td;
-        hi.(!i) <- ti;
+        swap q c !i;
         i := c
       end
       else continue := false
@@ -173,15 +178,11 @@ let sift_down q =
   done
 
 let sift_up q k =
-  let hd = q.heap_d and hi = q.heap_i in
+  let hd = q.heap_d in
   let i = ref k in
   while !i > 0 && Float.Array.get hd ((!i - 1) / 2) < Float.Array.get hd !i do
     let p = (!i - 1) / 2 in
-    let td = Float.Array.get hd p and ti = hi.(p) in
-    Float.Array.set hd p (Float.Array.get hd !i);
-    hi.(p) <- hi.(!i);
-    Float.Array.set hd !i td;
-    hi.(!i) <- ti;
+    swap q p !i;
     i := p
   done
 
