@@ -7,6 +7,7 @@ type settings = {
   irid_wavelength : Color.t;
   radiosity : Radiosity.t option;
   photons : Photon.settings option;
+  object_media : bool;
 }
 
 (* [finite] is stored in BVH leaf order. [spheres] holds, per finite
@@ -49,6 +50,7 @@ let default_settings =
     irid_wavelength = Color.make 0.70 0.52 0.48;
     radiosity = None;
     photons = None;
+    object_media = true;
   }
 
 (* What testing an object costs, in tests of a sphere held in the flat
@@ -185,7 +187,9 @@ let hide s flags =
   | Some r ->
       (* what gather rays see: POV-Ray's radiosity rays skip area lights'
          grids (quality flags without area lights) and, unless media on,
-         media; their ADC bailout is the radiosity's *)
+         media, the atmosphere's and the objects' (measured: a floor under
+         a hollow shell of emitting media gathers 0, 0.5 with media on);
+         their ADC bailout is the radiosity's *)
       let point (l : Light.t) = match l.area with None -> l | Some _ -> { l with area = None } in
       let rv = { image = None; reflected = None; gather = None } in
       let g =
@@ -193,7 +197,7 @@ let hide s flags =
           lights = Array.map point s.lights;
           light_sets = Array.map (Array.map point) s.light_sets;
           atmosphere = (if r.media then s.atmosphere else []);
-          settings = { s.settings with adc_bailout = r.adc_bailout };
+          settings = { s.settings with adc_bailout = r.adc_bailout; object_media = r.media };
           views = rv }
       in
       let g = Option.value ~default:g (without g flags 16) in

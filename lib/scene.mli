@@ -11,6 +11,9 @@ type settings = {
   irid_wavelength : Color.t;  (** [irid_wavelength], POV-Ray's <0.25, 0.18, 0.14> by default *)
   radiosity : Radiosity.t option;  (** global_settings' [radiosity], computed in whitted mode *)
   photons : Photon.settings option;  (** global_settings' [photons], shot in whitted mode *)
+  object_media : bool;
+      (** the media of objects are computed (true; false in the view of
+          radiosity's gather rays unless its [media on], as POV-Ray) *)
 }
 
 type accel

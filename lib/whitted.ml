@@ -197,7 +197,7 @@ let[@inline never] aired_hit (s : Scene.t) (o : Vec3.m) (d : Vec3.m) (p : Vec3.m
   let dx = p.mx -. o.mx and dy = p.my -. o.my and dz = p.mz -. o.mz in
   let t = Float.sqrt (((dx *. dx) +. (dy *. dy) +. (dz *. dz)) /. ((d.mx *. d.mx) +. (d.my *. d.my) +. (d.mz *. d.mz))) in
   if in_open media then begin
-    if media <> [] then Volume.apply s o d t ~starts:media media out;
+    if media <> [] && s.settings.object_media then Volume.apply s o d t ~starts:media media out;
     if s.rainbows <> [] then rainbowed s d (Float.sqrt ((dx *. dx) +. (dy *. dy) +. (dz *. dz))) out;
     if s.atmosphere <> [] then Volume.apply s o d t ~starts:media s.atmosphere out
   end
@@ -274,7 +274,7 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
       fr.k.weight <- weight;
       shade s d obj fr level media fade out;
       if s.atmosphere <> [] || s.rainbows <> [] then aired_hit s o d p media out
-      else if has_media media then mediated_hit s o d p media out;
+      else if s.settings.object_media && has_media media then mediated_hit s o d p media out;
       fogged_hit s o d p media out;
       leave ()
     end

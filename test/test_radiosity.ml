@@ -96,6 +96,22 @@ let hidden () =
   let c = mid (plane ~extra:(roof "no_image") "1") in
   if c.r > 0.05 then Alcotest.failf "a roof seen by the gather: %.4f, expected nearly dark" c.r
 
+(* media are seen by gather rays only with media on (POV-Ray, measured:
+   a floor under a hollow shell of emitting media, no light, gathers 0,
+   and 0.5 with media on) *)
+let media_seen () =
+  let shell media =
+    Printf.sprintf
+      "#version 3.7;\nglobal_settings { assumed_gamma 1 radiosity { count 80 error_bound 0.5 recursion_limit 1 %s } }\n\
+       camera { location <0, 1, -3> look_at <0, 0, 0> angle 10 }\n\
+       plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n\
+       difference { sphere { 0, 100 } sphere { 0, 99 } pigment { rgbt 1 } finish { ambient 0 diffuse 0 }\n\
+      \  interior { media { emission 0.5 } } hollow no_shadow }"
+      media
+  in
+  Scn.gray "media off" 0. (Scn.pixel ~raw:true (shell ""));
+  Scn.gray "media on" 0.5 (Scn.pixel ~raw:true (shell "media on"))
+
 (* the furnace: inside a closed sphere of emission e and diffuse d (white
    pigment), every gather ray sees the same radiance, so recursion n gives
    e (1 + b d + ... + (b d)^n) exactly *)
@@ -296,6 +312,7 @@ let tests =
       Alcotest.test_case "bad settings are errors" `Quick errors;
       Alcotest.test_case "a plane under a uniform sky: diffuse x pigment x sky" `Quick sky_plane;
       Alcotest.test_case "no_radiosity hides from gather rays" `Quick hidden;
+      Alcotest.test_case "gather rays see object media only with media on" `Quick media_seen;
       Alcotest.test_case "furnace: e (1 + bd + ... + (bd)^n)" `Quick furnace;
       QCheck_alcotest.to_alcotest directions;
       QCheck_alcotest.to_alcotest cache_keeps;
