@@ -520,7 +520,11 @@ let rec obj ctx (o : Sdl.obj) : Object.t option =
                                 face_textures = [||] } in
               Hashtbl.replace cache t m';
               m' in
-        let texture = if t >= 0 && t < Array.length m.textures then Some m.textures.(t) else tex in
+        (* the list's textures were written in the mesh's own space: they
+           move with it, as a texture given to the object does *)
+        let texture =
+          if t >= 0 && t < Array.length m.textures then Some (Texture.transform o.xform m.textures.(t)) else tex
+        in
         leaf ctx' { o with shape = Sdl.Mesh m' } texture inter
       in
       Some (Object.union (Array.of_list (Hashtbl.fold (fun t f acc -> part t f :: acc) groups [])))
