@@ -22,6 +22,7 @@ let reset () =
   charset_ := `Ascii;
   noise_explicit := false;
   Pattern.scene_noise_generator := 2;
+  Value.working_gamma := 1.;
   Hashtbl.reset warned
 
 let version () = !version_

@@ -117,7 +117,12 @@ fog_item:
         | None -> Sdl.Cam_transform Transform.identity }
 
 %public global_item:
-  | ASSUMED_GAMMA e = param { Sdl.Assumed_gamma (fl $loc(e) e) }
+  | ASSUMED_GAMMA e = param
+      { let g = fl $loc(e) e in
+        (* the working gamma from here on: sRGB and image colours read
+           later are carried into it *)
+        if g > 0. then Value.working_gamma := g;
+        Sdl.Assumed_gamma g }
   | MAX_TRACE_LEVEL e = param { Sdl.Max_trace_level (Value.to_int (loc $loc(e)) e) }
   | ADC_BAILOUT e = param { Sdl.Adc_bailout (fl $loc(e) e) }
   | AMBIENT_LIGHT c = color_value { Sdl.Ambient_light (Value.to_rgb (loc $loc(c)) c) }

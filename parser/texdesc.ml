@@ -271,13 +271,12 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
   in
   let dec x =
     let c = float_of_int x /. 255. in
-    (* png "file" gamma G: the file's values are c^G *)
+    (* png "file" gamma G: the file's values are c^G; decoded colours
+       are carried into the working gamma's space (measured: an image at
+       ambient 1 shows the file's values under assumed_gamma 2.2) *)
     match file_gamma with
-    | Some g -> Float.pow c g
-    | None ->
-    if gamma_decode then
-      if c <= 0.04045 then c /. 12.92 else Float.pow ((c +. 0.055) /. 1.055) 2.4
-    else c
+    | Some g -> Value.to_working (Float.pow c g)
+    | None -> if gamma_decode then Value.srgb_decode c else c
   in
   let px =
     Array.init (img.w * img.h) (fun i ->

@@ -291,8 +291,15 @@ let call loc name args =
   | "strcmp" -> arity 2; Float (float_of_int (compare (s 0) (s 1)))
   | _ -> Diag.error loc "%s is not a function camlray knows" name
 
+(* global_settings' assumed_gamma as read so far (POV-Ray's working
+   gamma: 1 until one is given) *)
+let working_gamma = ref 1.
+
+(* a linear value in the working gamma's space *)
+let to_working c = if !working_gamma = 1. then c else Float.pow c (1. /. !working_gamma)
+
 let srgb_decode c =
-  if c <= 0.04045 then c /. 12.92 else Float.pow ((c +. 0.055) /. 1.055) 2.4
+  to_working (if c <= 0.04045 then c /. 12.92 else Float.pow ((c +. 0.055) /. 1.055) 2.4)
 
 let rgb_kind loc kw v =
   let need n =

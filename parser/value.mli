@@ -50,6 +50,18 @@ val reset_streams : unit -> unit
 val is_function : string -> bool
 (** Whether [call] knows this name. *)
 
+val working_gamma : float ref
+(** global_settings' [assumed_gamma] as read so far (1 until one is
+    given; {!Defaults.reset} puts 1 back): POV-Ray 3.7 carries sRGB
+    colours and image files' colours into that gamma's space. *)
+
+val to_working : float -> float
+(** A linear value carried into the working gamma's space ([c^(1/g)]). *)
+
+val srgb_decode : float -> float
+(** An sRGB-encoded value, decoded and carried into the working gamma's
+    space. *)
+
 val rgb_kind : Loc.t -> string -> t -> t
 (** [rgb_kind loc kw v]: the colour written [kw v] for [kw] one of rgb,
     rgbf, rgbt, rgbft, srgb, srgbf, srgbt, srgbft. *)
