@@ -278,10 +278,18 @@ let image_map loc ?file_gamma ~gamma_decode file mods =
     | Some g -> Value.to_working (Float.pow c g)
     | None -> if gamma_decode then Value.srgb_decode c else c
   in
+  (* an alpha channel (or a palette's tRNS) is the pixels' transmit,
+     1 - alpha, as in POV-Ray *)
+  let alphas =
+    try Image.read_alpha path with Sys_error e | Failure e -> Diag.error loc "cannot read image_map %s: %s" file e
+  in
   let px =
     Array.init (img.w * img.h) (fun i ->
         let b k = dec (Char.code (Bytes.get img.data ((3 * i) + k))) in
-        Color.opaque (Color.make (b 0) (b 1) (b 2)))
+        let c = Color.opaque (Color.make (b 0) (b 1) (b 2)) in
+        match alphas with
+        | Some a -> { c with transmit = 1. -. (float_of_int (Char.code (Bytes.get a i)) /. 255.) }
+        | None -> c)
   in
   let im = { Pigment.w = img.w; h = img.h; px; once = false; interpolate = 0; map_type = 0 } in
   (* the palette's entry of each pixel, read when a change names one *)

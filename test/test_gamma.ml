@@ -56,7 +56,32 @@ let working_gamma () =
   Alcotest.(check (list int)) "an image under assumed_gamma 1: the file's bytes" file (image 1.);
   Alcotest.(check (list int)) "under assumed_gamma 2.2: the file's bytes" file (image 2.2)
 
+(* an image_map's alpha is its transmit (1 - alpha), as in POV-Ray:
+   the harness's 16 x 16 RGBA PNG on a plane at ambient 1 before a black
+   background, 8 x 6 pixels, against POV-Ray's file at four pixels (it
+   was drawn opaque: 14.1 dB) *)
+let image_alpha () =
+  let png = Printf.sprintf "alpha-%d.png" (Unix.getpid ()) in
+  Helpers.write_file png
+    (In_channel.with_open_bin (Filename.concat (Helpers.scenes_dir ()) "whitted-extra/image-pattern.png") In_channel.input_all);
+  Fun.protect ~finally:(fun () -> Sys.remove png) @@ fun () ->
+  let s =
+    Scn.compile ~raw:true
+      (Printf.sprintf
+         "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n\
+          camera { orthographic location <0.5, 0.5, -1> look_at <0.5, 0.5, 0> right x up y }\n\
+          plane { z, 0 pigment { image_map { png \"%s\" } } finish { ambient 1 diffuse 0 } }"
+         png)
+  in
+  let img = Render.image ~domains:1 ~width:8 ~height:6 (Whitted.pixel s ~width:8 ~height:6) in
+  let d = (Image.to_rgb8 s.settings.encoding img).data in
+  let at x y = List.init 3 (fun k -> Char.code (Bytes.get d ((3 * ((8 * y) + x)) + k))) in
+  List.iter
+    (fun (x, y, want) -> Alcotest.(check (list int)) (Printf.sprintf "pixel %d, %d" x y) want (at x y))
+    [ (0, 0, [ 4; 4; 195 ]); (0, 3, [ 35; 67; 0 ]); (0, 5, [ 1; 3; 124 ]); (3, 2, [ 88; 83; 100 ]) ]
+
 let tests =
   ( "gamma",
     [ Alcotest.test_case "header rules" `Quick rules;
-      Alcotest.test_case "srgb and image colours in the working gamma" `Quick working_gamma ] )
+      Alcotest.test_case "srgb and image colours in the working gamma" `Quick working_gamma;
+      Alcotest.test_case "an image_map's alpha is its transmit" `Quick image_alpha ] )
