@@ -175,7 +175,6 @@ let agate_turbulence = default_turbulence Vec3.zero
 let is_block = function Checker | Hexagon | Brick _ | Object _ | Material _ -> true | _ -> false
 let block_count = function Hexagon -> 3 | Material { count; _ } -> count | _ -> 2
 let eps = 1e-10
-let frac x = x -. Float.floor x
 let two_pi = 2. *. Float.pi
 
 (* Each pattern in scalars, inlined into [raw_m]: a call would box its
@@ -217,17 +216,32 @@ let[@inline] hexagon3 x z =
   in
   float_of_int c
 
-(* Bricks of [size] with mortar of width [mortar] at the upper end of
-   each cell; even rows (in y) shift z by half a brick, odd rows shift x
-   (found by sampling POV-Ray's pattern). *)
-let[@inline] in_mortar c s mortar = frac (c /. s) *. s >= s -. mortar
+(* Bricks of [size] with mortar of width [mortar], as POV-Ray 3.7 lays
+   them: the point is moved by mortar + 1e-10 on every axis, and a
+   coordinate is in the mortar where its fraction of the brick's size is
+   at most mortar / size; so the mortar fills the last [mortar] of each
+   cell, shifted down by 1e-10 (measured with povray 3.7 to the last
+   bits: 7.5 - 0.9e-10 is mortar, 7.5 - 1.1e-10 brick, for the default
+   bricks). Rows whose half count's fraction is at most 0.5 have their
+   ends at whole multiples of x and their faces between those of z;
+   the others the other way round. *)
+let[@inline] brick_frac v =
+  let f = v -. Float.of_int (Float.to_int v) in
+  if f < 0. then f +. 1. else f
 
 let[@inline] brick3 (size : Vec3.t) mortar x y z =
-  let row = Float.floor (y /. size.y) in
-  let odd = Float.rem (Float.abs row) 2. = 1. in
-  let x = if odd then x +. (size.x /. 2.) else x in
-  let z = if odd then z else z +. (size.z /. 2.) in
-  if in_mortar x size.x mortar || in_mortar y size.y mortar || in_mortar z size.z mortar then 0. else 1.
+  let fudge = 1e-10 +. mortar in
+  let x = x +. fudge and y = y +. fudge and z = z +. fudge in
+  if brick_frac (y /. size.y) <= mortar /. size.y then 0.
+  else begin
+    let lower = brick_frac (y /. size.y *. 0.5) <= 0.5 in
+    let mx = mortar /. size.x and mz = mortar /. size.z in
+    if lower && brick_frac (x /. size.x) <= mx then 0.
+    else if (not lower) && brick_frac ((x /. size.x) +. 0.5) <= mx then 0.
+    else if (not lower) && brick_frac (z /. size.z) <= mz then 0.
+    else if lower && brick_frac ((z /. size.z) +. 0.5) <= mz then 0.
+    else 1.
+  end
 
 (* POV-Ray's sine of a value in turns (texture.cpp's cycloidal): the
    fraction of [v] (for a negative [v] the fraction of -v, the sine

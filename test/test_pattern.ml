@@ -248,6 +248,21 @@ let hexagon_edges () =
        [ "F(0.75, 0, 0)"; "F(1, 0, 0)"; "F(1.5, 0, 0)"; "F(2, 0, 0)"; "F(-0.75, 0, 0)"; "F(0.3, 0, -0.866025404)";
          "F(3, 0, 0.5)"; "F(0.25, 0, 0.4330127)" ])
 
+(* POV-Ray 3.7's brick near its mortar's edges (default bricks, values
+   from povray 3.7's function { pattern { brick } }): the point moved by
+   mortar + 1e-10, a fraction of a cell at most mortar / size is mortar *)
+let brick_edges () =
+  let f = Scn.float ~prelude:"#declare F = function { pattern { brick } }" in
+  let cases =
+    [ ("7.5-1e-8, 1, 0", 1.); ("7.5-1.1e-10, 1, 0", 1.); ("7.5-0.9e-10, 1, 0", 0.); ("7.5-1e-11, 1, 0", 0.);
+      ("8-0.9e-10, 1, 0", 1.); ("8-1.1e-10, 1, 0", 0.); ("-0.5, 1, 0", 0.); ("-0.5009, 1, 0", 1.);
+      ("-24.500000000100002, -4.569819722431236, -0.5000000002", 0.); ("7.4999999998, 9.0, 13.4999999999", 1.);
+      ("-16.0000000001, 1.5000000001, -1e-10", 1.); ("-4.5000000001, 3.0000000001, 13.5000000001", 0.);
+      ("7.4999999999, 1.4999999999, -4.5", 0.); ("1e-10, 5.4999999999, 6.2499999999", 0.);
+      ("24.0000000001, 5.4999999998, -5.0000000001", 0.); ("15.5, 5.4999999999, 2.2500000001", 0.) ]
+  in
+  Scn.check_floats "brick edges" (List.map snd cases) (List.map (fun (p, _) -> f ("F(" ^ p ^ ")")) cases)
+
 (* an image's file type before its name: png, jpeg and ppm read (by their
    bytes), others refused by name where they are written *)
 let image_kinds () =
@@ -982,6 +997,7 @@ let tests =
       Alcotest.test_case "image_map palette entries' filter and transmit" `Quick image_map_palette;
       Alcotest.test_case "image file types" `Quick image_kinds;
       Alcotest.test_case "hexagon on its cells' edges = POV-Ray's" `Quick hexagon_edges;
+      Alcotest.test_case "brick on its mortar's edges = POV-Ray's" `Quick brick_edges;
       Alcotest.test_case "image_map interpolate 2, 3 and 4" `Quick image_map_interpolation;
       Alcotest.test_case "image_map map_type 5 (torus)" `Quick image_map_torus;
       Alcotest.test_case "image_map rows' edges as POV-Ray's map_pos" `Quick image_map_edges;
