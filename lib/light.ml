@@ -101,7 +101,8 @@ let direction_to l (p : Vec3.t) =
   direction_into l pm o;
   (Vec3.make o.lx o.ly o.lz, o.dist)
 
-let rad a = a *. Float.pi /. 180.
+(* times pi/180, as POV-Ray scales by M_PI_180 *)
+let rad a = a *. (Float.pi /. 180.)
 
 let spot ~point_at ~radius ~falloff ~tightness =
   Spot { point_at; radius; falloff; tightness; cos_radius = Float.cos (rad radius); cos_falloff = Float.cos (rad falloff) }

@@ -19,7 +19,7 @@ let cone (l : Light.t) (r : Ray.scratch) out =
       let ax = point_at.x -. p.x and ay = point_at.y -. p.y and az = point_at.z -. p.z in
       let al = Float.sqrt ((ax *. ax) +. (ay *. ay) +. (az *. az)) in
       let ax = ax /. al and ay = ay /. al and az = az /. al in
-      let c = Float.cos (falloff *. Float.pi /. 180.) in
+      let c = Float.cos (falloff *. (Float.pi /. 180.)) in
       let c2 = c *. c in
       let vx = r.ox -. p.x and vy = r.oy -. p.y and vz = r.oz -. p.z in
       let k1 = (r.dx *. ax) +. (r.dy *. ay) +. (r.dz *. az)

@@ -1,16 +1,22 @@
 (* A 3x4 matrix acting on column vectors, p' = M p + t, kept with its
    inverse. Entries are row-major: m.(0..2) is the first row, m.(9..11) the
    translation. *)
-type t = { m : Float.Array.t; inv : Float.Array.t; id : bool }
+(* [plain]: made by [translate] and [scale] alone, which POV-Ray applies
+   to some shapes' own numbers rather than keeping a transformation *)
+type t = { m : Float.Array.t; inv : Float.Array.t; id : bool; plain : bool }
 
 let mk a = Float.Array.of_list (Array.to_list a)
 
 let identity_m = mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0. |]
-let identity = { m = identity_m; inv = identity_m; id = true }
+let identity = { m = identity_m; inv = identity_m; id = true; plain = true }
 let is_identity t = t.id
 let g = Float.Array.get
 
-(* product of two 3x4 affine matrices: (a then b) = B * A *)
+(* product of two 3x4 affine matrices: (a then b) = B * A. The sums run
+   in POV-Ray's order (matrices.cpp's MTimesA and MTimesB): the products
+   first, b's translation added last, so a composed transformation
+   rounds as POV-Ray's does (a face on a pattern's cell boundary falls
+   on the same side) *)
 let mul b a =
   let r = Float.Array.make 12 0. in
   for i = 0 to 2 do
@@ -21,11 +27,11 @@ let mul b a =
       done;
       Float.Array.set r ((3 * i) + j) !s
     done;
-    let s = ref (g b (9 + i)) in
+    let s = ref 0. in
     for k = 0 to 2 do
       s := !s +. (g b ((3 * i) + k) *. g a (9 + k))
     done;
-    Float.Array.set r (9 + i) !s
+    Float.Array.set r (9 + i) (!s +. g b (9 + i))
   done;
   r
 
@@ -60,15 +66,18 @@ let invert m =
     done;
     Some r
 
-let of_pair m inv = { m; inv; id = false }
+let of_pair m inv = { m; inv; id = false; plain = false }
+
+let plain t = { t with plain = true }
+let opaque t = if t.id then t else { t with plain = false }
 
 let translate (v : Vec3.t) =
-  of_pair
+  plain @@ of_pair
     (mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; v.x; v.y; v.z |])
     (mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; -.v.x; -.v.y; -.v.z |])
 
 let scale (v : Vec3.t) =
-  of_pair
+  plain @@ of_pair
     (mk [| v.x; 0.; 0.; 0.; v.y; 0.; 0.; 0.; v.z; 0.; 0.; 0. |])
     (mk [| 1. /. v.x; 0.; 0.; 0.; 1. /. v.y; 0.; 0.; 0.; 1. /. v.z; 0.; 0.; 0. |])
 
@@ -79,7 +88,10 @@ let transpose3 m =
 (* A pure rotation: the inverse is the transpose. *)
 let of_rotation m = of_pair m (transpose3 m)
 
-let deg a = a *. Float.pi /. 180.
+(* degrees times pi/180, as POV-Ray scales a rotation's vector by
+   M_PI_180 (a *. Float.pi /. 180. rounds differently for 384 of the
+   whole angles from -720 to 720) *)
+let deg a = a *. (Float.pi /. 180.)
 
 let rot_x a =
   let c = Float.cos (deg a) and s = Float.sin (deg a) in
@@ -96,7 +108,7 @@ let rot_z a =
 let then_ a b =
   if a.id then b
   else if b.id then a
-  else { m = mul b.m a.m; inv = mul a.inv b.inv; id = false }
+  else { m = mul b.m a.m; inv = mul a.inv b.inv; id = false; plain = a.plain && b.plain }
 
 let rotate (v : Vec3.t) = then_ (then_ (rot_x v.x) (rot_y v.y)) (rot_z v.z)
 
@@ -123,6 +135,20 @@ let of_pov_matrix a =
   Option.map (fun inv -> of_pair m inv) (invert m)
 
 let inverse t = { t with m = t.inv; inv = t.m }
+
+let as_translation t =
+  let m = t.m in
+  if t.plain && (not t.id) && g m 0 = 1. && g m 1 = 0. && g m 2 = 0. && g m 3 = 0. && g m 4 = 1. && g m 5 = 0. && g m 6 = 0.
+     && g m 7 = 0. && g m 8 = 1.
+  then Some (Vec3.make (g m 9) (g m 10) (g m 11))
+  else None
+
+let as_scale t =
+  let m = t.m in
+  if t.plain && (not t.id) && g m 1 = 0. && g m 2 = 0. && g m 3 = 0. && g m 5 = 0. && g m 6 = 0. && g m 7 = 0. && g m 9 = 0.
+     && g m 10 = 0. && g m 11 = 0.
+  then Some (Vec3.make (g m 0) (g m 4) (g m 8))
+  else None
 
 let[@inline] app m (p : Vec3.t) o =
   Vec3.make

@@ -29,6 +29,19 @@ val then_ : t -> t -> t
 
 val inverse : t -> t
 
+val opaque : t -> t
+(** The same transformation, no longer taken for a plain [translate] or
+    [scale] (a [transform { }] block or a declared transform: POV-Ray
+    keeps those as transformations). *)
+
+val as_translation : t -> Vec3.t option
+(** The vector of a transformation made by [translate] keywords alone
+    (its 3x3 part exactly the identity). *)
+
+val as_scale : t -> Vec3.t option
+(** The factors of a transformation made by [scale] keywords alone
+    (diagonal, no translation). *)
+
 val point : t -> Vec3.t -> Vec3.t
 val vector : t -> Vec3.t -> Vec3.t
 (** Apply to a direction (no translation). *)

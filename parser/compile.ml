@@ -114,7 +114,8 @@ let camera loc items =
   (* only these two zoom by the angle; the other types turn by it *)
   (match angle with
   | Some a when a > 0. && a < 180. && planar ->
-      let len = Vec3.length !right /. (2. *. Float.tan (a *. Float.pi /. 360.)) in
+      (* POV-Ray: |right| / tan(angle * M_PI_360) / 2 *)
+      let len = Vec3.length !right /. Float.tan (a *. (Float.pi /. 360.)) /. 2. in
       direction := Vec3.scale len (Vec3.normalize !direction)
   | _ -> ());
   (match look_at with

@@ -260,7 +260,9 @@ vector_items:
   | TRANSFORM LBRACE t = transform_body RBRACE { t }
 
 %public transform_body:
-  | ts = list(transform_item) { List.fold_left (fun acc f -> f acc) Transform.identity ts }
+  (* POV-Ray keeps a transform { } as a transformation, even of a shape
+     whose own numbers a translate or scale would change *)
+  | ts = list(transform_item) { Transform.opaque (List.fold_left (fun acc f -> f acc) Transform.identity ts) }
 
 %public transform_item:
   | t = transformation { fun acc -> Transform.then_ acc t }

@@ -205,8 +205,31 @@ type scene = { items : item list; version : float option; file : string }
 (* Patterns carry their own transform; solid colours do not move. *)
 let transform_texture t tex = Texture.transform t tex
 
+(* POV-Ray 3.7 moves and scales a box's corners (boxes.cpp) until it is
+   first rotated or given a matrix or a transform { }; only from then on
+   does the box keep a transformation. Its faces then lie where POV-Ray's do to the last bit
+   (a face on a pattern's cell boundary shows the same cell). *)
+let baked_box t o =
+  match o.shape with
+  | Box (a, b) when Transform.is_identity o.xform -> (
+      match Transform.as_translation t with
+      | Some v -> Some (Box (Vec3.add a v, Vec3.add b v))
+      | None -> (
+          match Transform.as_scale t with
+          | Some s ->
+              let a = Vec3.make (a.x *. s.x) (a.y *. s.y) (a.z *. s.z)
+              and b = Vec3.make (b.x *. s.x) (b.y *. s.y) (b.z *. s.z) in
+              Some (Box (Vec3.min a b, Vec3.max a b))
+          | None -> None))
+  | _ -> None
+
 let transform_obj t o =
-  { o with xform = Transform.then_ o.xform t; texture = Option.map (transform_texture t) o.texture;
+  let o =
+    match baked_box t o with
+    | Some shape -> { o with shape }
+    | None -> { o with xform = Transform.then_ o.xform t }
+  in
+  { o with texture = Option.map (transform_texture t) o.texture;
     inner = Option.map (transform_texture t) o.inner;
     interior = Option.map (Interior.transform t) o.interior }
 

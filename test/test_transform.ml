@@ -66,6 +66,29 @@ let units =
     Alcotest.test_case "a singular matrix is refused" `Quick (fun () ->
         Alcotest.(check bool) "none" true
           (Transform.of_pov_matrix [| 1.; 0.; 0.; 2.; 0.; 0.; 0.; 0.; 1.; 0.; 0.; 0. |] = None));
+    (* povray 3.7's vrotate(<1,2,3>, <a,a,a>) and a composed transform's
+       point, printed to 20 decimals: the same doubles (angles times
+       pi/180 as one constant, sums with the translation last) *)
+    Alcotest.test_case "rotations and compositions round as POV-Ray's" `Quick (fun () ->
+        let pov =
+          [ (3., (1.06299805440617212149, 1.89848602956449674650, 3.04397535007711939059));
+            (6., (1.14583249121694530359, 1.80511914193489242386, 3.07060462865081396089));
+            (12., (1.36105590979370250082, 1.65163167941634725366, 3.06914313872194277621));
+            (19., (1.66994658316170041523, 1.54202588143230379103, 2.97210945127858483517));
+            (23., (1.86030394739577831231, 1.51622772753601120499, 2.87059622753787380134));
+            (41., (2.64128033561921204964, 1.68816975315989337147, 2.04296869119116131230)) ]
+        in
+        let exact msg (x, y, z) (p : Vec3.t) = Alcotest.(check (list (float 0.))) msg [ x; y; z ] [ p.x; p.y; p.z ] in
+        List.iter
+          (fun (a, e) -> exact (Printf.sprintf "vrotate by %g" a) e (Transform.vector (Transform.rotate (v a a a)) (v 1. 2. 3.)))
+          pov;
+        let t =
+          List.fold_left Transform.then_ Transform.identity
+            [ Transform.translate (v 0.1 0.2 0.3); Transform.rotate (v 13. 27. 41.); Transform.scale (v 0.7 0.7 0.7);
+              Transform.translate (v 0.33 0.77 1.1) ]
+        in
+        exact "composed" (1.25906859879298460569, 3.00239315910594539716, 3.50028171719775782478)
+          (Transform.point t (v 1.1 2.3 3.7)));
     Alcotest.test_case "normal of scale <2,1,1> sphere (pov-facts 2)" `Quick (fun () ->
         (* unit sphere scaled <2,1,1>, hit at (1, 0.5, -0.7071): object point (0.5,0.5,-0.7071) *)
         let t = Transform.scale (v 2. 1. 1.) in
