@@ -112,17 +112,19 @@ let then_ a b =
 
 let rotate (v : Vec3.t) = then_ (then_ (rot_x v.x) (rot_y v.y)) (rot_z v.z)
 
+(* POV-Ray's rotation by [angle] degrees about [axis] (matrices.cpp's
+   Compute_Axis_Rotation_Transform, its sums in its order; the inverse
+   is the transpose) *)
 let axis_rotate axis angle =
   let a = Vec3.normalize axis in
   let c = Float.cos (deg angle) and s = Float.sin (deg angle) in
-  let t = 1. -. c in
   let x = a.x and y = a.y and z = a.z in
   of_rotation
     (mk
        [|
-         (t *. x *. x) +. c; (t *. x *. y) -. (s *. z); (t *. x *. z) +. (s *. y);
-         (t *. x *. y) +. (s *. z); (t *. y *. y) +. c; (t *. y *. z) -. (s *. x);
-         (t *. x *. z) -. (s *. y); (t *. y *. z) +. (s *. x); (t *. z *. z) +. c;
+         (x *. x) +. (c *. (1. -. (x *. x))); (x *. y *. (1. -. c)) -. (z *. s); (x *. z *. (1. -. c)) +. (y *. s);
+         (x *. y *. (1. -. c)) +. (z *. s); (y *. y) +. (c *. (1. -. (y *. y))); (y *. z *. (1. -. c)) -. (x *. s);
+         (x *. z *. (1. -. c)) -. (y *. s); (y *. z *. (1. -. c)) +. (x *. s); (z *. z) +. (c *. (1. -. (z *. z)));
          0.; 0.; 0.;
        |])
 

@@ -88,7 +88,14 @@ let units =
               Transform.translate (v 0.33 0.77 1.1) ]
         in
         exact "composed" (1.25906859879298460569, 3.00239315910594539716, 3.50028171719775782478)
-          (Transform.point t (v 1.1 2.3 3.7)));
+          (Transform.point t (v 1.1 2.3 3.7));
+        (* vaxis_rotate: POV-Ray's axis rotation, term by term (20 decimals) *)
+        exact "vaxis_rotate 37" (-1.16084631453716369265, 1.17593043189071377874, 3.35702598342324476377)
+          (Transform.vector (Transform.axis_rotate (v 0.3 (-0.7) 0.2) 37.) (v 1. 2. 3.));
+        exact "vaxis_rotate 123.4" (3.05392585088735701859, -1.40048876894597063014, 0.04656291805861434430)
+          (Transform.vector (Transform.axis_rotate (v 1. 1. 1.) 123.4) (v (-1.5) 0.2 3.));
+        exact "vaxis_rotate 41" (-0.05574084777582424821, 0.21654781894360514150, 0.29999999999999998890)
+          (Transform.vector (Transform.axis_rotate (v 0. 0. 1.) 41.) (v 0.1 0.2 0.3)));
     Alcotest.test_case "normal of scale <2,1,1> sphere (pov-facts 2)" `Quick (fun () ->
         (* unit sphere scaled <2,1,1>, hit at (1, 0.5, -0.7071): object point (0.5,0.5,-0.7071) *)
         let t = Transform.scale (v 2. 1. 1.) in
