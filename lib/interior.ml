@@ -18,6 +18,7 @@ let[@inline] fade_channel i c d =
   else if i.fade_power >= 1000. then Float.exp (-.(1. -. c) *. d /. i.fade_distance)
   else c +. ((1. -. c) /. (1. +. Float.pow (d /. i.fade_distance) i.fade_power))
 
+let copy i = { i with slot = i.slot }
 let transform t i = if i.media = [] then i else { i with media = List.map (Media.transform t) i.media }
 
 (* Shadow rays fade only with a fade_power (povray 3.7: fade_power 0 fades

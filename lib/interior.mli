@@ -31,6 +31,10 @@ val fade_channel : t -> float -> float -> float
     fade then, see {!Whitted}). Inlined where it is used (the distance is
     not boxed). *)
 
+val copy : t -> t
+(** The same interior, a value of its own: rays tell interiors apart by
+    identity. *)
+
 val transform : Transform.t -> t -> t
 (** Move the densities of its media (the interior itself when it has none:
     interiors are told apart by identity). *)

@@ -52,9 +52,37 @@ let fades_light () =
   Alcotest.(check bool) "fade_power 0 fades what is seen, not light" false
     (Interior.fades_light { glass with fade_distance = 2.; fade_power = 0. })
 
+(* Whose interior a ray is in (povray 3.7, 80x60, pixels where the
+   first answer differs from the second): two nested clear spheres of
+   ior 1.5 over a checker refract as separate solids when each has
+   interior { I } of one declared I, or is a copy of one declared sphere;
+   the parts of a union with one interior share it, and a ray crossing
+   from the outer part into the inner leaves it. *)
+let identity () =
+  let scene spheres =
+    "#version 3.7;\nglobal_settings { assumed_gamma 1 }\n#declare I = interior { ior 1.5 }\n\
+     #declare S = sphere { 0, 1 pigment { rgbf 1 } finish { ambient 0 diffuse 0 } interior { ior 1.5 } }\n\
+     camera { location <0,0,-6> look_at 0 angle 40 }\n\
+     plane { z, 3 pigment { checker rgb 1, rgb 0 scale 0.25 } finish { ambient 1 diffuse 0 } }\n" ^ spheres
+  in
+  let clear = "pigment { rgbf 1 } finish { ambient 0 diffuse 0 }" in
+  let own =
+    Printf.sprintf "sphere { 0, 2 %s interior { I } }\nsphere { <0.3,0.2,0>, 1 %s interior { I } }" clear clear
+  and copies = "object { S scale 2 }\nobject { S translate <0.3,0.2,0> }"
+  and shared = Printf.sprintf "union { sphere { 0, 2 %s } sphere { <0.3,0.2,0>, 1 %s } interior { I } }" clear clear in
+  let at src (x, y) = (Scn.pixel ~w:80 ~h:60 ~x ~y (scene src)).Camlray.Color.r in
+  List.iter
+    (fun (p, separate, one) ->
+      let name (x, y) what = Printf.sprintf "%s at %d,%d" what x y in
+      Scn.close (name p "interior { I }") separate (at own p);
+      Scn.close (name p "copies of a declared sphere") separate (at copies p);
+      Scn.close (name p "one union's interior") one (at shared p))
+    [ ((32, 20), 0., 1.); ((42, 20), 1., 0.); ((45, 20), 1., 0.) ]
+
 let tests =
   ( "interior",
     [ Alcotest.test_case "relative index of refraction" `Quick relative;
       Alcotest.test_case "fresnel index ratio (POV-Ray's)" `Quick fresnel;
       Alcotest.test_case "media past a surface" `Quick beyond;
-      Alcotest.test_case "which interiors fade shadow rays" `Quick fades_light ] )
+      Alcotest.test_case "which interiors fade shadow rays" `Quick fades_light;
+      Alcotest.test_case "an object's own interior is its own; a union's is shared" `Quick identity ] )
