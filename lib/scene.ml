@@ -213,23 +213,11 @@ let radiosity s = match s.views.gather with Some v -> v | None -> s
 
 let bvh_nodes s = Bvh.nodes s.accel.bvh
 
-(* Nearest root in (tmin, tmax) of the sphere stored at [i], or infinity. *)
+(* Nearest root in (tmin, tmax) of the sphere stored at [i], or infinity
+   (POV-Ray's arithmetic, as [Shape]'s sphere). *)
 let[@inline] sphere_root sp i rad (r : Ray.scratch) tmin tmax =
-  let ox = r.ox -. Float.Array.unsafe_get sp (4 * i)
-  and oy = r.oy -. Float.Array.unsafe_get sp ((4 * i) + 1)
-  and oz = r.oz -. Float.Array.unsafe_get sp ((4 * i) + 2) in
-  let dx = r.dx and dy = r.dy and dz = r.dz in
-  let a = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
-  let hb = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
-  let c = (ox *. ox) +. (oy *. oy) +. (oz *. oz) -. (rad *. rad) in
-  let disc = (hb *. hb) -. (a *. c) in
-  if disc < 0. then infinity
-  else
-    let sq = Float.sqrt disc in
-    let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
-    let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
-    let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
-    if lo > tmin && lo < tmax then lo else if hi > tmin && hi < tmax then hi else infinity
+  Shape.sphere_nearest (Float.Array.unsafe_get sp (4 * i)) (Float.Array.unsafe_get sp ((4 * i) + 1))
+    (Float.Array.unsafe_get sp ((4 * i) + 2)) rad r tmin tmax
 
 (* Per-domain scratch for queries: the ray, the hit, where the leaf goes,
    and the callback of [occluders]. [busy] guards against a query started

@@ -59,21 +59,37 @@ let[@inline] accept (h : Hit.t) tmin t id =
     true)
   else false
 
-let[@inline] hit_sphere (center : Vec3.t) radius (r : Ray.scratch) tmin (h : Hit.t) =
-  let ox = r.ox -. center.x and oy = r.oy -. center.y and oz = r.oz -. center.z in
+(* POV-Ray 3.7's sphere (spheres.cpp's Intersect): along a unit
+   direction, the distance to the point nearest the centre less and plus
+   the half chord; no crossing when the ray starts outside and heads
+   away (that distance under 1e-10) or when the squared half chord is
+   1e-10 or less. A direction that is not of unit length (a sphere under
+   a transformation that is not a similarity) is made unit first and
+   the distances scaled back, as POV-Ray does for an ellipsoid. The
+   nearest crossing in (lo, hi), or infinity. *)
+let[@inline] sphere_nearest cx cy cz radius (r : Ray.scratch) lo hi =
   let dx = r.dx and dy = r.dy and dz = r.dz in
-  let a = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
-  let hb = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
-  let c = (ox *. ox) +. (oy *. oy) +. (oz *. oz) -. (radius *. radius) in
-  let disc = (hb *. hb) -. (a *. c) in
-  if disc < 0. then false
-  else
-    let sq = Float.sqrt disc in
-    (* the numerically stable pair of roots *)
-    let q = if hb > 0. then -.(hb +. sq) else -.hb +. sq in
-    let t0 = q /. a and t1 = if q = 0. then 0. else c /. q in
-    let lo = if t0 < t1 then t0 else t1 and hi = if t0 < t1 then t1 else t0 in
-    accept h tmin lo 0. || accept h tmin hi 0.
+  let l2 = (dx *. dx) +. (dy *. dy) +. (dz *. dz) in
+  let unit = Float.abs (l2 -. 1.) < 1e-12 in
+  let len = if unit then 1. else Float.sqrt l2 in
+  let k = 1. /. len in
+  let dx = if unit then dx else dx *. k and dy = if unit then dy else dy *. k and dz = if unit then dz else dz *. k in
+  let ox = cx -. r.ox and oy = cy -. r.oy and oz = cz -. r.oz in
+  let oc2 = (ox *. ox) +. (oy *. oy) +. (oz *. oz) in
+  let tca = (ox *. dx) +. (oy *. dy) +. (oz *. dz) in
+  let r2 = radius *. radius in
+  let hc2 = r2 -. oc2 +. (tca *. tca) in
+  if (oc2 >= r2 && tca < 1e-10) || not (hc2 > 1e-10) then infinity
+  else begin
+    let hc = Float.sqrt hc2 in
+    let t1 = (tca -. hc) /. len and t2 = (tca +. hc) /. len in
+    if t1 > lo && t1 < hi then t1 else if t2 > lo && t2 < hi then t2 else infinity
+  end
+
+let[@inline] hit_sphere (center : Vec3.t) radius (r : Ray.scratch) tmin (h : Hit.t) =
+  let lo = if h.floor > tmin then h.floor else tmin in
+  let t = sphere_nearest center.x center.y center.z radius r lo h.t in
+  t < infinity && accept h tmin t 0.
 
 (* Entry and exit of the ray in one slab (a parallel ray outside it gets an
    empty interval), and the face crossed at each: 2 axis for the low

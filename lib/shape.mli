@@ -65,6 +65,10 @@ val hit : t -> Ray.t -> float -> Hit.t -> bool
 (** [hit s ray tmin h]: nearest crossing in [(tmin, h.t)]; on success sets
     [h] (distance and which part was hit) and returns [true]. *)
 
+val sphere_nearest : float -> float -> float -> float -> Ray.scratch -> float -> float -> float
+(** [sphere_nearest cx cy cz radius ray lo hi]: the nearest crossing in
+    (lo, hi) of the sphere, or infinity, with POV-Ray 3.7's arithmetic. *)
+
 val hit_s : t -> Ray.scratch -> float -> Hit.t -> bool
 (** {!hit} on a scratch ray: allocates nothing (a torus's solver aside). *)
 

@@ -934,6 +934,31 @@ let sor_units =
         Alcotest.(check string) "first two level" "" (err [| (0., 0.); (0.1, 0.); (0.6, 0.5); (0.2, 0.8); (0.3, 1.) |]));
   ]
 
+(* POV-Ray 3.7's sphere arithmetic: trace() of povray 3.7 on random
+   spheres, printed to 20 decimals (the same doubles; 17 of 40 such
+   traces differed with the stable quadratic camlray used before) *)
+let pov_spheres =
+  Alcotest.test_case "sphere crossings = POV-Ray's doubles" `Quick (fun () ->
+      let cases =
+        [ ("<-0.28572267894108805,0.3586343164829757,2.545263504142376>, 1.3244301542195014",
+           "<0.12546036899633783,1.3981572615983513,-5.045434498321974>, <-0.3827931587805968,-0.7298858810144384,8.289147330482177>",
+           (-0.16832110820259466033, 0.83799324771123850919, 1.31622033173315156063));
+          ("<-2.4352592626246894,-1.179592424252847,-2.4559767750489634>, 2.0812179756077906",
+           "<3.095015720659825,-7.329914618082464,7.715094732780452>, <-3.7892029361966975,6.726945612384716,-9.73815138728762>",
+           (-0.54575848086683453886, -0.86647350578731341386, -1.64159872977243104231));
+          ("<-2.0550354291590254,-2.9099955783023708,0.17028759702287255>, 0.43101243137148093",
+           "<-4.956667795233134,-4.128911781356564,-7.518678572403383>, <2.8736519140717345,1.1727789126528227,7.954628798040844>",
+           (-2.29811832100579715998, -3.04391928579704851288, -0.15948029750153036588));
+          ("<-2.767821169837304,2.7760890687336914,-1.5695568439441034>, 1.8500748132284295",
+           "<-3.8882976268750085,5.179485548117643,1.5434609044789678>, <0.4325883440483832,-3.4842469755294116,-2.3792114941575226>",
+           (-3.61815457362406345254, 3.00364070809899708081, 0.05768934774564682400)) ]
+      in
+      List.iteri
+        (fun i (sphere, ray, (x, y, z)) ->
+          let got = Scn.vec ~prelude:(Printf.sprintf "#declare S = sphere { %s }" sphere) (Printf.sprintf "trace(S, %s)" ray) in
+          Alcotest.(check (list (float 0.))) (Printf.sprintf "trace %d" i) [ x; y; z ] got)
+        cases)
+
 let tests =
-  ("shape", folded :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ julia_units @ superellipsoid_units @ iso_units
+  ("shape", folded :: pov_spheres :: hand @ inside_cases @ hf_units @ polygon_units @ patch_units @ algebraic_units @ blob_units @ prism_units @ lathe_units @ sor_units @ julia_units @ superellipsoid_units @ iso_units
     @ List.map QCheck_alcotest.to_alcotest (roots_prop :: cubic_roots_prop :: prism_prop :: prism_window_prop :: lathe_prop :: superellipsoid_prop :: props))
