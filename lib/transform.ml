@@ -138,18 +138,19 @@ let of_pov_matrix a =
 
 let inverse t = { t with m = t.inv; inv = t.m }
 
+(* no rotation or shear: zero off the diagonal *)
+let diagonal m = g m 1 = 0. && g m 2 = 0. && g m 3 = 0. && g m 5 = 0. && g m 6 = 0. && g m 7 = 0.
+
 let as_translation t =
   let m = t.m in
-  if t.plain && (not t.id) && g m 0 = 1. && g m 1 = 0. && g m 2 = 0. && g m 3 = 0. && g m 4 = 1. && g m 5 = 0. && g m 6 = 0.
-     && g m 7 = 0. && g m 8 = 1.
-  then Some (Vec3.make (g m 9) (g m 10) (g m 11))
+  if t.plain && (not t.id) && diagonal m && g m 0 = 1. && g m 4 = 1. && g m 8 = 1. then
+    Some (Vec3.make (g m 9) (g m 10) (g m 11))
   else None
 
 let as_scale t =
   let m = t.m in
-  if t.plain && (not t.id) && g m 1 = 0. && g m 2 = 0. && g m 3 = 0. && g m 5 = 0. && g m 6 = 0. && g m 7 = 0. && g m 9 = 0.
-     && g m 10 = 0. && g m 11 = 0.
-  then Some (Vec3.make (g m 0) (g m 4) (g m 8))
+  if t.plain && (not t.id) && diagonal m && g m 9 = 0. && g m 10 = 0. && g m 11 = 0. then
+    Some (Vec3.make (g m 0) (g m 4) (g m 8))
   else None
 
 let[@inline] app m (p : Vec3.t) o =

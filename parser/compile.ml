@@ -445,14 +445,14 @@ let rec illuminate_both (t : Texture.t) =
 
 (* The interior an object hands down: its own or its parent's; [hollow]
    (on it, or on a parent, as POV-Ray sets it on a CSG's children) marks it:
-   a ray inside only hollow solids sees fog. *)
-(* An object's own interior is its own: POV-Ray 3.7 gives every
-   interior { } (even of a declared interior) and every copy of a
-   declared object an interior of its own, so a ray in one is not taken
-   to be in the other (measured: two nested spheres of ior 1.5 with
-   interior { I } refract as separate solids, as with two literal
-   interiors); a CSG's interior is one, shared by the parts without
-   their own (a ray crossing from one part into another leaves it). *)
+   a ray inside only hollow solids sees fog. An object's own interior is
+   its own: POV-Ray 3.7 gives every interior { } (even of a declared
+   interior) and every copy of a declared object an interior of its own,
+   so a ray in one is not taken to be in the other (measured: two nested
+   spheres of ior 1.5 with interior { I } refract as separate solids, as
+   with two literal interiors); a CSG's interior is one, shared by the
+   parts without their own (a ray crossing from one part into another
+   leaves it). *)
 let interior_of ctx (o : Sdl.obj) =
   let inter = match o.interior with Some i -> Some (Interior.copy i) | None -> ctx.inter in
   let parent_hollow = match ctx.inter with Some (i : Interior.t) -> i.hollow | None -> false in
