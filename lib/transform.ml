@@ -2,13 +2,14 @@
    inverse. Entries are row-major: m.(0..2) is the first row, m.(9..11) the
    translation. *)
 (* [plain]: made by [translate] and [scale] alone, which POV-Ray applies
-   to some shapes' own numbers rather than keeping a transformation *)
-type t = { m : Float.Array.t; inv : Float.Array.t; id : bool; plain : bool }
+   to some shapes' own numbers rather than keeping a transformation;
+   [turn]: made by one [rotate] (a plane turns its normal) *)
+type t = { m : Float.Array.t; inv : Float.Array.t; id : bool; plain : bool; turn : bool }
 
 let mk a = Float.Array.of_list (Array.to_list a)
 
 let identity_m = mk [| 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0.; 1.; 0.; 0.; 0. |]
-let identity = { m = identity_m; inv = identity_m; id = true; plain = true }
+let identity = { m = identity_m; inv = identity_m; id = true; plain = true; turn = false }
 let is_identity t = t.id
 let g = Float.Array.get
 
@@ -66,10 +67,10 @@ let invert m =
     done;
     Some r
 
-let of_pair m inv = { m; inv; id = false; plain = false }
+let of_pair m inv = { m; inv; id = false; plain = false; turn = false }
 
 let plain t = { t with plain = true }
-let opaque t = if t.id then t else { t with plain = false }
+let opaque t = if t.id then t else { t with plain = false; turn = false }
 
 let translate (v : Vec3.t) =
   plain @@ of_pair
@@ -108,9 +109,11 @@ let rot_z a =
 let then_ a b =
   if a.id then b
   else if b.id then a
-  else { m = mul b.m a.m; inv = mul a.inv b.inv; id = false; plain = a.plain && b.plain }
+  else { m = mul b.m a.m; inv = mul a.inv b.inv; id = false; plain = a.plain && b.plain; turn = false }
 
-let rotate (v : Vec3.t) = then_ (then_ (rot_x v.x) (rot_y v.y)) (rot_z v.z)
+let rotate (v : Vec3.t) =
+  let r = then_ (then_ (rot_x v.x) (rot_y v.y)) (rot_z v.z) in
+  { r with turn = true }
 
 (* POV-Ray's rotation by [angle] degrees about [axis] (matrices.cpp's
    Compute_Axis_Rotation_Transform, its sums in its order; the inverse
@@ -146,6 +149,8 @@ let as_translation t =
   if t.plain && (not t.id) && diagonal m && g m 0 = 1. && g m 4 = 1. && g m 8 = 1. then
     Some (Vec3.make (g m 9) (g m 10) (g m 11))
   else None
+
+let is_turn t = t.turn
 
 let as_scale t =
   let m = t.m in

@@ -38,6 +38,9 @@ val as_translation : t -> Vec3.t option
 (** The vector of a transformation made by [translate] keywords alone
     (its 3x3 part exactly the identity). *)
 
+val is_turn : t -> bool
+(** Made by one [rotate] keyword. *)
+
 val as_scale : t -> Vec3.t option
 (** The factors of a transformation made by [scale] keywords alone
     (diagonal, no translation). *)

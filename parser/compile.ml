@@ -328,6 +328,7 @@ let shape (o : Sdl.obj) =
       positive o "a sphere's radius" r;
       Shape.sphere c r
   | Sdl.Plane (n, d) -> Shape.plane n d
+  | Sdl.Unit_plane (n, d) -> Shape.Plane { normal = n; offset = d }
   | Sdl.Box (a, b) -> Shape.box a b
   | Sdl.Cone c ->
       let what = if c.cylinder then "cylinder" else "cone" in

@@ -145,7 +145,7 @@ let rec parts (o : Sdl.obj) =
         (if o.photon = Photon.none then [] else [ photons o.photon ])
         @ if Transform.is_identity o.xform then [] else [ matrix o.xform ] )
   | Sdl.Sphere (c, r) -> simple (Printf.sprintf "sphere { %s, %s" (vec c) (float r))
-  | Sdl.Plane (n, d) -> simple (Printf.sprintf "plane { %s, %s" (vec n) (float d))
+  | Sdl.Plane (n, d) | Sdl.Unit_plane (n, d) -> simple (Printf.sprintf "plane { %s, %s" (vec n) (float d))
   | Sdl.Box (a, b) -> simple (Printf.sprintf "box { %s, %s" (vec a) (vec b))
   | Sdl.Cone c when c.cylinder ->
       simple

@@ -3,6 +3,10 @@ open Camlray
 type shape =
   | Sphere of Vec3.t * float
   | Plane of Vec3.t * float
+  | Unit_plane of Vec3.t * float
+      (** a plane moved, turned or scaled as POV-Ray changes its own
+          numbers: its normal already made a unit vector POV-Ray's way
+          (and turned since), its offset along it *)
   | Box of Vec3.t * Vec3.t
   | Cone of cone  (** cylinders too *)
   | Torus of float * float
@@ -223,11 +227,44 @@ let baked_box t o =
           | None -> None))
   | _ -> None
 
+(* POV-Ray 3.7's plane (planes.cpp) keeps its own numbers until it is
+   given a matrix or a transform { }: its normal is made a unit vector
+   (times 1/length) when it is read; translate moves its offset by the
+   sum of the normal's and the vector's products, rotate turns the
+   normal (not made a unit vector again), scale divides the normal by
+   the factors, makes it a unit vector again and divides the offset by
+   its length. *)
+let baked_plane t o =
+  let unit (n : Vec3.t) =
+    let k = 1. /. Vec3.length n in
+    Vec3.make (n.x *. k) (n.y *. k) (n.z *. k)
+  in
+  let step (n : Vec3.t) d =
+    match Transform.as_translation t with
+    | Some v -> Some (Unit_plane (n, d +. ((n.x *. v.x) +. (n.y *. v.y) +. (n.z *. v.z))))
+    | None -> (
+        match Transform.as_scale t with
+        | Some s ->
+            let m = Vec3.make (n.x /. s.x) (n.y /. s.y) (n.z /. s.z) in
+            let l = Vec3.length m in
+            Some (Unit_plane (unit m, d /. l))
+        | None -> if Transform.is_turn t then Some (Unit_plane (Transform.vector t n, d)) else None)
+  in
+  if not (Transform.is_identity o.xform) then None
+  else
+    match o.shape with
+    | Plane (n, d) when Vec3.length n > 0. -> step (unit n) d
+    | Unit_plane (n, d) -> step n d
+    | _ -> None
+
 let transform_obj t o =
   let o =
     match baked_box t o with
     | Some shape -> { o with shape }
-    | None -> { o with xform = Transform.then_ o.xform t }
+    | None -> (
+        match baked_plane t o with
+        | Some shape -> { o with shape }
+        | None -> { o with xform = Transform.then_ o.xform t })
   in
   { o with texture = Option.map (transform_texture t) o.texture;
     inner = Option.map (transform_texture t) o.inner;

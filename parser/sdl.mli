@@ -7,6 +7,10 @@ open Camlray
 type shape =
   | Sphere of Vec3.t * float
   | Plane of Vec3.t * float
+  | Unit_plane of Vec3.t * float
+      (** a plane moved, turned or scaled as POV-Ray changes its own
+          numbers: its normal already made a unit vector POV-Ray's way
+          (and turned since), its offset along it *)
   | Box of Vec3.t * Vec3.t
   | Cone of cone  (** cylinders too *)
   | Torus of float * float
