@@ -150,13 +150,13 @@ let as_translation t =
     Some (Vec3.make (g m 9) (g m 10) (g m 11))
   else None
 
-let is_turn t = t.turn
-
 let as_scale t =
   let m = t.m in
   if t.plain && (not t.id) && diagonal m && g m 9 = 0. && g m 10 = 0. && g m 11 = 0. then
     Some (Vec3.make (g m 0) (g m 4) (g m 8))
   else None
+
+let is_turn t = t.turn
 
 let[@inline] app m (p : Vec3.t) o =
   Vec3.make

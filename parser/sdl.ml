@@ -235,10 +235,6 @@ let baked_box t o =
    the factors, makes it a unit vector again and divides the offset by
    its length. *)
 let baked_plane t o =
-  let unit (n : Vec3.t) =
-    let k = 1. /. Vec3.length n in
-    Vec3.make (n.x *. k) (n.y *. k) (n.z *. k)
-  in
   let step (n : Vec3.t) d =
     match Transform.as_translation t with
     | Some v -> Some (Unit_plane (n, d +. ((n.x *. v.x) +. (n.y *. v.y) +. (n.z *. v.z))))
@@ -247,13 +243,13 @@ let baked_plane t o =
         | Some s ->
             let m = Vec3.make (n.x /. s.x) (n.y /. s.y) (n.z /. s.z) in
             let l = Vec3.length m in
-            Some (Unit_plane (unit m, d /. l))
+            Some (Unit_plane (Vec3.normalize m, d /. l))
         | None -> if Transform.is_turn t then Some (Unit_plane (Transform.vector t n, d)) else None)
   in
   if not (Transform.is_identity o.xform) then None
   else
     match o.shape with
-    | Plane (n, d) when Vec3.length n > 0. -> step (unit n) d
+    | Plane (n, d) when Vec3.length n > 0. -> step (Vec3.normalize n) d
     | Unit_plane (n, d) -> step n d
     | _ -> None
 
