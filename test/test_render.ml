@@ -92,6 +92,25 @@ let units =
          | exception Failure _ -> ());
         let e = Render.with_pool ~domains:2 (fun () -> one (workers ())) in
         Alcotest.(check bool) "a fresh worker" true (e <> a && e <> c && e <> d));
+    Alcotest.test_case "with_pool: more domains than cores start at the first loop" `Quick (fun () ->
+        (* domain ids grow: a domain spawned between [with_pool] and the
+           first loop tells which came first *)
+        let probe () = Domain.join (Domain.spawn (fun () -> (Domain.self () :> int))) in
+        let over = Domain.recommended_domain_count () + 2 in
+        let ids d =
+          Render.with_pool ~domains:d (fun () ->
+              let p = probe () in
+              let a = other_domains (Render.parallel ~domains:d) in
+              (p, a, other_domains (Render.parallel ~domains:d)))
+        in
+        let p, a, b = ids over in
+        Alcotest.(check bool) "workers spawned after the probe" true (a <> [] && List.for_all (fun w -> w > p) a);
+        Alcotest.(check (list int)) "the second loop on the same pool" [] (List.filter (fun w -> not (List.mem w a)) b);
+        if Domain.recommended_domain_count () >= 2 then begin
+          let p, a, _ = ids 2 in
+          Alcotest.(check bool) "with a core each, workers are there before" true
+            (a <> [] && List.for_all (fun w -> w < p) a)
+        end);
     Alcotest.test_case "with_pool: 2 domains give the images of 1" `Quick (fun () ->
         let text = default_scene () in
         let a = Helpers.render_whitted ~domains:1 ~width:48 ~height:36 text in
