@@ -130,17 +130,23 @@ let linger pool workers =
     ignore (T.async pool spin)
   done
 
-let setup domains =
-  let pool = T.setup_pool ~num_domains:(domains - 1) () in
-  if lingers domains then linger pool (domains - 1);
-  pool
+(* the command's pool, set up at its first use *)
+let pool_of shared =
+  match shared.pool with
+  | Some p -> p
+  | None ->
+      let p = T.setup_pool ~num_domains:(shared.domains - 1) () in
+      if lingers shared.domains then linger p (shared.domains - 1);
+      shared.pool <- Some p;
+      p
 
 let with_pool ~domains f =
   match !current with
   | Some _ -> f ()
   | None when domains <= 1 || not (Domain.is_main_domain ()) -> f ()
   | None ->
-      let shared = { domains; pool = (if lingers domains then Some (setup domains) else None) } in
+      let shared = { domains; pool = None } in
+      if lingers domains then ignore (pool_of shared);
       current := Some shared;
       Fun.protect
         ~finally:(fun () ->
@@ -158,14 +164,7 @@ let parallel ~domains n f =
     let run pool = T.run pool (fun () -> T.parallel_for pool ~chunk_size:(chunk ~domains n) ~start:0 ~finish:(n - 1) ~body:f) in
     match !current with
     | Some ({ domains = d; _ } as s) when d = domains && Domain.is_main_domain () ->
-        let pool =
-          match s.pool with
-          | Some p -> p
-          | None ->
-              let p = setup domains in
-              s.pool <- Some p;
-              p
-        in
+        let pool = pool_of s in
         Atomic.incr regions;
         run pool;
         if lingers domains then linger pool (domains - 1)

@@ -52,11 +52,11 @@ val rgb8_into :
 val with_pool : domains:int -> (unit -> 'a) -> 'a
 (** [with_pool ~domains f] runs [f] with one pool of [domains] workers set
     up for it (with more domains than cores, at the first parallel loop,
-    so that the parse runs without it): the parallel loops [f] starts with the same domain count
-    (tiles, {!parallel}) run on that pool instead of setting up their own,
-    and its workers stay ready between them. The pool is torn down when
-    [f] returns or raises. Inside another [with_pool], or with [domains <=
-    1], it just runs [f]. *)
+    so that the parse runs without it): the parallel loops [f] starts with
+    the same domain count (tiles, {!parallel}) run on that pool instead of
+    setting up their own, and its workers stay ready between them. The
+    pool is torn down when [f] returns or raises. Inside another
+    [with_pool], or with [domains <= 1], it just runs [f]. *)
 
 val parallel : domains:int -> Image.par
 (** [parallel ~domains n f] runs [f 0] ... [f (n-1)] on a pool of
