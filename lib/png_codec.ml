@@ -98,9 +98,10 @@ let deflate ?(par = sequential) ?(cuts = [||]) s =
      check bits making CMF*256+FLG a multiple of 31 *)
   String.concat "" (("\x78\x9c" :: Array.to_list parts) @ [ be32 !sum ])
 
-let paeth a b c =
-  let p = a + b - c in
-  let pa = abs (p - a) and pb = abs (p - b) and pc = abs (p - c) in
+(* the predictor nearest a + b - c, ties to a, then b: its distances
+   to a, b and c are |b - c|, |a - c| and |a + b - 2c| *)
+let[@inline] paeth a b c =
+  let pa = abs (b - c) and pb = abs (a - c) and pc = abs (a + b - c - c) in
   if pa <= pb && pa <= pc then a else if pb <= pc then b else c
 
 (* |v| of a residual as a signed byte (v mod 256 in [-128, 127]), without
@@ -125,7 +126,7 @@ let filter_row w (d : Bytes.t) out y =
     c0 := !c0 + cost x;
     c1 := !c1 + cost x;
     c2 := !c2 + cost (x - b);
-    c3 := !c3 + cost (x - (b / 2));
+    c3 := !c3 + cost (x - (b lsr 1));
     c4 := !c4 + cost (x - paeth 0 b 0)
   done;
   for i = first to stride - 1 do
@@ -134,7 +135,7 @@ let filter_row w (d : Bytes.t) out y =
     c0 := !c0 + cost x;
     c1 := !c1 + cost (x - a);
     c2 := !c2 + cost (x - b);
-    c3 := !c3 + cost (x - ((a + b) / 2));
+    c3 := !c3 + cost (x - ((a + b) lsr 1));
     c4 := !c4 + cost (x - paeth a b c)
   done;
   let ft = ref 0 and best = ref !c0 in
@@ -145,13 +146,21 @@ let filter_row w (d : Bytes.t) out y =
   pick 4 !c4;
   let ft = !ft and o = y * (stride + 1) + 1 in
   Bytes.unsafe_set out (o - 1) (Char.unsafe_chr ft);
-  for i = 0 to stride - 1 do
-    let x = Char.code (Bytes.unsafe_get d (row + i)) and b = Char.code (Bytes.unsafe_get above (prev + i)) in
-    let a = if i >= 3 then Char.code (Bytes.unsafe_get d (row + i - 3)) else 0
-    and c = if i >= 3 then Char.code (Bytes.unsafe_get above (prev + i - 3)) else 0 in
-    let pred = match ft with 0 -> 0 | 1 -> a | 2 -> b | 3 -> (a + b) / 2 | _ -> paeth a b c in
-    Bytes.unsafe_set out (o + i) (Char.unsafe_chr ((x - pred) land 0xFF))
-  done
+  (* the chosen filter's loop: no choice per byte *)
+  let put i v = Bytes.unsafe_set out (o + i) (Char.unsafe_chr (v land 0xFF)) in
+  let x i = Char.code (Bytes.unsafe_get d (row + i)) and up i = Char.code (Bytes.unsafe_get above (prev + i)) in
+  match ft with
+  | 0 -> Bytes.blit d row out o stride
+  | 1 ->
+      for i = 0 to first - 1 do put i (x i) done;
+      for i = first to stride - 1 do put i (x i - x (i - 3)) done
+  | 2 -> for i = 0 to stride - 1 do put i (x i - up i) done
+  | 3 ->
+      for i = 0 to first - 1 do put i (x i - (up i lsr 1)) done;
+      for i = first to stride - 1 do put i (x i - ((x (i - 3) + up i) lsr 1)) done
+  | _ ->
+      for i = 0 to first - 1 do put i (x i - up i) done;
+      for i = first to stride - 1 do put i (x i - paeth (x (i - 3)) (up i) (up (i - 3))) done
 
 (* The PNG image data: the filtered scanlines, compressed in bands of
    [band_rows] rows (the bands filtered and compressed in parallel). *)
