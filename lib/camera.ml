@@ -379,11 +379,12 @@ let[@inline] disc_into c sx sy lx ly (o : Vec3.m) (d : Vec3.m) =
        light out of focus) *)
     let kc = 0.25 *. c.aperture *. lx and ks = 0.25 *. c.aperture *. ly in
     let rt = c.right and up = c.up and dir = c.direction in
-    let ox = (kc *. Vec3.unit_k rt.x rt.y rt.z 0) +. (ks *. Vec3.unit_k up.x up.y up.z 0)
-    and oy = (kc *. Vec3.unit_k rt.x rt.y rt.z 1) +. (ks *. Vec3.unit_k up.x up.y up.z 1)
-    and oz = (kc *. Vec3.unit_k rt.x rt.y rt.z 2) +. (ks *. Vec3.unit_k up.x up.y up.z 2) in
-    let ax = Vec3.unit_k dir.x dir.y dir.z 0 and ay = Vec3.unit_k dir.x dir.y dir.z 1
-    and az = Vec3.unit_k dir.x dir.y dir.z 2 in
+    let kr = Vec3.inv_len rt.x rt.y rt.z and ku = Vec3.inv_len up.x up.y up.z in
+    let ox = (kc *. (kr *. rt.x)) +. (ks *. (ku *. up.x))
+    and oy = (kc *. (kr *. rt.y)) +. (ks *. (ku *. up.y))
+    and oz = (kc *. (kr *. rt.z)) +. (ks *. (ku *. up.z)) in
+    let kd = Vec3.inv_len dir.x dir.y dir.z in
+    let ax = kd *. dir.x and ay = kd *. dir.y and az = kd *. dir.z in
     let tf = c.focal_distance /. ((d.mx *. ax) +. (d.my *. ay) +. (d.mz *. az)) in
     let fx = o.mx +. (tf *. d.mx) and fy = o.my +. (tf *. d.my) and fz = o.mz +. (tf *. d.mz) in
     Vec3.set o (o.mx +. ox) (o.my +. oy) (o.mz +. oz);

@@ -200,10 +200,11 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
     end
   end
 
-(* Per domain: the lightlet handed to [shade] and a sample's position *)
-type scratch = { ll : lightlet; q : Vec3.m }
+(* Per domain: the lightlet handed to [shade], a sample's position and
+   the area light's axes seen from the lit point *)
+type scratch = { ll : lightlet; q : Vec3.m; ax : Light.axes }
 
-let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; q = Vec3.m () })
+let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; q = Vec3.m (); ax = Light.axes () })
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
@@ -229,10 +230,11 @@ let area_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n
   if not (lr = 0. && lg = 0. && lb = 0.) then begin
     let nn = float_of_int (a.n1 * a.n2) in
     let lr = lr /. nn and lg = lg /. nn and lb = lb /. nn in
-    let c = sc.ll and q = sc.q in
+    let c = sc.ll and q = sc.q and ax = sc.ax in
+    Light.axes_into light a p ax;
     for v = 0 to a.n2 - 1 do
       for u = 0 to a.n1 - 1 do
-        Light.sample_into light a p u v q;
+        Light.sample_on light a ax u v q;
         Light.direction_at light q.mx q.my q.mz p l;
         let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
         let nl = if f.double_illuminate then Float.abs nl else nl in

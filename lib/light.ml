@@ -68,9 +68,8 @@ let[@inline] distance_at l cx cy cz (p : Vec3.m) =
   match l.kind with
   | Parallel { point_at } | Cylinder { point_at; _ } ->
       let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
-      ((cx -. p.mx) *. Vec3.unit_k dx dy dz 0)
-      +. ((cy -. p.my) *. Vec3.unit_k dx dy dz 1)
-      +. ((cz -. p.mz) *. Vec3.unit_k dx dy dz 2)
+      let k = Vec3.inv_len dx dy dz in
+      ((cx -. p.mx) *. (k *. dx)) +. ((cy -. p.my) *. (k *. dy)) +. ((cz -. p.mz) *. (k *. dz))
   | Point | Spot _ ->
       let vx = cx -. p.mx and vy = cy -. p.my and vz = cz -. p.mz in
       Float.sqrt ((vx *. vx) +. (vy *. vy) +. (vz *. vz))
@@ -82,9 +81,10 @@ let[@inline] direction_at l cx cy cz (p : Vec3.m) o =
   match l.kind with
   | Parallel { point_at } | Cylinder { point_at; _ } ->
       let dx = cx -. point_at.x and dy = cy -. point_at.y and dz = cz -. point_at.z in
-      o.lx <- Vec3.unit_k dx dy dz 0;
-      o.ly <- Vec3.unit_k dx dy dz 1;
-      o.lz <- Vec3.unit_k dx dy dz 2
+      let k = Vec3.inv_len dx dy dz in
+      o.lx <- k *. dx;
+      o.ly <- k *. dy;
+      o.lz <- k *. dz
   | Point | Spot _ ->
       let k = 1. /. dist in
       o.lx <- k *. (cx -. p.mx);
@@ -150,7 +150,8 @@ let[@inline] beam_axis l ox oy oz cx cy cz (p : Vec3.m) =
            distance of [p] from it, nothing behind the light's plane *)
         let c = l.position in
         let ax = point_at.x -. c.x and ay = point_at.y -. c.y and az = point_at.z -. c.z in
-        let ux = Vec3.unit_k ax ay az 0 and uy = Vec3.unit_k ax ay az 1 and uz = Vec3.unit_k ax ay az 2 in
+        let ka = Vec3.inv_len ax ay az in
+        let ux = ka *. ax and uy = ka *. ay and uz = ka *. az in
         let vx = p.mx -. c.x and vy = p.my -. c.y and vz = p.mz -. c.z in
         let k = (vx *. ux) +. (vy *. uy) +. (vz *. uz) in
         if k > 0. then begin
@@ -161,17 +162,19 @@ let[@inline] beam_axis l ox oy oz cx cy cz (p : Vec3.m) =
     | Spot { point_at; tightness; cos_radius; cos_falloff; _ } ->
         let ax = point_at.x -. ox and ay = point_at.y -. oy and az = point_at.z -. oz in
         let tx = p.mx -. cx and ty = p.my -. cy and tz = p.mz -. cz in
-        let cos =
-          (Vec3.unit_k ax ay az 0 *. Vec3.unit_k tx ty tz 0)
-          +. (Vec3.unit_k ax ay az 1 *. Vec3.unit_k tx ty tz 1)
-          +. (Vec3.unit_k ax ay az 2 *. Vec3.unit_k tx ty tz 2)
-        in
+        let ka = Vec3.inv_len ax ay az and kt = Vec3.inv_len tx ty tz in
+        let cos = ((ka *. ax) *. (kt *. tx)) +. ((ka *. ay) *. (kt *. ty)) +. ((ka *. az) *. (kt *. tz)) in
         spot_cos cos ~cr:cos_radius ~cf:cos_falloff ~tightness
 
 let[@inline] attenuation_axis l ox oy oz cx cy cz (p : Vec3.m) =
   let spot = beam_axis l ox oy oz cx cy cz p in
-  if l.fade_power > 0. && l.fade_distance <> 0. then
-    spot *. 2. /. (1. +. Float.pow (distance_at l cx cy cz p /. l.fade_distance) l.fade_power)
+  if l.fade_power > 0. && l.fade_distance <> 0. then begin
+    let x = distance_at l cx cy cz p /. l.fade_distance in
+    (* the usual powers multiplied out: a call of pow costs more than
+       the rest of the light's attenuation *)
+    let fp = l.fade_power in
+    spot *. 2. /. (1. +. (if fp = 2. then x *. x else if fp = 1. then x else Float.pow x fp))
+  end
   else spot
 
 (* the spotlight's axis moved with the sample, aimed at its point_at *)
@@ -197,9 +200,63 @@ let attenuation l (p : Vec3.t) =
   Vec3.load pm p;
   attenuation_m l pm
 
-(* The point [(u, v)] of the light's area seen from [p], into [out];
+(* The two axes of an area light's grid as seen from a point, scalars
+   in a caller's record: found once per lit point, for all its samples. *)
+type axes = {
+  mutable ux : float;
+  mutable uy : float;
+  mutable uz : float;
+  mutable vx : float;
+  mutable vy : float;
+  mutable vz : float;
+}
+
+let axes () = { ux = 1.; uy = 0.; uz = 0.; vx = 0.; vy = 0.; vz = 1. }
+
+(* The axes of [a] seen from [p], into [o]: the light's own, or with
+   orient POV-Ray's (trace.cpp, TraceAreaLightShadowRay and
+   ComputeFullAreaDiffuseLight): with [d] the unit direction of the
+   light ray at [p] (toward the light; a cylindrical or parallel light's
+   runs from its point_at to it), the first axis along d x z (d x y when
+   d is within 0.01 of +-z), the second along d x (the first); both as
+   long as the first axis written (a square) *)
+let[@inline] axes_into l a (p : Vec3.m) (o : axes) =
+  if not a.orient then begin
+    let a1 = a.axis1 and a2 = a.axis2 in
+    o.ux <- a1.x;
+    o.uy <- a1.y;
+    o.uz <- a1.z;
+    o.vx <- a2.x;
+    o.vy <- a2.y;
+    o.vz <- a2.z
+  end
+  else begin
+    let c = l.position in
+    let dx0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.x -. point_at.x | _ -> c.x -. p.mx
+    and dy0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.y -. point_at.y | _ -> c.y -. p.my
+    and dz0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.z -. point_at.z | _ -> c.z -. p.mz in
+    let kd = Vec3.inv_len dx0 dy0 dz0 in
+    let dx = kd *. dx0 and dy = kd *. dy0 and dz = kd *. dz0 in
+    let near_z = Float.abs (Float.abs dz -. 1.) < 0.01 in
+    (* d x (0, 0, 1) = (dy, -dx, 0); d x (0, 1, 0) = (-dz, 0, dx) *)
+    let cx = if near_z then -.dz else dy and cy = if near_z then 0. else -.dx and cz = if near_z then dx else 0. in
+    let k1 = Vec3.inv_len cx cy cz in
+    let e1x = k1 *. cx and e1y = k1 *. cy and e1z = k1 *. cz in
+    let fx = (dy *. e1z) -. (dz *. e1y) and fy = (dz *. e1x) -. (dx *. e1z) and fz = (dx *. e1y) -. (dy *. e1x) in
+    let k2 = Vec3.inv_len fx fy fz in
+    let e2x = k2 *. fx and e2y = k2 *. fy and e2z = k2 *. fz in
+    let l1 = Vec3.length a.axis1 in
+    o.ux <- l1 *. e1x;
+    o.uy <- l1 *. e1y;
+    o.uz <- l1 *. e1z;
+    o.vx <- l1 *. e2x;
+    o.vy <- l1 *. e2y;
+    o.vz <- l1 *. e2z
+  end
+
+(* The point [(u, v)] of the light's area on the axes [o], into [out];
    inlined, so that [u] and [v] are not boxed. Scalars, no vectors made. *)
-let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
+let[@inline] position_on l a (o : axes) u v (out : Vec3.m) =
   (* circular: POV-Ray's square [-0.5,0.5]^2 to the disc of diameter 1
      (trace.cpp, TraceAreaLightSubsetShadowRay): the offsets moved by
      0.001 each, then along their own direction to the distance of the
@@ -218,34 +275,22 @@ let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
   in
   let u = if circ then ju *. k else u and v = if circ then jv *. k else v in
   let c = l.position in
-  if not a.orient then begin
-    let a1 = a.axis1 and a2 = a.axis2 in
-    Vec3.set out (c.x +. ((u *. a1.x) +. (v *. a2.x))) (c.y +. ((u *. a1.y) +. (v *. a2.y)))
-      (c.z +. ((u *. a1.z) +. (v *. a2.z)))
-  end
-  else begin
-    (* POV-Ray's orient (trace.cpp, TraceAreaLightShadowRay and
-       ComputeFullAreaDiffuseLight): [d], the unit direction of the light
-       ray at [p] (toward the light; a cylindrical or parallel light's
-       runs from its point_at to it); the first axis along d x z (d x y
-       when d is within 0.01 of +-z), the second along d x (the first);
-       both as long as the first axis written (a square) *)
-    let dx0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.x -. point_at.x | _ -> c.x -. p.mx
-    and dy0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.y -. point_at.y | _ -> c.y -. p.my
-    and dz0 = match l.kind with Cylinder { point_at; _ } | Parallel { point_at } -> c.z -. point_at.z | _ -> c.z -. p.mz in
-    let dx = Vec3.unit_k dx0 dy0 dz0 0 and dy = Vec3.unit_k dx0 dy0 dz0 1 and dz = Vec3.unit_k dx0 dy0 dz0 2 in
-    let near_z = Float.abs (Float.abs dz -. 1.) < 0.01 in
-    (* d x (0, 0, 1) = (dy, -dx, 0); d x (0, 1, 0) = (-dz, 0, dx) *)
-    let cx = if near_z then -.dz else dy and cy = if near_z then 0. else -.dx and cz = if near_z then dx else 0. in
-    let e1x = Vec3.unit_k cx cy cz 0 and e1y = Vec3.unit_k cx cy cz 1 and e1z = Vec3.unit_k cx cy cz 2 in
-    let fx = (dy *. e1z) -. (dz *. e1y) and fy = (dz *. e1x) -. (dx *. e1z) and fz = (dx *. e1y) -. (dy *. e1x) in
-    let e2x = Vec3.unit_k fx fy fz 0 and e2y = Vec3.unit_k fx fy fz 1 and e2z = Vec3.unit_k fx fy fz 2 in
-    let l1 = Vec3.length a.axis1 in
-    Vec3.set out
-      (c.x +. ((u *. (l1 *. e1x)) +. (v *. (l1 *. e2x))))
-      (c.y +. ((u *. (l1 *. e1y)) +. (v *. (l1 *. e2y))))
-      (c.z +. ((u *. (l1 *. e1z)) +. (v *. (l1 *. e2z))))
-  end
+  Vec3.set out
+    (c.x +. ((u *. o.ux) +. (v *. o.vx)))
+    (c.y +. ((u *. o.uy) +. (v *. o.vy)))
+    (c.z +. ((u *. o.uz) +. (v *. o.vz)))
+
+let axes_key = Scratch.key axes
+
+(* The point [(u, v)] of the light's area seen from [p], into [out] *)
+let[@inline] position_into l a (p : Vec3.m) u v (out : Vec3.m) =
+  let o = Scratch.get axes_key in
+  axes_into l a p o;
+  position_on l a o u v out
+
+(* grid sample ([i], [j]) on the axes [o], into [out] *)
+let[@inline] sample_on l a o i j out =
+  position_on l a o (Float.Array.get a.offsets1 i) (Float.Array.get a.offsets2 j) out
 
 (* grid sample ([i], [j]) of the area seen from [p], into [out] *)
 let[@inline] sample_into l a p i j out =

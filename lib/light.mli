@@ -137,6 +137,28 @@ val position_into : t -> area -> Vec3.m -> float -> float -> Vec3.m -> unit
     place, into [out], nothing allocated ({!position_at} goes through
     it). *)
 
+(** The two axes of an area light's grid as seen from a point (turned
+    to face it when [orient]), written in place: found once for all the
+    samples seen from one point. *)
+type axes = {
+  mutable ux : float;
+  mutable uy : float;
+  mutable uz : float;
+  mutable vx : float;
+  mutable vy : float;
+  mutable vz : float;
+}
+
+val axes : unit -> axes
+
+val axes_into : t -> area -> Vec3.m -> axes -> unit
+(** [axes_into l a p o]: the axes of [a] seen from [p], into [o]. *)
+
+val sample_on : t -> area -> axes -> int -> int -> Vec3.m -> unit
+(** [sample_on l a o i j out]: grid sample [(i, j)] on the axes [o] (from
+    {!axes_into}), into [out]: {!sample_into} from the point [o] was found
+    for, the same arithmetic. *)
+
 val sample_into : t -> area -> Vec3.m -> int -> int -> Vec3.m -> unit
 (** [sample_into l a p i j out]: {!position_into} at grid sample [(i,
     j)] (its offsets kept by the area), nothing allocated. *)

@@ -74,7 +74,8 @@ let cylinder (l : Light.t) (r : Ray.scratch) out =
   | Light.Cylinder { point_at; falloff; _ } ->
       let p = l.position in
       let ax = point_at.x -. p.x and ay = point_at.y -. p.y and az = point_at.z -. p.z in
-      let ux = Vec3.unit_k ax ay az 0 and uy = Vec3.unit_k ax ay az 1 and uz = Vec3.unit_k ax ay az 2 in
+      let ka = Vec3.inv_len ax ay az in
+      let ux = ka *. ax and uy = ka *. ay and uz = ka *. az in
       let vx = r.ox -. p.x and vy = r.oy -. p.y and vz = r.oz -. p.z in
       let k1 = (r.dx *. ux) +. (r.dy *. uy) +. (r.dz *. uz) and k2 = (vx *. ux) +. (vy *. uy) +. (vz *. uz) in
       if k1 <= 0. && k2 < 0. then false

@@ -93,6 +93,7 @@ type walk = {
   fd : Vec3.m;  (** the shadow ray's direction, for the fogs *)
   sp : Media.span;  (** the stretch being dimmed *)
   sl : Light.dir;  (** an area light's sample's direction *)
+  ax : Light.axes;  (** the area light's axes seen from [lp] *)
   mutable through : Object.t option;  (** the light's projected_through object *)
   mutable occlude : bool;  (** the light casts shadows (it is not shadowless) *)
   ph : Hit.t;  (** the crossing of the projected_through object *)
@@ -109,7 +110,7 @@ let shadow_key =
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
-        fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); through = None; occlude = true;
+        fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); ax = Light.axes (); through = None; occlude = true;
         ph = Hit.create infinity; pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); collecting = false;
         lphotons = Photon.none })
 
@@ -356,7 +357,7 @@ let shadow_into (s : Scene.t) (w : walk) =
    to the plane through the sample: POV-Ray's rule) *)
 let area_sample (w : walk) i j (out : Color.acc) =
   let light = w.alight and a = w.aarea and p = w.lp and q = w.q and l = w.sl in
-  Light.sample_into light a p i j q;
+  Light.sample_on light a w.ax i j q;
   Light.direction_at light q.mx q.my q.mz p l;
   Ray.set w.ray p l.lx l.ly l.lz;
   w.seg.len <- l.dist;
@@ -398,6 +399,7 @@ let light s (w : walk) (light : Light.t) (p : Vec3.m) =
       (match w.ascene with Some s' when s' == s -> () | _ -> w.ascene <- Some s);
       aim s w light;
       Vec3.set w.lp p.mx p.my p.mz;
+      Light.axes_into light a p w.ax;
       Light.average_area_into a w area_sample w.mean;
       let c = w.mean in
       Color.acc_set w.acc c.ar c.ag c.ab

@@ -56,10 +56,9 @@ let[@inline] of_m (v : m) = { x = v.mx; y = v.my; z = v.mz }
 
 let[@inline] dot_m (a : m) (b : m) = (a.mx *. b.mx) +. (a.my *. b.my) +. (a.mz *. b.mz)
 
-let[@inline] unit_k x y z k =
+let[@inline] inv_len x y z =
   let l = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
-  let c = match k with 0 -> x | 1 -> y | _ -> z in
-  if l > 0. then 1. /. l *. c else c
+  if l > 0. then 1. /. l else 1.
 
 let[@inline] normalize_m (v : m) =
   let x = v.mx and y = v.my and z = v.mz in

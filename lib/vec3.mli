@@ -60,9 +60,11 @@ val of_m : m -> t
 val dot_m : m -> m -> float
 (** {!dot} of two vectors written in place. *)
 
-val unit_k : float -> float -> float -> int -> float
-(** [unit_k x y z k]: component [k] (0, 1, 2) of [normalize (x, y, z)],
-    the same arithmetic, without making the vector. *)
+val inv_len : float -> float -> float -> float
+(** [inv_len x y z]: the factor {!normalize} scales [(x, y, z)] by, [1 /
+    |(x, y, z)|] (1 for the zero vector): each component times it is
+    that of the unit vector, the same arithmetic, without making the
+    vector (one square root for the three). *)
 
 val normalize_m : m -> unit
 (** {!normalize} in place (the same arithmetic). *)
