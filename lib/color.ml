@@ -11,7 +11,7 @@ let[@inline] scale k a = { r = k *. a.r; g = k *. a.g; b = k *. a.b }
 let[@inline] madd a k b =
   { r = a.r +. (k *. b.r); g = a.g +. (k *. b.g); b = a.b +. (k *. b.b) }
 
-let max_channel a = Float.max a.r (Float.max a.g a.b)
+let max_channel a = Floats.fmax a.r (Floats.fmax a.g a.b)
 (* POV-Ray's grey value *)
 let[@inline] grey r g b = (0.297 *. r) +. (0.589 *. g) +. (0.114 *. b)
 let luminance a = grey a.r a.g a.b
@@ -34,7 +34,7 @@ let[@inline] acc_store fa i (a : acc) =
 let[@inline] acc_load fa i (a : acc) =
   acc_set a (Float.Array.get fa (3 * i)) (Float.Array.get fa ((3 * i) + 1)) (Float.Array.get fa ((3 * i) + 2))
 let of_acc (a : acc) = { r = a.ar; g = a.ag; b = a.ab }
-let acc_max (a : acc) = Float.max a.ar (Float.max a.ag a.ab)
+let acc_max (a : acc) = Floats.fmax a.ar (Floats.fmax a.ag a.ab)
 let acc_is_black (a : acc) = a.ar = 0. && a.ag = 0. && a.ab = 0.
 let acc_luminance (a : acc) = grey a.ar a.ag a.ab
 

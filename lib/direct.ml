@@ -301,7 +301,7 @@ let photons s (m : Photon.map) cache (f : Finish.t) (pc : Pigment.out) (k : opac
       (* POV-Ray's compensation for the photons' slant: the flux over
          the cosine to the unperturbed normal, at most tenfold *)
       let a = (n0.mx *. l.lx) +. (n0.my *. l.ly) +. (n0.mz *. l.lz) in
-      let a = Float.max 0.1 (Float.min 1. a) in
+      let a = Floats.fmax 0.1 (Floats.fmin 1. a) in
       let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
       let nl = if f.double_illuminate then Float.abs nl else nl in
       let back = nl < 1e-10 in

@@ -577,17 +577,19 @@ and in_bound bs r tmin i =
   Scratch.pop lv;
   met && in_bound bs r tmin (i + 1)
 
+(* [f.leaf] is written only when it changes, here and below: each write
+   is a call of caml_modify *)
 and raw_hit o r tmin h f =
   match o.geom with
   | Prim (Shape.Blob b) ->
       (* a blob's depth tolerance is a distance in the world: it reads
          the world ray as well *)
       let got = Blob.hit_s b (local o r f) r tmin h in
-      if got then f.leaf <- o;
+      if got && f.leaf != o then f.leaf <- o;
       got
   | Prim s ->
       let got = Shape.hit_s s (local o r f) tmin h in
-      if got then f.leaf <- o;
+      if got && f.leaf != o then f.leaf <- o;
       got
   | Union cs -> (
       match o.index with
@@ -656,7 +658,7 @@ and first_accepted raw o r tmin h f kind cs i =
         h.u <- u0;
         h.v <- v0;
         h.id <- id0;
-        f.leaf <- leaf0;
+        if f.leaf != leaf0 then f.leaf <- leaf0;
         h.floor <- next_tmin_s r t
       end
     end
@@ -677,7 +679,7 @@ let intersect o r tmin tmax =
 let any_mesh o m (r : Ray.scratch) tmin (h : Hit.t) (f : found) =
   h.t <- r.far;
   let got = Mesh.any_s m (local o r f) tmin h in
-  if got then f.leaf <- o;
+  if got && f.leaf != o then f.leaf <- o;
   got
 
 (* [crossings_s o ray tmin h f shadow opaque g]: with [h] and [f] as

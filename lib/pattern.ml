@@ -445,7 +445,7 @@ let crackle_into (c : crackle) gen (p : Vec3.m) (r : result) =
       let e = 1. /. m in
       (f.x *. Float.pow !m1 e) +. (f.y *. Float.pow !m2 e) +. (f.z *. Float.pow !m3 e)
   in
-  r.v <- Float.max (Float.min v 1.) 0.
+  r.v <- Floats.fmax (Floats.fmin v 1.) 0.
 
 (* POV-Ray's triangle wave: 0 at integers, 1 at half-integers *)
 let[@inline] tri v =
@@ -720,7 +720,7 @@ let raw_m t (w : work) =
       let r = Float.sqrt ((x *. x) +. (y *. y) +. (z *. z)) in
       w.r.v <- (if r > 1. then 0. else 1. -. r)
   | Boxed ->
-      let r = Float.max (Float.abs x) (Float.max (Float.abs y) (Float.abs z)) in
+      let r = Floats.fmax (Float.abs x) (Floats.fmax (Float.abs y) (Float.abs z)) in
       w.r.v <- (if r > 1. then 0. else 1. -. r)
   | Cylindrical ->
       let r = Float.sqrt ((x *. x) +. (z *. z)) in
@@ -761,7 +761,7 @@ let raw_m t (w : work) =
       for _ = 0 to 5 do
         let f = !freq in
         let n = Noise.noise gen (x *. 4. *. f) (y *. 4. *. f) (z *. 4. *. f) in
-        let v = if gen <= 1 then Float.abs (0.5 -. n) else Float.min 0.5 (Float.abs (1. -. (2. *. n))) in
+        let v = if gen <= 1 then Float.abs (0.5 -. n) else Floats.fmin 0.5 (Float.abs (1. -. (2. *. n))) in
         acc := !acc +. (v /. f);
         freq := f *. 2.
       done;
@@ -773,7 +773,7 @@ let raw_m t (w : work) =
       let tb = match t.turbulence with Some tb -> tb | None -> agate_turbulence in
       let tv = turb *. Noise.turbulence (generator t) ~octaves:tb.octaves ~omega:tb.omega ~lambda:tb.lambda x y z in
       let v = 0.5 *. (cycloidal ((1.3 *. tv) +. (1.1 *. z)) +. 1.) in
-      w.r.v <- (if v < 0. then 0. else Float.pow (Float.min 1. v) 0.77)
+      w.r.v <- (if v < 0. then 0. else Float.pow (Floats.fmin 1. v) 0.77)
   | Ripples | Waves -> (* [waves_into]: they need the frequency and phase *) ()
   | Crackle c -> crackle_into c (generator t) w.p w.r
   | Wrinkles ->
@@ -781,12 +781,12 @@ let raw_m t (w : work) =
          is, the others' 2 n - 0.5 clipped to [0, 1]), halved *)
       let gen = generator t in
       let n = Noise.noise gen x y z in
-      let acc = ref (if gen <= 1 then n else Float.min (Float.max ((n *. 2.) -. 0.5) 0.) 1.) in
+      let acc = ref (if gen <= 1 then n else Floats.fmin (Floats.fmax ((n *. 2.) -. 0.5) 0.) 1.) in
       let l = ref 2. and o = ref 0.5 in
       for _ = 1 to 9 do
         let li = !l in
         let n = Noise.noise gen (x *. li) (y *. li) (z *. li) in
-        let n = if gen <= 1 then n else Float.min (Float.max ((n *. 2.) -. 0.5) 0.) 1. in
+        let n = if gen <= 1 then n else Floats.fmin (Floats.fmax ((n *. 2.) -. 0.5) 0.) 1. in
         acc := !acc +. (!o *. n);
         l := li *. 2.;
         o := !o *. 0.5

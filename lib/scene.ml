@@ -262,7 +262,11 @@ let[@inline never] nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
   (* a sphere from the flat array: its object is looked up once, for the
      nearest, not at every closer candidate (at 10^6 spheres, a read of
      memory out of cache each) *)
-  if found && h.id < 0. then f.leaf <- Array.unsafe_get a.finite (int_of_float (-.h.id -. 1.));
+  if found && h.id < 0. then begin
+    (* written only when it changes: a write is a call of caml_modify *)
+    let o = Array.unsafe_get a.finite (int_of_float (-.h.id -. 1.)) in
+    if f.leaf != o then f.leaf <- o
+  end;
   found || !any
 
 let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f

@@ -296,7 +296,7 @@ let stretches (w : walk) =
       stretch w
     end;
     if a < n then toggle w w.fobjs.(ord.(a)).interior;
-    lo := Float.max !lo hi
+    lo := Floats.fmax !lo hi
   done
 
 (* POV-Ray's projected_through (trace.cpp, TracePointLightShadowRay):

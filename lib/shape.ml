@@ -342,7 +342,7 @@ let uv_into s (p : Vec3.m) (h : Hit.t) (out : Vec3.m) =
       if l = 0. then Vec3.set out 0. 0. 0.
       else
         (* u: the longitude from +x towards +z; v: the latitude, 0 at -y *)
-        let v = 0.5 +. (Float.asin (Float.max (-1.) (Float.min 1. (y /. l))) /. Float.pi) in
+        let v = 0.5 +. (Float.asin (Floats.fmax (-1.) (Floats.fmin 1. (y /. l))) /. Float.pi) in
         let u = if (x *. x) +. (z *. z) > 1e-20 *. l *. l then turn (Float.atan2 z x) else 0. in
         Vec3.set out u v 0.
   | Box { lo; hi } ->
@@ -405,7 +405,7 @@ let inside s (p : Vec3.t) = inside_xyz s p.x p.y p.z
 
 (* Bounds of a disc of radius r around c with unit normal n. *)
 let disc_bounds (c : Vec3.t) (n : Vec3.t) r =
-  let e a = r *. Float.sqrt (Float.max 0. (1. -. (a *. a))) in
+  let e a = r *. Float.sqrt (Floats.fmax 0. (1. -. (a *. a))) in
   let d = Vec3.make (e n.x) (e n.y) (e n.z) in
   (Vec3.sub c d, Vec3.add c d)
 

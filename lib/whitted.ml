@@ -289,7 +289,8 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   let entering = dot n0 d < 0. in
   if not entering then Vec3.set n0 (-.n0.mx) (-.n0.my) (-.n0.mz);
   (* a light_group's surfaces see only their own set of lights *)
-  fr.lights <- Array.unsafe_get s.light_sets obj.lights;
+  (let ls = Array.unsafe_get s.light_sets obj.lights in
+   if fr.lights != ls then fr.lights <- ls);
   fr.collect <-
     (match s.settings.photons with
     | None -> false
@@ -317,7 +318,7 @@ and shade s (d : Vec3.m) (obj : Object.t) fr level media (fade : Color.acc) (out
   end;
   if Float.abs (Color.acc_luminance tr) <= bailout then Color.acc_set out c.ar c.ag c.ab
   else
-    let w = weight *. Float.max (Float.abs tr.ar) (Float.max (Float.abs tr.ag) (Float.abs tr.ab)) in
+    let w = weight *. Floats.fmax (Float.abs tr.ar) (Floats.fmax (Float.abs tr.ag) (Float.abs tr.ab)) in
     let rc = fr.rc in
     if eta = 1. then begin
       (* same index on both sides: straight through, no trace level used *)
@@ -420,7 +421,7 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
           let k = fr.k in
           fr.a.alpha <-
             (if s.Scene.settings.legacy_alpha then
-               1. -. ((pig.filter *. Float.max pc.r (Float.max pc.g pc.b)) +. pig.transmit)
+               1. -. ((pig.filter *. Floats.fmax pc.r (Floats.fmax pc.g pc.b)) +. pig.transmit)
              else 1. -. pig.filter -. pig.transmit);
           let alpha = fr.a.alpha in
           (* the radiosity first: its gather rays shade other surfaces *)
@@ -484,9 +485,9 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
             if not refl_here then reflectivity f pc n d fr;
             let kr = fr.kr in
             Color.acc_set w
-              (w.ar *. Float.min 1. (1. -. kr.ar))
-              (w.ag *. Float.min 1. (1. -. kr.ag))
-              (w.ab *. Float.min 1. (1. -. kr.ab))
+              (w.ar *. Floats.fmin 1. (1. -. kr.ar))
+              (w.ag *. Floats.fmin 1. (1. -. kr.ag))
+              (w.ab *. Floats.fmin 1. (1. -. kr.ab))
           end;
           if not (Color.acc_is_black w) then layers s d level media fr refl acc w tp rest)
 
@@ -580,7 +581,7 @@ and gather s (r : Radiosity.t) _level media (fr : frame) (nrm : Vec3.m) keep =
       ty := rd.my;
       tz := rd.mz
     end;
-    let m = Float.max rc.ar (Float.max rc.ag rc.ab) in
+    let m = Floats.fmax rc.ar (Floats.fmax rc.ag rc.ab) in
     let k = if r.max_sample > 0. && m > r.max_sample then r.max_sample /. m else 1. in
     Color.acc_set sum (sum.ar +. (k *. rc.ar)) (sum.ag +. (k *. rc.ag)) (sum.ab +. (k *. rc.ab))
   done;
@@ -621,7 +622,7 @@ and reflectivity (f : Finish.t) (pc : Pigment.out) (n : Vec3.m) (d : Vec3.m) (fr
   and kg = lo.g +. (k *. (hi.g +. (-1. *. lo.g)))
   and kb = lo.b +. (k *. (hi.b +. (-1. *. lo.b))) in
   fr.k.child <-
-    (if rf.fresnel then Float.max kr (Float.max kg kb) else Float.max (max_channel lo) (max_channel hi));
+    (if rf.fresnel then Floats.fmax kr (Floats.fmax kg kb) else Floats.fmax (max_channel lo) (max_channel hi));
   let m = rf.rmetallic in
   let mk = if m = 0. then 0. else Finish.metallic_k m cos_i in
   Color.acc_set fr.kr (kr *. Finish.tint m mk pc.r) (kg *. Finish.tint m mk pc.g) (kb *. Finish.tint m mk pc.b)
