@@ -84,7 +84,7 @@ let[@inline] box_entry (nodes : f32) k sx sy sz ox oy oz ix iy iz t0 t1 =
    Children are tested when their parent is reached: the nearer one hit is
    visited next, the farther one pushed with its entry distance, and popped
    only if still in front of the nearest hit found meanwhile. *)
-let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
+let[@inline never] nearest_st st b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
   let nodes = b.nodes in
   let ident = Array.length b.prims = 0 in
   if Bigarray.Array1.dim nodes = 0 then false
@@ -94,7 +94,6 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
     let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
     if box_entry nodes 0 sx sy sz ox oy oz ix iy iz tmin h.t = infinity then false
     else begin
-      let st = Scratch.get stack_key in
       let base = reserve st b.depth in
       let stack = st.slots and dist = st.dist in
       let sp = ref base and k = ref 0 and go = ref true and found = ref false in
@@ -154,7 +153,7 @@ let[@inline never] nearest_s b (r : Ray.scratch) tmin (h : Hit.t) c1 c2 f =
     end
   end
 
-let[@inline never] iter_s b (r : Ray.scratch) tmin c1 c2 f =
+let[@inline never] iter_st st b (r : Ray.scratch) tmin c1 c2 f =
   let nodes = b.nodes and tmax = r.far in
   let ident = Array.length b.prims = 0 in
   if Bigarray.Array1.dim nodes = 0 then true
@@ -162,7 +161,6 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin c1 c2 f =
     let ox = r.ox and oy = r.oy and oz = r.oz in
     let ix = inv r.dx and iy = inv r.dy and iz = inv r.dz in
     let sx = if ix < 0. then 3 else 0 and sy = if iy < 0. then 3 else 0 and sz = if iz < 0. then 3 else 0 in
-    let st = Scratch.get stack_key in
     let base = reserve st b.depth in
     let stack = st.slots in
     let sp = ref base and k = ref 0 and go = ref true and ok = ref true in
@@ -200,6 +198,11 @@ let[@inline never] iter_s b (r : Ray.scratch) tmin c1 c2 f =
     st.top <- base;
     !ok
   end
+
+
+let stack () = Scratch.get stack_key
+let nearest_s b r tmin h c1 c2 f = nearest_st (stack ()) b r tmin h c1 c2 f
+let iter_s b r tmin c1 c2 f = iter_st (stack ()) b r tmin c1 c2 f
 
 let nearest b r tmin h f =
   ignore (nearest_s b (Ray.of_ray r) tmin h f () (fun f () _ _ _ i -> f i; false))

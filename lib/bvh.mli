@@ -65,6 +65,21 @@ val iter_s :
     far end is read from the ray: a distance computed per ray and passed as
     an argument would be boxed). *)
 
+type stack
+(** A domain's traversal stack, shared by the walks nested on it. *)
+
+val stack : unit -> stack
+(** The calling domain's stack (a lookup: a caller that walks often
+    keeps it). *)
+
+val nearest_st :
+  stack -> t -> Ray.scratch -> float -> Hit.t -> 'a -> 'b -> ('a -> 'b -> Ray.scratch -> float -> Hit.t -> int -> bool) ->
+  bool
+(** {!nearest_s} on the calling domain's [stack], kept by the caller. *)
+
+val iter_st : stack -> t -> Ray.scratch -> float -> 'a -> 'b -> ('a -> 'b -> Ray.scratch -> float -> int -> bool) -> bool
+(** {!iter_s} on the calling domain's [stack], kept by the caller. *)
+
 val renumber : t -> t * int array
 (** [renumber b] is [(b', order)]: the same tree calling back with
     positions in leaf order, [order.(i)] being the primitive that position

@@ -5,15 +5,6 @@ let light_min_cos = 1e-10
 
 type opacity = { mutable alpha : float }
 
-(* The shadows found at one point, light by light: light [j]'s is in
-   [col.(3j) .. col.(3j + 2)] when [stamp.(j) = gen] (POV-Ray keeps the
-   same per intersection, so that the layers of a texture and the
-   textures of a texture map trace each shadow ray once) *)
-type shadows = { mutable gen : int; mutable stamp : int array; mutable col : float array; mutable highlights : bool }
-
-let shadows () = { gen = 1; stamp = [||]; col = [||]; highlights = true }
-let set_highlights c h = c.highlights <- h
-let forget c = c.gen <- c.gen + 1
 
 (* POV-Ray's film thickness at [p] (trace.cpp's ComputeIridColour): the
    finish's thickness, times 1 + (2 T - 1) turbulence with T POV-Ray's
@@ -67,6 +58,36 @@ type lightlet = {
       (** 1: highlights drawn; 0: not (radiosity's gather rays); a float,
           so that the record stays one of floats, stored flat *)
 }
+
+(* The lightlet handed to [shade], a sample's position and the area
+   light's axes seen from the lit point *)
+type scratch = { ll : lightlet; q : Vec3.m; ax : Light.axes }
+
+(* The shadows found at one point, light by light: light [j]'s is in
+   [col.(3j) .. col.(3j + 2)] when [stamp.(j) = gen] (POV-Ray keeps the
+   same per intersection, so that the layers of a texture and the
+   textures of a texture map trace each shadow ray once); with them the
+   shadow walk of the domain that made the record and a scratch of its
+   own, reached from here rather than looked up per light (a lookup is a
+   call, and every float live across it is spilled) *)
+type shadows = {
+  mutable gen : int;
+  mutable stamp : int array;
+  mutable col : float array;
+  mutable highlights : bool;
+  w : Shadow.walk;
+  sc : scratch;
+}
+
+let shadows () =
+  { gen = 1; stamp = [||]; col = [||]; highlights = true; w = Shadow.walk ();
+    sc = { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; q = Vec3.m ();
+           ax = Light.axes () } }
+
+let walk c = c.w
+
+let set_highlights c h = c.highlights <- h
+let forget c = c.gen <- c.gen + 1
 
 (* POV-Ray's iridescence: a thin film of {!irid_thickness} seen at the
    cosines [c.icos] to the light and of the ray [d] to the normal [n]
@@ -171,7 +192,7 @@ let find_shadow s w (light : Light.t) p cache j =
    something transparent. *)
 let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
     (light : Light.t) (cache : shadows) j (c : lightlet) (out : Color.acc) =
-  let w = Shadow.walk () in
+  let w = cache.w in
   let l = Shadow.toward w in
   Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
@@ -200,11 +221,6 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
     end
   end
 
-(* Per domain: the lightlet handed to [shade], a sample's position and
-   the area light's axes seen from the lit point *)
-type scratch = { ll : lightlet; q : Vec3.m; ax : Light.axes }
-
-let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl = 0.; icos = 0.; ir = 1.; ig = 1.; ib = 1.; hl = 1. }; q = Vec3.m (); ax = Light.axes () })
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
@@ -215,8 +231,8 @@ let scratch_key = Scratch.key (fun () -> { ll = { lr = 0.; lg = 0.; lb = 0.; nl 
    shadowed colour, attenuated (fade, spotlight) along its own ray and
    skipped when it faces away; iridescence by the centre's direction. *)
 let area_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
-    (light : Light.t) (a : Light.area) (cache : shadows) j (sc : scratch) (out : Color.acc) =
-  let w = Shadow.walk () in
+    (light : Light.t) (a : Light.area) (cache : shadows) j (out : Color.acc) =
+  let w = cache.w and sc = cache.sc in
   let l = Shadow.toward w in
   Light.direction_into light p l;
   let nl0 = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
@@ -262,12 +278,12 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     cache.stamp <- Array.make nl 0;
     cache.col <- Array.make (3 * nl) 0.
   end;
-  let sc = Scratch.get scratch_key in
+  let sc = cache.sc in
   sc.ll.hl <- (if cache.highlights then 1. else 0.);
   for j = 0 to nl - 1 do
     let light = Array.unsafe_get ls j in
     match light.area with
-    | Some a when a.area_illumination -> area_light s f pc k p n d light a cache j sc out
+    | Some a when a.area_illumination -> area_light s f pc k p n d light a cache j out
     | _ -> one_light s f pc k p n d light cache j sc.ll out
   done
 

@@ -25,10 +25,16 @@ val irid_thickness : Finish.t -> Vec3.m -> float
 type shadows
 (** The shadows found at one point, light by light, so that the layers of
     a texture and the textures of a texture map trace each shadow ray
-    once (as POV-Ray does). *)
+    once (as POV-Ray does); with them the {!Shadow.walk} of the domain
+    that made the record, which its shadow rays use. A record is used by
+    the domain that made it only. *)
 
 val shadows : unit -> shadows
 (** An empty store. *)
+
+val walk : shadows -> Shadow.walk
+(** The shadow walk of the record's domain ({!Shadow.walk}), reached
+    without a lookup. *)
 
 val forget : shadows -> unit
 (** Empty it: the next point shaded is another. *)

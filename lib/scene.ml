@@ -229,12 +229,17 @@ type scratch = {
   mutable occ : Object.t -> Hit.t -> bool;
   mutable opaque : Object.t -> bool;  (** [occ] is false at every crossing *)
   mutable busy : bool;
+  stack : Bvh.stack;  (** the traversal stack of the domain that made the record *)
 }
 
 let dummy = Object.make (Shape.sphere Vec3.zero 1.)
 let new_scratch () = { ray = Ray.scratch (); h = Hit.create 0.; f = Object.found dummy; occ = (fun _ _ -> false);
-                       opaque = Object.never; busy = false }
+                       opaque = Object.never; busy = false; stack = Bvh.stack () }
 let scratch_key = Scratch.key new_scratch
+
+type query = scratch
+
+let query = new_scratch
 
 let[@inline] take () =
   let sc = Scratch.get scratch_key in
@@ -252,13 +257,13 @@ let nearest_leaf a (f : Object.found) r tmin (h : Hit.t) i =
   end
   else Object.hit_s (Array.unsafe_get a.finite i) r tmin h f
 
-let[@inline never] nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
+let[@inline never] nearest_in s st (r : Ray.scratch) tmin (h : Hit.t) f =
   let a = s.accel in
   let any = ref false in
   for i = 0 to Array.length a.infinite - 1 do
     if Object.hit_s (Array.unsafe_get a.infinite i) r tmin h f then any := true
   done;
-  let found = Bvh.nearest_s a.bvh r tmin h a f nearest_leaf in
+  let found = Bvh.nearest_st st a.bvh r tmin h a f nearest_leaf in
   (* a sphere from the flat array: its object is looked up once, for the
      nearest, not at every closer candidate (at 10^6 spheres, a read of
      memory out of cache each) *)
@@ -269,7 +274,7 @@ let[@inline never] nearest_in s (r : Ray.scratch) tmin (h : Hit.t) f =
   end;
   found || !any
 
-let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s r tmin h f
+let nearest s r tmin h f = Array.length s.objects > 0 && nearest_in s (Bvh.stack ()) r tmin h f
 
 type hit = { t : float; obj : Object.t; point : Vec3.t; normal : Vec3.t }
 
@@ -281,9 +286,16 @@ let[@inline] nearest_loaded s sc tmin tmax (h : Hit.t) f =
   h.id <- 0.;
   (* a query of the scene starts with no floor (walks restore theirs) *)
   h.floor <- neg_infinity;
-  let found = nearest_in s sc.ray tmin h f in
+  let found = nearest_in s sc.stack sc.ray tmin h f in
   sc.busy <- false;
   found
+
+let[@inline] intersect_with s sc (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
+  Array.length s.objects > 0
+  && begin
+       Ray.set sc.ray o d.mx d.my d.mz;
+       nearest_loaded s sc tmin tmax h f
+     end
 
 let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
   Array.length s.objects > 0
@@ -315,7 +327,8 @@ let hit_normal_into s (f : Object.found) (h : Hit.t) (point : Vec3.m) (out : Vec
       ((point.mz -. Float.Array.get sp (i + 2)) *. k)
 
 (* per domain: read before the next query *)
-let records_key = Scratch.key (fun () -> (Hit.create 0., Object.found dummy))
+let new_records () = (Hit.create 0., Object.found dummy)
+let records_key = Scratch.key new_records
 let hit_records () = Scratch.get records_key
 
 let intersect s (r : Ray.t) tmin tmax =
@@ -370,7 +383,7 @@ let occluders_in s sc tmin opaque g =
     ok := Object.crossings_s (Array.unsafe_get a.infinite !i) sc.ray tmin sc.h sc.f true opaque g;
     incr i
   done;
-  let ok = !ok && Bvh.iter_s a.bvh sc.ray tmin a sc occluder_leaf in
+  let ok = !ok && Bvh.iter_st sc.stack a.bvh sc.ray tmin a sc occluder_leaf in
   sc.busy <- false;
   ok
 
@@ -383,6 +396,10 @@ let occluders s r tmin tmax opaque g =
 (* the same from a ray in a scratch record of the caller's, up to its [far] *)
 let occluders_s s (r : Ray.scratch) tmin opaque g =
   let sc = take () in
+  Ray.copy r sc.ray;
+  occluders_in s sc tmin opaque g
+
+let occluders_with s sc (r : Ray.scratch) tmin opaque g =
   Ray.copy r sc.ray;
   occluders_in s sc tmin opaque g
 

@@ -115,9 +115,24 @@ val intersect_into : t -> Vec3.m -> Vec3.m -> float -> float -> Hit.t -> Object.
     into [h], the object into [f.leaf] (records the caller owns; read them
     before the next query). *)
 
+type query
+(** The records of a query of the scene (its ray, the traversal stack of
+    the domain that made them): {!intersect_into} and {!occluders_s}
+    look up the domain's own per query; a caller that queries often
+    keeps one, used on its domain only and for one query at a time. *)
+
+val query : unit -> query
+(** New query records, for the calling domain. *)
+
+val intersect_with : t -> query -> Vec3.m -> Vec3.m -> float -> float -> Hit.t -> Object.found -> bool
+(** {!intersect_into} with the caller's query records. *)
+
 val hit_records : unit -> Hit.t * Object.found
 (** The calling domain's records for {!intersect_into} (which {!intersect}
     uses too): read them before the next query. *)
+
+val new_records : unit -> Hit.t * Object.found
+(** A new pair of records for {!intersect_into}, the caller's own. *)
 
 val hit_normal : t -> Object.found -> Hit.t -> Vec3.t -> Vec3.t
 (** The outward unit normal at the point of a hit found by
@@ -168,3 +183,7 @@ val occluders_s :
     scratch record, within [(tmin, ray.far)], [f obj h] reading the
     crossing's distance in [h.t] (a distance passed would be boxed). With
     [opaque] and [f] closed functions, a walk allocates nothing. *)
+
+val occluders_with :
+  t -> query -> Ray.scratch -> float -> (Object.t -> bool) -> (Object.t -> Hit.t -> bool) -> bool
+(** {!occluders_s} with the caller's query records. *)

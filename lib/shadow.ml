@@ -94,6 +94,7 @@ type walk = {
   sp : Media.span;  (** the stretch being dimmed *)
   sl : Light.dir;  (** an area light's sample's direction *)
   ax : Light.axes;  (** the area light's axes seen from [lp] *)
+  query : Scene.query;  (** the records of the shadow rays' queries of the scene *)
   mutable through : Object.t option;  (** the light's projected_through object *)
   mutable occlude : bool;  (** the light casts shadows (it is not shadowless) *)
   ph : Hit.t;  (** the crossing of the projected_through object *)
@@ -110,7 +111,7 @@ let shadow_key =
         alight = Light.point Vec3.zero Color.black; aarea = Light.area Vec3.unit_x Vec3.unit_z 1 1;
         ascene = None; lp = Vec3.m (); q = Vec3.m (); mean = Color.acc 0.; cross = Vec3.m ();
         filter = Color.acc 0.; cn = Vec3.m (); pn = Vec3.m (); uv = Vec3.m (); air = []; fogs = []; fo = Vec3.m ();
-        fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); ax = Light.axes (); through = None; occlude = true;
+        fd = Vec3.m (); sp = Media.span (); sl = Light.dir (); ax = Light.axes (); query = Scene.query (); through = None; occlude = true;
         ph = Hit.create infinity; pf = Object.found (Object.make (Shape.sphere Vec3.zero 1.)); collecting = false;
         lphotons = Photon.none })
 
@@ -336,7 +337,7 @@ let shadow_into (s : Scene.t) (w : walk) =
   let seen = match w.through with None -> true | Some o -> projected w o in
   if not seen then Color.acc_set w.acc 0. 0. 0.
   else if w.occlude then begin
-    let visible = Scene.occluders_s s w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
+    let visible = Scene.occluders_with s w.query w.ray Ray.shadow_epsilon shadow_opaque shadow_hit in
     if not visible then Color.acc_set w.acc 0. 0. 0.
     else begin
       if w.nf > 0 || w.fogs != [] then stretches w;

@@ -21,9 +21,6 @@ type nums = {
 
 let nums () = { weight = 1.; refl = 1.; child = 1.; dist = infinity; fres = 1. }
 
-(* the sum of a layer's direct light, per domain: nothing in it traces *)
-let direct_key = Scratch.key (fun () -> Color.acc 0.)
-
 (* Heckbert's k < 0: no refracted ray at this relative index and cosine *)
 let[@inline] total_internal eta cos_i = eta > 1. && 1. +. (eta *. eta *. ((cos_i *. cos_i) -. 1.)) < 0.
 
@@ -81,15 +78,22 @@ type frame = {
   amb : Color.acc;  (** the radiosity gathered at [p], once [amb_done] *)
   mutable amb_done : bool;
   kr : Color.acc;  (** the reflectivity of the layer being shaded *)
+  dl : Color.acc;  (** the direct light of the layer being shaded *)
+  h : Hit.t;  (** the hit of the ray this frame traces *)
+  hf : Object.found;  (** its object *)
+  sky : Vec3.m;  (** the unit direction of a ray that meets nothing *)
+  q : Scene.query;  (** the records of the frame's query of the scene *)
   mutable collect : bool;  (** the surface gathers photons (the scene has some, it does not say collect off) *)
 }
 
 let new_frame () =
+  let h, hf = Scene.new_records () in
   { c = Color.acc 0.; tr = Color.acc 1.; rf = Color.acc 0.; p = Vec3.m (); n0 = Vec3.m ();
     top = Vec3.m (); top_set = false; pn = Vec3.m (); rd = Vec3.m (); rc = Color.acc 0.;
     k = nums (); a = { alpha = 1. }; pig = Pigment.out (); fade = Color.acc 1.;
     uv = Vec3.m (); has_uv = false; sh = Direct.shadows (); lights = [||]; chain = [||]; nchain = 0;
-    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false; kr = Color.acc 0.; collect = false }
+    tn = Vec3.m (); amb = Color.acc 0.; amb_done = false; kr = Color.acc 0.; collect = false;
+    dl = Color.acc 0.; h; hf; sky = Vec3.m (); q = Scene.query () }
 
 (* a texture map's frame entered (the chain grows once, to the deepest
    nesting met) *)
@@ -101,8 +105,9 @@ let chain_push fr t =
 
 let frames_key = Scratch.key (fun () -> Scratch.levels ~initial:8 new_frame)
 
-let enter () =
-  let f = Scratch.push (Scratch.get frames_key) in
+(* the next frame of the domain's [frames] (from [frames_key]) *)
+let enter frames =
+  let f = Scratch.push frames in
   Color.acc_set f.c 0. 0. 0.;
   Color.acc_set f.tr 1. 1. 1.;
   f.top_set <- false;
@@ -111,7 +116,7 @@ let enter () =
   Direct.forget f.sh;
   f
 
-let leave () = Scratch.pop (Scratch.get frames_key)
+let leave frames = Scratch.pop frames
 
 (* The same for texture maps being blended (nested in one another, or in
    what the rays of their textures' reflections meet): the textures
@@ -131,7 +136,7 @@ let[@inline] set_color (out : Color.acc) (c : Color.t) = Color.acc_set out c.r c
 (* the numbers turning a gather's directions (per domain) *)
 let gather_key = Scratch.key (fun () -> Sampler.create ~seed:0 ~pixel:0 ~sample:0)
 
-(* a ray's direction made unit, to look up the sky (per domain) *)
+(* a ray's direction made unit, to look up the rainbows (per domain) *)
 let sky_key = Scratch.key Vec3.m
 
 (* a surface's own light [c] and, through it ([tr], faded), the light [rc]
@@ -231,24 +236,27 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
   from.dist <- infinity;
   if level > s.settings.max_trace_level || weight < s.settings.adc_bailout then Color.acc_set out 0. 0. 0.
   else
-    (* read at once, before shading traces anything else *)
-    let h, f = Scene.hit_records () in
-    if not (Scene.intersect_into s o d tmin tmax h f) then begin
+    (* the frame for a ray that meets nothing too: its records and
+       scratch are reached from it, not looked up one by one *)
+    let frames = Scratch.get frames_key in
+    let fr = enter frames in
+    let h = fr.h and f = fr.hf in
+    if not (Scene.intersect_with s fr.q o d tmin tmax h f) then begin
       if Sky.is_empty s.sky then set_color out s.background
       else begin
-        let u = Scratch.get sky_key in
+        let u = fr.sky in
         Vec3.set u d.mx d.my d.mz;
         Vec3.normalize_m u;
         Sky.eval_into s.sky ~background:s.background u out
       end;
       if s.rainbows <> [] && in_open media then rainbowed s d Fog.missed out;
       if s.atmosphere <> [] then aired_sky s o d media out;
-      fogged_sky s o d media out
+      fogged_sky s o d media out;
+      leave frames
     end
     else begin
       let t = h.t and obj = f.leaf in
       from.dist <- t;
-      let fr = enter () in
       (* POV-Ray draws no highlights where gather rays meet a surface *)
       (match s.settings.radiosity with
       | None -> Direct.set_highlights fr.sh true
@@ -276,7 +284,7 @@ let rec trace_ray (s : Scene.t) tmin tmax (o : Vec3.m) (d : Vec3.m) level (from 
       if s.atmosphere <> [] || s.rainbows <> [] then aired_hit s o d p media out
       else if s.settings.object_media && has_media media then mediated_hit s o d p media out;
       fogged_hit s o d p media out;
-      leave ()
+      leave frames
     end
 
 (* [fr.n0] holds the surface's normal, turned to face the ray here;
@@ -428,11 +436,11 @@ and layers s d level media (fr : frame) refl (acc : Color.acc) (w : Color.acc) (
           (match s.settings.radiosity with None -> () | Some r -> radiosity_term s r level media fr f w n);
           (* this layer's own colour: lights, then ambient (or the
              radiosity) and emission *)
-          let dl = Scratch.get direct_key in
+          let dl = fr.dl in
           Color.acc_set dl 0. 0. 0.;
           (* shadow rays start in the interiors this ray runs in (set
              here: the rays traced above shaded other hits) *)
-          let sw = Shadow.walk () in
+          let sw = Direct.walk fr.sh in
           Shadow.starts_in sw media;
           (* with photons, a target that refracts them casts a full
              shadow here: its light comes as photons *)
