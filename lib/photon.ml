@@ -151,14 +151,22 @@ let[@inline] area q = Float.Array.get q.q 9
 let[@inline] volume q = Float.Array.get q.q 10
 let[@inline] index q i = Array.unsafe_get q.heap_i i
 
+(* Unchecked from here to the search: a photon's index is below [m.n],
+   an axis 0 to 2, the query's fields are its 11, and the heap's entries
+   below [cnt], at most [cap], its arrays' length (the search visits
+   every photon near the query point; with the checks, photons.pov at
+   160x120 ran 1,680 M instructions) *)
+let fget = Float.Array.unsafe_get
+let fset = Float.Array.unsafe_set
+
 (* heap entries [a] and [b] exchanged *)
 let swap q a b =
   let hd = q.heap_d and hi = q.heap_i in
-  let td = Float.Array.get hd a and ti = hi.(a) in
-  Float.Array.set hd a (Float.Array.get hd b);
-  hi.(a) <- hi.(b);
-  Float.Array.set hd b td;
-  hi.(b) <- ti
+  let td = fget hd a and ti = Array.unsafe_get hi a in
+  fset hd a (fget hd b);
+  Array.unsafe_set hi a (Array.unsafe_get hi b);
+  fset hd b td;
+  Array.unsafe_set hi b ti
 
 let sift_down q =
   let hd = q.heap_d and n = q.cnt in
@@ -168,8 +176,8 @@ let sift_down q =
     if l >= n then continue := false
     else begin
       let r = l + 1 in
-      let c = if r < n && Float.Array.get hd r > Float.Array.get hd l then r else l in
-      if Float.Array.get hd c > Float.Array.get hd !i then begin
+      let c = if r < n && fget hd r > fget hd l then r else l in
+      if fget hd c > fget hd !i then begin
         swap q c !i;
         i := c
       end
@@ -180,7 +188,7 @@ let sift_down q =
 let sift_up q k =
   let hd = q.heap_d in
   let i = ref k in
-  while !i > 0 && Float.Array.get hd ((!i - 1) / 2) < Float.Array.get hd !i do
+  while !i > 0 && fget hd ((!i - 1) / 2) < fget hd !i do
     let p = (!i - 1) / 2 in
     swap q p !i;
     i := p
@@ -189,30 +197,30 @@ let sift_up q k =
 (* photon [i] against the query: kept when nearer than the bound *)
 let consider m qr i =
   let q = qr.q in
-  let vx = Float.Array.get m.pos (3 * i) -. Float.Array.get q 0
-  and vy = Float.Array.get m.pos ((3 * i) + 1) -. Float.Array.get q 1
-  and vz = Float.Array.get m.pos ((3 * i) + 2) -. Float.Array.get q 2 in
+  let vx = fget m.pos (3 * i) -. fget q 0
+  and vy = fget m.pos ((3 * i) + 1) -. fget q 1
+  and vz = fget m.pos ((3 * i) + 2) -. fget q 2 in
   let d2 = (vx *. vx) +. (vy *. vy) +. (vz *. vz) in
   let d2 =
-    if Float.Array.get q 7 > 0. then
-      let nv = (vx *. Float.Array.get q 3) +. (vy *. Float.Array.get q 4) +. (vz *. Float.Array.get q 5) in
+    if fget q 7 > 0. then
+      let nv = (vx *. fget q 3) +. (vy *. fget q 4) +. (vz *. fget q 5) in
       d2 *. (1. +. (16. *. Float.abs nv))
     else d2
   in
-  if d2 < Float.Array.get q 6 then begin
+  if d2 < fget q 6 then begin
     if qr.cnt < qr.cap then begin
-      Float.Array.set qr.heap_d qr.cnt d2;
-      qr.heap_i.(qr.cnt) <- i;
+      fset qr.heap_d qr.cnt d2;
+      Array.unsafe_set qr.heap_i qr.cnt i;
       qr.cnt <- qr.cnt + 1;
       sift_up qr (qr.cnt - 1);
-      if qr.cnt = qr.cap then Float.Array.set q 6 (Float.Array.get qr.heap_d 0)
+      if qr.cnt = qr.cap then fset q 6 (fget qr.heap_d 0)
     end
     else begin
       qr.over <- true;
-      Float.Array.set qr.heap_d 0 d2;
-      qr.heap_i.(0) <- i;
+      fset qr.heap_d 0 d2;
+      Array.unsafe_set qr.heap_i 0 i;
       sift_down qr;
-      Float.Array.set q 6 (Float.Array.get qr.heap_d 0)
+      fset q 6 (fget qr.heap_d 0)
     end
   end
 
@@ -221,14 +229,14 @@ let rec search m qr lo hi =
   if lo < hi then begin
     let mid = (lo + hi) lsr 1 in
     let ax = Char.code (Bytes.unsafe_get m.axis mid) in
-    let delta = Float.Array.get qr.q ax -. Float.Array.get m.pos ((3 * mid) + ax) in
+    let delta = fget qr.q ax -. fget m.pos ((3 * mid) + ax) in
     if delta < 0. then begin
       search m qr lo mid;
-      if delta *. delta < Float.Array.get qr.q 6 then search m qr (mid + 1) hi
+      if delta *. delta < fget qr.q 6 then search m qr (mid + 1) hi
     end
     else begin
       search m qr (mid + 1) hi;
-      if delta *. delta < Float.Array.get qr.q 6 then search m qr lo mid
+      if delta *. delta < fget qr.q 6 then search m qr lo mid
     end;
     consider m qr mid
   end
@@ -236,9 +244,11 @@ let rec search m qr lo hi =
 (* the search radius in [q.(8)]: a float passed would be boxed *)
 let reset m qr =
   let r = Float.Array.get qr.q 8 in
-  if qr.cap < m.gmax then begin
-    qr.heap_d <- Float.Array.create m.gmax;
-    qr.heap_i <- Array.make m.gmax 0
+  (* at least one entry: [consider] writes the first when the heap is full *)
+  let size = Int.max 1 m.gmax in
+  if Float.Array.length qr.heap_d < size then begin
+    qr.heap_d <- Float.Array.create size;
+    qr.heap_i <- Array.make size 0
   end;
   qr.cap <- m.gmax;
   qr.cnt <- 0;
