@@ -199,7 +199,6 @@ let[@inline never] iter_st st b (r : Ray.scratch) tmin c1 c2 f =
     !ok
   end
 
-
 let stack () = Scratch.get stack_key
 let nearest_s b r tmin h c1 c2 f = nearest_st (stack ()) b r tmin h c1 c2 f
 let iter_s b r tmin c1 c2 f = iter_st (stack ()) b r tmin c1 c2 f

@@ -5,7 +5,6 @@ let light_min_cos = 1e-10
 
 type opacity = { mutable alpha : float }
 
-
 (* POV-Ray's film thickness at [p] (trace.cpp's ComputeIridColour): the
    finish's thickness, times 1 + (2 T - 1) turbulence with T POV-Ray's
    Turbulence of the point with 5 octaves, omega 0.5 and lambda 2 in the
@@ -191,8 +190,8 @@ let find_shadow s w (light : Light.t) p cache j =
    Scalars throughout: nothing is allocated unless the shadow ray crosses
    something transparent. *)
 let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n : Vec3.m) (d : Vec3.m)
-    (light : Light.t) (cache : shadows) j (c : lightlet) (out : Color.acc) =
-  let w = cache.w in
+    (light : Light.t) (cache : shadows) j (out : Color.acc) =
+  let w = cache.w and c = cache.sc.ll in
   let l = Shadow.toward w in
   Light.direction_into light p l;
   let nl = (n.mx *. l.lx) +. (n.my *. l.ly) +. (n.mz *. l.lz) in
@@ -220,7 +219,6 @@ let one_light s (f : Finish.t) (pc : Pigment.out) (k : opacity) (p : Vec3.m) (n 
       shade s f pc k p n d light l back c out
     end
   end
-
 
 (* An area light with area_illumination, as POV-Ray 3.7 has it (trace.cpp,
    ComputeOneDiffuseLight and ComputeFullAreaDiffuseLight): its shadow is
@@ -284,7 +282,7 @@ let lights (s : Scene.t) cache (ls : Light.t array) (f : Finish.t) (pc : Pigment
     let light = Array.unsafe_get ls j in
     match light.area with
     | Some a when a.area_illumination -> area_light s f pc k p n d light a cache j out
-    | _ -> one_light s f pc k p n d light cache j sc.ll out
+    | _ -> one_light s f pc k p n d light cache j out
   done
 
 (* Photons: each gathered photon lights the point as a light from the
