@@ -298,12 +298,7 @@ let[@inline] intersect_with s sc (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t)
      end
 
 let intersect_into s (o : Vec3.m) (d : Vec3.m) tmin tmax (h : Hit.t) (f : Object.found) =
-  Array.length s.objects > 0
-  && begin
-       let sc = take () in
-       Ray.set sc.ray o d.mx d.my d.mz;
-       nearest_loaded s sc tmin tmax h f
-     end
+  Array.length s.objects > 0 && intersect_with s (take ()) o d tmin tmax h f
 
 let hit_normal s (f : Object.found) (h : Hit.t) (point : Vec3.t) =
   if h.id >= 0. then Object.normal f.leaf point h
@@ -393,15 +388,13 @@ let occluders s r tmin tmax opaque g =
   sc.ray.far <- tmax;
   occluders_in s sc tmin opaque (fun o (h : Hit.t) -> g o h.t)
 
-(* the same from a ray in a scratch record of the caller's, up to its [far] *)
-let occluders_s s (r : Ray.scratch) tmin opaque g =
-  let sc = take () in
-  Ray.copy r sc.ray;
-  occluders_in s sc tmin opaque g
-
+(* the same from a ray in a scratch record of the caller's, up to its
+   [far], with the caller's query records ([occluders_s]: the domain's) *)
 let occluders_with s sc (r : Ray.scratch) tmin opaque g =
   Ray.copy r sc.ray;
   occluders_in s sc tmin opaque g
+
+let occluders_s s r tmin opaque g = occluders_with s (take ()) r tmin opaque g
 
 (* objects held in a growing array *)
 type objects = { mutable items : Object.t array; mutable n : int }
